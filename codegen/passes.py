@@ -1,0 +1,256 @@
+"""Normalisation passes from the grammar's IR to the IR the renderer reads.
+
+Each pass is a small function that edits a schema in place. ``normalize`` runs them, in
+order, on a copy of its input and ends with consistency checks, so the renderer can trust
+every row, child and name it is given.
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Iterable, Mapping
+
+from codegen import ir, naming
+from codegen.facts import AttributeOverride, Facts
+
+DEFAULT_ROW = "default"  # the <default> class row; its children are per-tag settings
+PROJECTION_PREFIX = "default_"  # rows valid only inside <default>
+_NOT_DEFAULTABLE = frozenset({"name", "class"})  # identity, never inherited from a class
+
+
+def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
+    """The renderer's IR: ``schema`` (left untouched) with ``facts`` applied and checked."""
+    out = copy.deepcopy(schema)
+    # Overrides on declared rows go first so default projections inherit them; an entry may
+    # also name a projection row, which only exists afterwards.
+    on_rows = [o for o in facts.attributes if o.element in out.elements]
+    on_projections = [o for o in facts.attributes if o.element not in out.elements]
+    route_root_children(out, facts.root_children)
+    apply_overrides(out, on_rows)
+    project_defaults(out)
+    apply_overrides(out, on_projections)
+    mark_single(out, facts.single)
+    drop_unreachable(out)
+    drop_unused_enums(out)
+    check(out)
+    return out
+
+
+# ------------------------------------------------------------------------------ passes
+
+
+def route_root_children(schema: ir.Schema, routes: Mapping[str, str]) -> None:
+    """Point the root's child ``source`` at row ``target`` (``body`` -> ``worldbody``)."""
+    root = schema.elements[schema.root]
+    for source, target in routes.items():
+        if target not in schema.elements:
+            raise ValueError(f"root_children: {source!r} -> {target!r}: no row {target!r}")
+        index = next((i for i, c in enumerate(root.children) if c.element == source), None)
+        if index is None:
+            if any(c.element == target for c in root.children):
+                continue  # already routed: normalizing twice is harmless
+            raise ValueError(f"root_children: root {root.name!r} has no child {source!r}")
+        old = root.children[index]
+        root.children[index] = ir.ChildDef(target, old.card, old.single)
+
+
+def mark_single(schema: ir.Schema, single: Mapping[str, Iterable[str]]) -> None:
+    """Expose the named children (by tag) of each parent row as properties."""
+    for parent, tags in single.items():
+        row = _row(schema, parent, "single")
+        by_tag = {schema.elements[c.element].tag: c for c in row.children}
+        for tag in tags:
+            child = by_tag.get(tag)
+            if child is None:
+                raise ValueError(f"single: row {parent!r} has no child tag {tag!r}")
+            child.single = True
+
+
+def apply_overrides(schema: ir.Schema, overrides: Iterable[AttributeOverride]) -> None:
+    """Hand-kept corrections of single attributes (e.g. ``mujoco@model`` is a string)."""
+    for override in overrides:
+        where = f"attribute override {override.element}@{override.name}"
+        row = _row(schema, override.element, where)
+        try:
+            attr = row.attribute(override.name)
+        except KeyError:
+            raise ValueError(f"{where}: row {row.name!r} has no such attribute") from None
+        _apply_override(attr, override)
+        problem = _attribute_problem(attr, schema)
+        if problem:
+            raise ValueError(f"{where}: {problem}")
+
+
+def project_defaults(schema: ir.Schema) -> None:
+    """Give each per-tag child of the default row its own ``default_<decl>`` row."""
+    default = schema.elements.get(DEFAULT_ROW)
+    if default is None:
+        return
+    for index, child in enumerate(default.children):
+        if child.element == DEFAULT_ROW:  # nested classes: a list, like any recursion
+            child.single = False
+            continue
+        element = child.element
+        if not element.startswith(PROJECTION_PREFIX):
+            element = _add_projection(schema, element)
+        default.children[index] = ir.ChildDef(element, child.card, single=True)
+
+
+def drop_unreachable(schema: ir.Schema) -> None:
+    """Rows no chain of children leads to from the root are not part of the language."""
+    reachable: set[str] = set()
+    pending = [schema.root]
+    while pending:
+        name = pending.pop()
+        if name not in reachable:
+            reachable.add(name)
+            pending.extend(c.element for c in schema.elements[name].children)
+    schema.elements = {k: v for k, v in schema.elements.items() if k in reachable}
+
+
+def drop_unused_enums(schema: ir.Schema) -> None:
+    used = {a.enum for e in schema.elements.values() for a in e.attributes if a.enum}
+    schema.enums = {k: v for k, v in schema.enums.items() if k in used}
+
+
+def check(schema: ir.Schema) -> None:
+    """Raise ValueError listing every name clash or dangling reference."""
+    problems = [
+        *_reference_problems(schema),
+        *_class_name_problems(schema),
+        *(p for e in schema.elements.values() for p in _element_problems(schema, e)),
+    ]
+    if problems:
+        raise ValueError(f"{len(problems)} schema problem(s):\n  " + "\n  ".join(problems))
+
+
+# ----------------------------------------------------------------------------- helpers
+
+
+def _row(schema: ir.Schema, name: str, where: str) -> ir.ElementDef:
+    row = schema.elements.get(name)
+    if row is None:
+        raise ValueError(f"{where}: no row {name!r}")
+    return row
+
+
+def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
+    if o.kind is not None and o.kind != attr.kind:
+        attr.kind = o.kind
+        _drop_fields_of_other_kinds(attr)
+    if o.dtype is not None:
+        attr.dtype = o.dtype
+    if o.arity is not None:
+        attr.arity = o.arity
+    if o.enum is not None:
+        attr.enum = o.enum
+    if o.namespace is not None:
+        attr.namespace = o.namespace
+    if o.default is not None:
+        attr.default = o.default
+    if o.required is not None:
+        attr.required = o.required
+    if o.nodefault is not None:
+        attr.nodefault = o.nodefault
+    if o.pattern is not None:
+        attr.pattern = o.pattern
+    if o.field is not None:
+        attr.field = o.field
+    if o.doc is not None:
+        attr.doc = o.doc
+
+
+def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
+    """After a kind change, forget what only the old kind had (a ref's namespace, ...)."""
+    if attr.kind not in ("int", "real"):
+        attr.dtype = None
+    elif attr.kind == "int":
+        attr.dtype = "int"
+    if attr.kind not in ("int", "real", "chars", "string"):
+        attr.arity = None
+    if attr.kind not in ("keyword", "flags"):
+        attr.enum = None
+    if attr.kind not in ("id", "ref"):
+        attr.namespace = None
+    if attr.kind not in ("string", "chars"):
+        attr.pattern = None
+
+
+def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
+    """Why ``attr``'s fields contradict its kind, or None."""
+    if attr.kind == "int" and attr.dtype != "int":
+        return "an int attribute has dtype 'int'"
+    if attr.kind == "real" and attr.dtype not in ("double", "float"):
+        return "a real attribute needs dtype 'double' or 'float'"
+    if attr.kind in ("keyword", "flags") and attr.enum not in schema.enums:
+        return f"{attr.kind} attribute needs a declared enum, got {attr.enum!r}"
+    if attr.kind in ("id", "ref") and not attr.namespace:
+        return f"{attr.kind} attribute needs a namespace"
+    if attr.kind == "chars" and (attr.arity is None or attr.arity[1] is None):
+        return "chars attribute needs a bounded arity"
+    return None
+
+
+def _add_projection(schema: ir.Schema, primary_name: str) -> str:
+    """Add the default-class row of a primary declaration; return its name."""
+    primary = schema.elements[primary_name]
+    name = PROJECTION_PREFIX + primary_name
+    if name in schema.elements:
+        raise ValueError(f"default projection of {primary_name!r} collides with declared row "
+                         f"{name!r}")
+    attributes = [copy.deepcopy(a) for a in primary.attributes
+                  if a.name not in _NOT_DEFAULTABLE and not a.nodefault]
+    for attr in attributes:
+        attr.required = False  # a class only supplies values; the element must still set them
+    schema.elements[name] = ir.ElementDef(
+        name=name, tag=primary.tag, class_name="Default" + primary.class_name,
+        attributes=attributes, struct=primary.struct, projection_of=primary_name,
+    )
+    return name
+
+
+def _reference_problems(schema: ir.Schema) -> list[str]:
+    problems: list[str] = []
+    for e in schema.elements.values():
+        targets: list[tuple[str, str | None]] = [("child", c.element) for c in e.children]
+        targets += [("alias", e.alias), ("projection_of", e.projection_of)]
+        problems += [f"row {e.name!r}: {what} names missing row {target!r}"
+                     for what, target in targets
+                     if target is not None and target not in schema.elements]
+        problems += [f"row {e.name!r}: attribute {a.name!r} uses missing enum {a.enum!r}"
+                     for a in e.attributes if a.enum is not None and a.enum not in schema.enums]
+    return problems
+
+
+def _class_name_problems(schema: ir.Schema) -> list[str]:
+    owners: dict[str, list[str]] = {}
+    for e in schema.elements.values():
+        owners.setdefault(e.class_name, []).append(e.name)
+    return [f"class name {cls!r} is shared by rows {', '.join(map(repr, names))}"
+            for cls, names in owners.items() if len(names) > 1]
+
+
+def _element_problems(schema: ir.Schema, element: ir.ElementDef) -> list[str]:
+    """Clashes among one row's Python names: child tags, attributes, the runtime API."""
+    where = f"row {element.name!r}"
+    problems: list[str] = []
+    tags: dict[str, str] = {}
+    for child in element.children:
+        row = schema.elements.get(child.element)
+        if row is None:
+            continue  # reported by _reference_problems
+        if row.tag in tags:
+            problems.append(f"{where}: children {tags[row.tag]!r} and {row.name!r} share tag "
+                            f"{row.tag!r}")
+        tags.setdefault(row.tag, row.name)
+    child_names = {naming.py_name(tag): tag for tag in tags}
+    for attr in element.attributes:
+        if attr.py_name in child_names:
+            problems.append(f"{where}: attribute {attr.name!r} and child tag "
+                            f"{child_names[attr.py_name]!r} share the Python name "
+                            f"{attr.py_name!r}")
+    for what, py in [*(("attribute", a.py_name) for a in element.attributes),
+                     *(("child", c) for c in child_names)]:
+        if py in naming.RESERVED:
+            problems.append(f"{where}: {what} name {py!r} is reserved by the runtime API")
+    return problems

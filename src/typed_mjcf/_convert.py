@@ -1,0 +1,322 @@
+"""Converters from user values (Python objects or MJCF text) to stored attribute values.
+
+A converter either returns the value to store or raises :class:`Rejected` saying what was
+expected; the element turns that into an error naming its path and the attribute.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING, Final
+
+import numpy as np
+
+from typed_mjcf.assets import Asset
+from typed_mjcf.errors import InvalidTypeError, InvalidValueError, MjcfError, did_you_mean
+
+if TYPE_CHECKING:
+    from typed_mjcf._spec import AttributeSpec
+
+Converter = Callable[[object], object]
+
+INT32_MIN: Final = -(2**31)
+INT32_MAX: Final = 2**31 - 1
+DTYPES: Final = {"double": np.float64, "float": np.float32, "int": np.int32}
+
+
+class Rejected(Exception):
+    """A value the attribute cannot take, with what it expected."""
+
+    def __init__(self, expected: str, error: type[MjcfError] = InvalidValueError) -> None:
+        super().__init__(expected)
+        self.expected = expected
+        self.error = error
+
+
+def _type_rejected(expected: str) -> Rejected:
+    return Rejected(expected, InvalidTypeError)
+
+
+# ----------------------------------------------------------------------------- scalars
+
+
+def _check_pattern(spec: AttributeSpec, text: str) -> None:
+    if spec.pattern is not None and re.fullmatch(spec.pattern, text) is None:
+        raise Rejected(f"text matching {spec.pattern!r}")
+
+
+def string_converter(spec: AttributeSpec) -> Converter:
+    def convert(value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a string")
+        if not value:
+            raise Rejected("a non-empty string")
+        _check_pattern(spec, value)
+        return value
+
+    return convert
+
+
+def chars_converter(spec: AttributeSpec) -> Converter:
+    lo, hi = spec.lo, spec.hi
+
+    def convert(value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a string")
+        if not (lo <= len(value) and (hi is None or len(value) <= hi)):
+            raise Rejected(f"{_count_text(lo, hi)} characters")
+        _check_pattern(spec, value)
+        return value
+
+    return convert
+
+
+def identifier_converter(spec: AttributeSpec) -> Converter:
+    def convert(value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a name (string)")
+        if not value:
+            raise Rejected("a non-empty name")
+        if "/" in value:
+            raise Rejected("a name without '/' (it separates the scopes of attached models)")
+        return value
+
+    return convert
+
+
+def file_converter(spec: AttributeSpec) -> Converter:
+    def convert(value: object) -> object:
+        if isinstance(value, Asset):
+            return value
+        if isinstance(value, os.PathLike):
+            value = os.fspath(value)  # pyright: ignore[reportUnknownArgumentType]
+        if not isinstance(value, str):
+            raise _type_rejected("a file path or a typed_mjcf.Asset")
+        if not value:
+            raise Rejected("a non-empty file path")
+        return value
+
+    return convert
+
+
+_TRUE_FALSE: Final = {"true": True, "false": False}
+
+
+def bool_converter(spec: AttributeSpec) -> Converter:
+    def convert(value: object) -> object:
+        if value is True or value is False:
+            return value
+        if isinstance(value, np.bool_):
+            return bool(value)
+        if isinstance(value, str):
+            found = _TRUE_FALSE.get(value.lower())
+            if found is None:
+                raise Rejected("true or false" + did_you_mean(value, _TRUE_FALSE))
+            return found
+        raise _type_rejected("a bool")
+
+    return convert
+
+
+def _to_int(value: object) -> int:
+    if type(value) is int:
+        result = value
+    elif isinstance(value, bool | np.bool_):
+        raise _type_rejected("an integer")
+    elif isinstance(value, int | np.integer):
+        result = int(value)
+    elif isinstance(value, float | np.floating):
+        f = float(value)
+        if not f.is_integer():
+            raise Rejected("an integer (the value would be truncated)")
+        result = int(f)
+    elif isinstance(value, str):
+        try:
+            result = int(value)
+        except ValueError:
+            raise Rejected("an integer") from None
+    else:
+        raise _type_rejected("an integer")
+    if not INT32_MIN <= result <= INT32_MAX:
+        raise Rejected("an integer that fits in 32 bits")
+    return result
+
+
+def _to_float(value: object) -> float:
+    if type(value) is float:
+        return value
+    if isinstance(value, bool | np.bool_):
+        raise _type_rejected("a number")
+    if isinstance(value, int | float | np.integer | np.floating):
+        return float(value)
+    if isinstance(value, str):
+        try:
+            return float(value)
+        except ValueError:
+            raise Rejected("a number") from None
+    raise _type_rejected("a number")
+
+
+def int_converter(spec: AttributeSpec) -> Converter:
+    return _to_int
+
+
+def real_converter(spec: AttributeSpec) -> Converter:
+    return _to_float
+
+
+# ----------------------------------------------------------------------------- arrays
+
+
+def _count_text(lo: int, hi: int | None) -> str:
+    if hi is None:
+        return f"at least {lo}" if lo else "any number of"
+    return f"{lo}" if lo == hi else f"{lo} to {hi}"
+
+
+def array_converter(spec: AttributeSpec) -> Converter:
+    lo, hi = spec.lo, spec.hi
+    is_int = spec.kind == "int"
+    dtype = DTYPES[spec.dtype or ("int" if is_int else "double")]
+    noun = "integers" if is_int else "numbers"
+    expected = f"{_count_text(lo, hi)} {noun}"
+
+    def from_text(text: str) -> np.ndarray[tuple[int, ...], np.dtype[np.generic]]:
+        parts = text.split()
+        if is_int:
+            return np.array([_to_int(p) for p in parts], dtype=dtype)
+        return np.array([_to_float(p) for p in parts], dtype=dtype)
+
+    def convert(value: object) -> object:
+        try:
+            array = to_array(value)
+        except Rejected as rejected:
+            if rejected.expected == expected or rejected.expected.startswith(expected):
+                raise
+            raise Rejected(expected, rejected.error) from None
+        n = array.shape[0]
+        if n < lo or (hi is not None and n > hi):
+            raise Rejected(f"{expected}, got {n}")
+        return array
+
+    def to_array(value: object) -> np.ndarray[tuple[int, ...], np.dtype[np.generic]]:
+        if isinstance(value, str):
+            array = from_text(value)
+        elif isinstance(value, np.ndarray):
+            kind: str = value.dtype.kind  # pyright: ignore[reportUnknownMemberType]
+            if kind not in "iuf" or (kind == "f" and is_int):
+                if kind == "f":
+                    array = np.array([_to_int(x) for x in value.ravel().tolist()], dtype=dtype)  # pyright: ignore[reportUnknownMemberType]
+                else:
+                    raise _type_rejected(f"{expected} (got an array of dtype {value.dtype})")  # pyright: ignore[reportUnknownMemberType]
+            else:
+                array = value.astype(dtype)  # pyright: ignore[reportUnknownMemberType]
+            if array.ndim != 1:
+                raise Rejected(f"{expected} in a flat sequence")
+        elif isinstance(value, Iterable):
+            items: list[object] = list(value)  # pyright: ignore[reportUnknownArgumentType]
+            if is_int:
+                array = np.array([_to_int(x) for x in items], dtype=dtype)
+            else:
+                array = np.array([_to_float(x) for x in items], dtype=dtype)
+        else:
+            raise _type_rejected(expected)
+        return array
+
+    return convert
+
+
+# ----------------------------------------------------------------------------- keywords
+
+
+def keyword_converter(spec: AttributeSpec) -> Converter:
+    keywords = spec.keywords
+    lookup = {k.lower(): k for k in keywords}
+    takes_bool = "true" in lookup and "false" in lookup
+    listing = ", ".join(repr(k) for k in keywords)
+
+    def convert(value: object) -> object:
+        if takes_bool and (value is True or value is False):
+            return "true" if value else "false"
+        if not isinstance(value, str):
+            raise _type_rejected(f"one of {listing}")
+        found = lookup.get(value.lower())
+        if found is None:
+            raise Rejected(f"one of {listing}" + did_you_mean(value, keywords))
+        return found
+
+    return convert
+
+
+def flags_converter(spec: AttributeSpec) -> Converter:
+    keywords = spec.keywords
+    lookup = {k.lower(): k for k in keywords}
+    order = {k: i for i, k in enumerate(keywords)}
+    listing = ", ".join(repr(k) for k in keywords)
+
+    def convert(value: object) -> object:
+        words: list[object]
+        if isinstance(value, str):
+            words = list(value.split())
+        elif isinstance(value, Iterable):
+            words = list(value)  # pyright: ignore[reportUnknownArgumentType]
+        else:
+            raise _type_rejected(f"keywords from {listing}")
+        found: set[str] = set()
+        for word in words:
+            if not isinstance(word, str):
+                raise _type_rejected(f"keywords from {listing}")
+            canonical = lookup.get(word.lower())
+            if canonical is None:
+                raise Rejected(f"keywords from {listing}" + did_you_mean(word, keywords))
+            found.add(canonical)
+        if not found:
+            raise Rejected(f"at least one keyword from {listing}")
+        # MuJoCo reads some flag sets only in their canonical order.
+        return tuple(sorted(found, key=order.__getitem__))
+
+    return convert
+
+
+def reference_converter(spec: AttributeSpec) -> Converter:
+    namespace = spec.namespace
+
+    def convert(value: object) -> object:
+        if isinstance(value, str):
+            if not value:
+                raise Rejected("a non-empty name")
+            return value
+        element_spec = getattr(type(value), "_SPEC", None)
+        if element_spec is None:
+            raise _type_rejected(f"a name or an element of namespace {namespace!r}")
+        if element_spec.namespace != namespace:
+            raise _type_rejected(
+                f"a name or an element of namespace {namespace!r}, "
+                f"got a <{element_spec.tag}> (namespace {element_spec.namespace!r})"
+            )
+        return value
+
+    return convert
+
+
+CONVERTERS: Final[dict[str, Callable[[AttributeSpec], Converter]]] = {
+    "string": string_converter,
+    "chars": chars_converter,
+    "file": file_converter,
+    "bool": bool_converter,
+    "int": int_converter,
+    "real": real_converter,
+    "keyword": keyword_converter,
+    "flags": flags_converter,
+    "id": identifier_converter,
+    "ref": reference_converter,
+}
+
+
+def make_converter(spec: AttributeSpec) -> Converter:
+    if spec.is_array:
+        return array_converter(spec)
+    return CONVERTERS[spec.kind](spec)
+

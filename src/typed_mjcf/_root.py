@@ -1,0 +1,146 @@
+"""The model root: identifier namespaces, look-ups, and the model-wide operations."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Self
+
+from typed_mjcf._element import Element
+from typed_mjcf.errors import InvalidValueError, did_you_mean
+
+if TYPE_CHECKING:
+    import mujoco
+
+
+class ModelRoot(Element):
+    """Behaviour of ``<mujoco>``, the root of a model. Use ``typed_mjcf.RootElement``."""
+
+    __slots__ = ("_identifiers", "_base_dir")
+
+    _identifiers: dict[str, dict[str, Element]]
+    _base_dir: str | None
+
+    def __init__(self, **kwargs: object) -> None:
+        for name, value in (("_attrs", {}), ("_children", []), ("_parent", None),
+                            ("_root", self), ("_singles", None), ("_identifiers", {}),
+                            ("_base_dir", None)):
+            object.__setattr__(self, name, value)
+        self._init_attributes(kwargs)
+
+    @classmethod
+    def _blank(cls, parent: Element | None, root: ModelRoot | None) -> Self:
+        model = super()._blank(parent, root)
+        object.__setattr__(model, "_root", model)
+        object.__setattr__(model, "_identifiers", {})
+        object.__setattr__(model, "_base_dir", None)
+        return model
+
+    # ------------------------------------------------------------------ namespaces
+
+    def _lookup_identifier(self, namespace: str, name: str) -> Element | None:
+        table = self._identifiers.get(namespace)
+        return None if table is None else table.get(name)
+
+    def _remember_identifier(self, namespace: str, name: str, element: Element) -> None:
+        table = self._identifiers.get(namespace)
+        if table is None:
+            table = self._identifiers[namespace] = {}
+        table[name] = element
+
+    def _forget_identifier(self, namespace: str | None, name: object, element: Element) -> None:
+        assert namespace is not None and isinstance(name, str)
+        table = self._identifiers.get(namespace)
+        if table is not None and table.get(name) is element:
+            del table[name]
+
+    def _forget_element(self, element: Element) -> None:
+        id_attribute = element._SPEC.id_attribute  # pyright: ignore[reportPrivateUsage]
+        if id_attribute is not None:
+            name = element._attrs.get(id_attribute.name)  # pyright: ignore[reportPrivateUsage]
+            if name is not None:
+                self._forget_identifier(id_attribute.namespace, name, element)
+
+    def _rebuild_identifiers(self) -> None:
+        self._identifiers.clear()
+        for element in self.iter_elements():
+            id_attribute = element._SPEC.id_attribute  # pyright: ignore[reportPrivateUsage]
+            if id_attribute is None or id_attribute.namespace is None:
+                continue
+            name = element._attrs.get(id_attribute.name)  # pyright: ignore[reportPrivateUsage]
+            if isinstance(name, str):
+                self._remember_identifier(id_attribute.namespace, name, element)
+
+    @property
+    def namespaces(self) -> frozenset[str]:
+        """The identifier namespaces of the grammar (``body``, ``joint``, ``geom``, ...)."""
+        return _namespaces()
+
+    def _check_namespace(self, namespace: str) -> None:
+        known = _namespaces()
+        if namespace not in known:
+            raise InvalidValueError(
+                f"unknown namespace {namespace!r}{did_you_mean(namespace, known)}; "
+                f"namespaces: {', '.join(sorted(known))}"
+            )
+
+    def find(self, namespace: str, identifier: str) -> Element | None:
+        """The element named ``identifier`` in ``namespace``, or ``None``. O(1)."""
+        self._check_namespace(namespace)
+        return self._lookup_identifier(namespace, identifier)
+
+    def find_all(self, namespace: str) -> list[Element]:
+        """Every element of ``namespace`` (named or not), in document order."""
+        self._check_namespace(namespace)
+        return [e for e in self.iter_elements()
+                if e._SPEC.namespace == namespace and e is not self]  # pyright: ignore[reportPrivateUsage]
+
+    # ------------------------------------------------------------------ copies
+
+    def __deepcopy__(self, memo: dict[int, object]) -> Self:
+        clone = self._clone_tree(None, None, memo)
+        object.__setattr__(clone, "_identifiers", {})
+        object.__setattr__(clone, "_base_dir", self._base_dir)
+        for element in clone.iter_elements():
+            object.__setattr__(element, "_root", clone)
+        clone._remap_references(memo)
+        clone._rebuild_identifiers()
+        return clone
+
+    # ------------------------------------------------------------------ MuJoCo
+
+    @property
+    def base_dir(self) -> str | None:
+        """The directory relative file paths resolve against (the parsed file's folder)."""
+        return self._base_dir
+
+    def get_assets(self) -> dict[str, bytes]:
+        """The files the model uses, by the names its exported XML gives them (for a VFS)."""
+        from typed_mjcf._assets_io import collect_assets
+
+        return collect_assets(self).files
+
+    def compile(self) -> mujoco.MjModel:
+        """Compile with MuJoCo (assets passed through a virtual file system)."""
+        from typed_mjcf._bridge import compile_model
+
+        return compile_model(self)
+
+    def to_spec(self) -> mujoco.MjSpec:
+        """This model as a ``mujoco.MjSpec``."""
+        from typed_mjcf._bridge import to_spec
+
+        return to_spec(self)
+
+
+def _namespaces() -> frozenset[str]:
+    from typed_mjcf._element import _REGISTRY  # pyright: ignore[reportPrivateUsage]
+
+    global _NAMESPACES
+    if _NAMESPACES is None:
+        _NAMESPACES = frozenset(
+            cls._SPEC.namespace for cls in _REGISTRY.values()  # pyright: ignore[reportPrivateUsage]
+            if cls._SPEC.namespace is not None  # pyright: ignore[reportPrivateUsage]
+        )
+    return _NAMESPACES
+
+
+_NAMESPACES: frozenset[str] | None = None

@@ -1,0 +1,158 @@
+"""Run-time grammar tables: what the generated classes tell the runtime about each row.
+
+An :class:`AttributeSpec` is also the descriptor that reads and writes its attribute on an
+element, so each attribute costs one object and one dictionary lookup per access.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Final, Literal, overload
+
+from typed_mjcf._convert import Converter, make_converter
+
+if TYPE_CHECKING:
+    from typed_mjcf._element import Element
+
+DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
+
+Kind = Literal["string", "file", "chars", "bool", "int", "real", "keyword", "flags", "id", "ref"]
+
+
+class AttributeSpec:
+    """One attribute of one grammar row, and the descriptor that accesses it."""
+
+    __slots__ = (
+        "name", "py_name", "kind", "dtype", "lo", "hi", "is_array", "keywords", "namespace",
+        "default", "required", "pattern", "anchor", "text", "convert", "index",
+    )
+
+    def __init__(
+        self,
+        name: str,
+        py_name: str,
+        kind: Kind,
+        *,
+        dtype: str | None = None,
+        arity: tuple[int, int | None] | None = None,
+        keywords: Sequence[str] = (),
+        namespace: str | None = None,
+        default: str | None = None,
+        required: bool = False,
+        pattern: str | None = None,
+        anchor: str | None = None,
+        text: str = "",
+    ) -> None:
+        self.name = name
+        self.py_name = py_name
+        self.kind: Kind = kind
+        self.dtype = dtype
+        self.is_array = arity is not None
+        self.lo, self.hi = arity if arity is not None else (1, 1)
+        self.keywords = tuple(keywords)
+        self.namespace = namespace
+        self.default = default
+        self.required = required
+        self.pattern = pattern
+        self.anchor = anchor
+        self.text = text
+        self.index = 0  # position in the row, set by ElementSpec
+        self.convert: Converter = make_converter(self)
+
+    @overload
+    def __get__(self, obj: None, owner: type[object] | None = None) -> AttributeSpec: ...
+    @overload
+    def __get__(self, obj: Element, owner: type[object] | None = None) -> object: ...
+    def __get__(self, obj: Element | None, owner: type[object] | None = None) -> object:
+        if obj is None:
+            return self
+        return obj._attrs.get(self.name)  # pyright: ignore[reportPrivateUsage]
+
+    def __set__(self, obj: Element, value: object) -> None:
+        obj._set_attribute(self, value)  # pyright: ignore[reportPrivateUsage]
+
+    def __delete__(self, obj: Element) -> None:
+        obj._set_attribute(self, None)  # pyright: ignore[reportPrivateUsage]
+
+    @property
+    def url(self) -> str | None:
+        return f"{DOCS_URL}#{self.anchor}" if self.anchor else None
+
+    def describe(self) -> str:
+        """The attribute's MJCF type in words, e.g. ``real[3]`` or ``keyword: hinge|slide``."""
+        if self.kind in ("keyword", "flags"):
+            return f"{self.kind}: {'|'.join(self.keywords)}"
+        if self.kind in ("id", "ref"):
+            return f"{self.kind}<{self.namespace}>"
+        base = self.dtype if self.kind == "real" and self.dtype else self.kind
+        if not self.is_array:
+            return base
+        if self.hi is None:
+            return f"{base}[]" if self.lo == 0 else f"{base}[{self.lo}..]"
+        return f"{base}[{self.lo}]" if self.lo == self.hi else f"{base}[{self.lo}..{self.hi}]"
+
+    def __repr__(self) -> str:
+        return f"<attribute {self.name!r}: {self.describe()}>"
+
+
+class ChildSpec:
+    """A legal child of a row: its tag, Python class name and whether it appears once."""
+
+    __slots__ = ("tag", "py_name", "class_name", "single", "card", "index")
+
+    def __init__(self, tag: str, py_name: str, class_name: str, single: bool, card: str) -> None:
+        self.tag = tag
+        self.py_name = py_name
+        self.class_name = class_name
+        self.single = single
+        self.card = card
+        self.index = 0
+
+
+class ElementSpec:
+    """One grammar row: tag, attributes in grammar order, legal children, constraints."""
+
+    __slots__ = (
+        "tag", "name", "attributes", "by_key", "children", "id_attribute", "namespace",
+        "constraints", "anchor", "text",
+    )
+
+    def __init__(
+        self,
+        tag: str,
+        name: str,
+        attributes: Sequence[AttributeSpec],
+        children: Sequence[ChildSpec] = (),
+        *,
+        constraints: Sequence[tuple[str, tuple[tuple[str, ...], ...]]] = (),
+        anchor: str | None = None,
+        text: str = "",
+    ) -> None:
+        self.tag = tag
+        self.name = name
+        self.attributes = tuple(attributes)
+        self.by_key: dict[str, AttributeSpec] = {}
+        self.id_attribute: AttributeSpec | None = None
+        for i, a in enumerate(self.attributes):
+            a.index = i
+            self.by_key[a.py_name] = a
+            self.by_key.setdefault(a.name, a)
+            if a.kind == "id":
+                self.id_attribute = a
+        if "class" in self.by_key:
+            self.by_key.setdefault("dclass", self.by_key["class"])  # dm_control's spelling
+        self.namespace = self.id_attribute.namespace if self.id_attribute else None
+        self.children: dict[str, ChildSpec] = {}
+        for i, c in enumerate(children):
+            c.index = i
+            self.children[c.tag] = c
+        self.constraints = tuple(constraints)
+        self.anchor = anchor
+        self.text = text
+
+    @property
+    def url(self) -> str | None:
+        return f"{DOCS_URL}#{self.anchor}" if self.anchor else None
+
+    def attribute_names(self) -> list[str]:
+        return [a.py_name for a in self.attributes]

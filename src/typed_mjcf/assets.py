@@ -1,0 +1,47 @@
+"""In-memory assets: file contents given as bytes rather than as a path on disk."""
+
+from __future__ import annotations
+
+import hashlib
+import os
+
+
+class Asset:
+    """File contents held in memory, usable wherever MJCF takes a file.
+
+    ``extension`` (e.g. ``".stl"``) tells MuJoCo the format; ``name`` (optional) is the file
+    name stem used when the model is exported with its assets.
+    """
+
+    __slots__ = ("contents", "extension", "name", "digest")
+
+    def __init__(self, contents: bytes | str, extension: str, name: str | None = None) -> None:
+        if isinstance(contents, str):
+            contents = contents.encode("utf-8")
+        if not isinstance(contents, bytes):
+            raise TypeError(f"Asset contents must be bytes or str, got {type(contents).__name__}")
+        if not extension.startswith("."):
+            extension = "." + extension
+        self.contents = contents
+        self.extension = extension
+        self.name = name
+        self.digest = hashlib.sha1(contents).hexdigest()
+
+    @classmethod
+    def from_path(cls, path: str | os.PathLike[str]) -> Asset:
+        """Load a file's contents into memory."""
+        path = os.fspath(path)
+        stem, extension = os.path.splitext(os.path.basename(path))
+        with open(path, "rb") as f:
+            return cls(f.read(), extension, stem)
+
+    def __eq__(self, other: object) -> bool:
+        return (isinstance(other, Asset) and other.digest == self.digest
+                and other.extension == self.extension)
+
+    def __hash__(self) -> int:
+        return hash((self.digest, self.extension))
+
+    def __repr__(self) -> str:
+        label = f"{self.name}{self.extension}" if self.name else self.extension
+        return f"Asset({label!r}, {len(self.contents)} bytes, sha1={self.digest[:10]})"

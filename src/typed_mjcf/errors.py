@@ -1,0 +1,59 @@
+"""The library's errors. Every one derives from :class:`MjcfError` and from the builtin
+exception a Python user would expect (``ValueError``, ``TypeError`` or ``AttributeError``)."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class MjcfError(Exception):
+    """Base of every error typed-mjcf raises."""
+
+
+class InvalidValueError(MjcfError, ValueError):
+    """A value of the right Python type that MJCF does not allow."""
+
+
+class InvalidTypeError(MjcfError, TypeError):
+    """A value of a Python type the attribute cannot take."""
+
+
+class UnknownAttributeError(MjcfError, AttributeError):
+    """An attribute the element's grammar does not have."""
+
+
+class ChildError(MjcfError, ValueError):
+    """A child that is illegal under its parent, or a second one of a kind allowed once."""
+
+
+class DuplicateIdentifierError(InvalidValueError):
+    """An identifier already taken in its namespace."""
+
+
+class ParseError(MjcfError, ValueError):
+    """MJCF text that cannot be read: malformed XML or something the grammar forbids."""
+
+    def __init__(self, message: str, source: str | None = None, line: int | None = None) -> None:
+        self.source = source
+        self.line = line
+        where = ""
+        if source is not None:
+            where = f"{source}:{line}: " if line is not None else f"{source}: "
+        elif line is not None:
+            where = f"line {line}: "
+        super().__init__(where + message)
+
+
+class CompileError(MjcfError, ValueError):
+    """MuJoCo refused to compile the model."""
+
+
+class ExportError(MjcfError, ValueError):
+    """The model cannot be written as MJCF (e.g. a reference to an unnamed element)."""
+
+
+def did_you_mean(word: str, candidates: Iterable[str]) -> str:
+    """`` (did you mean 'x'?)`` for a close misspelling, else an empty string."""
+    matches = difflib.get_close_matches(word.lower(), list(candidates), n=1, cutoff=0.6)
+    return f" (did you mean {matches[0]!r}?)" if matches else ""
