@@ -212,6 +212,8 @@ class _Parser:
         self._tokens, self._comments = _lex(text, path)
         self._pos = 0
         self._constants = constants
+        self._last_line = 1  # line of the token consumed last ...
+        self._line_before = 1  # ... and of the one before it
 
     # -- token helpers
 
@@ -224,7 +226,14 @@ class _Parser:
     def _next(self) -> _Token:
         token = self._peek()
         self._pos = min(self._pos + 1, len(self._tokens) - 1)
+        self._line_before, self._last_line = self._last_line, token.line
         return token
+
+    def _unexpected(self, token: _Token, expected: str) -> GrammarError:
+        """``token`` (just consumed) is not what continues the line: blame the right line."""
+        if token.line > self._line_before:
+            return self._error(self._line_before, f"expected {expected} at the end of the line")
+        return self._error(token.line, f"expected {expected}, got {token.show()}")
 
     def _accept(self, kind: str) -> bool:
         if self._peek().kind == kind:
@@ -235,7 +244,7 @@ class _Parser:
     def _expect(self, kind: str, what: str) -> _Token:
         token = self._next()
         if token.kind != kind:
-            raise self._error(token.line, f"expected {what}, got {token.show()}")
+            raise self._unexpected(token, what)
         return token
 
     def _ident(self, what: str) -> _Token:
@@ -299,12 +308,12 @@ class _Parser:
     def _enum_value(self) -> tuple[str, str, int]:
         key = self._next()
         if key.kind not in ("ident", "string") or not key.text or key.text.split() != [key.text]:
-            raise self._error(key.line, f"expected an enum keyword, got {key.show()}")
+            raise self._error(key.line, f"expected an enum keyword, got {key.show()} (quote "
+                                        'keywords that are not names, like "2d")')
         self._expect("=", f"'=' after keyword {key.text!r}")
         value = self._next()
         if value.kind != "ident" and not (value.kind == "number" and _INT_RE.fullmatch(value.text)):
-            raise self._error(value.line, f"expected a C constant or an integer for keyword "
-                                          f"{key.text!r}, got {value.show()}")
+            raise self._unexpected(value, f"a C constant or an integer for keyword {key.text!r}")
         return key.text, value.text, key.line
 
     def _group(self, start: _Token) -> _Group:
@@ -355,7 +364,10 @@ class _Parser:
     # -- members
 
     def _member(self, owner: str) -> _Member | None:
-        token = self._ident("an attribute, 'child', 'use', 'set' or a constraint")
+        token = self._next()  # starts a line, so _unexpected's end-of-line blame is wrong here
+        if token.kind != "ident":
+            raise self._error(token.line, "expected an attribute, 'child', 'use', 'set' or a "
+                                          f"constraint, got {token.show()}")
         if self._peek().kind == ":":  # any word can name an attribute, even 'child'
             return self._attribute(token)
         if token.text == "use":
@@ -390,8 +402,7 @@ class _Parser:
         self._expect("=", f"'=' after 'set {field_name}'")
         value = self._next()
         if value.kind not in ("ident", "number"):
-            raise self._error(value.line, f"expected a C constant for 'set {field_name}', "
-                                          f"got {value.show()}")
+            raise self._unexpected(value, f"a C constant for 'set {field_name}'")
 
     def _constraint(self, verb: _Token) -> _Constraint:
         bundles: list[list[str]] = []
@@ -485,16 +496,14 @@ class _Parser:
 
     def _count(self, token: _Token, attr: str) -> int:
         if token.kind != "number" or not token.text.isdigit():
-            raise self._error(token.line, f"expected a count in the arity of attribute {attr!r}, "
-                                          f"got {token.show()}")
+            raise self._unexpected(token, f"a count in the arity of attribute {attr!r}")
         return int(token.text)
 
     def _bound(self, token: _Token, attr: str) -> int:
         if token.kind == "number" and token.text.isdigit():
             return int(token.text)
         if token.kind != "ident":
-            raise self._error(token.line, f"expected an arity bound for attribute {attr!r}, "
-                                          f"got {token.show()}")
+            raise self._unexpected(token, f"an arity bound for attribute {attr!r}")
         value = self._constants.get(token.text)
         if value is None:
             raise self._error(token.line, f"unknown arity bound {token.text!r} of attribute "
@@ -510,8 +519,7 @@ class _Parser:
         if token.kind == "string":
             return _Default(token.text, "string", [])
         if token.kind != "{":
-            raise self._error(token.line, f"expected a default value for attribute {attr!r}, "
-                                          f"got {token.show()}")
+            raise self._unexpected(token, f"a default value for attribute {attr!r}")
         numbers = [self._expect("number", f"a number in the default of {attr!r}").text]
         while self._accept(","):
             numbers.append(self._expect("number", f"a number in the default of {attr!r}").text)
@@ -543,8 +551,8 @@ class _Parser:
             raise self._error(name.line, f"facet {name.text!r} of {owner} takes no value")
         if value.kind not in allowed:
             expected = " or ".join(_VALUE_NAMES[k] for k in sorted(allowed))
-            raise self._error(value.line, f"facet {name.text!r} of {owner} expects {expected}, "
-                                          f"got {value.show()}")
+            raise self._unexpected(value, f"{expected} as the value of facet {name.text!r} of "
+                                          f"{owner}")
         return value
 
     def _apply_facets(self, attr: ir.AttributeDef, facets: dict[str, _Token], line: int) -> None:

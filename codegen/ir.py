@@ -62,6 +62,7 @@ class AttributeDef:
     nodefault: bool = False  # not settable in <default> classes
     pattern: str | None = None  # regex a string value must match
     field: str | None = None  # bound mjs struct field, when it differs from the name
+    directory: list[str] | None = None  # files: <compiler> attributes naming their folder, in order
     doc: str = ""  # one-line description
     anchor: str | None = None  # XMLreference.rst anchor, e.g. "body-joint-type"
 
@@ -127,7 +128,8 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
     if a.py_name != a.name:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
-    for key in ("dtype", "arity", "enum", "namespace", "default", "pattern", "field", "anchor"):
+    for key in ("dtype", "arity", "enum", "namespace", "default", "pattern", "field",
+                "directory", "anchor"):
         value = getattr(a, key)
         if value is not None:
             d[key] = list(value) if isinstance(value, tuple) else value
@@ -212,6 +214,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         nodefault=bool(d.get("nodefault", False)),
         pattern=cast("str | None", d.get("pattern")),
         field=cast("str | None", d.get("field")),
+        directory=cast("list[str] | None", d.get("directory")),
         doc=cast(str, d.get("doc", "")),
         anchor=cast("str | None", d.get("anchor")),
     )

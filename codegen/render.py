@@ -81,6 +81,8 @@ def _attribute_spec(schema: ir.Schema, a: ir.AttributeDef) -> str:
         args.append("required=True")
     if a.pattern is not None:
         args.append(f"pattern={a.pattern!r}")
+    if a.directory:
+        args.append(f"directory={tuple(a.directory)!r}")
     if a.anchor is not None:
         args.append(f"anchor={a.anchor!r}")
     if a.doc:

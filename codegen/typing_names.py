@@ -85,9 +85,11 @@ class Typer:
         lo, hi = a.arity
         array = "_t.IntArrayLike" if a.kind == "int" else "_t.FloatArrayLike"
         if hi is None or hi > MAX_TUPLE:
-            return f"Sequence[{item}] | {array}"
-        tuples = [_tuple(item, n) for n in range(max(lo, 0), hi + 1)]
-        return " | ".join([*tuples, f"_builtins.list[{item}]", array])
+            scalar = f"{item} | " if lo <= 1 else ""
+            return f"{scalar}Sequence[{item}] | {array}"
+        scalar = [item] if lo <= 1 <= hi else []  # one value may be given as a number
+        tuples = [_tuple(item, n) for n in range(max(lo, 1), hi + 1)]
+        return " | ".join([*scalar, *tuples, f"_builtins.list[{item}]", array])
 
     def reference_classes(self, a: ir.AttributeDef) -> list[str]:
         assert a.namespace is not None

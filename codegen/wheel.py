@@ -246,11 +246,21 @@ def parse_at_val(text: str) -> AtVal | None:
     ``(3*nvert)`` (any number of values); ``bool``; ``string``; a keyword list ``[a, b]``
     (``[false, true]`` is bool). Then optionally ``, "default"``, ``, optional``,
     ``, required`` or ``, default = <prose>`` (a computed default)."""
-    head, _, tail = text.strip().partition(",")
-    base = _keywords(head.strip()) or _scalar_type(head.strip())
-    if base is None:
+    parts = _split_at_val(text.strip())
+    if parts is None:
         return None
-    return _with_tail(base, tail.strip())
+    base = _keywords(parts[0]) or _scalar_type(parts[0])
+    return None if base is None else _with_tail(base, parts[1])
+
+
+def _split_at_val(text: str) -> tuple[str, str] | None:
+    """``type, tail`` at the first comma outside a keyword list."""
+    end = text.find("]") + 1 if text.startswith("[") else 0
+    head, comma, tail = text[end:].partition(",")
+    head = text[:end] + head
+    if end and head.strip() != text[:end]:
+        return None  # text after the closing bracket
+    return head.strip(), tail.strip() if comma else ""
 
 
 def _keywords(head: str) -> AtVal | None:
@@ -308,6 +318,8 @@ def _with_tail(base: AtVal, tail: str) -> AtVal | None:
     default = quoted.group(1)
     if not _default_fits(base, default):
         return None
+    if "..." in default.split():
+        return base  # "0 0 ...": filled to the model's count; no literal default
     return AtVal(base.kind, base.arity, base.keywords, default)
 
 
@@ -318,7 +330,7 @@ def _default_fits(base: AtVal, default: str) -> bool:
         return default in base.keywords
     if base.kind == "string":
         return True
-    values = default.split()
+    values = [v for v in default.split() if v != "..."]
     number = _INT_RE if base.kind == "int" else _NUMBER_RE
     if not values or not all(number.fullmatch(v) for v in values):
         return False
@@ -450,18 +462,31 @@ def _spec_value(value: object) -> SpecValue | None:
     return None
 
 
-def spec_defaults() -> dict[str, dict[str, SpecValue]]:
-    """The fields of ``MjSpec().default.<kind>`` (joint, geom, ...) as plain values."""
+_VALUE_TYPES = frozenset({"double", "float", "int", "mjtNum", "mjtByte", "mjtBool", "mjtSize",
+                          "mjDoubleVec", "mjFloatVec", "mjIntVec"})
+
+
+def _value_field(c_type: str) -> bool:
+    """A numeric or C-enum field (strings, pointers and nested structs are skipped: some of
+    them are not readable on a detached default object)."""
+    return c_type in _VALUE_TYPES or (c_type.startswith("mjt") and c_type not in _VALUE_TYPES)
+
+
+def spec_defaults(structs: Mapping[str, Mapping[str, str]] | None = None,
+                  ) -> dict[str, dict[str, SpecValue]]:
+    """The numeric and enum fields of ``MjSpec().default.<kind>`` (joint, geom, ...), keyed by
+    kind and C field name; enum values as their integers."""
+    structs = read_structs() if structs is None else structs
     spec = cast(Callable[[], object], _get(_module("mujoco"), "MjSpec"))()
     default = _get(spec, "default")
     out: dict[str, dict[str, SpecValue]] = {}
     for kind in dir(default):
-        if kind.startswith("_"):
+        fields = structs.get("mjs" + kind[:1].upper() + kind[1:])
+        if kind.startswith("_") or fields is None:
             continue
         obj = _get(default, kind)
-        if isinstance(obj, str) or callable(obj):
-            continue
-        fields = {name: _spec_value(_get(obj, name)) for name in dir(obj)
-                  if not name.startswith("_")}
-        out[kind] = {k: v for k, v in fields.items() if v is not None}
+        values = {name: _spec_value(_get(obj, name)) for name, c_type in fields.items()
+                  if _value_field(c_type) and hasattr(obj, name)}
+        out[kind] = {k: v for k, v in values.items() if v is not None}
+    del spec  # the default objects are views into the spec: keep it alive until here
     return out

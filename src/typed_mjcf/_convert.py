@@ -215,6 +215,9 @@ def array_converter(spec: AttributeSpec) -> Converter:
                 array = value.astype(dtype)  # pyright: ignore[reportUnknownMemberType]
             if array.ndim != 1:
                 raise Rejected(f"{expected} in a flat sequence")
+        elif isinstance(value, int | float | np.integer | np.floating) and not isinstance(
+                value, bool | np.bool_):
+            array = np.array([_to_int(value) if is_int else _to_float(value)], dtype=dtype)
         elif isinstance(value, Iterable):
             items: list[object] = list(value)  # pyright: ignore[reportUnknownArgumentType]
             if is_int:

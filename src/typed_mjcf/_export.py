@@ -12,7 +12,7 @@ from typed_mjcf._spec import AttributeSpec
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
-FileNamer = Callable[[Element, AttributeSpec, Asset], str]
+FileNamer = Callable[[Element, AttributeSpec, object], str]
 
 
 def _shortest_double(x: float) -> str:
@@ -29,10 +29,12 @@ class Formatter:
     """Turns stored attribute values into MJCF text."""
 
     def __init__(self, precision: int | None = None, zero_threshold: float = 0.0,
-                 file_namer: FileNamer | None = None) -> None:
+                 file_namer: FileNamer | None = None,
+                 skip_attributes: frozenset[str] = frozenset()) -> None:
         self.precision = precision
         self.zero_threshold = zero_threshold
-        self.file_namer = file_namer
+        self.file_namer = file_namer  # renames every file (paths and in-memory assets)
+        self.skip_attributes = skip_attributes
 
     def number(self, x: float) -> str:
         if self.zero_threshold and abs(x) < self.zero_threshold:
@@ -52,6 +54,8 @@ class Formatter:
 
     def value(self, element: Element, attribute: AttributeSpec, value: object) -> str:
         kind = attribute.kind
+        if kind == "file" and self.file_namer is not None:
+            return self.file_namer(element, attribute, value)
         if isinstance(value, str):
             return value
         if isinstance(value, np.ndarray):
@@ -69,12 +73,10 @@ class Formatter:
         if isinstance(value, Element):
             return reference_name(element, attribute, value)
         if isinstance(value, Asset):
-            if self.file_namer is None:
-                raise ExportError(
-                    f"{element.path}: {attribute.py_name} holds an in-memory asset; write the "
-                    f"model with export_with_assets() or compile() so the file gets a name"
-                )
-            return self.file_namer(element, attribute, value)
+            raise ExportError(
+                f"{element.path}: {attribute.py_name} holds an in-memory asset; write the "
+                f"model with export_with_assets() or compile() so the file gets a name"
+            )
         raise ExportError(f"{element.path}: cannot write {attribute.py_name}={value!r}")
 
 
@@ -103,7 +105,10 @@ def build(element: Element, formatter: Formatter, parent: etree._Element | None 
     attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
     spec = element.spec
     attrib: dict[str, str] = {}
+    skip = formatter.skip_attributes
     if attrs:
+        if skip and any(name in skip for name in attrs):
+            attrs = {k: v for k, v in attrs.items() if k not in skip}
         if len(attrs) == 1:
             key, value = next(iter(attrs.items()))
             attrib[key] = formatter.value(element, spec.by_key[key], value)

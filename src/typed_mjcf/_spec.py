@@ -24,7 +24,7 @@ class AttributeSpec:
 
     __slots__ = (
         "name", "py_name", "kind", "dtype", "lo", "hi", "is_array", "keywords", "namespace",
-        "default", "required", "pattern", "anchor", "text", "convert", "index",
+        "default", "required", "pattern", "directory", "anchor", "text", "convert", "index",
     )
 
     def __init__(
@@ -40,6 +40,7 @@ class AttributeSpec:
         default: str | None = None,
         required: bool = False,
         pattern: str | None = None,
+        directory: Sequence[str] = (),
         anchor: str | None = None,
         text: str = "",
     ) -> None:
@@ -54,6 +55,7 @@ class AttributeSpec:
         self.default = default
         self.required = required
         self.pattern = pattern
+        self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
         self.anchor = anchor
         self.text = text
         self.index = 0  # position in the row, set by ElementSpec
@@ -113,7 +115,7 @@ class ElementSpec:
     """One grammar row: tag, attributes in grammar order, legal children, constraints."""
 
     __slots__ = (
-        "tag", "name", "attributes", "by_key", "children", "id_attribute", "namespace",
+        "tag", "name", "attributes", "by_key", "by_name", "children", "id_attribute", "namespace",
         "constraints", "anchor", "text",
     )
 
@@ -132,6 +134,7 @@ class ElementSpec:
         self.name = name
         self.attributes = tuple(attributes)
         self.by_key: dict[str, AttributeSpec] = {}
+        self.by_name = {a.name: a for a in self.attributes}
         self.id_attribute: AttributeSpec | None = None
         for i, a in enumerate(self.attributes):
             a.index = i

@@ -1,0 +1,143 @@
+"""Reading MJCF text into typed elements.
+
+Parsing is safe by default (no DTDs, entities or network). ``<include>`` elements are
+expanded in place, wherever they appear, so document order (and so qpos layout) is kept.
+Repeated once-only sections (two ``<asset>`` blocks, say) merge, as they do in MuJoCo.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+
+from lxml import etree
+
+from typed_mjcf._convert import Rejected
+from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._root import ModelRoot
+from typed_mjcf.errors import MjcfError, ParseError, did_you_mean
+
+INCLUDE = "include"
+
+
+def _xml_parser() -> etree.XMLParser:
+    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                           remove_comments=True, remove_pis=True, huge_tree=False)
+
+
+def root_class() -> type[ModelRoot]:
+    for cls in _REGISTRY.values():
+        if issubclass(cls, ModelRoot):
+            return cls
+    raise RuntimeError("no generated root class is registered")  # pragma: no cover
+
+
+@dataclass
+class _Context:
+    base_dir: str | None
+    included: list[str] = field(default_factory=lambda: [])
+
+
+def _read_xml(data: str | bytes, source: str | None) -> etree._Element:
+    if isinstance(data, str):
+        data = data.encode("utf-8")
+    try:
+        return etree.fromstring(data, _xml_parser())
+    except etree.XMLSyntaxError as error:
+        line = error.lineno if error.lineno else None
+        raise ParseError(f"malformed XML: {error.msg}", source, line) from None
+
+
+def parse_text(data: str | bytes, *, base_dir: str | None = None,
+               source: str | None = None) -> ModelRoot:
+    """Parse MJCF text into a model."""
+    node = _read_xml(data, source)
+    return _build_model(node, _Context(base_dir), source)
+
+
+def parse_path(path: str) -> ModelRoot:
+    """Parse an MJCF file; its folder is the base of relative paths."""
+    path = os.path.abspath(path)
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as error:
+        raise ParseError(f"cannot read the file: {error.strerror}", path) from None
+    node = _read_xml(data, path)
+    return _build_model(node, _Context(os.path.dirname(path), [path]), path)
+
+
+def _build_model(node: etree._Element, context: _Context, source: str | None) -> ModelRoot:
+    cls = root_class()
+    if node.tag != cls._SPEC.tag:  # pyright: ignore[reportPrivateUsage]
+        raise ParseError(f"the root element is <{node.tag}>, expected <{cls._SPEC.tag}>",  # pyright: ignore[reportPrivateUsage]
+                         source, node.sourceline)
+    model = cls()
+    object.__setattr__(model, "_base_dir", context.base_dir)
+    _set_attributes(model, node, source)
+    _add_children(model, node, context, source)
+    return model
+
+
+def _set_attributes(element: Element, node: etree._Element, source: str | None) -> None:
+    by_name = element.spec.by_name
+    for key, text in node.attrib.items():
+        attribute = by_name.get(str(key))
+        if attribute is None:
+            known = list(by_name)
+            raise ParseError(
+                f"<{node.tag}> has no attribute {str(key)!r}{did_you_mean(str(key), known)}",
+                source, node.sourceline)
+        try:
+            element._set_attribute(attribute, str(text))  # pyright: ignore[reportPrivateUsage]
+        except MjcfError as error:
+            raise ParseError(str(error), source, node.sourceline) from None
+        except Rejected as rejected:  # pragma: no cover - _set_attribute converts these
+            raise ParseError(rejected.expected, source, node.sourceline) from None
+
+
+def _add_children(parent: Element, node: etree._Element, context: _Context,
+                  source: str | None) -> None:
+    children_specs = parent.spec.children
+    for child_node in node:
+        tag = child_node.tag
+        if not isinstance(tag, str):
+            continue  # comments and processing instructions
+        if tag == INCLUDE:
+            _expand_include(parent, child_node, context, source)
+            continue
+        child_spec = children_specs.get(tag)
+        if child_spec is None:
+            legal = list(children_specs)
+            raise ParseError(
+                f"<{tag}> is not a legal child of <{parent.tag}> ({parent.path})"
+                f"{did_you_mean(tag, legal)}", source, child_node.sourceline)
+        existing = parent._single_child(tag) if child_spec.single else None  # pyright: ignore[reportPrivateUsage]
+        if existing is not None:
+            child = existing  # a repeated section: merge into the first
+        else:
+            child = parent._add_child(tag, None, {})  # pyright: ignore[reportPrivateUsage]
+        _set_attributes(child, child_node, source)
+        _add_children(child, child_node, context, source)
+
+
+def _expand_include(parent: Element, node: etree._Element, context: _Context,
+                    source: str | None) -> None:
+    file = node.get("file")
+    if not file:
+        raise ParseError("<include> needs a file attribute", source, node.sourceline)
+    base = context.base_dir or os.getcwd()
+    path = os.path.abspath(os.path.join(base, file))
+    if path in context.included:
+        chain = " -> ".join([*context.included, path])
+        raise ParseError(f"{file!r} is included twice (a file may be included once): {chain}",
+                         source, node.sourceline)
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as error:
+        raise ParseError(f"cannot read included file {file!r} ({path}): {error.strerror}",
+                         source, node.sourceline) from None
+    context.included.append(path)
+    included_root = _read_xml(data, path)
+    _add_children(parent, included_root, context, path)

@@ -1,0 +1,369 @@
+"""Facts loading and the normalisation passes from the grammar's IR to the renderer's."""
+
+from __future__ import annotations
+
+import copy
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from codegen import ir, passes
+from codegen.facts import AttributeOverride, Facts, FactsError, load_facts, parse_facts
+from codegen.grammar import parse_grammar
+from codegen.passes import normalize
+
+REFERENCE = Path("/work/shared/reference/mjcf.schema")
+
+GRAMMAR = """\
+    enum jt { hinge = 1
+      slide = 2 }
+    enum unused { x = 1 }
+    element mujoco {
+      model : ref<model>
+      child default R
+      child body R
+      child asset *
+    }
+    element asset {
+      child model *
+    }
+    element model {
+      name : id<model>
+    }
+    element default {
+      class : id<default>
+      child default R
+      child joint ?
+      child default_equality ?
+    }
+    element body : mjsBody {
+      name : id<body>
+      child body R
+      child joint *
+    }
+    element worldbody (alias=body) {
+      child body *
+    }
+    element joint : mjsJoint {
+      name  : id<joint>
+      class : ref<default>
+      type  : enum<jt> = hinge
+      body  : ref<body> (nodefault)
+      axis  : double[3] (required)   # the axis
+      exclusive type axis
+    }
+    element default_equality (xml=equality) {
+      active : bool
+    }
+    element cycle_a {
+      child cycle_b ?
+    }
+    element cycle_b {
+      child cycle_a ?
+    }
+    """
+
+FACTS = Facts(
+    root_children={"body": "worldbody"},
+    single={"mujoco": ["default", "worldbody", "asset"]},
+    attributes=[AttributeOverride("mujoco", "model", kind="string")],
+)
+
+
+def grammar(text: str = GRAMMAR) -> ir.Schema:
+    return parse_grammar(textwrap.dedent(text), "t.schema")
+
+
+def normalized(facts: Facts = FACTS, text: str = GRAMMAR) -> ir.Schema:
+    return normalize(grammar(text), facts)
+
+
+# ------------------------------------------------------------------------------- facts
+
+
+def test_repository_facts_load() -> None:
+    facts = load_facts()
+    assert facts.root_children["body"] == "worldbody"
+    assert "worldbody" in facts.single["mujoco"]
+    model = next(o for o in facts.attributes if (o.element, o.name) == ("mujoco", "model"))
+    assert model.kind == "string"
+
+
+def test_facts_tables_and_unknown_tables_are_kept() -> None:
+    facts = parse_facts(textwrap.dedent("""\
+        [root_children]
+        body = "worldbody"
+
+        [single]
+        mujoco = ["option"]
+
+        [[attribute]]
+        element = "joint"
+        name = "axis"
+        arity = [3, 3]
+        required = false
+        reason = "because"
+
+        [[attribute_type]]
+        kind = "real"
+        python = "float"
+        """))
+    assert facts.root_children == {"body": "worldbody"}
+    assert facts.single == {"mujoco": ["option"]}
+    assert facts.attributes == [AttributeOverride("joint", "axis", arity=(3, 3),
+                                                  required=False, reason="because")]
+    assert facts.extra == {"attribute_type": [{"kind": "real", "python": "float"}]}
+
+
+def test_empty_facts() -> None:
+    assert parse_facts("") == Facts()
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("[root_children\n", "f.toml: Expected ']' at the end of a table declaration"),
+    ("root_children = 3\n", "f.toml: [root_children]: expected a table"),
+    ("[root_children]\nbody = 1\n", "f.toml: [root_children] body: expected a string, got 1"),
+    ("[single]\nmujoco = \"option\"\n", "f.toml: [single] mujoco: expected a list of strings"),
+    ("attribute = 1\n", "f.toml: 'attribute' must be an array of tables ([[attribute]])"),
+    ("[[attribute]]\nelement = \"a\"\n", "f.toml: [[attribute]] #1: missing key 'name'"),
+    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\nkin = \"string\"\n",
+     "f.toml: [[attribute]] #1: unknown key 'kin'"),
+    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\nkind = \"text\"\n",
+     ("f.toml: [[attribute]] #1 kind: 'text' is not one of string, file, chars, bool, int, "
+     "real, keyword, flags, id, ref")),
+    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\narity = [1]\n",
+     "f.toml: [[attribute]] #1 arity: expected [lo, hi] integers, got [1]"),
+    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\nrequired = 1\n",
+     "f.toml: [[attribute]] #1 required: expected true or false, got 1"),
+])
+def test_malformed_facts(text: str, message: str) -> None:
+    with pytest.raises(FactsError) as info:
+        parse_facts(text, "f.toml")
+    assert str(info.value).startswith(message)
+
+
+# ---------------------------------------------------------------------- root children
+
+
+def test_root_body_child_becomes_worldbody() -> None:
+    schema = normalized()
+    root = schema.elements["mujoco"]
+    assert [c.element for c in root.children] == ["default", "worldbody", "asset"]
+    assert root.children[1] == ir.ChildDef("worldbody", "R", single=True)
+    assert schema.elements["worldbody"].alias == "body"
+    assert schema.elements["worldbody"].children == [ir.ChildDef("body", "*", single=False)]
+
+
+def test_root_children_errors() -> None:
+    with pytest.raises(ValueError, match="root 'mujoco' has no child 'nope'"):
+        normalized(Facts(root_children={"nope": "worldbody"}))
+    with pytest.raises(ValueError, match="no row 'world'"):
+        normalized(Facts(root_children={"body": "world"}))
+
+
+# ----------------------------------------------------------------------------- single
+
+
+def test_single_names_child_tags() -> None:
+    root = normalized().elements["mujoco"]
+    assert all(c.single for c in root.children)
+    plain = normalized(Facts(root_children={"body": "worldbody"})).elements["mujoco"]
+    assert [c.single for c in plain.children] == [False, False, False]
+
+
+def test_single_errors() -> None:
+    with pytest.raises(ValueError, match="row 'mujoco' has no child tag 'option'"):
+        normalized(Facts(single={"mujoco": ["option"]}))
+    with pytest.raises(ValueError, match="single: no row 'nope'"):
+        normalized(Facts(single={"nope": ["a"]}))
+
+
+# -------------------------------------------------------------------------- overrides
+
+
+def test_override_changes_kind_and_forgets_namespace() -> None:
+    model = normalized().elements["mujoco"].attribute("model")
+    assert (model.kind, model.namespace) == ("string", None)
+
+
+def test_override_on_primary_reaches_its_projection() -> None:
+    facts = Facts(attributes=[AttributeOverride("joint", "type", default="slide", doc="d")])
+    schema = normalized(facts)
+    for row in ("joint", "default_joint"):
+        assert (schema.elements[row].attribute("type").default,
+                schema.elements[row].attribute("type").doc) == ("slide", "d")
+
+
+def test_override_may_name_a_projection_row() -> None:
+    facts = Facts(attributes=[AttributeOverride("default_joint", "axis", arity=(1, 3))])
+    schema = normalized(facts)
+    assert schema.elements["default_joint"].attribute("axis").arity == (1, 3)
+    assert schema.elements["joint"].attribute("axis").arity == (3, 3)
+
+
+def test_override_to_keyword_needs_an_enum() -> None:
+    facts = Facts(attributes=[AttributeOverride("joint", "body", kind="keyword", enum="jt")])
+    body = normalized(facts).elements["joint"].attribute("body")
+    assert (body.kind, body.enum, body.namespace) == ("keyword", "jt", None)
+    with pytest.raises(ValueError, match=r"joint@body: keyword attribute needs a declared enum"):
+        normalized(Facts(attributes=[AttributeOverride("joint", "body", kind="keyword")]))
+
+
+@pytest.mark.parametrize(("override", "message"), [
+    (AttributeOverride("joint", "nope", kind="string"),
+     "attribute override joint@nope: row 'joint' has no such attribute"),
+    (AttributeOverride("nope", "x", kind="string"), "attribute override nope@x: no row 'nope'"),
+    (AttributeOverride("joint", "type", kind="real"),
+     "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
+    (AttributeOverride("joint", "type", kind="chars"),
+     "attribute override joint@type: chars attribute needs a bounded arity"),
+    (AttributeOverride("joint", "type", kind="ref"),
+     "attribute override joint@type: ref attribute needs a namespace"),
+])
+def test_override_errors(override: AttributeOverride, message: str) -> None:
+    with pytest.raises(ValueError) as info:
+        normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
+    assert str(info.value) == message
+
+
+def test_override_to_int_sets_dtype() -> None:
+    facts = Facts(attributes=[AttributeOverride("joint", "type", kind="int")])
+    joint_type = normalized(facts).elements["joint"].attribute("type")
+    assert (joint_type.kind, joint_type.dtype, joint_type.enum) == ("int", "int", None)
+
+
+# ------------------------------------------------------------------ default projections
+
+
+def test_default_projection_rows() -> None:
+    schema = normalized()
+    row = schema.elements["default_joint"]
+    assert (row.tag, row.class_name, row.projection_of, row.struct) == (
+        "joint", "DefaultJoint", "joint", "mjsJoint")
+    assert [a.name for a in row.attributes] == ["type", "axis"]  # no name, class, nodefault
+    axis = row.attribute("axis")
+    assert (axis.required, axis.arity, axis.doc) == (False, (3, 3), "the axis")
+    assert schema.elements["joint"].attribute("axis").required
+    assert row.children == [] and row.constraints == []
+    assert row.attribute("type") is not schema.elements["joint"].attribute("type")
+
+
+def test_default_row_children() -> None:
+    schema = normalized()
+    assert schema.elements["default"].children == [
+        ir.ChildDef("default", "R", single=False),
+        ir.ChildDef("default_joint", "?", single=True),
+        ir.ChildDef("default_equality", "?", single=True),
+    ]
+    assert schema.elements["default_equality"].projection_of is None
+    assert schema.elements["default_equality"].tag == "equality"
+
+
+def test_projection_collision_is_an_error() -> None:
+    text = GRAMMAR.replace("child default_equality ?", "child default_equality ?\n"
+                                                      "      child default_joint ?")
+    text += "    element default_joint (xml=joint) { }\n"
+    with pytest.raises(ValueError, match="default projection of 'joint' collides with "
+                                         "declared row 'default_joint'"):
+        normalized(text=text)
+
+
+# ------------------------------------------------------------------------------ pruning
+
+
+def test_unreachable_rows_and_unused_enums_are_dropped() -> None:
+    schema = normalized()
+    assert "cycle_a" not in schema.elements and "cycle_b" not in schema.elements
+    assert set(schema.enums) == {"jt"}
+    # without the root route, the worldbody alias row is reached by nothing
+    assert "worldbody" not in normalized(Facts()).elements
+
+
+def test_normalize_leaves_its_input_alone_and_is_idempotent() -> None:
+    schema = grammar()
+    before = copy.deepcopy(schema)
+    once = normalize(schema, FACTS)
+    assert schema == before
+    assert normalize(once, FACTS) == once
+
+
+# ------------------------------------------------------------------------------- checks
+
+
+def check_message(schema: ir.Schema) -> str:
+    with pytest.raises(ValueError) as info:
+        passes.check(schema)
+    return str(info.value)
+
+
+def test_check_passes_a_clean_schema() -> None:
+    passes.check(normalized())
+
+
+def test_check_class_names_unique() -> None:
+    schema = normalized()
+    schema.elements["joint"].class_name = "Body"
+    assert check_message(schema) == (
+        "1 schema problem(s):\n  class name 'Body' is shared by rows 'body', 'joint'")
+
+
+def test_check_child_tags_unique() -> None:
+    schema = normalized()
+    schema.elements["default_joint"].tag = "default"
+    assert check_message(schema) == (
+        "1 schema problem(s):\n  row 'default': children 'default' and 'default_joint' "
+        "share tag 'default'")
+
+
+def test_check_attribute_and_child_python_names() -> None:
+    schema = normalized()
+    schema.elements["body"].attributes.append(ir.AttributeDef("joint", "joint", "int", "int"))
+    assert check_message(schema) == (
+        "1 schema problem(s):\n  row 'body': attribute 'joint' and child tag 'joint' share the "
+        "Python name 'joint'")
+
+
+def test_check_reserved_names() -> None:
+    schema = normalized()
+    schema.elements["body"].attributes.append(ir.AttributeDef("path", "path", "string"))
+    schema.elements["model"].tag = "find"
+    assert check_message(schema) == (
+        "2 schema problem(s):\n"
+        "  row 'asset': child name 'find' is reserved by the runtime API\n"
+        "  row 'body': attribute name 'path' is reserved by the runtime API")
+
+
+def test_check_dangling_references() -> None:
+    schema = normalized()
+    schema.elements["body"].children.append(ir.ChildDef("ghost", "*", single=False))
+    schema.elements["joint"].attribute("type").enum = "gone"
+    assert check_message(schema) == (
+        "2 schema problem(s):\n"
+        "  row 'body': child names missing row 'ghost'\n"
+        "  row 'joint': attribute 'type' uses missing enum 'gone'")
+
+
+# -------------------------------------------------------------------- the real grammar
+
+
+@pytest.mark.skipif(not REFERENCE.is_file(), reason="MuJoCo's mjcf.schema is not available")
+def test_reference_grammar_normalizes() -> None:
+    mujoco = pytest.importorskip("mujoco")
+    constants = {k: int(getattr(mujoco, k)) for k in
+                 ("mjNREF", "mjNIMP", "mjNDYN", "mjNGAIN", "mjNBIAS", "mjNPOLY")}
+    schema = parse_grammar(REFERENCE.read_text(encoding="utf-8"), str(REFERENCE), constants)
+    out = normalize(schema, load_facts())
+    assert len(out.elements) > 150
+    joint_type = out.elements["joint"].attribute("type")
+    assert (joint_type.kind, joint_type.enum, joint_type.default) == (
+        "keyword", "jointtype", "hinge")
+    assert out.elements["geom"].attribute("size").arity == (1, 3)
+    default_joint = {a.name for a in out.elements["default_joint"].attributes}
+    assert "name" not in default_joint and "class" not in default_joint
+    assert "target" in {a.name for a in out.elements["camera"].attributes}
+    assert "target" not in {a.name for a in out.elements["default_camera"].attributes}
+    assert out.elements["mujoco"].attribute("model").kind == "string"
+    assert any(c.element == "worldbody" and c.single for c in out.elements["mujoco"].children)
+    assert out.elements["default_equality"].projection_of is None
+    assert out.elements["default_geom"].class_name == "DefaultGeom"
