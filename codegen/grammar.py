@@ -205,7 +205,7 @@ _VALUE_NAMES = {"ident": "a name", "string": "a quoted string", "number": "a num
 
 
 class _Parser:
-    """Recursive descent over the token stream; one member per line, like MuJoCo's reader."""
+    """Recursive descent over the token stream; members are one per line."""
 
     def __init__(self, text: str, path: str, constants: Mapping[str, int]) -> None:
         self._path = path

@@ -10,6 +10,8 @@ from __future__ import annotations
 import copy
 from collections.abc import Iterable, Mapping
 
+from typing import cast
+
 from codegen import ir, naming
 from codegen.facts import AttributeOverride, Facts
 
@@ -30,6 +32,7 @@ def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     project_defaults(out)
     apply_overrides(out, on_projections)
     mark_single(out, facts.single)
+    apply_directories(out, directories_of(facts))
     drop_unreachable(out)
     drop_unused_enums(out)
     check(out)
@@ -94,6 +97,30 @@ def project_defaults(schema: ir.Schema) -> None:
         if not element.startswith(PROJECTION_PREFIX):
             element = _add_projection(schema, element)
         default.children[index] = ir.ChildDef(element, child.card, single=True)
+
+
+def directories_of(facts: Facts) -> dict[str, list[str]]:
+    """The ``[directories]`` table: ``"row@attribute"`` -> compiler folder attributes."""
+    table = facts.extra.get("directories", {})
+    if not isinstance(table, dict):
+        raise ValueError("schema/facts.toml: [directories] must be a table")
+    result: dict[str, list[str]] = {}
+    for key, value in cast(dict[str, object], table).items():
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in cast(list[object], value)):
+            raise ValueError(f"schema/facts.toml: [directories] {key!r} must be a list of names")
+        result[key] = list(cast(list[str], value))
+    return result
+
+
+def apply_directories(schema: ir.Schema, directories: Mapping[str, list[str]]) -> None:
+    """Tell file attributes which <compiler> attributes name their folder."""
+    for key, folders in directories.items():
+        row_name, _, attribute_name = key.partition("@")
+        row = _row(schema, row_name, f"[directories] {key}")
+        attribute = row.attribute(attribute_name)
+        if attribute.kind != "file":
+            raise ValueError(f"schema/facts.toml: [directories] {key} is not a file attribute")
+        attribute.directory = list(folders)
 
 
 def drop_unreachable(schema: ir.Schema) -> None:

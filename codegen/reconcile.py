@@ -30,6 +30,9 @@ from codegen.wheel import AtVal, Reference, Wheel, WheelRow, parse_at_val
 
 # The longest tag path an anchor spells before the attribute: ``compiler-lengthrange-mode``.
 _ANCHOR_DEPTH = 4
+# The doc of an attribute added as a string for want of a type: it stays in the schema (and
+# in the generated docstring) and every sync reports it until facts.toml types it.
+UNTYPED_DOC = "UNTYPED: "
 
 # --------------------------------------------------------------------------------- report
 
@@ -39,20 +42,20 @@ class Report:
     """What ``sync`` changed, in readable lines (``+`` added, ``-`` removed, ``~`` changed)."""
 
     version: tuple[str, str] | None = None  # (before, after) when it changed
-    added_rows: list[str] = field(default_factory=lambda: [])
-    removed_rows: list[str] = field(default_factory=lambda: [])
-    changed_rows: list[str] = field(default_factory=lambda: [])
-    added_attributes: list[str] = field(default_factory=lambda: [])
-    removed_attributes: list[str] = field(default_factory=lambda: [])
-    changed_attributes: list[str] = field(default_factory=lambda: [])
-    added_children: list[str] = field(default_factory=lambda: [])
-    removed_children: list[str] = field(default_factory=lambda: [])
-    changed_children: list[str] = field(default_factory=lambda: [])
-    added_enums: list[str] = field(default_factory=lambda: [])
-    removed_enums: list[str] = field(default_factory=lambda: [])
-    changed_enums: list[str] = field(default_factory=lambda: [])
-    untyped: list[str] = field(default_factory=lambda: [])  # added as strings: fix by hand
-    notes: list[str] = field(default_factory=lambda: [])  # inferences and oddities to review
+    added_rows: list[str] = field(default_factory=list[str])
+    removed_rows: list[str] = field(default_factory=list[str])
+    changed_rows: list[str] = field(default_factory=list[str])
+    added_attributes: list[str] = field(default_factory=list[str])
+    removed_attributes: list[str] = field(default_factory=list[str])
+    changed_attributes: list[str] = field(default_factory=list[str])
+    added_children: list[str] = field(default_factory=list[str])
+    removed_children: list[str] = field(default_factory=list[str])
+    changed_children: list[str] = field(default_factory=list[str])
+    added_enums: list[str] = field(default_factory=list[str])
+    removed_enums: list[str] = field(default_factory=list[str])
+    changed_enums: list[str] = field(default_factory=list[str])
+    untyped: list[str] = field(default_factory=list[str])  # added as strings: fix by hand
+    notes: list[str] = field(default_factory=list[str])  # inferences and oddities to review
     anchors: int = 0  # row and attribute anchors set or changed
 
     def _sections(self) -> list[tuple[str, str, list[str]]]:
@@ -123,30 +126,40 @@ class AttributeType:
 
 
 _TYPE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeType))
+
+
+class AttributeTypeError(ValueError):
+    """A malformed ``[[attribute_type]]`` entry."""
 _DTYPES: dict[str, ir.DType] = {"double": "double", "float": "float", "int": "int"}
 
 
 def attribute_types(facts: Facts) -> list[AttributeType]:
     """The ``[[attribute_type]]`` entries (kept by ``Facts`` as an uninterpreted table)."""
-    raw = facts.extra.get("attribute_type", [])
-    if not isinstance(raw, list):
-        raise ValueError("facts: 'attribute_type' must be an array of tables")
+    entries = _as_list(facts.extra.get("attribute_type", []))
+    if entries is None:
+        raise AttributeTypeError("facts: 'attribute_type' must be an array of tables")
     return [_attribute_type(e, f"facts: [[attribute_type]] #{i + 1}")
-            for i, e in enumerate(_objects(raw))]
+            for i, e in enumerate(entries)]
 
 
-def _objects(raw: object) -> list[object]:
-    return list(cast("list[object]", raw)) if isinstance(raw, list) else []
+def _as_list(raw: object) -> list[object] | None:
+    return list(cast("list[object]", raw)) if isinstance(raw, list) else None
+
+
+def _as_table(raw: object) -> dict[str, object] | None:
+    if not isinstance(raw, dict):
+        return None
+    return {str(k): v for k, v in cast("dict[object, object]", raw).items()}
 
 
 def _attribute_type(raw: object, where: str) -> AttributeType:
-    if not isinstance(raw, dict):
-        raise ValueError(f"{where}: expected a table")
-    entry = {str(k): v for k, v in _items(raw)}
+    entry = _as_table(raw)
+    if entry is None:
+        raise AttributeTypeError(f"{where}: expected a table")
     unknown = sorted(set(entry) - _TYPE_KEYS)
     if unknown or not {"element", "name", "kind"} <= set(entry):
-        raise ValueError(f"{where}: keys must be among {sorted(_TYPE_KEYS)} and include "
-                         f"element, name, kind; got {sorted(entry)}")
+        raise AttributeTypeError(f"{where}: keys must be among {sorted(_TYPE_KEYS)} and "
+                                 f"include element, name, kind; got {sorted(entry)}")
     kinds: dict[str, ir.AttrKind] = {k: k for k in ir.ATTR_KINDS}
     return AttributeType(
         element=_text(entry["element"], where), name=_text(entry["name"], where),
@@ -161,13 +174,9 @@ def _attribute_type(raw: object, where: str) -> AttributeType:
     )
 
 
-def _items(raw: object) -> list[tuple[object, object]]:
-    return list(cast("dict[object, object]", raw).items()) if isinstance(raw, dict) else []
-
-
 def _text(value: object, where: str) -> str:
     if not isinstance(value, str):
-        raise ValueError(f"{where}: expected a string, got {value!r}")
+        raise AttributeTypeError(f"{where}: expected a string, got {value!r}")
     return value
 
 
@@ -178,15 +187,15 @@ def _opt_text(value: object, where: str) -> str | None:
 def _choice(value: object, choices: Mapping[str, object], where: str) -> str:
     text = _text(value, where)
     if text not in choices:
-        raise ValueError(f"{where}: {text!r} is not one of {', '.join(choices)}")
+        raise AttributeTypeError(f"{where}: {text!r} is not one of {', '.join(choices)}")
     return text
 
 
 def _toml_arity(value: object, where: str) -> tuple[int, int | None]:
     """``[n, m]`` bounds, or ``[n]`` for n or more values."""
-    items = _objects(value)
+    items = _as_list(value) or []
     if not 1 <= len(items) <= 2 or not all(type(v) is int for v in items):
-        raise ValueError(f"{where}: arity must be [lo, hi] or [lo], got {value!r}")
+        raise AttributeTypeError(f"{where}: arity must be [lo, hi] or [lo], got {value!r}")
     bounds = [v for v in items if isinstance(v, int)]
     return (bounds[0], bounds[1] if len(bounds) == 2 else None)
 
@@ -196,7 +205,7 @@ def _toml_arity(value: object, where: str) -> tuple[int, int | None]:
 
 def describe(attr: ir.AttributeDef) -> str:
     """``real double[1..3] = "1"``-style text for reports."""
-    text = attr.kind
+    text: str = attr.kind
     if attr.kind in ("keyword", "flags"):
         text += f"<{attr.enum}>"
     elif attr.kind in ("id", "ref"):
@@ -243,6 +252,7 @@ class _Sync:
         self.matches: dict[str, WheelRow] = {}  # IR row -> the printSchema row it stands for
         self.added_edges: dict[str, list[ir.ChildDef]] = {}  # per row, edges sync added
         self.touched: set[str] = set()
+        self.new_untyped: set[tuple[str, str]] = set()  # (row, attribute) added as strings
         self._suffix_cache: dict[str, set[tuple[str, ...]]] = {}
         self._enum_users = self._used_enums()
 
@@ -260,6 +270,7 @@ class _Sync:
         for row in self._alias_rows():
             self._sync_documented_attributes(row)
         self._apply_attribute_types()
+        self._report_committed_untyped()
         self._check_enums()
         self._drop_unused_enums()
         self._set_anchors()
@@ -278,7 +289,7 @@ class _Sync:
         self.matches[row.name] = wrow
         for edge in row.children:
             child = self.rows[edge.element]
-            wchild = _wheel_child(wrow, child.tag)
+            wchild = wrow.child(child.tag)
             if wchild is not None:
                 self._match(child, wchild)
             elif _recursive(wrow, child):
@@ -398,13 +409,15 @@ class _Sync:
             wrow = self.matches[row.alias or ""]
             tags = {self.rows[c.element].tag for c in row.children}
             for edge in self.added_edges.get(row.alias or "", []):
-                if self.rows[edge.element].tag not in tags:
-                    row.children.append(dataclasses.replace(edge))
+                child = self.rows[edge.element]
+                if child.tag not in tags:
+                    row.children.append(ir.ChildDef(child.name, edge.card,
+                                                    self._single(row, child, edge.card)))
                     self.report.added_children.append(f"{row.name}/{edge.element} {edge.card}")
                     self.touched.add(row.name)
             for edge in list(row.children):
                 child = self.rows[edge.element]
-                wchild = _wheel_child(wrow, child.tag)
+                wchild = wrow.child(child.tag)
                 if wchild is not None:
                     self._set_card(row, edge, wchild.card)
                 elif not (_recursive(wrow, child) or child.alias is not None):
@@ -427,7 +440,7 @@ class _Sync:
         """The longest anchor prefix of ``row`` that documents attributes, and their names."""
         children = {self.rows[c.element].tag for c in row.children}
         best: tuple[str | None, set[str]] = (None, set())
-        for suffix in sorted(self._suffixes(row.name), key=len):
+        for suffix in sorted(self._suffixes(row.name), key=lambda s: (len(s), s)):
             prefix = "-".join(suffix)
             names = {a[len(prefix) + 1:] for a in self.ref.anchors
                      if a.startswith(prefix + "-") and "-" not in a[len(prefix) + 1:]}
@@ -507,18 +520,19 @@ class _Sync:
         attr = self._from_at_val(row, name, parsed) if parsed is not None else None
         if attr is not None:
             return attr, anchor or ""
-        return self._untyped(row, name, anchor, text), "UNTYPED"
-
-    def _untyped(self, row: ir.ElementDef, name: str, anchor: str | None,
-                 text: str | None) -> ir.AttributeDef:
         if anchor is None:
             why = "no XMLreference.rst anchor"
         elif text is None:
             why = f"{anchor} states no type"
-        else:
+        elif parsed is None:
             why = f"{anchor} type {text!r} is not understood"
+        else:
+            why = f"{anchor} says {text!r}, but {name} is an identifier elsewhere"
         self.report.untyped.append(f"{row.name}@{name}: {why}")
-        return ir.AttributeDef(name=name, py_name=naming.py_name(name), kind="string")
+        self.new_untyped.add((row.name, name))
+        doc = f"{UNTYPED_DOC}{why}; give its type in schema/facts.toml [[attribute_type]]"
+        return ir.AttributeDef(name=name, py_name=naming.py_name(name), kind="string",
+                               doc=doc), "UNTYPED"
 
     def _copied(self, row: ir.ElementDef, name: str) -> tuple[ir.AttributeDef, str] | None:
         """Default-class rows take the primary's definition, or the one their family shares."""
@@ -614,8 +628,8 @@ class _Sync:
         named = [f for f in found if name.lower() in f[0].lower()]
         chosen = named if len(named) == 1 else found
         if len(chosen) == 1:
-            ctype, consts = chosen[0]
-            return ctype, [(k, consts[k]) for k in keywords]
+            ctype, by_keyword = chosen[0]
+            return ctype, [(k, by_keyword[k]) for k in keywords]
         return None, [(k, str(i)) for i, k in enumerate(keywords)]
 
     def _used_enums(self) -> set[str]:
@@ -655,6 +669,9 @@ class _Sync:
                                          "attribute; the entry is stale")
                 continue
             typed = self._from_hand(hand)
+            if attr.doc.startswith(UNTYPED_DOC):
+                attr.doc = ""
+                self.touched.add(element)
             if _type_of(attr)[:6] != _type_of(typed)[:6] or attr.required != typed.required:
                 before = describe(attr)
                 for key in ("kind", "dtype", "arity", "enum", "namespace", "default", "required"):
@@ -662,6 +679,15 @@ class _Sync:
                 self.report.changed_attributes.append(
                     f"{element}@{name}: {before} -> {describe(attr)}  [facts.toml]")
                 self.touched.add(element)
+
+    def _report_committed_untyped(self) -> None:
+        """Attributes an earlier sync added as strings stay loud until facts.toml types them."""
+        for row in sorted(self.rows.values(), key=lambda r: r.name):
+            for attr in row.attributes:
+                if attr.doc.startswith(UNTYPED_DOC) and (row.name, attr.name) not in \
+                        self.new_untyped:
+                    self.report.untyped.append(f"{row.name}@{attr.name}: still a string "
+                                               f"({attr.doc.removeprefix(UNTYPED_DOC)})")
 
     # -- anchors
 
@@ -722,10 +748,6 @@ class _Sync:
 
 
 # -------------------------------------------------------------------------------- helpers
-
-
-def _wheel_child(wrow: WheelRow, tag: str) -> WheelRow | None:
-    return wrow.child(tag)
 
 
 def _recursive(wrow: WheelRow, child: ir.ElementDef) -> bool:

@@ -71,8 +71,8 @@ class _RowBuilder:
     indent: int
     tag: str
     card: ir.Cardinality
-    attributes: list[str] = field(default_factory=lambda: [])
-    children: list[_RowBuilder] = field(default_factory=lambda: [])
+    attributes: list[str]
+    children: list[_RowBuilder]
 
     def freeze(self) -> WheelRow:
         return WheelRow(self.tag, self.card, tuple(self.attributes),
@@ -94,7 +94,7 @@ def parse_print_schema(text: str) -> WheelRow:
             stack[-1].attributes.extend(line.split())
             continue
         row = _RowBuilder(len(match["indent"]), match["tag"], _CARDS[match["card"]],
-                          match["rest"].split())
+                          match["rest"].split(), [])
         while stack and stack[-1].indent >= row.indent:
             stack.pop()
         if stack:
@@ -350,10 +350,12 @@ class Wheel:
 
     version: str
     schema: WheelRow
-    enums: Mapping[str, Mapping[str, int]] = field(default_factory=lambda: {})
+    enums: Mapping[str, Mapping[str, int]] = field(
+        default_factory=dict[str, Mapping[str, int]])
     reference: Reference = field(default_factory=lambda: Reference((), {}))
     # mjs struct -> field -> C type ("float", "double", "int", "mjtGeom", ...)
-    structs: Mapping[str, Mapping[str, str]] = field(default_factory=lambda: {})
+    structs: Mapping[str, Mapping[str, str]] = field(
+        default_factory=dict[str, Mapping[str, str]])
 
 
 def _module(name: str) -> ModuleType:
@@ -490,3 +492,10 @@ def spec_defaults(structs: Mapping[str, Mapping[str, str]] | None = None,
         out[kind] = {k: v for k, v in values.items() if v is not None}
     del spec  # the default objects are views into the spec: keep it alive until here
     return out
+
+
+def read_constants() -> dict[str, int]:
+    """The integer ``mjN*`` size constants of the ``mujoco`` module (``mjNREF``: 2, ...)."""
+    module = _module("mujoco")
+    values = {name: _get(module, name) for name in dir(module) if name.startswith("mjN")}
+    return {k: v for k, v in values.items() if isinstance(v, int) and not isinstance(v, bool)}

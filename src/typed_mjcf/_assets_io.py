@@ -8,6 +8,7 @@ for a folder uses those names and drops the compiler's folder attributes.
 
 from __future__ import annotations
 
+import io
 import os
 import tempfile
 from dataclasses import dataclass, field
@@ -70,8 +71,14 @@ def _unique(name: str, contents: bytes, files: dict[str, bytes]) -> str:
 
 def collect_assets(model: ModelRoot) -> CollectedAssets:
     """Read every file the model uses and give each a flat name."""
-    folders = _compiler_folders(model)
     collected = CollectedAssets()
+    _collect(model, collected, ())
+    return collected
+
+
+def _collect(model: ModelRoot, collected: CollectedAssets, models: tuple[str, ...]) -> None:
+    """Add ``model``'s files to ``collected``; ``models`` are the MJCF files being read."""
+    folders = _compiler_folders(model)
     directories: set[str] = set()
     for element in model.iter_elements():
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
@@ -98,11 +105,48 @@ def collect_assets(model: ModelRoot) -> CollectedAssets:
                         f"{element.path}: {attribute.py_name}={value!r}: cannot read {path}: "
                         f"{error.strerror}") from None
                 name = os.path.basename(path)
+                if _is_model_file(name, contents):
+                    contents = _model_file_contents(element, attribute, path, collected,
+                                                    (*models, path))
             name = _unique(name, contents, collected.files)
             collected.files[name] = contents
             collected.names[(id(element), attribute.name)] = name
     collected.directory_attributes = frozenset(directories)
-    return collected
+
+
+def _is_model_file(name: str, contents: bytes) -> bool:
+    """Whether a file is an MJCF model (an ``<asset><model>``, say)."""
+    if not name.lower().endswith(".xml"):
+        return False
+    from lxml import etree
+
+    from typed_mjcf._parse import root_class
+
+    try:
+        for _, node in etree.iterparse(io.BytesIO(contents), events=("start",),
+                                       resolve_entities=False, no_network=True, load_dtd=False):
+            return node.tag == root_class()._SPEC.tag  # pyright: ignore[reportPrivateUsage]
+    except etree.XMLSyntaxError:
+        return False
+    return False
+
+
+def _model_file_contents(element: Element, attribute: AttributeSpec, path: str,
+                         collected: CollectedAssets, models: tuple[str, ...]) -> bytes:
+    """An MJCF file the model uses, rewritten to find its own files among ``collected``.
+
+    MuJoCo resolves the files of such a model against its own folder and ``<compiler>``;
+    in a virtual file system they get flat names like the main model's.
+    """
+    from typed_mjcf._parse import parse_path
+
+    if path in models[:-1]:
+        raise InvalidValueError(f"{element.path}: {attribute.py_name}: {path} uses itself "
+                                f"(through {' -> '.join(models)})")
+    submodel = parse_path(path)
+    sub_collected = CollectedAssets(files=collected.files)
+    _collect(submodel, sub_collected, models)
+    return xml_with_assets(submodel, sub_collected).encode("utf-8")
 
 
 def _element_stem(element: Element) -> str:

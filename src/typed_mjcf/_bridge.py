@@ -5,12 +5,16 @@ from __future__ import annotations
 import re
 
 import mujoco
+from lxml import etree
 
 from typed_mjcf._assets_io import collect_assets, xml_with_assets
+from typed_mjcf._export import iter_written
 from typed_mjcf._root import ModelRoot
 from typed_mjcf.errors import CompileError
 
-_ELEMENT_LINE = re.compile(r"Element '(\w+)', line (\d+)")
+# MuJoCo ends its messages with the element's line: "Element 'include', line 7" (XML
+# errors) or "Element name 'arm', id 1, line 22" / "Element id 3, line 9" (compile errors).
+_ELEMENT_LINE = re.compile(r"^Element\b.*\bline (\d+)", re.MULTILINE)
 
 
 def _mujoco_error(model: ModelRoot, error: Exception, xml: str) -> CompileError:
@@ -18,24 +22,25 @@ def _mujoco_error(model: ModelRoot, error: Exception, xml: str) -> CompileError:
     message = str(error).strip()
     match = _ELEMENT_LINE.search(message)
     if match:
-        line = int(match.group(2))
-        path = _path_at_line(model, xml, line)
+        path = _path_at_line(model, xml, int(match.group(1)))
         if path:
             message += f"\n(the element is {path})"
     return CompileError(f"MuJoCo could not compile the model: {message}")
 
 
 def _path_at_line(model: ModelRoot, xml: str, line: int) -> str | None:
-    """The element written on ``line`` of ``xml`` (the export is one element per line)."""
-    elements = list(model.iter_elements())
-    # Pretty-printed export writes each element's start tag on its own line, in document order;
-    # skipped empty sections never precede a line MuJoCo reports, so count start tags.
-    start_lines = [i + 1 for i, text in enumerate(xml.splitlines())
-                   if text.lstrip().startswith("<") and not text.lstrip().startswith("</")]
-    if line in start_lines:
-        index = start_lines.index(line)
-        if index < len(elements):
-            return elements[index].path
+    """The path of the element whose start tag is on ``line`` of ``xml``, the model's export.
+
+    The export is read back to find each element's line, and its elements are paired in
+    document order with the ones the writer wrote (empty once-only sections are left out).
+    """
+    try:
+        nodes = etree.fromstring(xml.encode("utf-8")).iter()
+    except etree.XMLSyntaxError:
+        return None
+    for node, element in zip(nodes, iter_written(model), strict=False):
+        if node.sourceline == line:
+            return element.path
     return None
 
 

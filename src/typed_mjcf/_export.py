@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 
 import numpy as np
 from lxml import etree
@@ -98,6 +98,16 @@ def _is_empty_single(parent: Element, child: Element) -> bool:
         return False
     child_spec = parent.spec.children.get(child.tag)
     return child_spec is not None and child_spec.single
+
+
+def iter_written(element: Element) -> Iterator[Element]:
+    """The elements :func:`build` writes for ``element``'s subtree, in document order."""
+    stack: list[Element] = [element]
+    while stack:
+        current = stack.pop()
+        yield current
+        stack.extend(child for child in reversed(current._children)  # pyright: ignore[reportPrivateUsage]
+                     if not _is_empty_single(current, child))
 
 
 def build(element: Element, formatter: Formatter, parent: etree._Element | None = None) -> etree._Element:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 
+import numpy as np
 from lxml import etree
 
 from typed_mjcf._convert import Rejected
@@ -114,11 +115,78 @@ def _add_children(parent: Element, node: etree._Element, context: _Context,
                 f"{did_you_mean(tag, legal)}", source, child_node.sourceline)
         existing = parent._single_child(tag) if child_spec.single else None  # pyright: ignore[reportPrivateUsage]
         if existing is not None:
-            child = existing  # a repeated section: merge into the first
-        else:
-            child = parent._add_child(tag, None, {})  # pyright: ignore[reportPrivateUsage]
+            # A repeated section: merge into the first.
+            _merge_section(existing, child_node, context, source)
+            continue
+        child = parent._add_child(tag, None, {})  # pyright: ignore[reportPrivateUsage]
         _set_attributes(child, child_node, source)
         _add_children(child, child_node, context, source)
+
+
+def _merge_section(section: Element, node: etree._Element, context: _Context,
+                   source: str | None) -> None:
+    """Merge a repeated once-only section into the first one.
+
+    MuJoCo reads repeated sections in order, so merging keeps their meaning, with one
+    exception: a section that nests itself (``<default>``: classes in classes) is a class
+    hierarchy, and MuJoCo gives a class a copy of its parent's defaults as they are when the
+    class is read. Main defaults that a later ``<default>`` section sets or changes therefore
+    do not reach the classes of earlier sections, but would after merging; such a model is
+    refused rather than silently changed.
+    """
+    nests = section.spec.children.get(section.tag)
+    earlier_classes = ([e for e in section.iter_elements() if e.tag == section.tag
+                        and e is not section] if nests is not None else [])
+    before = _element_defaults(section) if earlier_classes else {}
+    _set_attributes(section, node, source)
+    _add_children(section, node, context, source)
+    if not earlier_classes:
+        return
+    after = _element_defaults(section)
+    for key, value in after.items():
+        if key in before and _same_value(before[key], value):
+            continue
+        element_tag, attribute = key
+        for hierarchy_class in earlier_classes:
+            if not _sets_in_chain(hierarchy_class, section, element_tag, attribute):
+                id_attribute = hierarchy_class.spec.id_attribute
+                name = (None if id_attribute is None
+                        else hierarchy_class._attrs.get(id_attribute.name))  # pyright: ignore[reportPrivateUsage]
+                label = repr(name) if isinstance(name, str) else hierarchy_class.path
+                raise ParseError(
+                    f"this repeated <{section.tag}> section sets <{element_tag} {attribute}> "
+                    f"for the whole model, but MuJoCo does not apply it to {section.tag} class "
+                    f"{label} of an earlier <{section.tag}> section (a class keeps the values "
+                    f"it inherited when it was defined); set {attribute} in that class, or "
+                    f"move it into the first <{section.tag}> section",
+                    source, node.sourceline)
+
+
+def _element_defaults(section: Element) -> dict[tuple[str, str], object]:
+    """The attributes a hierarchy level sets on its element children, by (tag, attribute)."""
+    values: dict[tuple[str, str], object] = {}
+    for child in section.get_children():
+        if child.tag != section.tag:
+            for name, value in child._attrs.items():  # pyright: ignore[reportPrivateUsage]
+                values[(child.tag, name)] = value
+    return values
+
+
+def _sets_in_chain(level: Element, top: Element, tag: str, attribute: str) -> bool:
+    """Whether ``level`` or one of its ancestors below ``top`` sets ``<tag attribute>``."""
+    current: Element | None = level
+    while current is not None and current is not top:
+        if (tag, attribute) in _element_defaults(current):
+            return True
+        current = current.parent
+    return False
+
+
+def _same_value(a: object, b: object) -> bool:
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray)
+                and bool(np.array_equal(a, b)))  # pyright: ignore[reportUnknownArgumentType]
+    return a == b
 
 
 def _expand_include(parent: Element, node: etree._Element, context: _Context,
@@ -129,9 +197,8 @@ def _expand_include(parent: Element, node: etree._Element, context: _Context,
     base = context.base_dir or os.getcwd()
     path = os.path.abspath(os.path.join(base, file))
     if path in context.included:
-        chain = " -> ".join([*context.included, path])
-        raise ParseError(f"{file!r} is included twice (a file may be included once): {chain}",
-                         source, node.sourceline)
+        raise ParseError(f"{file!r} ({path}) is already part of the model (MuJoCo includes a "
+                         f"file once)", source, node.sourceline)
     try:
         with open(path, "rb") as f:
             data = f.read()

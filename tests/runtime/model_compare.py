@@ -8,6 +8,8 @@ File paths are the one deliberate exception: ``typed_mjcf`` compiles through MuJ
 file system under flat file names, so ``paths``, ``npaths`` and the ``*_pathadr`` offsets
 into it differ from a compile that read the files from disk. They are compared by meaning
 instead: the same elements have a path, and each path names a file with the same contents.
+``nbuffer`` includes the ``paths`` array, padded to MuJoCo's 64-byte buffer alignment, so it
+is compared without that array.
 """
 
 from __future__ import annotations
@@ -18,7 +20,8 @@ from collections.abc import Iterator, Mapping
 import mujoco
 import numpy as np
 
-PATH_FIELDS = frozenset({"paths", "npaths"})
+PATH_FIELDS = frozenset({"paths", "npaths", "nbuffer"})
+BUFFER_ALIGNMENT = 64  # MuJoCo aligns every array of mjModel's buffer to 64 bytes
 
 
 def _is_path_field(name: str) -> bool:
@@ -55,6 +58,9 @@ def model_fields(model: mujoco.MjModel) -> dict[str, object]:
             fields[name] = value
         elif name in ("opt", "vis", "stat"):
             fields.update(_struct_fields(name, value))
+    npaths: int = model.npaths
+    padded_paths = -(-npaths // BUFFER_ALIGNMENT) * BUFFER_ALIGNMENT
+    fields["nbuffer - padded npaths"] = model.nbuffer - padded_paths
     names: bytes = model.names
     for name in dir(model):
         if name.startswith("name_") and name.endswith("adr"):
