@@ -130,9 +130,11 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
     d["kind"] = a.kind
     for key in ("dtype", "arity", "enum", "namespace", "default", "pattern", "field",
                 "directory", "anchor"):
-        value = getattr(a, key)
+        value: object = getattr(a, key)
+        if isinstance(value, tuple):
+            value = list(cast(tuple[object, ...], value))
         if value is not None:
-            d[key] = list(value) if isinstance(value, tuple) else value
+            d[key] = value
     if a.required:
         d["required"] = True
     if a.nodefault:

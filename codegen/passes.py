@@ -33,6 +33,7 @@ def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     apply_overrides(out, on_projections)
     mark_single(out, facts.single)
     apply_directories(out, directories_of(facts))
+    rename_classes(out, _string_table(facts, "class_names"))
     drop_unreachable(out)
     drop_unused_enums(out)
     check(out)
@@ -110,6 +111,20 @@ def directories_of(facts: Facts) -> dict[str, list[str]]:
             raise ValueError(f"schema/facts.toml: [directories] {key!r} must be a list of names")
         result[key] = list(cast(list[str], value))
     return result
+
+
+def _string_table(facts: Facts, table: str) -> dict[str, str]:
+    raw = facts.extra.get(table, {})
+    if not isinstance(raw, dict) or not all(
+            isinstance(v, str) for v in cast(dict[str, object], raw).values()):
+        raise ValueError(f"schema/facts.toml: [{table}] must map names to strings")
+    return dict(cast(dict[str, str], raw))
+
+
+def rename_classes(schema: ir.Schema, names: Mapping[str, str]) -> None:
+    """Python class names that the declaration name would give to a runtime name."""
+    for row_name, class_name in names.items():
+        _row(schema, row_name, f"[class_names] {row_name}").class_name = class_name
 
 
 def apply_directories(schema: ir.Schema, directories: Mapping[str, list[str]]) -> None:

@@ -112,12 +112,6 @@ def _py(tag: str) -> str:
     return py_name(tag)
 
 
-def _wrap(text: str, indent: int) -> str:
-    pad = " " * indent
-    return "\n".join(textwrap.fill(p, 92 - indent, initial_indent=pad, subsequent_indent=pad)
-                     for p in text.split("\n\n"))
-
-
 def _property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
     head = f"``{a.name}``: {typer.describe(a)}."
     parts = [head]
@@ -134,7 +128,8 @@ def _property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
         parts.append(a.doc[:1].upper() + a.doc[1:] + ("" if a.doc.endswith(".") else "."))
     if a.anchor is not None:
         parts.append(f"Reference: {DOCS_URL}#{a.anchor}")
-    return "\n\n".join(parts).replace("\\", "\\\\").replace('"""', "'''")
+    text = "\n\n".join(parts).replace("\\", "\\\\").replace('"""', "'''")
+    return textwrap.indent(text, " " * 12).strip()  # laid out inside a property body
 
 
 def _class_doc(el: ir.ElementDef) -> str:
@@ -146,7 +141,7 @@ def _class_doc(el: ir.ElementDef) -> str:
     parts = [head + "."]
     if el.anchor is not None:
         parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
-    return "\n\n".join(parts)
+    return textwrap.indent("\n\n".join(parts) + "\n", " " * 4).strip() + "\n    "
 
 
 def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
@@ -158,7 +153,8 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     is_root = el.name == schema.root
     return ClassView(el.class_name, "_ModelRoot" if is_root else "_Element", _class_doc(el),
-                     _element_spec(schema, el), properties, children, params, is_root)
+                     textwrap.indent(_element_spec(schema, el), " " * 4).strip(), properties,
+                     children, params, is_root)
 
 
 def _environment() -> jinja2.Environment:
@@ -170,8 +166,6 @@ def _environment() -> jinja2.Environment:
         lstrip_blocks=True,
         autoescape=False,
     )
-    env.filters["indent_block"] = lambda text, n: textwrap.indent(text, " " * n)
-    env.filters["wrap"] = _wrap
     return env
 
 

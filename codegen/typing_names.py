@@ -87,9 +87,9 @@ class Typer:
         if hi is None or hi > MAX_TUPLE:
             scalar = f"{item} | " if lo <= 1 else ""
             return f"{scalar}Sequence[{item}] | {array}"
-        scalar = [item] if lo <= 1 <= hi else []  # one value may be given as a number
+        one_number = [item] if lo <= 1 <= hi else []  # one value may be given as a number
         tuples = [_tuple(item, n) for n in range(max(lo, 1), hi + 1)]
-        return " | ".join([*scalar, *tuples, f"_builtins.list[{item}]", array])
+        return " | ".join([*one_number, *tuples, f"_builtins.list[{item}]", array])
 
     def reference_classes(self, a: ir.AttributeDef) -> list[str]:
         assert a.namespace is not None

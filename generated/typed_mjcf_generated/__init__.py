@@ -2,7 +2,7 @@
 # Do not edit: change schema/ or codegen/ and run `nox -s generate`.
 """The generated MJCF classes. Import them from ``typed_mjcf``."""
 
-import typed_mjcf as _typed_mjcf  # noqa: F401  (the runtime initialises first)
+import typed_mjcf as _typed_mjcf  # the runtime initialises first
 from typed_mjcf_generated.elements import (
     Accelerometer as Accelerometer,
     Actuator as Actuator,
@@ -11,7 +11,7 @@ from typed_mjcf_generated.elements import (
     Actuatorpos as Actuatorpos,
     Actuatorvel as Actuatorvel,
     Adhesion as Adhesion,
-    Asset as Asset,
+    AssetSection as AssetSection,
     Attach as Attach,
     Ballangvel as Ballangvel,
     Ballquat as Ballquat,
@@ -57,7 +57,6 @@ from typed_mjcf_generated.elements import (
     EKinetic as EKinetic,
     EPotential as EPotential,
     Elasticity as Elasticity,
-    Element as Element,
     Equality as Equality,
     EqualityFlex as EqualityFlex,
     EqualityJoint as EqualityJoint,
@@ -158,6 +157,7 @@ from typed_mjcf_generated.elements import (
     Torque as Torque,
     Touch as Touch,
     Tuple as Tuple,
+    TupleElement as TupleElement,
     User as User,
     Velocimeter as Velocimeter,
     Velocity as Velocity,
@@ -166,5 +166,6 @@ from typed_mjcf_generated.elements import (
     Worldbody as Worldbody,
 )
 
+RUNTIME_VERSION = _typed_mjcf.__version__
 MUJOCO_VERSION = "4.0.0"
 GENERATOR_VERSION = "1"

@@ -27,7 +27,7 @@ __all__ = [
     "Actuatorpos",
     "Actuatorvel",
     "Adhesion",
-    "Asset",
+    "AssetSection",
     "Attach",
     "Ballangvel",
     "Ballquat",
@@ -73,7 +73,6 @@ __all__ = [
     "EKinetic",
     "EPotential",
     "Elasticity",
-    "Element",
     "Equality",
     "EqualityFlex",
     "EqualityJoint",
@@ -174,6 +173,7 @@ __all__ = [
     "Torque",
     "Touch",
     "Tuple",
+    "TupleElement",
     "User",
     "Velocimeter",
     "Velocity",
@@ -186,7 +186,8 @@ __all__ = [
 class RootElement(_ModelRoot):
     """``<mujoco>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('mujoco', 'mujoco', (
@@ -199,7 +200,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         _C('visual', 'visual', 'Visual', True, '*'),
         _C('default', 'default', 'Default', True, 'R'),
         _C('extension', 'extension', 'Extension', True, '*'),
-        _C('asset', 'asset', 'Asset', True, '*'),
+        _C('asset', 'asset', 'AssetSection', True, '*'),
         _C('worldbody', 'worldbody', 'Worldbody', True, 'R'),
         _C('deformable', 'deformable', 'Deformable', True, '*'),
         _C('contact', 'contact', 'Contact', True, '*'),
@@ -215,6 +216,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
     if TYPE_CHECKING:
         def __init__(self, **kwargs: Unpack[RootElementAttributes]) -> None:
             """A new, empty model; keyword arguments are attributes of ``<mujoco>``."""
+            ...
 
         @overload
         def find(self, namespace: Literal["actuator"], identifier: _builtins.str) -> ActuatorPlugin | Adhesion | Cylinder | Damper | Dcmotor | General | Intvelocity | Motor | Muscle | Orientation | Pid | Position | Velocity | None: ...
@@ -272,63 +274,65 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         def find(self, namespace: _builtins.str, identifier: _builtins.str) -> _Element | None: ...
         def find(self, namespace: _builtins.str, identifier: _builtins.str) -> _Element | None:
             """The element named ``identifier`` in ``namespace``, or ``None``."""
+            ...
 
         @overload
-        def find_all(self, namespace: Literal["actuator"]) -> _builtins.list[ActuatorPlugin | Adhesion | Cylinder | Damper | Dcmotor | General | Intvelocity | Motor | Muscle | Orientation | Pid | Position | Velocity]: ...
+        def find_all(self, namespace: Literal["actuator"]) -> Sequence[ActuatorPlugin | Adhesion | Cylinder | Damper | Dcmotor | General | Intvelocity | Motor | Muscle | Orientation | Pid | Position | Velocity]: ...
         @overload
-        def find_all(self, namespace: Literal["body"]) -> _builtins.list[Body]: ...
+        def find_all(self, namespace: Literal["body"]) -> Sequence[Body]: ...
         @overload
-        def find_all(self, namespace: Literal["camera"]) -> _builtins.list[Camera]: ...
+        def find_all(self, namespace: Literal["camera"]) -> Sequence[Camera]: ...
         @overload
-        def find_all(self, namespace: Literal["default"]) -> _builtins.list[Default]: ...
+        def find_all(self, namespace: Literal["default"]) -> Sequence[Default]: ...
         @overload
-        def find_all(self, namespace: Literal["equality"]) -> _builtins.list[Connect | EqualityFlex | EqualityJoint | EqualityTendon | Flexstrain | Weld]: ...
+        def find_all(self, namespace: Literal["equality"]) -> Sequence[Connect | EqualityFlex | EqualityJoint | EqualityTendon | Flexstrain | Weld]: ...
         @overload
-        def find_all(self, namespace: Literal["exclude"]) -> _builtins.list[Exclude]: ...
+        def find_all(self, namespace: Literal["exclude"]) -> Sequence[Exclude]: ...
         @overload
-        def find_all(self, namespace: Literal["flex"]) -> _builtins.list[Flex | Flexcomp]: ...
+        def find_all(self, namespace: Literal["flex"]) -> Sequence[Flex | Flexcomp]: ...
         @overload
-        def find_all(self, namespace: Literal["frame"]) -> _builtins.list[Frame]: ...
+        def find_all(self, namespace: Literal["frame"]) -> Sequence[Frame]: ...
         @overload
-        def find_all(self, namespace: Literal["geom"]) -> _builtins.list[Geom]: ...
+        def find_all(self, namespace: Literal["geom"]) -> Sequence[Geom]: ...
         @overload
-        def find_all(self, namespace: Literal["hfield"]) -> _builtins.list[Hfield]: ...
+        def find_all(self, namespace: Literal["hfield"]) -> Sequence[Hfield]: ...
         @overload
-        def find_all(self, namespace: Literal["instance"]) -> _builtins.list[Instance]: ...
+        def find_all(self, namespace: Literal["instance"]) -> Sequence[Instance]: ...
         @overload
-        def find_all(self, namespace: Literal["joint"]) -> _builtins.list[Freejoint | Joint]: ...
+        def find_all(self, namespace: Literal["joint"]) -> Sequence[Freejoint | Joint]: ...
         @overload
-        def find_all(self, namespace: Literal["key"]) -> _builtins.list[Key]: ...
+        def find_all(self, namespace: Literal["key"]) -> Sequence[Key]: ...
         @overload
-        def find_all(self, namespace: Literal["light"]) -> _builtins.list[Light]: ...
+        def find_all(self, namespace: Literal["light"]) -> Sequence[Light]: ...
         @overload
-        def find_all(self, namespace: Literal["material"]) -> _builtins.list[Material]: ...
+        def find_all(self, namespace: Literal["material"]) -> Sequence[Material]: ...
         @overload
-        def find_all(self, namespace: Literal["mesh"]) -> _builtins.list[Mesh]: ...
+        def find_all(self, namespace: Literal["mesh"]) -> Sequence[Mesh]: ...
         @overload
-        def find_all(self, namespace: Literal["model"]) -> _builtins.list[Model]: ...
+        def find_all(self, namespace: Literal["model"]) -> Sequence[Model]: ...
         @overload
-        def find_all(self, namespace: Literal["numeric"]) -> _builtins.list[Numeric]: ...
+        def find_all(self, namespace: Literal["numeric"]) -> Sequence[Numeric]: ...
         @overload
-        def find_all(self, namespace: Literal["pair"]) -> _builtins.list[Pair]: ...
+        def find_all(self, namespace: Literal["pair"]) -> Sequence[Pair]: ...
         @overload
-        def find_all(self, namespace: Literal["sensor"]) -> _builtins.list[Accelerometer | Actuatorfrc | Actuatorpos | Actuatorvel | Ballangvel | Ballquat | Camprojection | Clock | Distance | EKinetic | EPotential | Force | Frameangacc | Frameangvel | Framelinacc | Framelinvel | Framepos | Framequat | Framexaxis | Frameyaxis | Framezaxis | Fromto | Gyro | Insidesite | Jointactuatorfrc | Jointlimitfrc | Jointlimitpos | Jointlimitvel | Jointpos | Jointvel | Magnetometer | Normal | Rangefinder | SensorContact | SensorPlugin | Subtreeangmom | Subtreecom | Subtreelinvel | Tactile | Tendonactuatorfrc | Tendonlimitfrc | Tendonlimitpos | Tendonlimitvel | Tendonpos | Tendonvel | Torque | Touch | User | Velocimeter]: ...
+        def find_all(self, namespace: Literal["sensor"]) -> Sequence[Accelerometer | Actuatorfrc | Actuatorpos | Actuatorvel | Ballangvel | Ballquat | Camprojection | Clock | Distance | EKinetic | EPotential | Force | Frameangacc | Frameangvel | Framelinacc | Framelinvel | Framepos | Framequat | Framexaxis | Frameyaxis | Framezaxis | Fromto | Gyro | Insidesite | Jointactuatorfrc | Jointlimitfrc | Jointlimitpos | Jointlimitvel | Jointpos | Jointvel | Magnetometer | Normal | Rangefinder | SensorContact | SensorPlugin | Subtreeangmom | Subtreecom | Subtreelinvel | Tactile | Tendonactuatorfrc | Tendonlimitfrc | Tendonlimitpos | Tendonlimitvel | Tendonpos | Tendonvel | Torque | Touch | User | Velocimeter]: ...
         @overload
-        def find_all(self, namespace: Literal["site"]) -> _builtins.list[Site]: ...
+        def find_all(self, namespace: Literal["site"]) -> Sequence[Site]: ...
         @overload
-        def find_all(self, namespace: Literal["skin"]) -> _builtins.list[Skin]: ...
+        def find_all(self, namespace: Literal["skin"]) -> Sequence[Skin]: ...
         @overload
-        def find_all(self, namespace: Literal["tendon"]) -> _builtins.list[Fixed | Spatial]: ...
+        def find_all(self, namespace: Literal["tendon"]) -> Sequence[Fixed | Spatial]: ...
         @overload
-        def find_all(self, namespace: Literal["text"]) -> _builtins.list[Text]: ...
+        def find_all(self, namespace: Literal["text"]) -> Sequence[Text]: ...
         @overload
-        def find_all(self, namespace: Literal["texture"]) -> _builtins.list[Texture]: ...
+        def find_all(self, namespace: Literal["texture"]) -> Sequence[Texture]: ...
         @overload
-        def find_all(self, namespace: Literal["tuple"]) -> _builtins.list[Tuple]: ...
+        def find_all(self, namespace: Literal["tuple"]) -> Sequence[Tuple]: ...
         @overload
-        def find_all(self, namespace: _builtins.str) -> _builtins.list[_Element]: ...
-        def find_all(self, namespace: _builtins.str) -> _builtins.list[_Element]:
+        def find_all(self, namespace: _builtins.str) -> Sequence[_Element]: ...
+        def find_all(self, namespace: _builtins.str) -> Sequence[_Element]:
             """Every element of ``namespace``, in document order."""
+            ...
 
         @property
         def model(self) -> _builtins.str | None:
@@ -336,6 +340,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco-model
             """
+            ...
 
         @model.setter
         def model(self, value: _builtins.str | None) -> None: ...
@@ -343,121 +348,155 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         @property
         def compiler(self) -> Compiler:
             """The ``<compiler>`` child, created on first use."""
+            ...
 
         def add_compiler(self, **kwargs: Unpack[CompilerAttributes]) -> Compiler:
             """Add a ``<compiler>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def option(self) -> Option:
             """The ``<option>`` child, created on first use."""
+            ...
 
         def add_option(self, **kwargs: Unpack[OptionAttributes]) -> Option:
             """Add a ``<option>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def size(self) -> Size:
             """The ``<size>`` child, created on first use."""
+            ...
 
         def add_size(self, **kwargs: Unpack[SizeAttributes]) -> Size:
             """Add a ``<size>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def statistic(self) -> Statistic:
             """The ``<statistic>`` child, created on first use."""
+            ...
 
         def add_statistic(self, **kwargs: Unpack[StatisticAttributes]) -> Statistic:
             """Add a ``<statistic>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def visual(self) -> Visual:
             """The ``<visual>`` child, created on first use."""
+            ...
 
         def add_visual(self, **kwargs: Unpack[VisualAttributes]) -> Visual:
             """Add a ``<visual>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def default(self) -> Default:
             """The ``<default>`` child, created on first use."""
+            ...
 
         def add_default(self, **kwargs: Unpack[DefaultAttributes]) -> Default:
             """Add a ``<default>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def extension(self) -> Extension:
             """The ``<extension>`` child, created on first use."""
+            ...
 
         def add_extension(self, **kwargs: Unpack[ExtensionAttributes]) -> Extension:
             """Add a ``<extension>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
-        def asset(self) -> Asset:
+        def asset(self) -> AssetSection:
             """The ``<asset>`` child, created on first use."""
+            ...
 
-        def add_asset(self, **kwargs: Unpack[AssetAttributes]) -> Asset:
+        def add_asset(self, **kwargs: Unpack[AssetSectionAttributes]) -> AssetSection:
             """Add a ``<asset>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def worldbody(self) -> Worldbody:
             """The ``<worldbody>`` child, created on first use."""
+            ...
 
         def add_worldbody(self, **kwargs: Unpack[WorldbodyAttributes]) -> Worldbody:
             """Add a ``<worldbody>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def deformable(self) -> Deformable:
             """The ``<deformable>`` child, created on first use."""
+            ...
 
         def add_deformable(self, **kwargs: Unpack[DeformableAttributes]) -> Deformable:
             """Add a ``<deformable>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def contact(self) -> Contact:
             """The ``<contact>`` child, created on first use."""
+            ...
 
         def add_contact(self, **kwargs: Unpack[ContactAttributes]) -> Contact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendon(self) -> Tendon:
             """The ``<tendon>`` child, created on first use."""
+            ...
 
         def add_tendon(self, **kwargs: Unpack[TendonAttributes]) -> Tendon:
             """Add a ``<tendon>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def equality(self) -> Equality:
             """The ``<equality>`` child, created on first use."""
+            ...
 
         def add_equality(self, **kwargs: Unpack[EqualityAttributes]) -> Equality:
             """Add a ``<equality>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def actuator(self) -> Actuator:
             """The ``<actuator>`` child, created on first use."""
+            ...
 
         def add_actuator(self, **kwargs: Unpack[ActuatorAttributes]) -> Actuator:
             """Add a ``<actuator>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def sensor(self) -> Sensor:
             """The ``<sensor>`` child, created on first use."""
+            ...
 
         def add_sensor(self, **kwargs: Unpack[SensorAttributes]) -> Sensor:
             """Add a ``<sensor>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def custom(self) -> Custom:
             """The ``<custom>`` child, created on first use."""
+            ...
 
         def add_custom(self, **kwargs: Unpack[CustomAttributes]) -> Custom:
             """Add a ``<custom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def keyframe(self) -> Keyframe:
             """The ``<keyframe>`` child, created on first use."""
+            ...
 
         def add_keyframe(self, **kwargs: Unpack[KeyframeAttributes]) -> Keyframe:
             """Add a ``<keyframe>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["compiler"], /, **kwargs: Unpack[CompilerAttributes]) -> Compiler: ...
@@ -474,7 +513,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         @overload
         def add(self, tag: Literal["extension"], /, **kwargs: Unpack[ExtensionAttributes]) -> Extension: ...
         @overload
-        def add(self, tag: Literal["asset"], /, **kwargs: Unpack[AssetAttributes]) -> Asset: ...
+        def add(self, tag: Literal["asset"], /, **kwargs: Unpack[AssetSectionAttributes]) -> AssetSection: ...
         @overload
         def add(self, tag: Literal["worldbody"], /, **kwargs: Unpack[WorldbodyAttributes]) -> Worldbody: ...
         @overload
@@ -497,6 +536,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["compiler"], position: _builtins.int, /, **kwargs: Unpack[CompilerAttributes]) -> Compiler: ...
@@ -513,7 +553,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         @overload
         def insert(self, tag: Literal["extension"], position: _builtins.int, /, **kwargs: Unpack[ExtensionAttributes]) -> Extension: ...
         @overload
-        def insert(self, tag: Literal["asset"], position: _builtins.int, /, **kwargs: Unpack[AssetAttributes]) -> Asset: ...
+        def insert(self, tag: Literal["asset"], position: _builtins.int, /, **kwargs: Unpack[AssetSectionAttributes]) -> AssetSection: ...
         @overload
         def insert(self, tag: Literal["worldbody"], position: _builtins.int, /, **kwargs: Unpack[WorldbodyAttributes]) -> Worldbody: ...
         @overload
@@ -536,13 +576,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Accelerometer(_Element):
     """``<accelerometer>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('accelerometer', 'accelerometer', (
@@ -566,6 +608,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -576,6 +619,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -586,6 +630,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -596,6 +641,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -606,6 +652,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -616,6 +663,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -626,6 +674,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -636,6 +685,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -648,6 +698,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -657,7 +708,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-acce
 class Actuator(_Element):
     """``<actuator>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('actuator', 'actuator', (
@@ -682,93 +734,119 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator"""
         @property
         def general(self) -> _builtins.list[General]:
             """The ``<general>`` children, in document order."""
+            ...
 
         def add_general(self, **kwargs: Unpack[GeneralAttributes]) -> General:
             """Add a ``<general>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def motor(self) -> _builtins.list[Motor]:
             """The ``<motor>`` children, in document order."""
+            ...
 
         def add_motor(self, **kwargs: Unpack[MotorAttributes]) -> Motor:
             """Add a ``<motor>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def position(self) -> _builtins.list[Position]:
             """The ``<position>`` children, in document order."""
+            ...
 
         def add_position(self, **kwargs: Unpack[PositionAttributes]) -> Position:
             """Add a ``<position>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def velocity(self) -> _builtins.list[Velocity]:
             """The ``<velocity>`` children, in document order."""
+            ...
 
         def add_velocity(self, **kwargs: Unpack[VelocityAttributes]) -> Velocity:
             """Add a ``<velocity>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def intvelocity(self) -> _builtins.list[Intvelocity]:
             """The ``<intvelocity>`` children, in document order."""
+            ...
 
         def add_intvelocity(self, **kwargs: Unpack[IntvelocityAttributes]) -> Intvelocity:
             """Add a ``<intvelocity>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def orientation(self) -> _builtins.list[Orientation]:
             """The ``<orientation>`` children, in document order."""
+            ...
 
         def add_orientation(self, **kwargs: Unpack[OrientationAttributes]) -> Orientation:
             """Add a ``<orientation>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def pid(self) -> _builtins.list[Pid]:
             """The ``<pid>`` children, in document order."""
+            ...
 
         def add_pid(self, **kwargs: Unpack[PidAttributes]) -> Pid:
             """Add a ``<pid>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def damper(self) -> _builtins.list[Damper]:
             """The ``<damper>`` children, in document order."""
+            ...
 
         def add_damper(self, **kwargs: Unpack[DamperAttributes]) -> Damper:
             """Add a ``<damper>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def cylinder(self) -> _builtins.list[Cylinder]:
             """The ``<cylinder>`` children, in document order."""
+            ...
 
         def add_cylinder(self, **kwargs: Unpack[CylinderAttributes]) -> Cylinder:
             """Add a ``<cylinder>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def muscle(self) -> _builtins.list[Muscle]:
             """The ``<muscle>`` children, in document order."""
+            ...
 
         def add_muscle(self, **kwargs: Unpack[MuscleAttributes]) -> Muscle:
             """Add a ``<muscle>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def adhesion(self) -> _builtins.list[Adhesion]:
             """The ``<adhesion>`` children, in document order."""
+            ...
 
         def add_adhesion(self, **kwargs: Unpack[AdhesionAttributes]) -> Adhesion:
             """Add a ``<adhesion>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def dcmotor(self) -> _builtins.list[Dcmotor]:
             """The ``<dcmotor>`` children, in document order."""
+            ...
 
         def add_dcmotor(self, **kwargs: Unpack[DcmotorAttributes]) -> Dcmotor:
             """Add a ``<dcmotor>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[ActuatorPlugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[ActuatorPluginAttributes]) -> ActuatorPlugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["general"], /, **kwargs: Unpack[GeneralAttributes]) -> General: ...
@@ -800,6 +878,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["general"], position: _builtins.int, /, **kwargs: Unpack[GeneralAttributes]) -> General: ...
@@ -831,13 +910,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class ActuatorPlugin(_Element):
     """``<plugin>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('plugin', 'actuator_plugin', (
@@ -883,6 +964,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -893,6 +975,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -903,6 +986,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -913,6 +997,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -923,6 +1008,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -933,6 +1019,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -943,6 +1030,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -953,6 +1041,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -963,6 +1052,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-plugin
             """
+            ...
 
         @plugin.setter
         def plugin(self, value: _builtins.str | None) -> None: ...
@@ -973,6 +1063,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-instance
             """
+            ...
 
         @instance.setter
         def instance(self, value: _builtins.str | Instance | None) -> None: ...
@@ -985,6 +1076,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -997,6 +1089,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -1009,6 +1102,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actlimited
             """
+            ...
 
         @actlimited.setter
         def actlimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -1019,6 +1113,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1029,6 +1124,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actrange
             """
+            ...
 
         @actrange.setter
         def actrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1039,6 +1135,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1051,6 +1148,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1063,6 +1161,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1073,6 +1172,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -1085,6 +1185,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -1095,6 +1196,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -1105,6 +1207,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -1115,6 +1218,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -1127,6 +1231,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actdim
             """
+            ...
 
         @actdim.setter
         def actdim(self, value: _builtins.int | None) -> None: ...
@@ -1139,6 +1244,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dyntype
             """
+            ...
 
         @dyntype.setter
         def dyntype(self, value: Literal["none", "integrator", "filter", "filterexact", "muscle", "dcmotor", "pid", "user"] | None) -> None: ...
@@ -1151,6 +1257,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dynprm
             """
+            ...
 
         @dynprm.setter
         def dynprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1161,6 +1268,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -1171,6 +1279,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -1181,6 +1290,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -1191,6 +1301,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actearly
             """
+            ...
 
         @actearly.setter
         def actearly(self, value: _builtins.bool | None) -> None: ...
@@ -1198,9 +1309,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
         @property
         def config(self) -> _builtins.list[Config]:
             """The ``<config>`` children, in document order."""
+            ...
 
         def add_config(self, **kwargs: Unpack[ConfigAttributes]) -> Config:
             """Add a ``<config>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -1208,6 +1321,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["config"], position: _builtins.int, /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -1215,13 +1329,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pl
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Actuatorfrc(_Element):
     """``<actuatorfrc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('actuatorfrc', 'actuatorfrc', (
@@ -1245,6 +1361,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -1255,6 +1372,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -1265,6 +1383,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -1275,6 +1394,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -1285,6 +1405,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1295,6 +1416,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -1305,6 +1427,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -1315,6 +1438,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1327,6 +1451,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-actuator
             """
+            ...
 
         @actuator.setter
         def actuator(self, value: _builtins.str | ActuatorPlugin | Adhesion | Cylinder | Damper | Dcmotor | General | Intvelocity | Motor | Muscle | Orientation | Pid | Position | Velocity | None) -> None: ...
@@ -1336,7 +1461,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 class Actuatorpos(_Element):
     """``<actuatorpos>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('actuatorpos', 'actuatorpos', (
@@ -1360,6 +1486,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -1370,6 +1497,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -1380,6 +1508,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -1390,6 +1519,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -1400,6 +1530,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1410,6 +1541,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -1420,6 +1552,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -1430,6 +1563,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1442,6 +1576,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-actuator
             """
+            ...
 
         @actuator.setter
         def actuator(self, value: _builtins.str | ActuatorPlugin | Adhesion | Cylinder | Damper | Dcmotor | General | Intvelocity | Motor | Muscle | Orientation | Pid | Position | Velocity | None) -> None: ...
@@ -1451,7 +1586,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 class Actuatorvel(_Element):
     """``<actuatorvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('actuatorvel', 'actuatorvel', (
@@ -1475,6 +1611,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -1485,6 +1622,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -1495,6 +1633,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -1505,6 +1644,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -1515,6 +1655,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1525,6 +1666,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -1535,6 +1677,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -1545,6 +1688,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1557,6 +1701,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-actuator
             """
+            ...
 
         @actuator.setter
         def actuator(self, value: _builtins.str | ActuatorPlugin | Adhesion | Cylinder | Damper | Dcmotor | General | Intvelocity | Motor | Muscle | Orientation | Pid | Position | Velocity | None) -> None: ...
@@ -1566,7 +1711,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actu
 class Adhesion(_Element):
     """``<adhesion>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('adhesion', 'adhesion', (
@@ -1593,6 +1739,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -1603,6 +1750,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -1613,6 +1761,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -1623,6 +1772,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -1633,6 +1783,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -1643,6 +1794,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -1653,6 +1805,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1663,6 +1816,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1675,6 +1829,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -1685,6 +1840,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1695,6 +1851,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -1705,16 +1862,18 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ad
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
             """
+            ...
 
         @gain.setter
         def gain(self, value: _builtins.float | None) -> None: ...
 
 
 
-class Asset(_Element):
+class AssetSection(_Element):
     """``<asset>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('asset', 'asset', (
@@ -1732,44 +1891,56 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset"""
         @property
         def mesh(self) -> _builtins.list[Mesh]:
             """The ``<mesh>`` children, in document order."""
+            ...
 
         def add_mesh(self, **kwargs: Unpack[MeshAttributes]) -> Mesh:
             """Add a ``<mesh>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def hfield(self) -> _builtins.list[Hfield]:
             """The ``<hfield>`` children, in document order."""
+            ...
 
         def add_hfield(self, **kwargs: Unpack[HfieldAttributes]) -> Hfield:
             """Add a ``<hfield>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def skin(self) -> _builtins.list[Skin]:
             """The ``<skin>`` children, in document order."""
+            ...
 
         def add_skin(self, **kwargs: Unpack[SkinAttributes]) -> Skin:
             """Add a ``<skin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def texture(self) -> _builtins.list[Texture]:
             """The ``<texture>`` children, in document order."""
+            ...
 
         def add_texture(self, **kwargs: Unpack[TextureAttributes]) -> Texture:
             """Add a ``<texture>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def material(self) -> _builtins.list[Material]:
             """The ``<material>`` children, in document order."""
+            ...
 
         def add_material(self, **kwargs: Unpack[MaterialAttributes]) -> Material:
             """Add a ``<material>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def model(self) -> _builtins.list[Model]:
             """The ``<model>`` children, in document order."""
+            ...
 
         def add_model(self, **kwargs: Unpack[ModelAttributes]) -> Model:
             """Add a ``<model>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["mesh"], /, **kwargs: Unpack[MeshAttributes]) -> Mesh: ...
@@ -1787,6 +1958,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["mesh"], position: _builtins.int, /, **kwargs: Unpack[MeshAttributes]) -> Mesh: ...
@@ -1804,13 +1976,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Attach(_Element):
     """``<attach>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('attach', 'attach', (
@@ -1830,6 +2004,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-model
             """
+            ...
 
         @model.setter
         def model(self, value: _builtins.str | Model | None) -> None: ...
@@ -1840,6 +2015,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -1850,6 +2026,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-frame
             """
+            ...
 
         @frame.setter
         def frame(self, value: _builtins.str | Frame | None) -> None: ...
@@ -1862,6 +2039,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-prefix
             """
+            ...
 
         @prefix.setter
         def prefix(self, value: _builtins.str | None) -> None: ...
@@ -1871,7 +2049,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach
 class Ballangvel(_Element):
     """``<ballangvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('ballangvel', 'ballangvel', (
@@ -1895,6 +2074,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -1905,6 +2085,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -1915,6 +2096,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -1925,6 +2107,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -1935,6 +2118,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1945,6 +2129,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -1955,6 +2140,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -1965,6 +2151,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -1977,6 +2164,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -1986,7 +2174,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 class Ballquat(_Element):
     """``<ballquat>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('ballquat', 'ballquat', (
@@ -2010,6 +2199,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -2020,6 +2210,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -2030,6 +2221,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -2040,6 +2232,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -2050,6 +2243,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2060,6 +2254,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -2070,6 +2265,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -2080,6 +2276,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2092,6 +2289,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -2101,7 +2299,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ball
 class Body(_Element):
     """``<body>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('body', 'body', (
@@ -2144,6 +2343,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -2154,6 +2354,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-childclass
             """
+            ...
 
         @childclass.setter
         def childclass(self, value: _builtins.str | Default | None) -> None: ...
@@ -2166,6 +2367,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2178,6 +2380,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2188,6 +2391,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2198,6 +2402,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2208,6 +2413,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2218,6 +2424,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2228,6 +2435,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-mocap
             """
+            ...
 
         @mocap.setter
         def mocap(self, value: _builtins.bool | None) -> None: ...
@@ -2238,6 +2446,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-gravcomp
             """
+            ...
 
         @gravcomp.setter
         def gravcomp(self, value: _builtins.float | None) -> None: ...
@@ -2248,6 +2457,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
             """
+            ...
 
         @sleep.setter
         def sleep(self, value: Literal["auto", "never", "allowed", "init"] | None) -> None: ...
@@ -2260,6 +2470,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-simple
             """
+            ...
 
         @simple.setter
         def simple(self, value: Literal["false", "auto"] | None) -> None: ...
@@ -2272,6 +2483,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-fuse
             """
+            ...
 
         @fuse.setter
         def fuse(self, value: Literal["false", "auto"] | None) -> None: ...
@@ -2282,6 +2494,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2289,93 +2502,119 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
         @property
         def body(self) -> _builtins.list[Body]:
             """The ``<body>`` children, in document order."""
+            ...
 
         def add_body(self, **kwargs: Unpack[BodyAttributes]) -> Body:
             """Add a ``<body>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frame(self) -> _builtins.list[Frame]:
             """The ``<frame>`` children, in document order."""
+            ...
 
         def add_frame(self, **kwargs: Unpack[FrameAttributes]) -> Frame:
             """Add a ``<frame>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def replicate(self) -> _builtins.list[Replicate]:
             """The ``<replicate>`` children, in document order."""
+            ...
 
         def add_replicate(self, **kwargs: Unpack[ReplicateAttributes]) -> Replicate:
             """Add a ``<replicate>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def inertial(self) -> Inertial:
             """The ``<inertial>`` child, created on first use."""
+            ...
 
         def add_inertial(self, **kwargs: Unpack[InertialAttributes]) -> Inertial:
             """Add a ``<inertial>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def joint(self) -> _builtins.list[Joint]:
             """The ``<joint>`` children, in document order."""
+            ...
 
         def add_joint(self, **kwargs: Unpack[JointAttributes]) -> Joint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def freejoint(self) -> _builtins.list[Freejoint]:
             """The ``<freejoint>`` children, in document order."""
+            ...
 
         def add_freejoint(self, **kwargs: Unpack[FreejointAttributes]) -> Freejoint:
             """Add a ``<freejoint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def geom(self) -> _builtins.list[Geom]:
             """The ``<geom>`` children, in document order."""
+            ...
 
         def add_geom(self, **kwargs: Unpack[GeomAttributes]) -> Geom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def attach(self) -> _builtins.list[Attach]:
             """The ``<attach>`` children, in document order."""
+            ...
 
         def add_attach(self, **kwargs: Unpack[AttachAttributes]) -> Attach:
             """Add a ``<attach>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def site(self) -> _builtins.list[Site]:
             """The ``<site>`` children, in document order."""
+            ...
 
         def add_site(self, **kwargs: Unpack[SiteAttributes]) -> Site:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def camera(self) -> _builtins.list[Camera]:
             """The ``<camera>`` children, in document order."""
+            ...
 
         def add_camera(self, **kwargs: Unpack[CameraAttributes]) -> Camera:
             """Add a ``<camera>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def light(self) -> _builtins.list[Light]:
             """The ``<light>`` children, in document order."""
+            ...
 
         def add_light(self, **kwargs: Unpack[LightAttributes]) -> Light:
             """Add a ``<light>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def flexcomp(self) -> _builtins.list[Flexcomp]:
             """The ``<flexcomp>`` children, in document order."""
+            ...
 
         def add_flexcomp(self, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp:
             """Add a ``<flexcomp>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["body"], /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -2407,6 +2646,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["body"], position: _builtins.int, /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -2438,13 +2678,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Bone(_Element):
     """``<bone>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('bone', 'bone', (
@@ -2466,6 +2708,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -2476,6 +2719,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindpos
             """
+            ...
 
         @bindpos.setter
         def bindpos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2486,6 +2730,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindquat
             """
+            ...
 
         @bindquat.setter
         def bindquat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2496,6 +2741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertid
             """
+            ...
 
         @vertid.setter
         def vertid(self, value: _builtins.int | Sequence[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -2506,6 +2752,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertweight
             """
+            ...
 
         @vertweight.setter
         def vertweight(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2515,7 +2762,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone""
 class Camera(_Element):
     """``<camera>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('camera', 'camera', (
@@ -2552,6 +2800,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -2562,6 +2811,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -2572,6 +2822,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
             """
+            ...
 
         @projection.setter
         def projection(self, value: Literal["perspective", "orthographic"] | None) -> None: ...
@@ -2586,6 +2837,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
             """
+            ...
 
         @fovy.setter
         def fovy(self, value: _builtins.float | None) -> None: ...
@@ -2598,6 +2850,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
             """
+            ...
 
         @ipd.setter
         def ipd(self, value: _builtins.float | None) -> None: ...
@@ -2610,6 +2863,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
             """
+            ...
 
         @resolution.setter
         def resolution(self, value: tuple[_builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -2620,6 +2874,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
             """
+            ...
 
         @output.setter
         def output(self, value: Literal["rgb", "depth", "distance", "normal", "segmentation"] | Collection[Literal["rgb", "depth", "distance", "normal", "segmentation"]] | None) -> None: ...
@@ -2632,6 +2887,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2644,6 +2900,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2654,6 +2911,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2664,6 +2922,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2674,6 +2933,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2684,6 +2944,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2696,6 +2957,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
             """
+            ...
 
         @mode.setter
         def mode(self, value: Literal["fixed", "track", "trackcom", "targetbody", "targetbodycom"] | None) -> None: ...
@@ -2706,6 +2968,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-target
             """
+            ...
 
         @target.setter
         def target(self, value: _builtins.str | Body | None) -> None: ...
@@ -2716,6 +2979,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
             """
+            ...
 
         @focal.setter
         def focal(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2726,6 +2990,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
             """
+            ...
 
         @focalpixel.setter
         def focalpixel(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2736,6 +3001,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
             """
+            ...
 
         @principal.setter
         def principal(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2746,6 +3012,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
             """
+            ...
 
         @principalpixel.setter
         def principalpixel(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2756,6 +3023,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
             """
+            ...
 
         @sensorsize.setter
         def sensorsize(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2766,6 +3034,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2775,7 +3044,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera
 class Camprojection(_Element):
     """``<camprojection>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('camprojection', 'camprojection', (
@@ -2800,6 +3070,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -2810,6 +3081,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -2820,6 +3092,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -2830,6 +3103,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -2840,6 +3114,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2850,6 +3125,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -2860,6 +3136,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -2870,6 +3147,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2882,6 +3160,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -2894,6 +3173,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-camera
             """
+            ...
 
         @camera.setter
         def camera(self, value: _builtins.str | Camera | None) -> None: ...
@@ -2903,7 +3183,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camp
 class Clock(_Element):
     """``<clock>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('clock', 'clock', (
@@ -2926,6 +3207,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -2936,6 +3218,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -2946,6 +3229,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -2956,6 +3240,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -2966,6 +3251,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -2976,6 +3262,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -2986,6 +3273,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -2996,6 +3284,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3005,7 +3294,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cloc
 class Compiler(_Element):
     """``<compiler>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('compiler', 'compiler', (
@@ -3047,6 +3337,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-autolimits
             """
+            ...
 
         @autolimits.setter
         def autolimits(self, value: _builtins.bool | None) -> None: ...
@@ -3057,6 +3348,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundmass
             """
+            ...
 
         @boundmass.setter
         def boundmass(self, value: _builtins.float | None) -> None: ...
@@ -3067,6 +3359,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundinertia
             """
+            ...
 
         @boundinertia.setter
         def boundinertia(self, value: _builtins.float | None) -> None: ...
@@ -3079,6 +3372,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-settotalmass
             """
+            ...
 
         @settotalmass.setter
         def settotalmass(self, value: _builtins.float | None) -> None: ...
@@ -3089,6 +3383,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-balanceinertia
             """
+            ...
 
         @balanceinertia.setter
         def balanceinertia(self, value: _builtins.bool | None) -> None: ...
@@ -3101,6 +3396,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-strippath
             """
+            ...
 
         @strippath.setter
         def strippath(self, value: _builtins.bool | None) -> None: ...
@@ -3113,6 +3409,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-coordinate
             """
+            ...
 
         @coordinate.setter
         def coordinate(self, value: Literal["local", "global"] | None) -> None: ...
@@ -3125,6 +3422,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-angle
             """
+            ...
 
         @angle.setter
         def angle(self, value: Literal["radian", "degree"] | None) -> None: ...
@@ -3135,6 +3433,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fitaabb
             """
+            ...
 
         @fitaabb.setter
         def fitaabb(self, value: _builtins.bool | None) -> None: ...
@@ -3147,6 +3446,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-eulerseq
             """
+            ...
 
         @eulerseq.setter
         def eulerseq(self, value: _builtins.str | None) -> None: ...
@@ -3157,6 +3457,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-meshdir
             """
+            ...
 
         @meshdir.setter
         def meshdir(self, value: _builtins.str | None) -> None: ...
@@ -3167,6 +3468,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-texturedir
             """
+            ...
 
         @texturedir.setter
         def texturedir(self, value: _builtins.str | None) -> None: ...
@@ -3177,6 +3479,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-discardvisual
             """
+            ...
 
         @discardvisual.setter
         def discardvisual(self, value: _builtins.bool | None) -> None: ...
@@ -3189,6 +3492,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-usethread
             """
+            ...
 
         @usethread.setter
         def usethread(self, value: _builtins.bool | None) -> None: ...
@@ -3199,6 +3503,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fusestatic
             """
+            ...
 
         @fusestatic.setter
         def fusestatic(self, value: _builtins.bool | None) -> None: ...
@@ -3211,6 +3516,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiafromgeom
             """
+            ...
 
         @inertiafromgeom.setter
         def inertiafromgeom(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -3223,6 +3529,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiagrouprange
             """
+            ...
 
         @inertiagrouprange.setter
         def inertiagrouprange(self, value: tuple[_builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -3233,6 +3540,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-saveinertial
             """
+            ...
 
         @saveinertial.setter
         def saveinertial(self, value: _builtins.bool | None) -> None: ...
@@ -3245,6 +3553,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecompiled
             """
+            ...
 
         @savecompiled.setter
         def savecompiled(self, value: _builtins.bool | None) -> None: ...
@@ -3257,6 +3566,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecanonical
             """
+            ...
 
         @savecanonical.setter
         def savecanonical(self, value: _builtins.bool | None) -> None: ...
@@ -3269,6 +3579,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-assetdir
             """
+            ...
 
         @assetdir.setter
         def assetdir(self, value: _builtins.str | None) -> None: ...
@@ -3279,6 +3590,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-alignfree
             """
+            ...
 
         @alignfree.setter
         def alignfree(self, value: _builtins.bool | None) -> None: ...
@@ -3289,6 +3601,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
             """
+            ...
 
         @conflict.setter
         def conflict(self, value: Literal["warning", "merge", "error"] | None) -> None: ...
@@ -3301,6 +3614,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-passthrough
             """
+            ...
 
         @passthrough.setter
         def passthrough(self, value: Literal["none", "textures"] | None) -> None: ...
@@ -3308,9 +3622,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
         @property
         def lengthrange(self) -> Lengthrange:
             """The ``<lengthrange>`` child, created on first use."""
+            ...
 
         def add_lengthrange(self, **kwargs: Unpack[LengthrangeAttributes]) -> Lengthrange:
             """Add a ``<lengthrange>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["lengthrange"], /, **kwargs: Unpack[LengthrangeAttributes]) -> Lengthrange: ...
@@ -3318,6 +3634,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["lengthrange"], position: _builtins.int, /, **kwargs: Unpack[LengthrangeAttributes]) -> Lengthrange: ...
@@ -3325,13 +3642,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Config(_Element):
     """``<config>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('config', 'config', (
@@ -3350,6 +3669,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-key
             """
+            ...
 
         @key.setter
         def key(self, value: _builtins.str | None) -> None: ...
@@ -3360,6 +3680,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
             """
+            ...
 
         @value.setter
         def value(self, value: _builtins.str | None) -> None: ...
@@ -3369,7 +3690,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-co
 class Connect(_Element):
     """``<connect>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('connect', 'connect', (
@@ -3395,6 +3717,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -3405,6 +3728,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -3417,6 +3741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -3429,6 +3754,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3441,6 +3767,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3451,6 +3778,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -3461,6 +3789,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -3471,6 +3800,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-anchor
             """
+            ...
 
         @anchor.setter
         def anchor(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3481,6 +3811,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site1
             """
+            ...
 
         @site1.setter
         def site1(self, value: _builtins.str | Site | None) -> None: ...
@@ -3491,6 +3822,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site2
             """
+            ...
 
         @site2.setter
         def site2(self, value: _builtins.str | Site | None) -> None: ...
@@ -3500,7 +3832,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-co
 class Contact(_Element):
     """``<contact>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('contact', 'contact', (
@@ -3514,16 +3847,20 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact"""
         @property
         def pair(self) -> _builtins.list[Pair]:
             """The ``<pair>`` children, in document order."""
+            ...
 
         def add_pair(self, **kwargs: Unpack[PairAttributes]) -> Pair:
             """Add a ``<pair>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def exclude(self) -> _builtins.list[Exclude]:
             """The ``<exclude>`` children, in document order."""
+            ...
 
         def add_exclude(self, **kwargs: Unpack[ExcludeAttributes]) -> Exclude:
             """Add a ``<exclude>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["pair"], /, **kwargs: Unpack[PairAttributes]) -> Pair: ...
@@ -3533,6 +3870,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["pair"], position: _builtins.int, /, **kwargs: Unpack[PairAttributes]) -> Pair: ...
@@ -3542,13 +3880,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Custom(_Element):
     """``<custom>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('custom', 'custom', (
@@ -3563,23 +3903,29 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom"""
         @property
         def numeric(self) -> _builtins.list[Numeric]:
             """The ``<numeric>`` children, in document order."""
+            ...
 
         def add_numeric(self, **kwargs: Unpack[NumericAttributes]) -> Numeric:
             """Add a ``<numeric>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def text(self) -> _builtins.list[Text]:
             """The ``<text>`` children, in document order."""
+            ...
 
         def add_text(self, **kwargs: Unpack[TextAttributes]) -> Text:
             """Add a ``<text>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tuple(self) -> _builtins.list[Tuple]:
             """The ``<tuple>`` children, in document order."""
+            ...
 
         def add_tuple(self, **kwargs: Unpack[TupleAttributes]) -> Tuple:
             """Add a ``<tuple>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["numeric"], /, **kwargs: Unpack[NumericAttributes]) -> Numeric: ...
@@ -3591,6 +3937,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["numeric"], position: _builtins.int, /, **kwargs: Unpack[NumericAttributes]) -> Numeric: ...
@@ -3602,13 +3949,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Cylinder(_Element):
     """``<cylinder>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('cylinder', 'cylinder', (
@@ -3650,6 +3999,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -3660,6 +4010,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -3670,6 +4021,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -3680,6 +4032,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -3690,6 +4043,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -3700,6 +4054,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -3710,6 +4065,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3720,6 +4076,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3732,6 +4089,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -3744,6 +4102,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -3754,6 +4113,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3764,6 +4124,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3776,6 +4137,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3788,6 +4150,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3798,6 +4161,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -3810,6 +4174,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -3820,6 +4185,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -3830,6 +4196,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -3840,6 +4207,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -3850,6 +4218,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -3860,6 +4229,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -3870,6 +4240,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -3880,6 +4251,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -3890,6 +4262,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: _builtins.float | None) -> None: ...
@@ -3900,6 +4273,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
             """
+            ...
 
         @area.setter
         def area(self, value: _builtins.float | None) -> None: ...
@@ -3910,6 +4284,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
             """
+            ...
 
         @diameter.setter
         def diameter(self, value: _builtins.float | None) -> None: ...
@@ -3920,6 +4295,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
             """
+            ...
 
         @bias.setter
         def bias(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -3929,7 +4305,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cy
 class Damper(_Element):
     """``<damper>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('damper', 'damper', (
@@ -3967,6 +4344,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -3977,6 +4355,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -3987,6 +4366,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -3997,6 +4377,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -4007,6 +4388,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -4017,6 +4399,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -4027,6 +4410,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4037,6 +4421,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4049,6 +4434,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -4059,6 +4445,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4069,6 +4456,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4081,6 +4469,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4093,6 +4482,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4103,6 +4493,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -4115,6 +4506,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -4125,6 +4517,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -4135,6 +4528,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -4145,6 +4539,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -4155,6 +4550,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -4165,6 +4561,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -4175,6 +4572,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -4185,6 +4583,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -4195,6 +4594,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -4204,7 +4604,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-da
 class Dcmotor(_Element):
     """``<dcmotor>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('dcmotor', 'dcmotor', (
@@ -4250,6 +4651,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -4260,6 +4662,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -4270,6 +4673,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -4280,6 +4684,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -4290,6 +4695,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -4300,6 +4706,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -4310,6 +4717,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4320,6 +4728,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4332,6 +4741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -4342,6 +4752,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4354,6 +4765,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4366,6 +4778,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4376,6 +4789,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -4388,6 +4802,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -4398,6 +4813,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -4408,6 +4824,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -4418,6 +4835,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -4428,6 +4846,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -4438,6 +4857,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -4448,6 +4868,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -4458,6 +4879,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -4468,6 +4890,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
             """
+            ...
 
         @motorconst.setter
         def motorconst(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4478,6 +4901,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
             """
+            ...
 
         @resistance.setter
         def resistance(self, value: _builtins.float | None) -> None: ...
@@ -4488,6 +4912,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
             """
+            ...
 
         @nominal.setter
         def nominal(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4498,6 +4923,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
             """
+            ...
 
         @saturation.setter
         def saturation(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4508,6 +4934,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
             """
+            ...
 
         @inductance.setter
         def inductance(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4518,6 +4945,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
             """
+            ...
 
         @cogging.setter
         def cogging(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4528,6 +4956,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
             """
+            ...
 
         @controller.setter
         def controller(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4538,6 +4967,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             """
+            ...
 
         @thermal.setter
         def thermal(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4548,6 +4978,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
             """
+            ...
 
         @lugre.setter
         def lugre(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4560,6 +4991,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["pos", "vel", "ff", "voltage"] | Collection[Literal["pos", "vel", "ff", "voltage"]] | None) -> None: ...
@@ -4569,7 +5001,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dc
 class Default(_Element):
     """``<default>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('default', 'default', (
@@ -4609,6 +5042,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | None) -> None: ...
@@ -4616,170 +5050,218 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default"""
         @property
         def default(self) -> _builtins.list[Default]:
             """The ``<default>`` children, in document order."""
+            ...
 
         def add_default(self, **kwargs: Unpack[DefaultAttributes]) -> Default:
             """Add a ``<default>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def mesh(self) -> DefaultMesh:
             """The ``<mesh>`` child, created on first use."""
+            ...
 
         def add_mesh(self, **kwargs: Unpack[DefaultMeshAttributes]) -> DefaultMesh:
             """Add a ``<mesh>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def material(self) -> DefaultMaterial:
             """The ``<material>`` child, created on first use."""
+            ...
 
         def add_material(self, **kwargs: Unpack[DefaultMaterialAttributes]) -> DefaultMaterial:
             """Add a ``<material>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def joint(self) -> DefaultJoint:
             """The ``<joint>`` child, created on first use."""
+            ...
 
         def add_joint(self, **kwargs: Unpack[DefaultJointAttributes]) -> DefaultJoint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def geom(self) -> DefaultGeom:
             """The ``<geom>`` child, created on first use."""
+            ...
 
         def add_geom(self, **kwargs: Unpack[DefaultGeomAttributes]) -> DefaultGeom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def site(self) -> DefaultSite:
             """The ``<site>`` child, created on first use."""
+            ...
 
         def add_site(self, **kwargs: Unpack[DefaultSiteAttributes]) -> DefaultSite:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def camera(self) -> DefaultCamera:
             """The ``<camera>`` child, created on first use."""
+            ...
 
         def add_camera(self, **kwargs: Unpack[DefaultCameraAttributes]) -> DefaultCamera:
             """Add a ``<camera>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def light(self) -> DefaultLight:
             """The ``<light>`` child, created on first use."""
+            ...
 
         def add_light(self, **kwargs: Unpack[DefaultLightAttributes]) -> DefaultLight:
             """Add a ``<light>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def pair(self) -> DefaultPair:
             """The ``<pair>`` child, created on first use."""
+            ...
 
         def add_pair(self, **kwargs: Unpack[DefaultPairAttributes]) -> DefaultPair:
             """Add a ``<pair>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def equality(self) -> DefaultEquality:
             """The ``<equality>`` child, created on first use."""
+            ...
 
         def add_equality(self, **kwargs: Unpack[DefaultEqualityAttributes]) -> DefaultEquality:
             """Add a ``<equality>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendon(self) -> DefaultTendon:
             """The ``<tendon>`` child, created on first use."""
+            ...
 
         def add_tendon(self, **kwargs: Unpack[DefaultTendonAttributes]) -> DefaultTendon:
             """Add a ``<tendon>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def general(self) -> DefaultGeneral:
             """The ``<general>`` child, created on first use."""
+            ...
 
         def add_general(self, **kwargs: Unpack[DefaultGeneralAttributes]) -> DefaultGeneral:
             """Add a ``<general>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def motor(self) -> DefaultMotor:
             """The ``<motor>`` child, created on first use."""
+            ...
 
         def add_motor(self, **kwargs: Unpack[DefaultMotorAttributes]) -> DefaultMotor:
             """Add a ``<motor>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def position(self) -> DefaultPosition:
             """The ``<position>`` child, created on first use."""
+            ...
 
         def add_position(self, **kwargs: Unpack[DefaultPositionAttributes]) -> DefaultPosition:
             """Add a ``<position>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def velocity(self) -> DefaultVelocity:
             """The ``<velocity>`` child, created on first use."""
+            ...
 
         def add_velocity(self, **kwargs: Unpack[DefaultVelocityAttributes]) -> DefaultVelocity:
             """Add a ``<velocity>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def intvelocity(self) -> DefaultIntvelocity:
             """The ``<intvelocity>`` child, created on first use."""
+            ...
 
         def add_intvelocity(self, **kwargs: Unpack[DefaultIntvelocityAttributes]) -> DefaultIntvelocity:
             """Add a ``<intvelocity>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def orientation(self) -> DefaultOrientation:
             """The ``<orientation>`` child, created on first use."""
+            ...
 
         def add_orientation(self, **kwargs: Unpack[DefaultOrientationAttributes]) -> DefaultOrientation:
             """Add a ``<orientation>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def pid(self) -> DefaultPid:
             """The ``<pid>`` child, created on first use."""
+            ...
 
         def add_pid(self, **kwargs: Unpack[DefaultPidAttributes]) -> DefaultPid:
             """Add a ``<pid>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def damper(self) -> DefaultDamper:
             """The ``<damper>`` child, created on first use."""
+            ...
 
         def add_damper(self, **kwargs: Unpack[DefaultDamperAttributes]) -> DefaultDamper:
             """Add a ``<damper>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def cylinder(self) -> DefaultCylinder:
             """The ``<cylinder>`` child, created on first use."""
+            ...
 
         def add_cylinder(self, **kwargs: Unpack[DefaultCylinderAttributes]) -> DefaultCylinder:
             """Add a ``<cylinder>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def muscle(self) -> DefaultMuscle:
             """The ``<muscle>`` child, created on first use."""
+            ...
 
         def add_muscle(self, **kwargs: Unpack[DefaultMuscleAttributes]) -> DefaultMuscle:
             """Add a ``<muscle>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def adhesion(self) -> DefaultAdhesion:
             """The ``<adhesion>`` child, created on first use."""
+            ...
 
         def add_adhesion(self, **kwargs: Unpack[DefaultAdhesionAttributes]) -> DefaultAdhesion:
             """Add a ``<adhesion>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def dcmotor(self) -> DefaultDcmotor:
             """The ``<dcmotor>`` child, created on first use."""
+            ...
 
         def add_dcmotor(self, **kwargs: Unpack[DefaultDcmotorAttributes]) -> DefaultDcmotor:
             """Add a ``<dcmotor>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def texture(self) -> DefaultTexture:
             """The ``<texture>`` child, created on first use."""
+            ...
 
         def add_texture(self, **kwargs: Unpack[DefaultTextureAttributes]) -> DefaultTexture:
             """Add a ``<texture>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["default"], /, **kwargs: Unpack[DefaultAttributes]) -> Default: ...
@@ -4833,6 +5315,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["default"], position: _builtins.int, /, **kwargs: Unpack[DefaultAttributes]) -> Default: ...
@@ -4886,13 +5369,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class DefaultAdhesion(_Element):
     """``<adhesion>`` in a ``<default>`` class: the defaults of ``<adhesion>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adhesion"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adhesion
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('adhesion', 'default_adhesion', (
@@ -4916,6 +5401,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -4926,6 +5412,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -4936,6 +5423,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -4946,6 +5434,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -4956,6 +5445,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4966,6 +5456,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4978,6 +5469,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -4988,6 +5480,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -4998,6 +5491,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
             """
+            ...
 
         @gain.setter
         def gain(self, value: _builtins.float | None) -> None: ...
@@ -5007,7 +5501,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adh
 class DefaultCamera(_Element):
     """``<camera>`` in a ``<default>`` class: the defaults of ``<camera>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-camera"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-camera
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('camera', 'default_camera', (
@@ -5040,6 +5535,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
             """
+            ...
 
         @projection.setter
         def projection(self, value: Literal["perspective", "orthographic"] | None) -> None: ...
@@ -5054,6 +5550,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
             """
+            ...
 
         @fovy.setter
         def fovy(self, value: _builtins.float | None) -> None: ...
@@ -5066,6 +5563,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
             """
+            ...
 
         @ipd.setter
         def ipd(self, value: _builtins.float | None) -> None: ...
@@ -5078,6 +5576,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
             """
+            ...
 
         @resolution.setter
         def resolution(self, value: tuple[_builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -5088,6 +5587,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
             """
+            ...
 
         @output.setter
         def output(self, value: Literal["rgb", "depth", "distance", "normal", "segmentation"] | Collection[Literal["rgb", "depth", "distance", "normal", "segmentation"]] | None) -> None: ...
@@ -5100,6 +5600,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5112,6 +5613,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5122,6 +5624,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5132,6 +5635,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5142,6 +5646,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5152,6 +5657,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5164,6 +5670,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
             """
+            ...
 
         @mode.setter
         def mode(self, value: Literal["fixed", "track", "trackcom", "targetbody", "targetbodycom"] | None) -> None: ...
@@ -5174,6 +5681,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
             """
+            ...
 
         @focal.setter
         def focal(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5184,6 +5692,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
             """
+            ...
 
         @focalpixel.setter
         def focalpixel(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5194,6 +5703,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
             """
+            ...
 
         @principal.setter
         def principal(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5204,6 +5714,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
             """
+            ...
 
         @principalpixel.setter
         def principalpixel(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5214,6 +5725,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
             """
+            ...
 
         @sensorsize.setter
         def sensorsize(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5224,6 +5736,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5233,7 +5746,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cam
 class DefaultCylinder(_Element):
     """``<cylinder>`` in a ``<default>`` class: the defaults of ``<cylinder>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cylinder"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cylinder
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('cylinder', 'default_cylinder', (
@@ -5265,6 +5779,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -5275,6 +5790,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -5285,6 +5801,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -5295,6 +5812,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -5305,6 +5823,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5315,6 +5834,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5327,6 +5847,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -5339,6 +5860,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -5349,6 +5871,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5361,6 +5884,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5373,6 +5897,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5383,6 +5908,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -5395,6 +5921,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -5405,6 +5932,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: _builtins.float | None) -> None: ...
@@ -5415,6 +5943,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
             """
+            ...
 
         @area.setter
         def area(self, value: _builtins.float | None) -> None: ...
@@ -5425,6 +5954,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
             """
+            ...
 
         @diameter.setter
         def diameter(self, value: _builtins.float | None) -> None: ...
@@ -5435,6 +5965,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
             """
+            ...
 
         @bias.setter
         def bias(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5444,7 +5975,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cyl
 class DefaultDamper(_Element):
     """``<damper>`` in a ``<default>`` class: the defaults of ``<damper>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-damper"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-damper
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('damper', 'default_damper', (
@@ -5472,6 +6004,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -5482,6 +6015,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -5492,6 +6026,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -5502,6 +6037,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -5512,6 +6048,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5522,6 +6059,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5534,6 +6072,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -5544,6 +6083,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5556,6 +6096,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5568,6 +6109,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5578,6 +6120,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -5590,6 +6133,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -5600,6 +6144,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -5609,7 +6154,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dam
 class DefaultDcmotor(_Element):
     """``<dcmotor>`` in a ``<default>`` class: the defaults of ``<dcmotor>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcmotor"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcmotor
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('dcmotor', 'default_dcmotor', (
@@ -5645,6 +6191,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -5655,6 +6202,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -5665,6 +6213,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -5675,6 +6224,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -5685,6 +6235,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5695,6 +6246,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5707,6 +6259,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -5719,6 +6272,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5731,6 +6285,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5741,6 +6296,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -5753,6 +6309,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -5763,6 +6320,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
             """
+            ...
 
         @motorconst.setter
         def motorconst(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5773,6 +6331,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
             """
+            ...
 
         @resistance.setter
         def resistance(self, value: _builtins.float | None) -> None: ...
@@ -5783,6 +6342,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
             """
+            ...
 
         @nominal.setter
         def nominal(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5793,6 +6353,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
             """
+            ...
 
         @saturation.setter
         def saturation(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5803,6 +6364,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
             """
+            ...
 
         @inductance.setter
         def inductance(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5813,6 +6375,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
             """
+            ...
 
         @cogging.setter
         def cogging(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5823,6 +6386,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
             """
+            ...
 
         @controller.setter
         def controller(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5833,6 +6397,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             """
+            ...
 
         @thermal.setter
         def thermal(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5843,6 +6408,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
             """
+            ...
 
         @lugre.setter
         def lugre(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5855,6 +6421,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["pos", "vel", "ff", "voltage"] | Collection[Literal["pos", "vel", "ff", "voltage"]] | None) -> None: ...
@@ -5864,7 +6431,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcm
 class DefaultEquality(_Element):
     """``<equality>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('equality', 'default_equality', (
@@ -5882,6 +6450,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equ
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -5892,6 +6461,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equ
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5902,6 +6472,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equ
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -5911,7 +6482,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equ
 class DefaultGeneral(_Element):
     """``<general>`` in a ``<default>`` class: the defaults of ``<general>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-general"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-general
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('general', 'default_general', (
@@ -5953,6 +6525,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -5963,6 +6536,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -5973,6 +6547,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -5983,6 +6558,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -5993,6 +6569,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6003,6 +6580,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6015,6 +6593,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -6027,6 +6606,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -6039,6 +6619,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
             """
+            ...
 
         @actlimited.setter
         def actlimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -6049,6 +6630,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6059,6 +6641,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
             """
+            ...
 
         @actrange.setter
         def actrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6071,6 +6654,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6083,6 +6667,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6093,6 +6678,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -6105,6 +6691,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -6119,6 +6706,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
             """
+            ...
 
         @actdim.setter
         def actdim(self, value: _builtins.int | None) -> None: ...
@@ -6131,6 +6719,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["expmap", "quat"] | None) -> None: ...
@@ -6141,6 +6730,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
             """
+            ...
 
         @velrange.setter
         def velrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6151,6 +6741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
             """
+            ...
 
         @ffrange.setter
         def ffrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6163,6 +6754,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -6175,6 +6767,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
             """
+            ...
 
         @dyntype.setter
         def dyntype(self, value: Literal["none", "integrator", "filter", "filterexact", "muscle", "dcmotor", "pid", "user"] | None) -> None: ...
@@ -6189,6 +6782,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
             """
+            ...
 
         @gaintype.setter
         def gaintype(self, value: Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", "user"] | None) -> None: ...
@@ -6203,6 +6797,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
             """
+            ...
 
         @biastype.setter
         def biastype(self, value: Literal["none", "affine", "muscle", "dcmotor", "so3", "user"] | None) -> None: ...
@@ -6215,6 +6810,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
             """
+            ...
 
         @dynprm.setter
         def dynprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6227,6 +6823,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
             """
+            ...
 
         @gainprm.setter
         def gainprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6237,6 +6834,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
             """
+            ...
 
         @biasprm.setter
         def biasprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6247,6 +6845,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
             """
+            ...
 
         @actearly.setter
         def actearly(self, value: _builtins.bool | None) -> None: ...
@@ -6256,7 +6855,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-gen
 class DefaultGeom(_Element):
     """``<geom>`` in a ``<default>`` class: the defaults of ``<geom>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geom"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geom
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('geom', 'default_geom', (
@@ -6307,6 +6907,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"] | None) -> None: ...
@@ -6319,6 +6920,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
             """
+            ...
 
         @contype.setter
         def contype(self, value: _builtins.int | None) -> None: ...
@@ -6331,6 +6933,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
             """
+            ...
 
         @conaffinity.setter
         def conaffinity(self, value: _builtins.int | None) -> None: ...
@@ -6343,6 +6946,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
             """
+            ...
 
         @condim.setter
         def condim(self, value: _builtins.int | None) -> None: ...
@@ -6353,6 +6957,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -6363,6 +6968,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
             """
+            ...
 
         @priority.setter
         def priority(self, value: _builtins.int | None) -> None: ...
@@ -6375,6 +6981,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
             """
+            ...
 
         @size.setter
         def size(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6385,6 +6992,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -6397,6 +7005,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
             """
+            ...
 
         @friction.setter
         def friction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6409,6 +7018,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
             """
+            ...
 
         @mass.setter
         def mass(self, value: _builtins.float | None) -> None: ...
@@ -6421,6 +7031,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
             """
+            ...
 
         @density.setter
         def density(self, value: _builtins.float | None) -> None: ...
@@ -6433,6 +7044,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
             """
+            ...
 
         @shellinertia.setter
         def shellinertia(self, value: _builtins.bool | None) -> None: ...
@@ -6445,6 +7057,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
             """
+            ...
 
         @solmix.setter
         def solmix(self, value: _builtins.float | None) -> None: ...
@@ -6457,6 +7070,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6469,6 +7083,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6479,6 +7094,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -6489,6 +7105,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
             """
+            ...
 
         @gap.setter
         def gap(self, value: _builtins.float | None) -> None: ...
@@ -6499,6 +7116,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
             """
+            ...
 
         @surfacevel.setter
         def surfacevel(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6509,6 +7127,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
             """
+            ...
 
         @adhesion.setter
         def adhesion(self, value: _builtins.float | None) -> None: ...
@@ -6521,6 +7140,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
             """
+            ...
 
         @fromto.setter
         def fromto(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6535,6 +7155,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6547,6 +7168,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6557,6 +7179,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6567,6 +7190,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6577,6 +7201,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6587,6 +7212,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6597,6 +7223,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
             """
+            ...
 
         @hfield.setter
         def hfield(self, value: _builtins.str | Hfield | None) -> None: ...
@@ -6607,6 +7234,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
             """
+            ...
 
         @mesh.setter
         def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
@@ -6621,6 +7249,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
             """
+            ...
 
         @fitscale.setter
         def fitscale(self, value: _builtins.float | None) -> None: ...
@@ -6633,6 +7262,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6643,6 +7273,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
             """
+            ...
 
         @fluidshape.setter
         def fluidshape(self, value: Literal["none", "ellipsoid"] | None) -> None: ...
@@ -6655,6 +7286,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
             """
+            ...
 
         @fluidcoef.setter
         def fluidcoef(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6665,6 +7297,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6677,6 +7310,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
             """
+            ...
 
         @castshadow.setter
         def castshadow(self, value: _builtins.bool | None) -> None: ...
@@ -6686,7 +7320,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-geo
 class DefaultIntvelocity(_Element):
     """``<intvelocity>`` in a ``<default>`` class: the defaults of ``<intvelocity>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-intvelocity"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-intvelocity
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('intvelocity', 'default_intvelocity', (
@@ -6720,6 +7355,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -6730,6 +7366,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -6740,6 +7377,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -6750,6 +7388,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -6760,6 +7399,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6770,6 +7410,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6782,6 +7423,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -6794,6 +7436,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -6806,6 +7449,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
             """
+            ...
 
         @actlimited.setter
         def actlimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -6816,6 +7460,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6826,6 +7471,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
             """
+            ...
 
         @actrange.setter
         def actrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6836,6 +7482,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -6848,6 +7495,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6860,6 +7508,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6870,6 +7519,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -6882,6 +7532,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -6892,6 +7543,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -6902,6 +7554,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -6912,6 +7565,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -6921,7 +7575,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-int
 class DefaultJoint(_Element):
     """``<joint>`` in a ``<default>`` class: the defaults of ``<joint>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joint"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joint
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('joint', 'default_joint', (
@@ -6961,6 +7616,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["free", "ball", "slide", "hinge"] | None) -> None: ...
@@ -6971,6 +7627,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -6983,6 +7640,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -6997,6 +7655,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
             """
+            ...
 
         @axis.setter
         def axis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7009,6 +7668,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
             """
+            ...
 
         @springdamper.setter
         def springdamper(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7023,6 +7683,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
             """
+            ...
 
         @limited.setter
         def limited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -7037,6 +7698,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
             """
+            ...
 
         @actuatorfrclimited.setter
         def actuatorfrclimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -7049,6 +7711,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
             """
+            ...
 
         @solreflimit.setter
         def solreflimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7061,6 +7724,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
             """
+            ...
 
         @solimplimit.setter
         def solimplimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7073,6 +7737,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7085,6 +7750,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
             """
+            ...
 
         @solimpfriction.setter
         def solimpfriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7097,6 +7763,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7107,6 +7774,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7117,6 +7785,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
             """
+            ...
 
         @actuatorfrcrange.setter
         def actuatorfrcrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7127,6 +7796,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
             """
+            ...
 
         @actuatorgravcomp.setter
         def actuatorgravcomp(self, value: _builtins.bool | None) -> None: ...
@@ -7137,6 +7807,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -7147,6 +7818,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
             """
+            ...
 
         @ref.setter
         def ref(self, value: _builtins.float | None) -> None: ...
@@ -7157,6 +7829,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
             """
+            ...
 
         @springref.setter
         def springref(self, value: _builtins.float | None) -> None: ...
@@ -7167,6 +7840,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -7179,6 +7853,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7189,6 +7864,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
             """
+            ...
 
         @frictionloss.setter
         def frictionloss(self, value: _builtins.float | None) -> None: ...
@@ -7199,6 +7875,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7211,6 +7888,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
             """
+            ...
 
         @springyield.setter
         def springyield(self, value: _builtins.float | None) -> None: ...
@@ -7220,7 +7898,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-joi
 class DefaultLight(_Element):
     """``<light>`` in a ``<default>`` class: the defaults of ``<light>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-light"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-light
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('light', 'default_light', (
@@ -7252,6 +7931,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
             """
+            ...
 
         @directional.setter
         def directional(self, value: _builtins.bool | None) -> None: ...
@@ -7262,6 +7942,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["spot", "directional", "point", "image"] | None) -> None: ...
@@ -7274,6 +7955,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
             """
+            ...
 
         @castshadow.setter
         def castshadow(self, value: _builtins.bool | None) -> None: ...
@@ -7286,6 +7968,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -7298,6 +7981,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7310,6 +7994,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
             """
+            ...
 
         @dir.setter
         def dir(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7322,6 +8007,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
             """
+            ...
 
         @bulbradius.setter
         def bulbradius(self, value: _builtins.float | None) -> None: ...
@@ -7332,6 +8018,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
             """
+            ...
 
         @intensity.setter
         def intensity(self, value: _builtins.float | None) -> None: ...
@@ -7344,6 +8031,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
             """
+            ...
 
         @range.setter
         def range(self, value: _builtins.float | None) -> None: ...
@@ -7356,6 +8044,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
             """
+            ...
 
         @attenuation.setter
         def attenuation(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7368,6 +8057,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -7380,6 +8070,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
             """
+            ...
 
         @softness.setter
         def softness(self, value: _builtins.float | None) -> None: ...
@@ -7392,6 +8083,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
             """
+            ...
 
         @exponent.setter
         def exponent(self, value: _builtins.float | None) -> None: ...
@@ -7402,6 +8094,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
             """
+            ...
 
         @ambient.setter
         def ambient(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7414,6 +8107,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
             """
+            ...
 
         @diffuse.setter
         def diffuse(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7426,6 +8120,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
             """
+            ...
 
         @specular.setter
         def specular(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7438,6 +8133,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
             """
+            ...
 
         @mode.setter
         def mode(self, value: Literal["fixed", "track", "trackcom", "targetbody", "targetbodycom"] | None) -> None: ...
@@ -7447,7 +8143,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-lig
 class DefaultMaterial(_Element):
     """``<material>`` in a ``<default>`` class: the defaults of ``<material>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-material"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-material
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('material', 'default_material', (
@@ -7473,6 +8170,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
             """
+            ...
 
         @texture.setter
         def texture(self, value: _builtins.str | Texture | None) -> None: ...
@@ -7485,6 +8183,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
             """
+            ...
 
         @texrepeat.setter
         def texrepeat(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7495,6 +8194,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
             """
+            ...
 
         @texuniform.setter
         def texuniform(self, value: _builtins.bool | None) -> None: ...
@@ -7505,6 +8205,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
             """
+            ...
 
         @emission.setter
         def emission(self, value: _builtins.float | None) -> None: ...
@@ -7517,6 +8218,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
             """
+            ...
 
         @specular.setter
         def specular(self, value: _builtins.float | None) -> None: ...
@@ -7529,6 +8231,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
             """
+            ...
 
         @shininess.setter
         def shininess(self, value: _builtins.float | None) -> None: ...
@@ -7539,6 +8242,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
             """
+            ...
 
         @reflectance.setter
         def reflectance(self, value: _builtins.float | None) -> None: ...
@@ -7551,6 +8255,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
             """
+            ...
 
         @metallic.setter
         def metallic(self, value: _builtins.float | None) -> None: ...
@@ -7563,6 +8268,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
             """
+            ...
 
         @roughness.setter
         def roughness(self, value: _builtins.float | None) -> None: ...
@@ -7575,6 +8281,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7582,9 +8289,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
         @property
         def layer(self) -> _builtins.list[Layer]:
             """The ``<layer>`` children, in document order."""
+            ...
 
         def add_layer(self, **kwargs: Unpack[LayerAttributes]) -> Layer:
             """Add a ``<layer>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["layer"], /, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
@@ -7592,6 +8301,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["layer"], position: _builtins.int, /, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
@@ -7599,13 +8309,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mat
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class DefaultMesh(_Element):
     """``<mesh>`` in a ``<default>`` class: the defaults of ``<mesh>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mesh"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mesh
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('mesh', 'default_mesh', (
@@ -7625,6 +8337,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mes
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
             """
+            ...
 
         @scale.setter
         def scale(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7637,6 +8350,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mes
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
             """
+            ...
 
         @maxhullvert.setter
         def maxhullvert(self, value: _builtins.int | None) -> None: ...
@@ -7649,6 +8363,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mes
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
             """
+            ...
 
         @inertia.setter
         def inertia(self, value: Literal["convex", "legacy", "exact", "shell"] | None) -> None: ...
@@ -7658,7 +8373,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mes
 class DefaultMotor(_Element):
     """``<motor>`` in a ``<default>`` class: the defaults of ``<motor>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-motor"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-motor
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('motor', 'default_motor', (
@@ -7686,6 +8402,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -7696,6 +8413,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -7706,6 +8424,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -7716,6 +8435,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -7726,6 +8446,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7736,6 +8457,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7748,6 +8470,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -7760,6 +8483,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -7770,6 +8494,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7782,6 +8507,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7794,6 +8520,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7804,6 +8531,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -7816,6 +8544,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -7825,7 +8554,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mot
 class DefaultMuscle(_Element):
     """``<muscle>`` in a ``<default>`` class: the defaults of ``<muscle>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-muscle"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-muscle
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('muscle', 'default_muscle', (
@@ -7862,6 +8592,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -7872,6 +8603,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -7882,6 +8614,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -7892,6 +8625,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -7902,6 +8636,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7912,6 +8647,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7924,6 +8660,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -7936,6 +8673,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -7946,6 +8684,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7958,6 +8697,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7970,6 +8710,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -7980,6 +8721,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -7992,6 +8734,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -8002,6 +8745,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8012,6 +8756,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8022,6 +8767,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
             """
+            ...
 
         @force.setter
         def force(self, value: _builtins.float | None) -> None: ...
@@ -8032,6 +8778,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
             """
+            ...
 
         @scale.setter
         def scale(self, value: _builtins.float | None) -> None: ...
@@ -8042,6 +8789,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
             """
+            ...
 
         @lmin.setter
         def lmin(self, value: _builtins.float | None) -> None: ...
@@ -8052,6 +8800,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
             """
+            ...
 
         @lmax.setter
         def lmax(self, value: _builtins.float | None) -> None: ...
@@ -8062,6 +8811,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
             """
+            ...
 
         @vmax.setter
         def vmax(self, value: _builtins.float | None) -> None: ...
@@ -8072,6 +8822,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
             """
+            ...
 
         @fpmax.setter
         def fpmax(self, value: _builtins.float | None) -> None: ...
@@ -8082,6 +8833,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
             """
+            ...
 
         @fvmax.setter
         def fvmax(self, value: _builtins.float | None) -> None: ...
@@ -8091,7 +8843,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-mus
 class DefaultOrientation(_Element):
     """``<orientation>`` in a ``<default>`` class: the defaults of ``<orientation>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-orientation"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-orientation
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('orientation', 'default_orientation', (
@@ -8118,6 +8871,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -8128,6 +8882,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -8138,6 +8893,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -8148,6 +8904,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -8158,6 +8915,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8168,6 +8926,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8180,6 +8939,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -8190,6 +8950,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8200,6 +8961,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -8210,6 +8972,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -8220,6 +8983,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -8230,6 +8994,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["expmap", "quat"] | None) -> None: ...
@@ -8239,7 +9004,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ori
 class DefaultPair(_Element):
     """``<pair>`` in a ``<default>`` class: the defaults of ``<pair>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pair"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pair
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('pair', 'default_pair', (
@@ -8264,6 +9030,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
             """
+            ...
 
         @condim.setter
         def condim(self, value: _builtins.int | None) -> None: ...
@@ -8276,6 +9043,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
             """
+            ...
 
         @friction.setter
         def friction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8288,6 +9056,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8298,6 +9067,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8310,6 +9080,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8320,6 +9091,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
             """
+            ...
 
         @gap.setter
         def gap(self, value: _builtins.float | None) -> None: ...
@@ -8330,6 +9102,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -8340,6 +9113,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
             """
+            ...
 
         @adhesion.setter
         def adhesion(self, value: _builtins.float | None) -> None: ...
@@ -8349,7 +9123,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pai
 class DefaultPid(_Element):
     """``<pid>`` in a ``<default>`` class: the defaults of ``<pid>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('pid', 'default_pid', (
@@ -8388,6 +9163,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -8398,6 +9174,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -8408,6 +9185,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -8418,6 +9196,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -8428,6 +9207,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8438,6 +9218,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8450,6 +9231,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -8462,6 +9244,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -8474,6 +9257,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
             """
+            ...
 
         @posrange.setter
         def posrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8484,6 +9268,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
             """
+            ...
 
         @velrange.setter
         def velrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8494,6 +9279,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
             """
+            ...
 
         @ffrange.setter
         def ffrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8504,6 +9290,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8514,6 +9301,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -8526,6 +9314,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8538,6 +9327,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8548,6 +9338,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -8560,6 +9351,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -8570,6 +9362,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -8580,6 +9373,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -8590,6 +9384,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -8600,6 +9395,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
             """
+            ...
 
         @ki.setter
         def ki(self, value: _builtins.float | None) -> None: ...
@@ -8610,6 +9406,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             """
+            ...
 
         @imax.setter
         def imax(self, value: _builtins.float | None) -> None: ...
@@ -8620,6 +9417,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
             """
+            ...
 
         @slewmax.setter
         def slewmax(self, value: _builtins.float | None) -> None: ...
@@ -8630,6 +9428,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["pos", "vel", "ff", "voltage"] | Collection[Literal["pos", "vel", "ff", "voltage"]] | None) -> None: ...
@@ -8639,7 +9438,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 class DefaultPosition(_Element):
     """``<position>`` in a ``<default>`` class: the defaults of ``<position>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-position"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-position
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('position', 'default_position', (
@@ -8672,6 +9472,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -8682,6 +9483,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -8692,6 +9494,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -8702,6 +9505,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -8712,6 +9516,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8722,6 +9527,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8734,6 +9540,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -8746,6 +9553,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -8756,6 +9564,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -8766,6 +9575,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8778,6 +9588,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8790,6 +9601,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8800,6 +9612,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -8812,6 +9625,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -8822,6 +9636,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -8832,6 +9647,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -8842,6 +9658,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -8852,6 +9669,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: _builtins.float | None) -> None: ...
@@ -8861,7 +9679,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pos
 class DefaultSite(_Element):
     """``<site>`` in a ``<default>`` class: the defaults of ``<site>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-site"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-site
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('site', 'default_site', (
@@ -8892,6 +9711,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"] | None) -> None: ...
@@ -8902,6 +9722,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -8916,6 +9737,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8928,6 +9750,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8938,6 +9761,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8948,6 +9772,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8958,6 +9783,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8968,6 +9794,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -8978,6 +9805,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -8988,6 +9816,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
             """
+            ...
 
         @mesh.setter
         def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
@@ -9002,6 +9831,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
             """
+            ...
 
         @size.setter
         def size(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9014,6 +9844,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
             """
+            ...
 
         @fromto.setter
         def fromto(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9026,6 +9857,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9036,6 +9868,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9045,7 +9878,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-sit
 class DefaultTendon(_Element):
     """``<tendon>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendon', 'default_tendon', (
@@ -9080,6 +9914,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -9092,6 +9927,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-limited
             """
+            ...
 
         @limited.setter
         def limited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -9102,6 +9938,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9112,6 +9949,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreflimit
             """
+            ...
 
         @solreflimit.setter
         def solreflimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9122,6 +9960,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimplimit
             """
+            ...
 
         @solimplimit.setter
         def solimplimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9132,6 +9971,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9142,6 +9982,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimpfriction
             """
+            ...
 
         @solimpfriction.setter
         def solimpfriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9152,6 +9993,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-frictionloss
             """
+            ...
 
         @frictionloss.setter
         def frictionloss(self, value: _builtins.float | None) -> None: ...
@@ -9162,6 +10004,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springlength
             """
+            ...
 
         @springlength.setter
         def springlength(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9172,6 +10015,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-width
             """
+            ...
 
         @width.setter
         def width(self, value: _builtins.float | None) -> None: ...
@@ -9182,6 +10026,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -9192,6 +10037,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -9202,6 +10048,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9212,6 +10059,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9222,6 +10070,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9232,6 +10081,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9244,6 +10094,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrclimited
             """
+            ...
 
         @actuatorfrclimited.setter
         def actuatorfrclimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -9254,6 +10105,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
             """
+            ...
 
         @actuatorfrcrange.setter
         def actuatorfrcrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9266,6 +10118,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springyield
             """
+            ...
 
         @springyield.setter
         def springyield(self, value: _builtins.float | None) -> None: ...
@@ -9276,6 +10129,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -9285,7 +10139,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-ten
 class DefaultTexture(_Element):
     """``<texture>`` in a ``<default>`` class: the defaults of ``<texture>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-texture"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-texture
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('texture', 'default_texture', (
@@ -9318,6 +10173,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["2d", "cube", "skybox"] | None) -> None: ...
@@ -9330,6 +10186,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
             """
+            ...
 
         @colorspace.setter
         def colorspace(self, value: Literal["auto", "linear", "sRGB"] | None) -> None: ...
@@ -9342,6 +10199,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
             """
+            ...
 
         @gridsize.setter
         def gridsize(self, value: tuple[_builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -9354,6 +10212,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
             """
+            ...
 
         @gridlayout.setter
         def gridlayout(self, value: _builtins.str | None) -> None: ...
@@ -9364,6 +10223,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
             """
+            ...
 
         @builtin.setter
         def builtin(self, value: Literal["none", "gradient", "checker", "flat"] | None) -> None: ...
@@ -9376,6 +10236,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
             """
+            ...
 
         @rgb1.setter
         def rgb1(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9388,6 +10249,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
             """
+            ...
 
         @rgb2.setter
         def rgb2(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9398,6 +10260,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
             """
+            ...
 
         @mark.setter
         def mark(self, value: Literal["none", "edge", "cross", "random"] | None) -> None: ...
@@ -9408,6 +10271,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
             """
+            ...
 
         @markrgb.setter
         def markrgb(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9420,6 +10284,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
             """
+            ...
 
         @random.setter
         def random(self, value: _builtins.float | None) -> None: ...
@@ -9430,6 +10295,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
             """
+            ...
 
         @width.setter
         def width(self, value: _builtins.int | None) -> None: ...
@@ -9440,6 +10306,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
             """
+            ...
 
         @height.setter
         def height(self, value: _builtins.int | None) -> None: ...
@@ -9450,6 +10317,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
             """
+            ...
 
         @hflip.setter
         def hflip(self, value: _builtins.bool | None) -> None: ...
@@ -9460,6 +10328,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
             """
+            ...
 
         @vflip.setter
         def vflip(self, value: _builtins.bool | None) -> None: ...
@@ -9472,6 +10341,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
             """
+            ...
 
         @nchannel.setter
         def nchannel(self, value: _builtins.int | None) -> None: ...
@@ -9484,6 +10354,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
             """
+            ...
 
         @embed.setter
         def embed(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -9493,7 +10364,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tex
 class DefaultVelocity(_Element):
     """``<velocity>`` in a ``<default>`` class: the defaults of ``<velocity>`` elements.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-velocity"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-velocity
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('velocity', 'default_velocity', (
@@ -9522,6 +10394,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -9532,6 +10405,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -9542,6 +10416,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -9552,6 +10427,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -9562,6 +10438,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9572,6 +10449,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9584,6 +10462,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -9596,6 +10475,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -9606,6 +10486,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9618,6 +10499,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9630,6 +10512,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9640,6 +10523,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -9652,6 +10536,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -9662,6 +10547,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -9671,7 +10557,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-vel
 class Deformable(_Element):
     """``<deformable>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('deformable', 'deformable', (
@@ -9685,16 +10572,20 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable"
         @property
         def flex(self) -> _builtins.list[Flex]:
             """The ``<flex>`` children, in document order."""
+            ...
 
         def add_flex(self, **kwargs: Unpack[FlexAttributes]) -> Flex:
             """Add a ``<flex>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def skin(self) -> _builtins.list[Skin]:
             """The ``<skin>`` children, in document order."""
+            ...
 
         def add_skin(self, **kwargs: Unpack[SkinAttributes]) -> Skin:
             """Add a ``<skin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["flex"], /, **kwargs: Unpack[FlexAttributes]) -> Flex: ...
@@ -9704,6 +10595,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable"
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["flex"], position: _builtins.int, /, **kwargs: Unpack[FlexAttributes]) -> Flex: ...
@@ -9713,13 +10605,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable"
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Distance(_Element):
     """``<distance>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('distance', 'distance', (
@@ -9747,6 +10641,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -9757,6 +10652,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -9767,6 +10663,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -9777,6 +10674,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -9787,6 +10685,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9797,6 +10696,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -9807,6 +10707,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -9817,6 +10718,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9827,6 +10729,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom1
             """
+            ...
 
         @geom1.setter
         def geom1(self, value: _builtins.str | Geom | None) -> None: ...
@@ -9837,6 +10740,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom2
             """
+            ...
 
         @geom2.setter
         def geom2(self, value: _builtins.str | Geom | None) -> None: ...
@@ -9847,6 +10751,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -9857,6 +10762,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -9866,7 +10772,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-dist
 class EKinetic(_Element):
     """``<e_kinetic>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('e_kinetic', 'e_kinetic', (
@@ -9889,6 +10796,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -9899,6 +10807,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -9909,6 +10818,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -9919,6 +10829,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -9929,6 +10840,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9939,6 +10851,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -9949,6 +10862,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -9959,6 +10873,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -9968,7 +10883,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_ki
 class EPotential(_Element):
     """``<e_potential>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('e_potential', 'e_potential', (
@@ -9991,6 +10907,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -10001,6 +10918,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -10011,6 +10929,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -10021,6 +10940,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -10031,6 +10951,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10041,6 +10962,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -10051,6 +10973,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -10061,6 +10984,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10070,7 +10994,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_po
 class Elasticity(_Element):
     """``<elasticity>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('elasticity', 'elasticity', (
@@ -10094,6 +11019,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-young
             """
+            ...
 
         @young.setter
         def young(self, value: _builtins.float | None) -> None: ...
@@ -10104,6 +11030,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-poisson
             """
+            ...
 
         @poisson.setter
         def poisson(self, value: _builtins.float | None) -> None: ...
@@ -10114,6 +11041,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | None) -> None: ...
@@ -10126,6 +11054,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-thickness
             """
+            ...
 
         @thickness.setter
         def thickness(self, value: _builtins.float | None) -> None: ...
@@ -10136,6 +11065,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-elastic2d
             """
+            ...
 
         @elastic2d.setter
         def elastic2d(self, value: Literal["none", "bend", "stretch", "both"] | None) -> None: ...
@@ -10148,6 +11078,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-shear
             """
+            ...
 
         @shear.setter
         def shear(self, value: _builtins.float | None) -> None: ...
@@ -10160,6 +11091,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-yield
             """
+            ...
 
         @yield_.setter
         def yield_(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10172,6 +11104,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-section
             """
+            ...
 
         @section.setter
         def section(self, value: Literal["circle", "box"] | None) -> None: ...
@@ -10184,67 +11117,18 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-sectionsize
             """
+            ...
 
         @sectionsize.setter
         def sectionsize(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
 
 
 
-class Element(_Element):
-    """``<element>``.
-
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element"""
-
-    __slots__ = ()
-    _SPEC: ClassVar[_S] = _S('element', 'element', (
-        _A('objtype', 'objtype', 'string', required=True, anchor='tuple-element-objtype'),
-        _A('objname', 'objname', 'string', required=True, anchor='tuple-element-objname'),
-        _A('prm', 'prm', 'real', dtype='double', anchor='tuple-element-prm'),
-    ), (
-    ),
-    anchor='tuple-element', text='')
-
-    if TYPE_CHECKING:
-        @property
-        def objtype(self) -> _builtins.str | None:
-            """``objtype``: string.
-
-            Required.
-
-            Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objtype
-            """
-
-        @objtype.setter
-        def objtype(self, value: _builtins.str | None) -> None: ...
-
-        @property
-        def objname(self) -> _builtins.str | None:
-            """``objname``: string.
-
-            Required.
-
-            Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objname
-            """
-
-        @objname.setter
-        def objname(self, value: _builtins.str | None) -> None: ...
-
-        @property
-        def prm(self) -> _builtins.float | None:
-            """``prm``: double.
-
-            Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
-            """
-
-        @prm.setter
-        def prm(self, value: _builtins.float | None) -> None: ...
-
-
-
 class Equality(_Element):
     """``<equality>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('equality', 'equality', (
@@ -10262,44 +11146,56 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality"""
         @property
         def connect(self) -> _builtins.list[Connect]:
             """The ``<connect>`` children, in document order."""
+            ...
 
         def add_connect(self, **kwargs: Unpack[ConnectAttributes]) -> Connect:
             """Add a ``<connect>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def weld(self) -> _builtins.list[Weld]:
             """The ``<weld>`` children, in document order."""
+            ...
 
         def add_weld(self, **kwargs: Unpack[WeldAttributes]) -> Weld:
             """Add a ``<weld>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def joint(self) -> _builtins.list[EqualityJoint]:
             """The ``<joint>`` children, in document order."""
+            ...
 
         def add_joint(self, **kwargs: Unpack[EqualityJointAttributes]) -> EqualityJoint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendon(self) -> _builtins.list[EqualityTendon]:
             """The ``<tendon>`` children, in document order."""
+            ...
 
         def add_tendon(self, **kwargs: Unpack[EqualityTendonAttributes]) -> EqualityTendon:
             """Add a ``<tendon>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def flex(self) -> _builtins.list[EqualityFlex]:
             """The ``<flex>`` children, in document order."""
+            ...
 
         def add_flex(self, **kwargs: Unpack[EqualityFlexAttributes]) -> EqualityFlex:
             """Add a ``<flex>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def flexstrain(self) -> _builtins.list[Flexstrain]:
             """The ``<flexstrain>`` children, in document order."""
+            ...
 
         def add_flexstrain(self, **kwargs: Unpack[FlexstrainAttributes]) -> Flexstrain:
             """Add a ``<flexstrain>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["connect"], /, **kwargs: Unpack[ConnectAttributes]) -> Connect: ...
@@ -10317,6 +11213,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["connect"], position: _builtins.int, /, **kwargs: Unpack[ConnectAttributes]) -> Connect: ...
@@ -10334,13 +11231,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class EqualityFlex(_Element):
     """``<flex>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('flex', 'equality_flex', (
@@ -10361,6 +11260,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -10371,6 +11271,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -10383,6 +11284,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -10395,6 +11297,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10407,6 +11310,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10419,6 +11323,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-flex
             """
+            ...
 
         @flex.setter
         def flex(self, value: _builtins.str | Flex | Flexcomp | None) -> None: ...
@@ -10428,7 +11333,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 class EqualityJoint(_Element):
     """``<joint>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('joint', 'equality_joint', (
@@ -10451,6 +11357,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -10461,6 +11368,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -10473,6 +11381,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -10485,6 +11394,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10497,6 +11407,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10509,6 +11420,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint1
             """
+            ...
 
         @joint1.setter
         def joint1(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -10519,6 +11431,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint2
             """
+            ...
 
         @joint2.setter
         def joint2(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -10529,6 +11442,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-polycoef
             """
+            ...
 
         @polycoef.setter
         def polycoef(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10538,7 +11452,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-jo
 class EqualityTendon(_Element):
     """``<tendon>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendon', 'equality_tendon', (
@@ -10561,6 +11476,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -10571,6 +11487,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -10583,6 +11500,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -10595,6 +11513,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10607,6 +11526,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10619,6 +11539,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon1
             """
+            ...
 
         @tendon1.setter
         def tendon1(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -10629,6 +11550,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon2
             """
+            ...
 
         @tendon2.setter
         def tendon2(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -10639,6 +11561,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-polycoef
             """
+            ...
 
         @polycoef.setter
         def polycoef(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10648,7 +11571,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-te
 class Exclude(_Element):
     """``<exclude>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('exclude', 'exclude', (
@@ -10666,6 +11590,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -10678,6 +11603,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -10690,6 +11616,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -10699,7 +11626,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exc
 class Extension(_Element):
     """``<extension>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('extension', 'extension', (
@@ -10712,9 +11640,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension""
         @property
         def plugin(self) -> _builtins.list[ExtensionPlugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[ExtensionPluginAttributes]) -> ExtensionPlugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[ExtensionPluginAttributes]) -> ExtensionPlugin: ...
@@ -10722,6 +11652,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["plugin"], position: _builtins.int, /, **kwargs: Unpack[ExtensionPluginAttributes]) -> ExtensionPlugin: ...
@@ -10729,13 +11660,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class ExtensionPlugin(_Element):
     """``<plugin>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('plugin', 'extension_plugin', (
@@ -10752,6 +11685,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-p
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
             """
+            ...
 
         @plugin.setter
         def plugin(self, value: _builtins.str | None) -> None: ...
@@ -10759,9 +11693,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-p
         @property
         def instance(self) -> _builtins.list[Instance]:
             """The ``<instance>`` children, in document order."""
+            ...
 
         def add_instance(self, **kwargs: Unpack[InstanceAttributes]) -> Instance:
             """Add a ``<instance>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["instance"], /, **kwargs: Unpack[InstanceAttributes]) -> Instance: ...
@@ -10769,6 +11705,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-p
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["instance"], position: _builtins.int, /, **kwargs: Unpack[InstanceAttributes]) -> Instance: ...
@@ -10776,13 +11713,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-p
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Fixed(_Element):
     """``<fixed>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('fixed', 'fixed', (
@@ -10817,6 +11756,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -10827,6 +11767,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -10837,6 +11778,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -10849,6 +11791,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-limited
             """
+            ...
 
         @limited.setter
         def limited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -10861,6 +11804,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrclimited
             """
+            ...
 
         @actuatorfrclimited.setter
         def actuatorfrclimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -10871,6 +11815,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10881,6 +11826,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrcrange
             """
+            ...
 
         @actuatorfrcrange.setter
         def actuatorfrcrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10893,6 +11839,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreflimit
             """
+            ...
 
         @solreflimit.setter
         def solreflimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10905,6 +11852,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimplimit
             """
+            ...
 
         @solimplimit.setter
         def solimplimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10917,6 +11865,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10929,6 +11878,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimpfriction
             """
+            ...
 
         @solimpfriction.setter
         def solimpfriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10939,6 +11889,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-frictionloss
             """
+            ...
 
         @frictionloss.setter
         def frictionloss(self, value: _builtins.float | None) -> None: ...
@@ -10953,6 +11904,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springlength
             """
+            ...
 
         @springlength.setter
         def springlength(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10963,6 +11915,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -10975,6 +11928,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10987,6 +11941,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -10997,6 +11952,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -11007,6 +11963,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11019,6 +11976,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springyield
             """
+            ...
 
         @springyield.setter
         def springyield(self, value: _builtins.float | None) -> None: ...
@@ -11026,9 +11984,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
         @property
         def joint(self) -> _builtins.list[FixedJoint]:
             """The ``<joint>`` children, in document order."""
+            ...
 
         def add_joint(self, **kwargs: Unpack[FixedJointAttributes]) -> FixedJoint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["joint"], /, **kwargs: Unpack[FixedJointAttributes]) -> FixedJoint: ...
@@ -11036,6 +11996,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["joint"], position: _builtins.int, /, **kwargs: Unpack[FixedJointAttributes]) -> FixedJoint: ...
@@ -11043,13 +12004,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixe
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class FixedJoint(_Element):
     """``<joint>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('joint', 'fixed_joint', (
@@ -11068,6 +12031,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -11078,6 +12042,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
             """
+            ...
 
         @coef.setter
         def coef(self, value: _builtins.float | None) -> None: ...
@@ -11087,7 +12052,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint
 class Flag(_Element):
     """``<flag>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('flag', 'flag', (
@@ -11132,6 +12098,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-constraint
             """
+            ...
 
         @constraint.setter
         def constraint(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11144,6 +12111,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-equality
             """
+            ...
 
         @equality.setter
         def equality(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11156,6 +12124,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-frictionloss
             """
+            ...
 
         @frictionloss.setter
         def frictionloss(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11168,6 +12137,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-limit
             """
+            ...
 
         @limit.setter
         def limit(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11180,6 +12150,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-contact
             """
+            ...
 
         @contact.setter
         def contact(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11192,6 +12163,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-spring
             """
+            ...
 
         @spring.setter
         def spring(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11204,6 +12176,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-damper
             """
+            ...
 
         @damper.setter
         def damper(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11216,6 +12189,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-gravity
             """
+            ...
 
         @gravity.setter
         def gravity(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11228,6 +12202,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-clampctrl
             """
+            ...
 
         @clampctrl.setter
         def clampctrl(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11240,6 +12215,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-warmstart
             """
+            ...
 
         @warmstart.setter
         def warmstart(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11252,6 +12228,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-filterparent
             """
+            ...
 
         @filterparent.setter
         def filterparent(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11264,6 +12241,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-actuation
             """
+            ...
 
         @actuation.setter
         def actuation(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11276,6 +12254,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-refsafe
             """
+            ...
 
         @refsafe.setter
         def refsafe(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11288,6 +12267,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sensor
             """
+            ...
 
         @sensor.setter
         def sensor(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11300,6 +12280,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-midphase
             """
+            ...
 
         @midphase.setter
         def midphase(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11312,6 +12293,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-eulerdamp
             """
+            ...
 
         @eulerdamp.setter
         def eulerdamp(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11324,6 +12306,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-autoreset
             """
+            ...
 
         @autoreset.setter
         def autoreset(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11336,6 +12319,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-nativeccd
             """
+            ...
 
         @nativeccd.setter
         def nativeccd(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11348,6 +12332,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-island
             """
+            ...
 
         @island.setter
         def island(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11360,6 +12345,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-multiccd
             """
+            ...
 
         @multiccd.setter
         def multiccd(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11372,6 +12358,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-override
             """
+            ...
 
         @override.setter
         def override(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11384,6 +12371,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-energy
             """
+            ...
 
         @energy.setter
         def energy(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11396,6 +12384,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-fwdinv
             """
+            ...
 
         @fwdinv.setter
         def fwdinv(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11408,6 +12397,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-invdiscrete
             """
+            ...
 
         @invdiscrete.setter
         def invdiscrete(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11420,6 +12410,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sleep
             """
+            ...
 
         @sleep.setter
         def sleep(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11432,6 +12423,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-diagexact
             """
+            ...
 
         @diagexact.setter
         def diagexact(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11444,6 +12436,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-ipc
             """
+            ...
 
         @ipc.setter
         def ipc(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11456,6 +12449,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-speculative
             """
+            ...
 
         @speculative.setter
         def speculative(self, value: Literal["disable", "enable"] | None) -> None: ...
@@ -11465,7 +12459,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag
 class Flex(_Element):
     """``<flex>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('flex', 'flex', (
@@ -11499,6 +12494,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -11509,6 +12505,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -11521,6 +12518,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dim
             """
+            ...
 
         @dim.setter
         def dim(self, value: _builtins.int | None) -> None: ...
@@ -11533,6 +12531,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-radius
             """
+            ...
 
         @radius.setter
         def radius(self, value: _builtins.float | None) -> None: ...
@@ -11543,6 +12542,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -11555,6 +12555,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11565,6 +12566,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-flatskin
             """
+            ...
 
         @flatskin.setter
         def flatskin(self, value: _builtins.bool | None) -> None: ...
@@ -11579,6 +12581,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | None) -> None: ...
@@ -11589,6 +12592,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-vertex
             """
+            ...
 
         @vertex.setter
         def vertex(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11601,6 +12605,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-element
             """
+            ...
 
         @element.setter
         def element(self, value: _builtins.int | Sequence[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -11611,6 +12616,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-texcoord
             """
+            ...
 
         @texcoord.setter
         def texcoord(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11621,6 +12627,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-elemtexcoord
             """
+            ...
 
         @elemtexcoord.setter
         def elemtexcoord(self, value: _builtins.int | Sequence[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -11633,6 +12640,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-node
             """
+            ...
 
         @node.setter
         def node(self, value: _builtins.str | None) -> None: ...
@@ -11645,6 +12653,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-nodecoord
             """
+            ...
 
         @nodecoord.setter
         def nodecoord(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11659,6 +12668,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-cellcount
             """
+            ...
 
         @cellcount.setter
         def cellcount(self, value: tuple[_builtins.int, _builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -11671,6 +12681,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dof
             """
+            ...
 
         @dof.setter
         def dof(self, value: Literal["full", "radial", "trilinear", "quadratic", "2d"] | None) -> None: ...
@@ -11678,23 +12689,29 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
         @property
         def contact(self) -> FlexcompContact:
             """The ``<contact>`` child, created on first use."""
+            ...
 
         def add_contact(self, **kwargs: Unpack[FlexcompContactAttributes]) -> FlexcompContact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def edge(self) -> FlexEdge:
             """The ``<edge>`` child, created on first use."""
+            ...
 
         def add_edge(self, **kwargs: Unpack[FlexEdgeAttributes]) -> FlexEdge:
             """Add a ``<edge>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def elasticity(self) -> Elasticity:
             """The ``<elasticity>`` child, created on first use."""
+            ...
 
         def add_elasticity(self, **kwargs: Unpack[ElasticityAttributes]) -> Elasticity:
             """Add a ``<elasticity>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["contact"], /, **kwargs: Unpack[FlexcompContactAttributes]) -> FlexcompContact: ...
@@ -11706,6 +12723,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["contact"], position: _builtins.int, /, **kwargs: Unpack[FlexcompContactAttributes]) -> FlexcompContact: ...
@@ -11717,13 +12735,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class FlexEdge(_Element):
     """``<edge>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('edge', 'flex_edge', (
@@ -11740,6 +12760,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | None) -> None: ...
@@ -11750,6 +12771,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | None) -> None: ...
@@ -11759,7 +12781,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge""
 class Flexcomp(_Element):
     """``<flexcomp>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('flexcomp', 'flexcomp', (
@@ -11809,6 +12832,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -11819,6 +12843,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["grid", "box", "cylinder", "ellipsoid", "square", "disc", "circle", "mesh", "gmsh", "direct"] | None) -> None: ...
@@ -11829,6 +12854,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -11839,6 +12865,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
             """
+            ...
 
         @dim.setter
         def dim(self, value: _builtins.int | None) -> None: ...
@@ -11849,6 +12876,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dof
             """
+            ...
 
         @dof.setter
         def dof(self, value: Literal["full", "radial", "trilinear", "quadratic", "2d"] | None) -> None: ...
@@ -11859,6 +12887,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-count
             """
+            ...
 
         @count.setter
         def count(self, value: tuple[_builtins.int, _builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -11869,6 +12898,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-cellcount
             """
+            ...
 
         @cellcount.setter
         def cellcount(self, value: tuple[_builtins.int, _builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -11879,6 +12909,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
             """
+            ...
 
         @spacing.setter
         def spacing(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11889,6 +12920,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
             """
+            ...
 
         @radius.setter
         def radius(self, value: _builtins.float | None) -> None: ...
@@ -11899,6 +12931,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rigid
             """
+            ...
 
         @rigid.setter
         def rigid(self, value: _builtins.bool | None) -> None: ...
@@ -11909,6 +12942,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mass
             """
+            ...
 
         @mass.setter
         def mass(self, value: _builtins.float | None) -> None: ...
@@ -11919,6 +12953,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-inertiabox
             """
+            ...
 
         @inertiabox.setter
         def inertiabox(self, value: _builtins.float | None) -> None: ...
@@ -11929,6 +12964,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-scale
             """
+            ...
 
         @scale.setter
         def scale(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11939,6 +12975,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-file
             """
+            ...
 
         @file.setter
         def file(self, value: _t.FileLike | None) -> None: ...
@@ -11949,6 +12986,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-point
             """
+            ...
 
         @point.setter
         def point(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11959,6 +12997,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-element
             """
+            ...
 
         @element.setter
         def element(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11969,6 +13008,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-texcoord
             """
+            ...
 
         @texcoord.setter
         def texcoord(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11979,6 +13019,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -11989,6 +13030,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -11999,6 +13041,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-flatskin
             """
+            ...
 
         @flatskin.setter
         def flatskin(self, value: _builtins.bool | None) -> None: ...
@@ -12009,6 +13052,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12019,6 +13063,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12029,6 +13074,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12039,6 +13085,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12049,6 +13096,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12059,6 +13107,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12069,6 +13118,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-origin
             """
+            ...
 
         @origin.setter
         def origin(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12079,6 +13129,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mesh
             """
+            ...
 
         @mesh.setter
         def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
@@ -12086,37 +13137,47 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
         @property
         def edge(self) -> FlexcompEdge:
             """The ``<edge>`` child, created on first use."""
+            ...
 
         def add_edge(self, **kwargs: Unpack[FlexcompEdgeAttributes]) -> FlexcompEdge:
             """Add a ``<edge>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def elasticity(self) -> Elasticity:
             """The ``<elasticity>`` child, created on first use."""
+            ...
 
         def add_elasticity(self, **kwargs: Unpack[ElasticityAttributes]) -> Elasticity:
             """Add a ``<elasticity>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def contact(self) -> FlexcompContact:
             """The ``<contact>`` child, created on first use."""
+            ...
 
         def add_contact(self, **kwargs: Unpack[FlexcompContactAttributes]) -> FlexcompContact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def pin(self) -> _builtins.list[Pin]:
             """The ``<pin>`` children, in document order."""
+            ...
 
         def add_pin(self, **kwargs: Unpack[PinAttributes]) -> Pin:
             """Add a ``<pin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["edge"], /, **kwargs: Unpack[FlexcompEdgeAttributes]) -> FlexcompEdge: ...
@@ -12132,6 +13193,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["edge"], position: _builtins.int, /, **kwargs: Unpack[FlexcompEdgeAttributes]) -> FlexcompEdge: ...
@@ -12147,13 +13209,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexco
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class FlexcompContact(_Element):
     """``<contact>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('contact', 'flexcomp_contact', (
@@ -12183,6 +13247,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-contype
             """
+            ...
 
         @contype.setter
         def contype(self, value: _builtins.int | None) -> None: ...
@@ -12195,6 +13260,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-conaffinity
             """
+            ...
 
         @conaffinity.setter
         def conaffinity(self, value: _builtins.int | None) -> None: ...
@@ -12207,6 +13273,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-condim
             """
+            ...
 
         @condim.setter
         def condim(self, value: _builtins.int | None) -> None: ...
@@ -12217,6 +13284,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-priority
             """
+            ...
 
         @priority.setter
         def priority(self, value: _builtins.int | None) -> None: ...
@@ -12229,6 +13297,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-friction
             """
+            ...
 
         @friction.setter
         def friction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12241,6 +13310,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solmix
             """
+            ...
 
         @solmix.setter
         def solmix(self, value: _builtins.float | None) -> None: ...
@@ -12253,6 +13323,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12265,6 +13336,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12275,6 +13347,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -12285,6 +13358,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-gap
             """
+            ...
 
         @gap.setter
         def gap(self, value: _builtins.float | None) -> None: ...
@@ -12297,6 +13371,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-selfcollide
             """
+            ...
 
         @selfcollide.setter
         def selfcollide(self, value: Literal["none", "narrow", "bvh", "sap", "auto"] | None) -> None: ...
@@ -12309,6 +13384,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-activelayers
             """
+            ...
 
         @activelayers.setter
         def activelayers(self, value: _builtins.int | None) -> None: ...
@@ -12319,6 +13395,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-passive
             """
+            ...
 
         @passive.setter
         def passive(self, value: _builtins.bool | None) -> None: ...
@@ -12328,7 +13405,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contac
 class FlexcompEdge(_Element):
     """``<edge>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('edge', 'flexcomp_edge', (
@@ -12348,6 +13426,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-ed
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
             """
+            ...
 
         @equality.setter
         def equality(self, value: Literal["false", "true", "vert", "strain"] | _builtins.bool | None) -> None: ...
@@ -12358,6 +13437,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-ed
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12368,6 +13448,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-ed
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12378,6 +13459,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-ed
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | None) -> None: ...
@@ -12388,6 +13470,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-ed
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | None) -> None: ...
@@ -12397,7 +13480,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-ed
 class Flexstrain(_Element):
     """``<flexstrain>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('flexstrain', 'flexstrain', (
@@ -12419,6 +13503,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -12429,6 +13514,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -12441,6 +13527,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -12453,6 +13540,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12465,6 +13553,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12477,6 +13566,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-flex
             """
+            ...
 
         @flex.setter
         def flex(self, value: _builtins.str | Flex | Flexcomp | None) -> None: ...
@@ -12487,6 +13577,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-cell
             """
+            ...
 
         @cell.setter
         def cell(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12496,7 +13587,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-fl
 class Force(_Element):
     """``<force>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('force', 'force', (
@@ -12520,6 +13612,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -12530,6 +13623,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -12540,6 +13634,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -12550,6 +13645,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -12560,6 +13656,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12570,6 +13667,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -12580,6 +13678,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -12590,6 +13689,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12602,6 +13702,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -12611,7 +13712,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-forc
 class Frame(_Element):
     """``<frame>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('frame', 'frame', (
@@ -12651,6 +13753,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -12661,6 +13764,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-childclass
             """
+            ...
 
         @childclass.setter
         def childclass(self, value: _builtins.str | Default | None) -> None: ...
@@ -12671,6 +13775,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12683,6 +13788,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12693,6 +13799,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12703,6 +13810,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12713,6 +13821,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12723,6 +13832,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12735,6 +13845,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scale
             """
+            ...
 
         @scale.setter
         def scale(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12747,6 +13858,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scaling
             """
+            ...
 
         @scaling.setter
         def scaling(self, value: Literal["similar", "geometry"] | None) -> None: ...
@@ -12759,6 +13871,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-massscale
             """
+            ...
 
         @massscale.setter
         def massscale(self, value: _builtins.float | None) -> None: ...
@@ -12766,93 +13879,119 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
         @property
         def body(self) -> _builtins.list[Body]:
             """The ``<body>`` children, in document order."""
+            ...
 
         def add_body(self, **kwargs: Unpack[BodyAttributes]) -> Body:
             """Add a ``<body>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frame(self) -> _builtins.list[Frame]:
             """The ``<frame>`` children, in document order."""
+            ...
 
         def add_frame(self, **kwargs: Unpack[FrameAttributes]) -> Frame:
             """Add a ``<frame>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def replicate(self) -> _builtins.list[Replicate]:
             """The ``<replicate>`` children, in document order."""
+            ...
 
         def add_replicate(self, **kwargs: Unpack[ReplicateAttributes]) -> Replicate:
             """Add a ``<replicate>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def inertial(self) -> Inertial:
             """The ``<inertial>`` child, created on first use."""
+            ...
 
         def add_inertial(self, **kwargs: Unpack[InertialAttributes]) -> Inertial:
             """Add a ``<inertial>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def joint(self) -> _builtins.list[Joint]:
             """The ``<joint>`` children, in document order."""
+            ...
 
         def add_joint(self, **kwargs: Unpack[JointAttributes]) -> Joint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def freejoint(self) -> _builtins.list[Freejoint]:
             """The ``<freejoint>`` children, in document order."""
+            ...
 
         def add_freejoint(self, **kwargs: Unpack[FreejointAttributes]) -> Freejoint:
             """Add a ``<freejoint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def geom(self) -> _builtins.list[Geom]:
             """The ``<geom>`` children, in document order."""
+            ...
 
         def add_geom(self, **kwargs: Unpack[GeomAttributes]) -> Geom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def attach(self) -> _builtins.list[Attach]:
             """The ``<attach>`` children, in document order."""
+            ...
 
         def add_attach(self, **kwargs: Unpack[AttachAttributes]) -> Attach:
             """Add a ``<attach>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def site(self) -> _builtins.list[Site]:
             """The ``<site>`` children, in document order."""
+            ...
 
         def add_site(self, **kwargs: Unpack[SiteAttributes]) -> Site:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def camera(self) -> _builtins.list[Camera]:
             """The ``<camera>`` children, in document order."""
+            ...
 
         def add_camera(self, **kwargs: Unpack[CameraAttributes]) -> Camera:
             """Add a ``<camera>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def light(self) -> _builtins.list[Light]:
             """The ``<light>`` children, in document order."""
+            ...
 
         def add_light(self, **kwargs: Unpack[LightAttributes]) -> Light:
             """Add a ``<light>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def flexcomp(self) -> _builtins.list[Flexcomp]:
             """The ``<flexcomp>`` children, in document order."""
+            ...
 
         def add_flexcomp(self, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp:
             """Add a ``<flexcomp>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["body"], /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -12884,6 +14023,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["body"], position: _builtins.int, /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -12915,13 +14055,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame"
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Frameangacc(_Element):
     """``<frameangacc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('frameangacc', 'frameangacc', (
@@ -12946,6 +14088,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -12956,6 +14099,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -12966,6 +14110,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -12976,6 +14121,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -12986,6 +14132,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -12996,6 +14143,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13006,6 +14154,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13016,6 +14165,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13028,6 +14178,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13040,6 +14191,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13049,7 +14201,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Frameangvel(_Element):
     """``<frameangvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('frameangvel', 'frameangvel', (
@@ -13077,6 +14230,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13087,6 +14241,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13097,6 +14252,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13107,6 +14263,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -13117,6 +14274,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13127,6 +14285,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13137,6 +14296,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13147,6 +14307,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13159,6 +14320,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13171,6 +14333,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13181,6 +14344,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13191,6 +14355,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -13200,7 +14365,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Framelinacc(_Element):
     """``<framelinacc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('framelinacc', 'framelinacc', (
@@ -13225,6 +14391,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13235,6 +14402,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13245,6 +14413,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13255,6 +14424,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -13265,6 +14435,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13275,6 +14446,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13285,6 +14457,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13295,6 +14468,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13307,6 +14481,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13319,6 +14494,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13328,7 +14504,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Framelinvel(_Element):
     """``<framelinvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('framelinvel', 'framelinvel', (
@@ -13356,6 +14533,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13366,6 +14544,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13376,6 +14555,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13386,6 +14566,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -13396,6 +14577,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13406,6 +14588,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13416,6 +14599,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13426,6 +14610,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13438,6 +14623,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13450,6 +14636,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13460,6 +14647,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13470,6 +14658,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -13479,7 +14668,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Framepos(_Element):
     """``<framepos>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('framepos', 'framepos', (
@@ -13507,6 +14697,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13517,6 +14708,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13527,6 +14719,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13537,6 +14730,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -13547,6 +14741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13557,6 +14752,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13567,6 +14763,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13577,6 +14774,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13589,6 +14787,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13601,6 +14800,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13611,6 +14811,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13621,6 +14822,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -13630,7 +14832,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Framequat(_Element):
     """``<framequat>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('framequat', 'framequat', (
@@ -13658,6 +14861,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13668,6 +14872,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13678,6 +14883,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13688,6 +14894,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -13698,6 +14905,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13708,6 +14916,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13718,6 +14927,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13728,6 +14938,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13740,6 +14951,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13752,6 +14964,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13762,6 +14975,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13772,6 +14986,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -13781,7 +14996,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Framexaxis(_Element):
     """``<framexaxis>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('framexaxis', 'framexaxis', (
@@ -13809,6 +15025,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13819,6 +15036,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13829,6 +15047,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13839,6 +15058,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -13849,6 +15069,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13859,6 +15080,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -13869,6 +15091,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -13879,6 +15102,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -13891,6 +15115,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13903,6 +15128,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -13913,6 +15139,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -13923,6 +15150,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -13932,7 +15160,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Frameyaxis(_Element):
     """``<frameyaxis>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('frameyaxis', 'frameyaxis', (
@@ -13960,6 +15189,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -13970,6 +15200,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -13980,6 +15211,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -13990,6 +15222,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -14000,6 +15233,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14010,6 +15244,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -14020,6 +15255,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -14030,6 +15266,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14042,6 +15279,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -14054,6 +15292,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -14064,6 +15303,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -14074,6 +15314,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -14083,7 +15324,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Framezaxis(_Element):
     """``<framezaxis>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('framezaxis', 'framezaxis', (
@@ -14111,6 +15353,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -14121,6 +15364,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -14131,6 +15375,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -14141,6 +15386,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -14151,6 +15397,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14161,6 +15408,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -14171,6 +15419,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -14181,6 +15430,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14193,6 +15443,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -14205,6 +15456,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -14215,6 +15467,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -14225,6 +15478,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -14234,7 +15488,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fram
 class Freejoint(_Element):
     """``<freejoint>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('freejoint', 'freejoint', (
@@ -14252,6 +15507,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -14262,6 +15518,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -14272,6 +15529,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-align
             """
+            ...
 
         @align.setter
         def align(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -14281,7 +15539,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejo
 class Fromto(_Element):
     """``<fromto>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('fromto', 'fromto', (
@@ -14309,6 +15568,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -14319,6 +15579,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -14329,6 +15590,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -14339,6 +15601,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -14349,6 +15612,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14359,6 +15623,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -14369,6 +15634,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -14379,6 +15645,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14389,6 +15656,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom1
             """
+            ...
 
         @geom1.setter
         def geom1(self, value: _builtins.str | Geom | None) -> None: ...
@@ -14399,6 +15667,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom2
             """
+            ...
 
         @geom2.setter
         def geom2(self, value: _builtins.str | Geom | None) -> None: ...
@@ -14409,6 +15678,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -14419,6 +15689,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -14428,7 +15699,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-from
 class General(_Element):
     """``<general>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('general', 'general', (
@@ -14481,6 +15753,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -14491,6 +15764,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -14501,6 +15775,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -14511,6 +15786,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -14521,6 +15797,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -14531,6 +15808,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -14541,6 +15819,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14551,6 +15830,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14563,6 +15843,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -14575,6 +15856,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -14587,6 +15869,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
             """
+            ...
 
         @actlimited.setter
         def actlimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -14597,6 +15880,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14607,6 +15891,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
             """
+            ...
 
         @actrange.setter
         def actrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14617,6 +15902,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14629,6 +15915,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14641,6 +15928,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14651,6 +15939,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -14663,6 +15952,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -14673,6 +15963,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -14683,6 +15974,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -14693,6 +15985,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -14703,6 +15996,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -14713,6 +16007,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -14723,6 +16018,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -14733,6 +16029,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -14745,6 +16042,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -14759,6 +16057,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
             """
+            ...
 
         @actdim.setter
         def actdim(self, value: _builtins.int | None) -> None: ...
@@ -14771,6 +16070,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["expmap", "quat"] | None) -> None: ...
@@ -14781,6 +16081,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
             """
+            ...
 
         @velrange.setter
         def velrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14791,6 +16092,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
             """
+            ...
 
         @ffrange.setter
         def ffrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14803,6 +16105,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -14815,6 +16118,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
             """
+            ...
 
         @dyntype.setter
         def dyntype(self, value: Literal["none", "integrator", "filter", "filterexact", "muscle", "dcmotor", "pid", "user"] | None) -> None: ...
@@ -14829,6 +16133,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
             """
+            ...
 
         @gaintype.setter
         def gaintype(self, value: Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", "user"] | None) -> None: ...
@@ -14843,6 +16148,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
             """
+            ...
 
         @biastype.setter
         def biastype(self, value: Literal["none", "affine", "muscle", "dcmotor", "so3", "user"] | None) -> None: ...
@@ -14855,6 +16161,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
             """
+            ...
 
         @dynprm.setter
         def dynprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14867,6 +16174,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
             """
+            ...
 
         @gainprm.setter
         def gainprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14877,6 +16185,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
             """
+            ...
 
         @biasprm.setter
         def biasprm(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -14887,6 +16196,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
             """
+            ...
 
         @actearly.setter
         def actearly(self, value: _builtins.bool | None) -> None: ...
@@ -14896,7 +16206,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ge
 class Geom(_Element):
     """``<geom>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('geom', 'geom', (
@@ -14949,6 +16260,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -14959,6 +16271,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -14971,6 +16284,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"] | None) -> None: ...
@@ -14983,6 +16297,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
             """
+            ...
 
         @contype.setter
         def contype(self, value: _builtins.int | None) -> None: ...
@@ -14995,6 +16310,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
             """
+            ...
 
         @conaffinity.setter
         def conaffinity(self, value: _builtins.int | None) -> None: ...
@@ -15007,6 +16323,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
             """
+            ...
 
         @condim.setter
         def condim(self, value: _builtins.int | None) -> None: ...
@@ -15017,6 +16334,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -15027,6 +16345,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
             """
+            ...
 
         @priority.setter
         def priority(self, value: _builtins.int | None) -> None: ...
@@ -15039,6 +16358,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
             """
+            ...
 
         @size.setter
         def size(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15049,6 +16369,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -15061,6 +16382,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
             """
+            ...
 
         @friction.setter
         def friction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15073,6 +16395,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
             """
+            ...
 
         @mass.setter
         def mass(self, value: _builtins.float | None) -> None: ...
@@ -15085,6 +16408,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
             """
+            ...
 
         @density.setter
         def density(self, value: _builtins.float | None) -> None: ...
@@ -15097,6 +16421,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
             """
+            ...
 
         @shellinertia.setter
         def shellinertia(self, value: _builtins.bool | None) -> None: ...
@@ -15109,6 +16434,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
             """
+            ...
 
         @solmix.setter
         def solmix(self, value: _builtins.float | None) -> None: ...
@@ -15121,6 +16447,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15133,6 +16460,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15143,6 +16471,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -15153,6 +16482,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
             """
+            ...
 
         @gap.setter
         def gap(self, value: _builtins.float | None) -> None: ...
@@ -15163,6 +16493,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
             """
+            ...
 
         @surfacevel.setter
         def surfacevel(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15173,6 +16504,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
             """
+            ...
 
         @adhesion.setter
         def adhesion(self, value: _builtins.float | None) -> None: ...
@@ -15185,6 +16517,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
             """
+            ...
 
         @fromto.setter
         def fromto(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15199,6 +16532,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15211,6 +16545,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15221,6 +16556,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15231,6 +16567,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15241,6 +16578,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15251,6 +16589,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15261,6 +16600,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
             """
+            ...
 
         @hfield.setter
         def hfield(self, value: _builtins.str | Hfield | None) -> None: ...
@@ -15271,6 +16611,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
             """
+            ...
 
         @mesh.setter
         def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
@@ -15285,6 +16626,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
             """
+            ...
 
         @fitscale.setter
         def fitscale(self, value: _builtins.float | None) -> None: ...
@@ -15297,6 +16639,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15307,6 +16650,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
             """
+            ...
 
         @fluidshape.setter
         def fluidshape(self, value: Literal["none", "ellipsoid"] | None) -> None: ...
@@ -15319,6 +16663,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
             """
+            ...
 
         @fluidcoef.setter
         def fluidcoef(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15329,6 +16674,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15341,6 +16687,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
             """
+            ...
 
         @castshadow.setter
         def castshadow(self, value: _builtins.bool | None) -> None: ...
@@ -15348,9 +16695,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
@@ -15358,6 +16707,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["plugin"], position: _builtins.int, /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
@@ -15365,13 +16715,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Global(_Element):
     """``<global>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('global', 'global', (
@@ -15401,6 +16753,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-cameraid
             """
+            ...
 
         @cameraid.setter
         def cameraid(self, value: _builtins.int | None) -> None: ...
@@ -15413,6 +16766,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-orthographic
             """
+            ...
 
         @orthographic.setter
         def orthographic(self, value: _builtins.bool | None) -> None: ...
@@ -15425,6 +16779,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-fovy
             """
+            ...
 
         @fovy.setter
         def fovy(self, value: _builtins.float | None) -> None: ...
@@ -15437,6 +16792,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ipd
             """
+            ...
 
         @ipd.setter
         def ipd(self, value: _builtins.float | None) -> None: ...
@@ -15449,6 +16805,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-azimuth
             """
+            ...
 
         @azimuth.setter
         def azimuth(self, value: _builtins.float | None) -> None: ...
@@ -15461,6 +16818,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-elevation
             """
+            ...
 
         @elevation.setter
         def elevation(self, value: _builtins.float | None) -> None: ...
@@ -15473,6 +16831,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-linewidth
             """
+            ...
 
         @linewidth.setter
         def linewidth(self, value: _builtins.float | None) -> None: ...
@@ -15485,6 +16844,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-glow
             """
+            ...
 
         @glow.setter
         def glow(self, value: _builtins.float | None) -> None: ...
@@ -15497,6 +16857,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offwidth
             """
+            ...
 
         @offwidth.setter
         def offwidth(self, value: _builtins.int | None) -> None: ...
@@ -15509,6 +16870,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offheight
             """
+            ...
 
         @offheight.setter
         def offheight(self, value: _builtins.int | None) -> None: ...
@@ -15521,6 +16883,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
             """
+            ...
 
         @realtime.setter
         def realtime(self, value: _builtins.float | None) -> None: ...
@@ -15533,6 +16896,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ellipsoidinertia
             """
+            ...
 
         @ellipsoidinertia.setter
         def ellipsoidinertia(self, value: _builtins.bool | None) -> None: ...
@@ -15545,6 +16909,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-bvactive
             """
+            ...
 
         @bvactive.setter
         def bvactive(self, value: _builtins.bool | None) -> None: ...
@@ -15554,7 +16919,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-glob
 class Gyro(_Element):
     """``<gyro>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('gyro', 'gyro', (
@@ -15578,6 +16944,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -15588,6 +16955,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -15598,6 +16966,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -15608,6 +16977,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -15618,6 +16988,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15628,6 +16999,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -15638,6 +17010,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -15648,6 +17021,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15660,6 +17034,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -15669,7 +17044,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro
 class Headlight(_Element):
     """``<headlight>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('headlight', 'headlight', (
@@ -15690,6 +17066,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-head
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-ambient
             """
+            ...
 
         @ambient.setter
         def ambient(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15702,6 +17079,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-head
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-diffuse
             """
+            ...
 
         @diffuse.setter
         def diffuse(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15714,6 +17092,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-head
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-specular
             """
+            ...
 
         @specular.setter
         def specular(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15726,6 +17105,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-head
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.int | None) -> None: ...
@@ -15735,7 +17115,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-head
 class Hfield(_Element):
     """``<hfield>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('hfield', 'hfield', (
@@ -15757,6 +17138,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -15767,6 +17149,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-content_type
             """
+            ...
 
         @content_type.setter
         def content_type(self, value: _builtins.str | None) -> None: ...
@@ -15777,6 +17160,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-file
             """
+            ...
 
         @file.setter
         def file(self, value: _t.FileLike | None) -> None: ...
@@ -15787,6 +17171,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-nrow
             """
+            ...
 
         @nrow.setter
         def nrow(self, value: _builtins.int | None) -> None: ...
@@ -15797,6 +17182,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-ncol
             """
+            ...
 
         @ncol.setter
         def ncol(self, value: _builtins.int | None) -> None: ...
@@ -15809,6 +17195,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-size
             """
+            ...
 
         @size.setter
         def size(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15821,6 +17208,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-elevation
             """
+            ...
 
         @elevation.setter
         def elevation(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15830,7 +17218,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfiel
 class Inertial(_Element):
     """``<inertial>``: projects into the parent body's i-frame.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('inertial', 'inertial', (
@@ -15857,6 +17246,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15869,6 +17259,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15881,6 +17272,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-mass
             """
+            ...
 
         @mass.setter
         def mass(self, value: _builtins.float | None) -> None: ...
@@ -15891,6 +17283,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-diaginertia
             """
+            ...
 
         @diaginertia.setter
         def diaginertia(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15901,6 +17294,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15911,6 +17305,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15921,6 +17316,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15931,6 +17327,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15941,6 +17338,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-fullinertia
             """
+            ...
 
         @fullinertia.setter
         def fullinertia(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -15950,7 +17348,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inerti
 class Insidesite(_Element):
     """``<insidesite>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('insidesite', 'insidesite', (
@@ -15977,6 +17376,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -15987,6 +17387,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -15997,6 +17398,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -16007,6 +17409,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -16017,6 +17420,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16027,6 +17431,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -16037,6 +17442,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -16047,6 +17453,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16059,6 +17466,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -16071,6 +17479,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: Literal["body", "xbody", "geom", "site", "camera"] | None) -> None: ...
@@ -16083,6 +17492,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -16095,6 +17505,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-enclosed
             """
+            ...
 
         @enclosed.setter
         def enclosed(self, value: _builtins.bool | None) -> None: ...
@@ -16104,7 +17515,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insi
 class Instance(_Element):
     """``<instance>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('instance', 'instance', (
@@ -16123,6 +17535,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-inst
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -16130,9 +17543,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-inst
         @property
         def config(self) -> _builtins.list[Config]:
             """The ``<config>`` children, in document order."""
+            ...
 
         def add_config(self, **kwargs: Unpack[ConfigAttributes]) -> Config:
             """Add a ``<config>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -16140,6 +17555,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-inst
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["config"], position: _builtins.int, /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -16147,13 +17563,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-inst
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Intvelocity(_Element):
     """``<intvelocity>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('intvelocity', 'intvelocity', (
@@ -16197,6 +17615,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -16207,6 +17626,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -16217,6 +17637,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -16227,6 +17648,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -16237,6 +17659,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -16247,6 +17670,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -16257,6 +17681,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16267,6 +17692,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16279,6 +17705,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -16291,6 +17718,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -16303,6 +17731,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
             """
+            ...
 
         @actlimited.setter
         def actlimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -16313,6 +17742,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16323,6 +17753,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
             """
+            ...
 
         @actrange.setter
         def actrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16333,6 +17764,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -16343,6 +17775,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16355,6 +17788,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16367,6 +17801,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16377,6 +17812,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -16389,6 +17825,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -16399,6 +17836,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -16409,6 +17847,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -16419,6 +17858,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -16429,6 +17869,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -16439,6 +17880,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -16449,6 +17891,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -16459,6 +17902,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -16469,6 +17913,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -16479,6 +17924,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -16489,6 +17935,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -16498,7 +17945,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-in
 class Joint(_Element):
     """``<joint>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('joint', 'joint', (
@@ -16538,6 +17986,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -16548,6 +17997,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -16560,6 +18010,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["free", "ball", "slide", "hinge"] | None) -> None: ...
@@ -16570,6 +18021,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -16582,6 +18034,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16596,6 +18049,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
             """
+            ...
 
         @axis.setter
         def axis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16608,6 +18062,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
             """
+            ...
 
         @springdamper.setter
         def springdamper(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16622,6 +18077,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
             """
+            ...
 
         @limited.setter
         def limited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -16636,6 +18092,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
             """
+            ...
 
         @actuatorfrclimited.setter
         def actuatorfrclimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -16648,6 +18105,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
             """
+            ...
 
         @solreflimit.setter
         def solreflimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16660,6 +18118,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
             """
+            ...
 
         @solimplimit.setter
         def solimplimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16672,6 +18131,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16684,6 +18144,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
             """
+            ...
 
         @solimpfriction.setter
         def solimpfriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16696,6 +18157,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16706,6 +18168,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16716,6 +18179,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
             """
+            ...
 
         @actuatorfrcrange.setter
         def actuatorfrcrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16726,6 +18190,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
             """
+            ...
 
         @actuatorgravcomp.setter
         def actuatorgravcomp(self, value: _builtins.bool | None) -> None: ...
@@ -16736,6 +18201,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -16746,6 +18212,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
             """
+            ...
 
         @ref.setter
         def ref(self, value: _builtins.float | None) -> None: ...
@@ -16756,6 +18223,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
             """
+            ...
 
         @springref.setter
         def springref(self, value: _builtins.float | None) -> None: ...
@@ -16766,6 +18234,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -16778,6 +18247,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16788,6 +18258,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
             """
+            ...
 
         @frictionloss.setter
         def frictionloss(self, value: _builtins.float | None) -> None: ...
@@ -16798,6 +18269,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16810,6 +18282,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
             """
+            ...
 
         @springyield.setter
         def springyield(self, value: _builtins.float | None) -> None: ...
@@ -16819,7 +18292,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint"
 class Jointactuatorfrc(_Element):
     """``<jointactuatorfrc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('jointactuatorfrc', 'jointactuatorfrc', (
@@ -16843,6 +18317,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -16853,6 +18328,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -16863,6 +18339,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -16873,6 +18350,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -16883,6 +18361,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16893,6 +18372,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -16903,6 +18383,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -16913,6 +18394,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -16925,6 +18407,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -16934,7 +18417,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 class Jointlimitfrc(_Element):
     """``<jointlimitfrc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('jointlimitfrc', 'jointlimitfrc', (
@@ -16958,6 +18442,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -16968,6 +18453,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -16978,6 +18464,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -16988,6 +18475,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -16998,6 +18486,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17008,6 +18497,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -17018,6 +18508,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -17028,6 +18519,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17040,6 +18532,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -17049,7 +18542,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 class Jointlimitpos(_Element):
     """``<jointlimitpos>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('jointlimitpos', 'jointlimitpos', (
@@ -17073,6 +18567,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -17083,6 +18578,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -17093,6 +18589,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -17103,6 +18600,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -17113,6 +18611,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17123,6 +18622,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -17133,6 +18633,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -17143,6 +18644,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17155,6 +18657,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -17164,7 +18667,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 class Jointlimitvel(_Element):
     """``<jointlimitvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('jointlimitvel', 'jointlimitvel', (
@@ -17188,6 +18692,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -17198,6 +18703,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -17208,6 +18714,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -17218,6 +18725,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -17228,6 +18736,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17238,6 +18747,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -17248,6 +18758,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -17258,6 +18769,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17270,6 +18782,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -17279,7 +18792,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 class Jointpos(_Element):
     """``<jointpos>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('jointpos', 'jointpos', (
@@ -17303,6 +18817,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -17313,6 +18828,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -17323,6 +18839,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -17333,6 +18850,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -17343,6 +18861,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17353,6 +18872,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -17363,6 +18883,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -17373,6 +18894,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17385,6 +18907,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -17394,7 +18917,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 class Jointvel(_Element):
     """``<jointvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('jointvel', 'jointvel', (
@@ -17418,6 +18942,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -17428,6 +18953,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -17438,6 +18964,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -17448,6 +18975,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -17458,6 +18986,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17468,6 +18997,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -17478,6 +19008,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -17488,6 +19019,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17500,6 +19032,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -17509,7 +19042,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-join
 class Key(_Element):
     """``<key>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('key', 'key', (
@@ -17535,6 +19069,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -17545,6 +19080,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-time
             """
+            ...
 
         @time.setter
         def time(self, value: _builtins.float | None) -> None: ...
@@ -17555,6 +19091,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qpos
             """
+            ...
 
         @qpos.setter
         def qpos(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17565,6 +19102,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qvel
             """
+            ...
 
         @qvel.setter
         def qvel(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17575,6 +19113,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-act
             """
+            ...
 
         @act.setter
         def act(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17585,6 +19124,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mpos
             """
+            ...
 
         @mpos.setter
         def mpos(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17595,6 +19135,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mquat
             """
+            ...
 
         @mquat.setter
         def mquat(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17605,6 +19146,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-ctrl
             """
+            ...
 
         @ctrl.setter
         def ctrl(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17615,6 +19157,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-plastic
             """
+            ...
 
         @plastic.setter
         def plastic(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17624,7 +19167,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-ke
 class Keyframe(_Element):
     """``<keyframe>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('keyframe', 'keyframe', (
@@ -17637,9 +19181,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe"""
         @property
         def key(self) -> _builtins.list[Key]:
             """The ``<key>`` children, in document order."""
+            ...
 
         def add_key(self, **kwargs: Unpack[KeyAttributes]) -> Key:
             """Add a ``<key>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["key"], /, **kwargs: Unpack[KeyAttributes]) -> Key: ...
@@ -17647,6 +19193,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["key"], position: _builtins.int, /, **kwargs: Unpack[KeyAttributes]) -> Key: ...
@@ -17654,13 +19201,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Layer(_Element):
     """``<layer>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('layer', 'layer', (
@@ -17677,6 +19226,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-la
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
             """
+            ...
 
         @texture.setter
         def texture(self, value: _builtins.str | Texture | None) -> None: ...
@@ -17689,6 +19239,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-la
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-role
             """
+            ...
 
         @role.setter
         def role(self, value: _builtins.str | None) -> None: ...
@@ -17698,7 +19249,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-la
 class Lengthrange(_Element):
     """``<lengthrange>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('lengthrange', 'lengthrange', (
@@ -17725,6 +19277,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-mode
             """
+            ...
 
         @mode.setter
         def mode(self, value: Literal["none", "muscle", "muscleuser", "all"] | None) -> None: ...
@@ -17737,6 +19290,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-useexisting
             """
+            ...
 
         @useexisting.setter
         def useexisting(self, value: _builtins.bool | None) -> None: ...
@@ -17747,6 +19301,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-uselimit
             """
+            ...
 
         @uselimit.setter
         def uselimit(self, value: _builtins.bool | None) -> None: ...
@@ -17759,6 +19314,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-accel
             """
+            ...
 
         @accel.setter
         def accel(self, value: _builtins.float | None) -> None: ...
@@ -17769,6 +19325,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-maxforce
             """
+            ...
 
         @maxforce.setter
         def maxforce(self, value: _builtins.float | None) -> None: ...
@@ -17781,6 +19338,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: _builtins.float | None) -> None: ...
@@ -17793,6 +19351,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timestep
             """
+            ...
 
         @timestep.setter
         def timestep(self, value: _builtins.float | None) -> None: ...
@@ -17805,6 +19364,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-inttotal
             """
+            ...
 
         @inttotal.setter
         def inttotal(self, value: _builtins.float | None) -> None: ...
@@ -17817,6 +19377,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | None) -> None: ...
@@ -17829,6 +19390,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-tolrange
             """
+            ...
 
         @tolrange.setter
         def tolrange(self, value: _builtins.float | None) -> None: ...
@@ -17838,7 +19400,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-le
 class Light(_Element):
     """``<light>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('light', 'light', (
@@ -17875,6 +19438,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -17885,6 +19449,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -17895,6 +19460,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
             """
+            ...
 
         @directional.setter
         def directional(self, value: _builtins.bool | None) -> None: ...
@@ -17905,6 +19471,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["spot", "directional", "point", "image"] | None) -> None: ...
@@ -17917,6 +19484,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
             """
+            ...
 
         @castshadow.setter
         def castshadow(self, value: _builtins.bool | None) -> None: ...
@@ -17929,6 +19497,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -17941,6 +19510,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17953,6 +19523,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
             """
+            ...
 
         @dir.setter
         def dir(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -17965,6 +19536,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
             """
+            ...
 
         @bulbradius.setter
         def bulbradius(self, value: _builtins.float | None) -> None: ...
@@ -17975,6 +19547,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
             """
+            ...
 
         @intensity.setter
         def intensity(self, value: _builtins.float | None) -> None: ...
@@ -17987,6 +19560,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
             """
+            ...
 
         @range.setter
         def range(self, value: _builtins.float | None) -> None: ...
@@ -17999,6 +19573,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
             """
+            ...
 
         @attenuation.setter
         def attenuation(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18011,6 +19586,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -18023,6 +19599,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
             """
+            ...
 
         @softness.setter
         def softness(self, value: _builtins.float | None) -> None: ...
@@ -18035,6 +19612,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
             """
+            ...
 
         @exponent.setter
         def exponent(self, value: _builtins.float | None) -> None: ...
@@ -18045,6 +19623,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
             """
+            ...
 
         @ambient.setter
         def ambient(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18057,6 +19636,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
             """
+            ...
 
         @diffuse.setter
         def diffuse(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18069,6 +19649,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
             """
+            ...
 
         @specular.setter
         def specular(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18081,6 +19662,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
             """
+            ...
 
         @mode.setter
         def mode(self, value: Literal["fixed", "track", "trackcom", "targetbody", "targetbodycom"] | None) -> None: ...
@@ -18091,6 +19673,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-target
             """
+            ...
 
         @target.setter
         def target(self, value: _builtins.str | Body | None) -> None: ...
@@ -18101,6 +19684,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-texture
             """
+            ...
 
         @texture.setter
         def texture(self, value: _builtins.str | Texture | None) -> None: ...
@@ -18110,7 +19694,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light"
 class Magnetometer(_Element):
     """``<magnetometer>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('magnetometer', 'magnetometer', (
@@ -18134,6 +19719,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -18144,6 +19730,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -18154,6 +19741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -18164,6 +19752,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -18174,6 +19763,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18184,6 +19774,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -18194,6 +19785,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -18204,6 +19796,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18216,6 +19809,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -18225,7 +19819,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magn
 class Map(_Element):
     """``<map>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('map', 'map', (
@@ -18255,6 +19850,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | None) -> None: ...
@@ -18267,6 +19863,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffnessrot
             """
+            ...
 
         @stiffnessrot.setter
         def stiffnessrot(self, value: _builtins.float | None) -> None: ...
@@ -18279,6 +19876,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-force
             """
+            ...
 
         @force.setter
         def force(self, value: _builtins.float | None) -> None: ...
@@ -18291,6 +19889,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-torque
             """
+            ...
 
         @torque.setter
         def torque(self, value: _builtins.float | None) -> None: ...
@@ -18303,6 +19902,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-alpha
             """
+            ...
 
         @alpha.setter
         def alpha(self, value: _builtins.float | None) -> None: ...
@@ -18315,6 +19915,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogstart
             """
+            ...
 
         @fogstart.setter
         def fogstart(self, value: _builtins.float | None) -> None: ...
@@ -18327,6 +19928,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogend
             """
+            ...
 
         @fogend.setter
         def fogend(self, value: _builtins.float | None) -> None: ...
@@ -18339,6 +19941,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
             """
+            ...
 
         @znear.setter
         def znear(self, value: _builtins.float | None) -> None: ...
@@ -18351,6 +19954,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-zfar
             """
+            ...
 
         @zfar.setter
         def zfar(self, value: _builtins.float | None) -> None: ...
@@ -18363,6 +19967,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-haze
             """
+            ...
 
         @haze.setter
         def haze(self, value: _builtins.float | None) -> None: ...
@@ -18375,6 +19980,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowclip
             """
+            ...
 
         @shadowclip.setter
         def shadowclip(self, value: _builtins.float | None) -> None: ...
@@ -18387,6 +19993,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowscale
             """
+            ...
 
         @shadowscale.setter
         def shadowscale(self, value: _builtins.float | None) -> None: ...
@@ -18399,6 +20006,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-actuatortendon
             """
+            ...
 
         @actuatortendon.setter
         def actuatortendon(self, value: _builtins.float | None) -> None: ...
@@ -18408,7 +20016,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map"
 class Material(_Element):
     """``<material>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('material', 'material', (
@@ -18436,6 +20045,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -18446,6 +20056,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -18456,6 +20067,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
             """
+            ...
 
         @texture.setter
         def texture(self, value: _builtins.str | Texture | None) -> None: ...
@@ -18468,6 +20080,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
             """
+            ...
 
         @texrepeat.setter
         def texrepeat(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18478,6 +20091,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
             """
+            ...
 
         @texuniform.setter
         def texuniform(self, value: _builtins.bool | None) -> None: ...
@@ -18488,6 +20102,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
             """
+            ...
 
         @emission.setter
         def emission(self, value: _builtins.float | None) -> None: ...
@@ -18500,6 +20115,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
             """
+            ...
 
         @specular.setter
         def specular(self, value: _builtins.float | None) -> None: ...
@@ -18512,6 +20128,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
             """
+            ...
 
         @shininess.setter
         def shininess(self, value: _builtins.float | None) -> None: ...
@@ -18522,6 +20139,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
             """
+            ...
 
         @reflectance.setter
         def reflectance(self, value: _builtins.float | None) -> None: ...
@@ -18534,6 +20152,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
             """
+            ...
 
         @metallic.setter
         def metallic(self, value: _builtins.float | None) -> None: ...
@@ -18546,6 +20165,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
             """
+            ...
 
         @roughness.setter
         def roughness(self, value: _builtins.float | None) -> None: ...
@@ -18558,6 +20178,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18565,9 +20186,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
         @property
         def layer(self) -> _builtins.list[Layer]:
             """The ``<layer>`` children, in document order."""
+            ...
 
         def add_layer(self, **kwargs: Unpack[LayerAttributes]) -> Layer:
             """Add a ``<layer>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["layer"], /, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
@@ -18575,6 +20198,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["layer"], position: _builtins.int, /, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
@@ -18582,13 +20206,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mater
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Mesh(_Element):
     """``<mesh>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('mesh', 'mesh', (
@@ -18622,6 +20248,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -18632,6 +20259,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -18642,6 +20270,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-content_type
             """
+            ...
 
         @content_type.setter
         def content_type(self, value: _builtins.str | None) -> None: ...
@@ -18652,6 +20281,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-file
             """
+            ...
 
         @file.setter
         def file(self, value: _t.FileLike | None) -> None: ...
@@ -18662,6 +20292,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-vertex
             """
+            ...
 
         @vertex.setter
         def vertex(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18672,6 +20303,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-normal
             """
+            ...
 
         @normal.setter
         def normal(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18682,6 +20314,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-texcoord
             """
+            ...
 
         @texcoord.setter
         def texcoord(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18692,6 +20325,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-face
             """
+            ...
 
         @face.setter
         def face(self, value: _builtins.int | Sequence[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -18702,6 +20336,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refpos
             """
+            ...
 
         @refpos.setter
         def refpos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18714,6 +20349,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refquat
             """
+            ...
 
         @refquat.setter
         def refquat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18726,6 +20362,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
             """
+            ...
 
         @scale.setter
         def scale(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18736,6 +20373,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-smoothnormal
             """
+            ...
 
         @smoothnormal.setter
         def smoothnormal(self, value: _builtins.bool | None) -> None: ...
@@ -18748,6 +20386,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
             """
+            ...
 
         @maxhullvert.setter
         def maxhullvert(self, value: _builtins.int | None) -> None: ...
@@ -18760,6 +20399,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
             """
+            ...
 
         @inertia.setter
         def inertia(self, value: Literal["convex", "legacy", "exact", "shell"] | None) -> None: ...
@@ -18770,6 +20410,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-builtin
             """
+            ...
 
         @builtin.setter
         def builtin(self, value: Literal["none", "sphere", "hemisphere", "cone", "supertorus", "supersphere", "wedge", "plate"] | None) -> None: ...
@@ -18780,6 +20421,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-params
             """
+            ...
 
         @params.setter
         def params(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18790,6 +20432,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -18797,9 +20440,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
@@ -18807,6 +20452,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["plugin"], position: _builtins.int, /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
@@ -18814,13 +20460,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh"
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Model(_Element):
     """``<model>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('model', 'model', (
@@ -18838,6 +20486,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -18848,6 +20497,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
             """
+            ...
 
         @file.setter
         def file(self, value: _t.FileLike | None) -> None: ...
@@ -18858,6 +20508,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
             """
+            ...
 
         @content_type.setter
         def content_type(self, value: _builtins.str | None) -> None: ...
@@ -18867,7 +20518,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model
 class Motor(_Element):
     """``<motor>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('motor', 'motor', (
@@ -18905,6 +20557,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -18915,6 +20568,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -18925,6 +20579,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -18935,6 +20590,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -18945,6 +20601,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -18955,6 +20612,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -18965,6 +20623,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18975,6 +20634,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -18987,6 +20647,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -18999,6 +20660,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -19009,6 +20671,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19019,6 +20682,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19031,6 +20695,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19043,6 +20708,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19053,6 +20719,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -19065,6 +20732,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -19075,6 +20743,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -19085,6 +20754,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -19095,6 +20765,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -19105,6 +20776,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -19115,6 +20787,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -19125,6 +20798,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -19135,6 +20809,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -19144,7 +20819,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mo
 class Muscle(_Element):
     """``<muscle>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('muscle', 'muscle', (
@@ -19190,6 +20866,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -19200,6 +20877,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -19210,6 +20888,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -19220,6 +20899,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -19230,6 +20910,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -19240,6 +20921,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -19250,6 +20932,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19260,6 +20943,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19272,6 +20956,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -19284,6 +20969,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -19294,6 +20980,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19304,6 +20991,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19316,6 +21004,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19328,6 +21017,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19338,6 +21028,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -19350,6 +21041,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -19360,6 +21052,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -19370,6 +21063,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -19380,6 +21074,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -19390,6 +21085,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -19400,6 +21096,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -19410,6 +21107,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19420,6 +21118,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
             """
+            ...
 
         @tausmooth.setter
         def tausmooth(self, value: _builtins.float | None) -> None: ...
@@ -19430,6 +21129,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19440,6 +21140,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
             """
+            ...
 
         @force.setter
         def force(self, value: _builtins.float | None) -> None: ...
@@ -19450,6 +21151,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
             """
+            ...
 
         @scale.setter
         def scale(self, value: _builtins.float | None) -> None: ...
@@ -19460,6 +21162,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
             """
+            ...
 
         @lmin.setter
         def lmin(self, value: _builtins.float | None) -> None: ...
@@ -19470,6 +21173,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
             """
+            ...
 
         @lmax.setter
         def lmax(self, value: _builtins.float | None) -> None: ...
@@ -19480,6 +21184,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
             """
+            ...
 
         @vmax.setter
         def vmax(self, value: _builtins.float | None) -> None: ...
@@ -19490,6 +21195,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
             """
+            ...
 
         @fpmax.setter
         def fpmax(self, value: _builtins.float | None) -> None: ...
@@ -19500,6 +21206,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
             """
+            ...
 
         @fvmax.setter
         def fvmax(self, value: _builtins.float | None) -> None: ...
@@ -19509,7 +21216,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-mu
 class Normal(_Element):
     """``<normal>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('normal', 'normal', (
@@ -19537,6 +21245,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -19547,6 +21256,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -19557,6 +21267,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -19567,6 +21278,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -19577,6 +21289,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19587,6 +21300,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -19597,6 +21311,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -19607,6 +21322,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19617,6 +21333,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom1
             """
+            ...
 
         @geom1.setter
         def geom1(self, value: _builtins.str | Geom | None) -> None: ...
@@ -19627,6 +21344,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom2
             """
+            ...
 
         @geom2.setter
         def geom2(self, value: _builtins.str | Geom | None) -> None: ...
@@ -19637,6 +21355,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -19647,6 +21366,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -19656,7 +21376,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-norm
 class Numeric(_Element):
     """``<numeric>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('numeric', 'numeric', (
@@ -19676,6 +21397,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-nume
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -19686,6 +21408,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-nume
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
             """
+            ...
 
         @size.setter
         def size(self, value: _builtins.int | None) -> None: ...
@@ -19696,6 +21419,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-nume
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-data
             """
+            ...
 
         @data.setter
         def data(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19705,7 +21429,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-nume
 class Option(_Element):
     """``<option>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('option', 'option', (
@@ -19750,6 +21475,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-timestep
             """
+            ...
 
         @timestep.setter
         def timestep(self, value: _builtins.float | None) -> None: ...
@@ -19762,6 +21488,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-impratio
             """
+            ...
 
         @impratio.setter
         def impratio(self, value: _builtins.float | None) -> None: ...
@@ -19774,6 +21501,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-tolerance
             """
+            ...
 
         @tolerance.setter
         def tolerance(self, value: _builtins.float | None) -> None: ...
@@ -19786,6 +21514,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_tolerance
             """
+            ...
 
         @ls_tolerance.setter
         def ls_tolerance(self, value: _builtins.float | None) -> None: ...
@@ -19798,6 +21527,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_tolerance
             """
+            ...
 
         @noslip_tolerance.setter
         def noslip_tolerance(self, value: _builtins.float | None) -> None: ...
@@ -19810,6 +21540,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_tolerance
             """
+            ...
 
         @ccd_tolerance.setter
         def ccd_tolerance(self, value: _builtins.float | None) -> None: ...
@@ -19822,6 +21553,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sleep_tolerance
             """
+            ...
 
         @sleep_tolerance.setter
         def sleep_tolerance(self, value: _builtins.float | None) -> None: ...
@@ -19834,6 +21566,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-gravity
             """
+            ...
 
         @gravity.setter
         def gravity(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19846,6 +21579,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-wind
             """
+            ...
 
         @wind.setter
         def wind(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19858,6 +21592,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-magnetic
             """
+            ...
 
         @magnetic.setter
         def magnetic(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19868,6 +21603,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-density
             """
+            ...
 
         @density.setter
         def density(self, value: _builtins.float | None) -> None: ...
@@ -19878,6 +21614,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-viscosity
             """
+            ...
 
         @viscosity.setter
         def viscosity(self, value: _builtins.float | None) -> None: ...
@@ -19888,6 +21625,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_margin
             """
+            ...
 
         @o_margin.setter
         def o_margin(self, value: _builtins.float | None) -> None: ...
@@ -19900,6 +21638,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solref
             """
+            ...
 
         @o_solref.setter
         def o_solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19912,6 +21651,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solimp
             """
+            ...
 
         @o_solimp.setter
         def o_solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19924,6 +21664,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_friction
             """
+            ...
 
         @o_friction.setter
         def o_friction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -19936,6 +21677,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-integrator
             """
+            ...
 
         @integrator.setter
         def integrator(self, value: Literal["Euler", "RK4", "implicit", "implicitfast", "discrete"] | None) -> None: ...
@@ -19948,6 +21690,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-cone
             """
+            ...
 
         @cone.setter
         def cone(self, value: Literal["pyramidal", "elliptic"] | None) -> None: ...
@@ -19960,6 +21703,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-jacobian
             """
+            ...
 
         @jacobian.setter
         def jacobian(self, value: Literal["dense", "sparse", "auto"] | None) -> None: ...
@@ -19972,6 +21716,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-solver
             """
+            ...
 
         @solver.setter
         def solver(self, value: Literal["PGS", "CG", "Newton"] | None) -> None: ...
@@ -19984,6 +21729,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-iterations
             """
+            ...
 
         @iterations.setter
         def iterations(self, value: _builtins.int | None) -> None: ...
@@ -19996,6 +21742,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_iterations
             """
+            ...
 
         @ls_iterations.setter
         def ls_iterations(self, value: _builtins.int | None) -> None: ...
@@ -20006,6 +21753,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_iterations
             """
+            ...
 
         @noslip_iterations.setter
         def noslip_iterations(self, value: _builtins.int | None) -> None: ...
@@ -20018,6 +21766,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_iterations
             """
+            ...
 
         @ccd_iterations.setter
         def ccd_iterations(self, value: _builtins.int | None) -> None: ...
@@ -20030,6 +21779,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_iterations
             """
+            ...
 
         @sdf_iterations.setter
         def sdf_iterations(self, value: _builtins.int | None) -> None: ...
@@ -20042,6 +21792,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_initpoints
             """
+            ...
 
         @sdf_initpoints.setter
         def sdf_initpoints(self, value: _builtins.int | None) -> None: ...
@@ -20054,6 +21805,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
             """
+            ...
 
         @actuatorgroupdisable.setter
         def actuatorgroupdisable(self, value: _builtins.int | Sequence[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -20061,9 +21813,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
         @property
         def flag(self) -> Flag:
             """The ``<flag>`` child, created on first use."""
+            ...
 
         def add_flag(self, **kwargs: Unpack[FlagAttributes]) -> Flag:
             """Add a ``<flag>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["flag"], /, **kwargs: Unpack[FlagAttributes]) -> Flag: ...
@@ -20071,6 +21825,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["flag"], position: _builtins.int, /, **kwargs: Unpack[FlagAttributes]) -> Flag: ...
@@ -20078,13 +21833,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#option"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Orientation(_Element):
     """``<orientation>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('orientation', 'orientation', (
@@ -20116,6 +21873,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -20126,6 +21884,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -20136,6 +21895,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -20146,6 +21906,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -20156,6 +21917,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -20166,6 +21928,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -20176,6 +21939,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20186,6 +21950,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20198,6 +21963,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -20208,6 +21974,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20218,6 +21985,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -20228,6 +21996,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -20238,6 +22007,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -20248,6 +22018,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -20258,6 +22029,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -20268,6 +22040,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -20278,6 +22051,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["expmap", "quat"] | None) -> None: ...
@@ -20287,7 +22061,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-or
 class Pair(_Element):
     """``<pair>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('pair', 'pair', (
@@ -20314,6 +22089,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -20324,6 +22100,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -20334,6 +22111,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom1
             """
+            ...
 
         @geom1.setter
         def geom1(self, value: _builtins.str | Geom | None) -> None: ...
@@ -20344,6 +22122,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom2
             """
+            ...
 
         @geom2.setter
         def geom2(self, value: _builtins.str | Geom | None) -> None: ...
@@ -20356,6 +22135,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
             """
+            ...
 
         @condim.setter
         def condim(self, value: _builtins.int | None) -> None: ...
@@ -20368,6 +22148,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
             """
+            ...
 
         @friction.setter
         def friction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20380,6 +22161,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20390,6 +22172,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20402,6 +22185,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20412,6 +22196,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
             """
+            ...
 
         @gap.setter
         def gap(self, value: _builtins.float | None) -> None: ...
@@ -20422,6 +22207,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -20432,6 +22218,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
             """
+            ...
 
         @adhesion.setter
         def adhesion(self, value: _builtins.float | None) -> None: ...
@@ -20441,7 +22228,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pai
 class Pid(_Element):
     """``<pid>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('pid', 'pid', (
@@ -20490,6 +22278,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -20500,6 +22289,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -20510,6 +22300,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -20520,6 +22311,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -20530,6 +22322,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -20540,6 +22333,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -20550,6 +22344,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20560,6 +22355,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20572,6 +22368,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -20584,6 +22381,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -20596,6 +22394,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
             """
+            ...
 
         @posrange.setter
         def posrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20606,6 +22405,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
             """
+            ...
 
         @velrange.setter
         def velrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20616,6 +22416,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
             """
+            ...
 
         @ffrange.setter
         def ffrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20626,6 +22427,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20636,6 +22438,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -20646,6 +22449,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20658,6 +22462,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20670,6 +22475,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20680,6 +22486,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -20692,6 +22499,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -20702,6 +22510,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -20712,6 +22521,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -20722,6 +22532,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -20732,6 +22543,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -20742,6 +22554,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -20752,6 +22565,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -20762,6 +22576,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -20772,6 +22587,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -20782,6 +22598,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -20792,6 +22609,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -20802,6 +22620,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
             """
+            ...
 
         @ki.setter
         def ki(self, value: _builtins.float | None) -> None: ...
@@ -20812,6 +22631,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             """
+            ...
 
         @imax.setter
         def imax(self, value: _builtins.float | None) -> None: ...
@@ -20822,6 +22642,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
             """
+            ...
 
         @slewmax.setter
         def slewmax(self, value: _builtins.float | None) -> None: ...
@@ -20832,6 +22653,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
             """
+            ...
 
         @input.setter
         def input(self, value: Literal["pos", "vel", "ff", "voltage"] | Collection[Literal["pos", "vel", "ff", "voltage"]] | None) -> None: ...
@@ -20841,7 +22663,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pi
 class Pin(_Element):
     """``<pin>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('pin', 'pin', (
@@ -20860,6 +22683,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-id
             """
+            ...
 
         @id.setter
         def id(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20870,6 +22694,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-range
             """
+            ...
 
         @range.setter
         def range(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20880,6 +22705,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-grid
             """
+            ...
 
         @grid.setter
         def grid(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20890,6 +22716,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pi
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-gridrange
             """
+            ...
 
         @gridrange.setter
         def gridrange(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -20899,7 +22726,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pi
 class Plugin(_Element):
     """``<plugin>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('plugin', 'plugin', (
@@ -20917,6 +22745,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-plugin
             """
+            ...
 
         @plugin.setter
         def plugin(self, value: _builtins.str | None) -> None: ...
@@ -20927,6 +22756,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-instance
             """
+            ...
 
         @instance.setter
         def instance(self, value: _builtins.str | Instance | None) -> None: ...
@@ -20934,9 +22764,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin
         @property
         def config(self) -> _builtins.list[Config]:
             """The ``<config>`` children, in document order."""
+            ...
 
         def add_config(self, **kwargs: Unpack[ConfigAttributes]) -> Config:
             """Add a ``<config>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -20944,6 +22776,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["config"], position: _builtins.int, /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -20951,13 +22784,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Position(_Element):
     """``<position>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('position', 'position', (
@@ -21000,6 +22835,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -21010,6 +22846,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -21020,6 +22857,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -21030,6 +22868,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -21040,6 +22879,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -21050,6 +22890,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -21060,6 +22901,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21070,6 +22912,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21082,6 +22925,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -21094,6 +22938,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -21104,6 +22949,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
             """
+            ...
 
         @inheritrange.setter
         def inheritrange(self, value: _builtins.float | None) -> None: ...
@@ -21114,6 +22960,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21124,6 +22971,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21136,6 +22984,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21148,6 +22997,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21158,6 +23008,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -21170,6 +23021,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -21180,6 +23032,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -21190,6 +23043,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -21200,6 +23054,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -21210,6 +23065,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -21220,6 +23076,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -21230,6 +23087,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -21240,6 +23098,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -21250,6 +23109,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
             """
+            ...
 
         @kp.setter
         def kp(self, value: _builtins.float | None) -> None: ...
@@ -21260,6 +23120,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -21270,6 +23131,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
             """
+            ...
 
         @dampratio.setter
         def dampratio(self, value: _builtins.float | None) -> None: ...
@@ -21280,6 +23142,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
             """
+            ...
 
         @timeconst.setter
         def timeconst(self, value: _builtins.float | None) -> None: ...
@@ -21289,7 +23152,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-po
 class Pulley(_Element):
     """``<pulley>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('pulley', 'pulley', (
@@ -21305,6 +23169,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pul
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
             """
+            ...
 
         @divisor.setter
         def divisor(self, value: _builtins.float | None) -> None: ...
@@ -21314,7 +23179,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pul
 class Quality(_Element):
     """``<quality>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('quality', 'quality', (
@@ -21336,6 +23202,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-qual
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-shadowsize
             """
+            ...
 
         @shadowsize.setter
         def shadowsize(self, value: _builtins.int | None) -> None: ...
@@ -21348,6 +23215,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-qual
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-offsamples
             """
+            ...
 
         @offsamples.setter
         def offsamples(self, value: _builtins.int | None) -> None: ...
@@ -21360,6 +23228,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-qual
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numslices
             """
+            ...
 
         @numslices.setter
         def numslices(self, value: _builtins.int | None) -> None: ...
@@ -21372,6 +23241,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-qual
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numstacks
             """
+            ...
 
         @numstacks.setter
         def numstacks(self, value: _builtins.int | None) -> None: ...
@@ -21384,6 +23254,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-qual
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numquads
             """
+            ...
 
         @numquads.setter
         def numquads(self, value: _builtins.int | None) -> None: ...
@@ -21393,7 +23264,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-qual
 class Rangefinder(_Element):
     """``<rangefinder>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('rangefinder', 'rangefinder', (
@@ -21420,6 +23292,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -21430,6 +23303,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -21440,6 +23314,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -21450,6 +23325,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -21460,6 +23336,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21470,6 +23347,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -21480,6 +23358,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -21490,6 +23369,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21500,6 +23380,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -21510,6 +23391,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-camera
             """
+            ...
 
         @camera.setter
         def camera(self, value: _builtins.str | Camera | None) -> None: ...
@@ -21522,6 +23404,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
             """
+            ...
 
         @data.setter
         def data(self, value: Literal["dist", "dir", "origin", "point", "normal", "depth"] | Collection[Literal["dist", "dir", "origin", "point", "normal", "depth"]] | None) -> None: ...
@@ -21531,7 +23414,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rang
 class Replicate(_Element):
     """``<replicate>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('replicate', 'replicate', (
@@ -21564,6 +23448,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-count
             """
+            ...
 
         @count.setter
         def count(self, value: _builtins.int | None) -> None: ...
@@ -21574,6 +23459,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-offset
             """
+            ...
 
         @offset.setter
         def offset(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21584,6 +23470,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21594,6 +23481,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-sep
             """
+            ...
 
         @sep.setter
         def sep(self, value: _builtins.str | None) -> None: ...
@@ -21602,6 +23490,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
         def childclass(self) -> _builtins.str | Default | None:
             """``childclass``: reference to namespace ``default``.
             """
+            ...
 
         @childclass.setter
         def childclass(self, value: _builtins.str | Default | None) -> None: ...
@@ -21609,79 +23498,101 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
         @property
         def body(self) -> _builtins.list[Body]:
             """The ``<body>`` children, in document order."""
+            ...
 
         def add_body(self, **kwargs: Unpack[BodyAttributes]) -> Body:
             """Add a ``<body>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frame(self) -> _builtins.list[Frame]:
             """The ``<frame>`` children, in document order."""
+            ...
 
         def add_frame(self, **kwargs: Unpack[FrameAttributes]) -> Frame:
             """Add a ``<frame>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def replicate(self) -> _builtins.list[Replicate]:
             """The ``<replicate>`` children, in document order."""
+            ...
 
         def add_replicate(self, **kwargs: Unpack[ReplicateAttributes]) -> Replicate:
             """Add a ``<replicate>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def inertial(self) -> Inertial:
             """The ``<inertial>`` child, created on first use."""
+            ...
 
         def add_inertial(self, **kwargs: Unpack[InertialAttributes]) -> Inertial:
             """Add a ``<inertial>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def joint(self) -> _builtins.list[Joint]:
             """The ``<joint>`` children, in document order."""
+            ...
 
         def add_joint(self, **kwargs: Unpack[JointAttributes]) -> Joint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def geom(self) -> _builtins.list[Geom]:
             """The ``<geom>`` children, in document order."""
+            ...
 
         def add_geom(self, **kwargs: Unpack[GeomAttributes]) -> Geom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def attach(self) -> _builtins.list[Attach]:
             """The ``<attach>`` children, in document order."""
+            ...
 
         def add_attach(self, **kwargs: Unpack[AttachAttributes]) -> Attach:
             """Add a ``<attach>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def site(self) -> _builtins.list[Site]:
             """The ``<site>`` children, in document order."""
+            ...
 
         def add_site(self, **kwargs: Unpack[SiteAttributes]) -> Site:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def camera(self) -> _builtins.list[Camera]:
             """The ``<camera>`` children, in document order."""
+            ...
 
         def add_camera(self, **kwargs: Unpack[CameraAttributes]) -> Camera:
             """Add a ``<camera>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def light(self) -> _builtins.list[Light]:
             """The ``<light>`` children, in document order."""
+            ...
 
         def add_light(self, **kwargs: Unpack[LightAttributes]) -> Light:
             """Add a ``<light>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["body"], /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -21709,6 +23620,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["body"], position: _builtins.int, /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -21736,13 +23648,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Rgba(_Element):
     """``<rgba>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('rgba', 'rgba', (
@@ -21784,6 +23698,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-fog
             """
+            ...
 
         @fog.setter
         def fog(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21796,6 +23711,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-haze
             """
+            ...
 
         @haze.setter
         def haze(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21808,6 +23724,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-force
             """
+            ...
 
         @force.setter
         def force(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21820,6 +23737,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-inertia
             """
+            ...
 
         @inertia.setter
         def inertia(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21832,6 +23750,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21844,6 +23763,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuator
             """
+            ...
 
         @actuator.setter
         def actuator(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21856,6 +23776,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatornegative
             """
+            ...
 
         @actuatornegative.setter
         def actuatornegative(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21868,6 +23789,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatorpositive
             """
+            ...
 
         @actuatorpositive.setter
         def actuatorpositive(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21880,6 +23802,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-com
             """
+            ...
 
         @com.setter
         def com(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21892,6 +23815,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-camera
             """
+            ...
 
         @camera.setter
         def camera(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21904,6 +23828,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-light
             """
+            ...
 
         @light.setter
         def light(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21916,6 +23841,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-selectpoint
             """
+            ...
 
         @selectpoint.setter
         def selectpoint(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21928,6 +23854,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-connect
             """
+            ...
 
         @connect.setter
         def connect(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21940,6 +23867,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactpoint
             """
+            ...
 
         @contactpoint.setter
         def contactpoint(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21952,6 +23880,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactforce
             """
+            ...
 
         @contactforce.setter
         def contactforce(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21964,6 +23893,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactfriction
             """
+            ...
 
         @contactfriction.setter
         def contactfriction(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21976,6 +23906,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contacttorque
             """
+            ...
 
         @contacttorque.setter
         def contacttorque(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -21988,6 +23919,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactgap
             """
+            ...
 
         @contactgap.setter
         def contactgap(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22000,6 +23932,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-rangefinder
             """
+            ...
 
         @rangefinder.setter
         def rangefinder(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22012,6 +23945,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-constraint
             """
+            ...
 
         @constraint.setter
         def constraint(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22024,6 +23958,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-slidercrank
             """
+            ...
 
         @slidercrank.setter
         def slidercrank(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22036,6 +23971,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-crankbroken
             """
+            ...
 
         @crankbroken.setter
         def crankbroken(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22048,6 +23984,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-frustum
             """
+            ...
 
         @frustum.setter
         def frustum(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22060,6 +23997,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bv
             """
+            ...
 
         @bv.setter
         def bv(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22072,6 +24010,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bvactive
             """
+            ...
 
         @bvactive.setter
         def bvactive(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -22081,7 +24020,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba
 class Scale(_Element):
     """``<scale>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('scale', 'scale', (
@@ -22115,6 +24055,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-forcewidth
             """
+            ...
 
         @forcewidth.setter
         def forcewidth(self, value: _builtins.float | None) -> None: ...
@@ -22127,6 +24068,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactwidth
             """
+            ...
 
         @contactwidth.setter
         def contactwidth(self, value: _builtins.float | None) -> None: ...
@@ -22139,6 +24081,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactheight
             """
+            ...
 
         @contactheight.setter
         def contactheight(self, value: _builtins.float | None) -> None: ...
@@ -22151,6 +24094,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-connect
             """
+            ...
 
         @connect.setter
         def connect(self, value: _builtins.float | None) -> None: ...
@@ -22163,6 +24107,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-com
             """
+            ...
 
         @com.setter
         def com(self, value: _builtins.float | None) -> None: ...
@@ -22175,6 +24120,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-camera
             """
+            ...
 
         @camera.setter
         def camera(self, value: _builtins.float | None) -> None: ...
@@ -22187,6 +24133,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-light
             """
+            ...
 
         @light.setter
         def light(self, value: _builtins.float | None) -> None: ...
@@ -22199,6 +24146,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-selectpoint
             """
+            ...
 
         @selectpoint.setter
         def selectpoint(self, value: _builtins.float | None) -> None: ...
@@ -22211,6 +24159,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointlength
             """
+            ...
 
         @jointlength.setter
         def jointlength(self, value: _builtins.float | None) -> None: ...
@@ -22223,6 +24172,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointwidth
             """
+            ...
 
         @jointwidth.setter
         def jointwidth(self, value: _builtins.float | None) -> None: ...
@@ -22235,6 +24185,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorlength
             """
+            ...
 
         @actuatorlength.setter
         def actuatorlength(self, value: _builtins.float | None) -> None: ...
@@ -22247,6 +24198,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorwidth
             """
+            ...
 
         @actuatorwidth.setter
         def actuatorwidth(self, value: _builtins.float | None) -> None: ...
@@ -22259,6 +24211,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framelength
             """
+            ...
 
         @framelength.setter
         def framelength(self, value: _builtins.float | None) -> None: ...
@@ -22271,6 +24224,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framewidth
             """
+            ...
 
         @framewidth.setter
         def framewidth(self, value: _builtins.float | None) -> None: ...
@@ -22283,6 +24237,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-constraint
             """
+            ...
 
         @constraint.setter
         def constraint(self, value: _builtins.float | None) -> None: ...
@@ -22295,6 +24250,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-slidercrank
             """
+            ...
 
         @slidercrank.setter
         def slidercrank(self, value: _builtins.float | None) -> None: ...
@@ -22307,6 +24263,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-frustum
             """
+            ...
 
         @frustum.setter
         def frustum(self, value: _builtins.float | None) -> None: ...
@@ -22316,7 +24273,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scal
 class Sensor(_Element):
     """``<sensor>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('sensor', 'sensor', (
@@ -22377,345 +24335,443 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor"""
         @property
         def touch(self) -> _builtins.list[Touch]:
             """The ``<touch>`` children, in document order."""
+            ...
 
         def add_touch(self, **kwargs: Unpack[TouchAttributes]) -> Touch:
             """Add a ``<touch>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def accelerometer(self) -> _builtins.list[Accelerometer]:
             """The ``<accelerometer>`` children, in document order."""
+            ...
 
         def add_accelerometer(self, **kwargs: Unpack[AccelerometerAttributes]) -> Accelerometer:
             """Add a ``<accelerometer>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def velocimeter(self) -> _builtins.list[Velocimeter]:
             """The ``<velocimeter>`` children, in document order."""
+            ...
 
         def add_velocimeter(self, **kwargs: Unpack[VelocimeterAttributes]) -> Velocimeter:
             """Add a ``<velocimeter>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def gyro(self) -> _builtins.list[Gyro]:
             """The ``<gyro>`` children, in document order."""
+            ...
 
         def add_gyro(self, **kwargs: Unpack[GyroAttributes]) -> Gyro:
             """Add a ``<gyro>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def force(self) -> _builtins.list[Force]:
             """The ``<force>`` children, in document order."""
+            ...
 
         def add_force(self, **kwargs: Unpack[ForceAttributes]) -> Force:
             """Add a ``<force>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def torque(self) -> _builtins.list[Torque]:
             """The ``<torque>`` children, in document order."""
+            ...
 
         def add_torque(self, **kwargs: Unpack[TorqueAttributes]) -> Torque:
             """Add a ``<torque>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def magnetometer(self) -> _builtins.list[Magnetometer]:
             """The ``<magnetometer>`` children, in document order."""
+            ...
 
         def add_magnetometer(self, **kwargs: Unpack[MagnetometerAttributes]) -> Magnetometer:
             """Add a ``<magnetometer>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def camprojection(self) -> _builtins.list[Camprojection]:
             """The ``<camprojection>`` children, in document order."""
+            ...
 
         def add_camprojection(self, **kwargs: Unpack[CamprojectionAttributes]) -> Camprojection:
             """Add a ``<camprojection>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def rangefinder(self) -> _builtins.list[Rangefinder]:
             """The ``<rangefinder>`` children, in document order."""
+            ...
 
         def add_rangefinder(self, **kwargs: Unpack[RangefinderAttributes]) -> Rangefinder:
             """Add a ``<rangefinder>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def jointpos(self) -> _builtins.list[Jointpos]:
             """The ``<jointpos>`` children, in document order."""
+            ...
 
         def add_jointpos(self, **kwargs: Unpack[JointposAttributes]) -> Jointpos:
             """Add a ``<jointpos>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def jointvel(self) -> _builtins.list[Jointvel]:
             """The ``<jointvel>`` children, in document order."""
+            ...
 
         def add_jointvel(self, **kwargs: Unpack[JointvelAttributes]) -> Jointvel:
             """Add a ``<jointvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendonpos(self) -> _builtins.list[Tendonpos]:
             """The ``<tendonpos>`` children, in document order."""
+            ...
 
         def add_tendonpos(self, **kwargs: Unpack[TendonposAttributes]) -> Tendonpos:
             """Add a ``<tendonpos>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendonvel(self) -> _builtins.list[Tendonvel]:
             """The ``<tendonvel>`` children, in document order."""
+            ...
 
         def add_tendonvel(self, **kwargs: Unpack[TendonvelAttributes]) -> Tendonvel:
             """Add a ``<tendonvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def actuatorpos(self) -> _builtins.list[Actuatorpos]:
             """The ``<actuatorpos>`` children, in document order."""
+            ...
 
         def add_actuatorpos(self, **kwargs: Unpack[ActuatorposAttributes]) -> Actuatorpos:
             """Add a ``<actuatorpos>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def actuatorvel(self) -> _builtins.list[Actuatorvel]:
             """The ``<actuatorvel>`` children, in document order."""
+            ...
 
         def add_actuatorvel(self, **kwargs: Unpack[ActuatorvelAttributes]) -> Actuatorvel:
             """Add a ``<actuatorvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def actuatorfrc(self) -> _builtins.list[Actuatorfrc]:
             """The ``<actuatorfrc>`` children, in document order."""
+            ...
 
         def add_actuatorfrc(self, **kwargs: Unpack[ActuatorfrcAttributes]) -> Actuatorfrc:
             """Add a ``<actuatorfrc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def jointactuatorfrc(self) -> _builtins.list[Jointactuatorfrc]:
             """The ``<jointactuatorfrc>`` children, in document order."""
+            ...
 
         def add_jointactuatorfrc(self, **kwargs: Unpack[JointactuatorfrcAttributes]) -> Jointactuatorfrc:
             """Add a ``<jointactuatorfrc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendonactuatorfrc(self) -> _builtins.list[Tendonactuatorfrc]:
             """The ``<tendonactuatorfrc>`` children, in document order."""
+            ...
 
         def add_tendonactuatorfrc(self, **kwargs: Unpack[TendonactuatorfrcAttributes]) -> Tendonactuatorfrc:
             """Add a ``<tendonactuatorfrc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def ballquat(self) -> _builtins.list[Ballquat]:
             """The ``<ballquat>`` children, in document order."""
+            ...
 
         def add_ballquat(self, **kwargs: Unpack[BallquatAttributes]) -> Ballquat:
             """Add a ``<ballquat>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def ballangvel(self) -> _builtins.list[Ballangvel]:
             """The ``<ballangvel>`` children, in document order."""
+            ...
 
         def add_ballangvel(self, **kwargs: Unpack[BallangvelAttributes]) -> Ballangvel:
             """Add a ``<ballangvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def jointlimitpos(self) -> _builtins.list[Jointlimitpos]:
             """The ``<jointlimitpos>`` children, in document order."""
+            ...
 
         def add_jointlimitpos(self, **kwargs: Unpack[JointlimitposAttributes]) -> Jointlimitpos:
             """Add a ``<jointlimitpos>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def jointlimitvel(self) -> _builtins.list[Jointlimitvel]:
             """The ``<jointlimitvel>`` children, in document order."""
+            ...
 
         def add_jointlimitvel(self, **kwargs: Unpack[JointlimitvelAttributes]) -> Jointlimitvel:
             """Add a ``<jointlimitvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def jointlimitfrc(self) -> _builtins.list[Jointlimitfrc]:
             """The ``<jointlimitfrc>`` children, in document order."""
+            ...
 
         def add_jointlimitfrc(self, **kwargs: Unpack[JointlimitfrcAttributes]) -> Jointlimitfrc:
             """Add a ``<jointlimitfrc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendonlimitpos(self) -> _builtins.list[Tendonlimitpos]:
             """The ``<tendonlimitpos>`` children, in document order."""
+            ...
 
         def add_tendonlimitpos(self, **kwargs: Unpack[TendonlimitposAttributes]) -> Tendonlimitpos:
             """Add a ``<tendonlimitpos>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendonlimitvel(self) -> _builtins.list[Tendonlimitvel]:
             """The ``<tendonlimitvel>`` children, in document order."""
+            ...
 
         def add_tendonlimitvel(self, **kwargs: Unpack[TendonlimitvelAttributes]) -> Tendonlimitvel:
             """Add a ``<tendonlimitvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tendonlimitfrc(self) -> _builtins.list[Tendonlimitfrc]:
             """The ``<tendonlimitfrc>`` children, in document order."""
+            ...
 
         def add_tendonlimitfrc(self, **kwargs: Unpack[TendonlimitfrcAttributes]) -> Tendonlimitfrc:
             """Add a ``<tendonlimitfrc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def framepos(self) -> _builtins.list[Framepos]:
             """The ``<framepos>`` children, in document order."""
+            ...
 
         def add_framepos(self, **kwargs: Unpack[FrameposAttributes]) -> Framepos:
             """Add a ``<framepos>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def framequat(self) -> _builtins.list[Framequat]:
             """The ``<framequat>`` children, in document order."""
+            ...
 
         def add_framequat(self, **kwargs: Unpack[FramequatAttributes]) -> Framequat:
             """Add a ``<framequat>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def framexaxis(self) -> _builtins.list[Framexaxis]:
             """The ``<framexaxis>`` children, in document order."""
+            ...
 
         def add_framexaxis(self, **kwargs: Unpack[FramexaxisAttributes]) -> Framexaxis:
             """Add a ``<framexaxis>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frameyaxis(self) -> _builtins.list[Frameyaxis]:
             """The ``<frameyaxis>`` children, in document order."""
+            ...
 
         def add_frameyaxis(self, **kwargs: Unpack[FrameyaxisAttributes]) -> Frameyaxis:
             """Add a ``<frameyaxis>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def framezaxis(self) -> _builtins.list[Framezaxis]:
             """The ``<framezaxis>`` children, in document order."""
+            ...
 
         def add_framezaxis(self, **kwargs: Unpack[FramezaxisAttributes]) -> Framezaxis:
             """Add a ``<framezaxis>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def framelinvel(self) -> _builtins.list[Framelinvel]:
             """The ``<framelinvel>`` children, in document order."""
+            ...
 
         def add_framelinvel(self, **kwargs: Unpack[FramelinvelAttributes]) -> Framelinvel:
             """Add a ``<framelinvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frameangvel(self) -> _builtins.list[Frameangvel]:
             """The ``<frameangvel>`` children, in document order."""
+            ...
 
         def add_frameangvel(self, **kwargs: Unpack[FrameangvelAttributes]) -> Frameangvel:
             """Add a ``<frameangvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def framelinacc(self) -> _builtins.list[Framelinacc]:
             """The ``<framelinacc>`` children, in document order."""
+            ...
 
         def add_framelinacc(self, **kwargs: Unpack[FramelinaccAttributes]) -> Framelinacc:
             """Add a ``<framelinacc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frameangacc(self) -> _builtins.list[Frameangacc]:
             """The ``<frameangacc>`` children, in document order."""
+            ...
 
         def add_frameangacc(self, **kwargs: Unpack[FrameangaccAttributes]) -> Frameangacc:
             """Add a ``<frameangacc>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def subtreecom(self) -> _builtins.list[Subtreecom]:
             """The ``<subtreecom>`` children, in document order."""
+            ...
 
         def add_subtreecom(self, **kwargs: Unpack[SubtreecomAttributes]) -> Subtreecom:
             """Add a ``<subtreecom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def subtreelinvel(self) -> _builtins.list[Subtreelinvel]:
             """The ``<subtreelinvel>`` children, in document order."""
+            ...
 
         def add_subtreelinvel(self, **kwargs: Unpack[SubtreelinvelAttributes]) -> Subtreelinvel:
             """Add a ``<subtreelinvel>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def subtreeangmom(self) -> _builtins.list[Subtreeangmom]:
             """The ``<subtreeangmom>`` children, in document order."""
+            ...
 
         def add_subtreeangmom(self, **kwargs: Unpack[SubtreeangmomAttributes]) -> Subtreeangmom:
             """Add a ``<subtreeangmom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def insidesite(self) -> _builtins.list[Insidesite]:
             """The ``<insidesite>`` children, in document order."""
+            ...
 
         def add_insidesite(self, **kwargs: Unpack[InsidesiteAttributes]) -> Insidesite:
             """Add a ``<insidesite>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def distance(self) -> _builtins.list[Distance]:
             """The ``<distance>`` children, in document order."""
+            ...
 
         def add_distance(self, **kwargs: Unpack[DistanceAttributes]) -> Distance:
             """Add a ``<distance>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def normal(self) -> _builtins.list[Normal]:
             """The ``<normal>`` children, in document order."""
+            ...
 
         def add_normal(self, **kwargs: Unpack[NormalAttributes]) -> Normal:
             """Add a ``<normal>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def fromto(self) -> _builtins.list[Fromto]:
             """The ``<fromto>`` children, in document order."""
+            ...
 
         def add_fromto(self, **kwargs: Unpack[FromtoAttributes]) -> Fromto:
             """Add a ``<fromto>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def contact(self) -> _builtins.list[SensorContact]:
             """The ``<contact>`` children, in document order."""
+            ...
 
         def add_contact(self, **kwargs: Unpack[SensorContactAttributes]) -> SensorContact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def e_potential(self) -> _builtins.list[EPotential]:
             """The ``<e_potential>`` children, in document order."""
+            ...
 
         def add_e_potential(self, **kwargs: Unpack[EPotentialAttributes]) -> EPotential:
             """Add a ``<e_potential>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def e_kinetic(self) -> _builtins.list[EKinetic]:
             """The ``<e_kinetic>`` children, in document order."""
+            ...
 
         def add_e_kinetic(self, **kwargs: Unpack[EKineticAttributes]) -> EKinetic:
             """Add a ``<e_kinetic>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def clock(self) -> _builtins.list[Clock]:
             """The ``<clock>`` children, in document order."""
+            ...
 
         def add_clock(self, **kwargs: Unpack[ClockAttributes]) -> Clock:
             """Add a ``<clock>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def tactile(self) -> _builtins.list[Tactile]:
             """The ``<tactile>`` children, in document order."""
+            ...
 
         def add_tactile(self, **kwargs: Unpack[TactileAttributes]) -> Tactile:
             """Add a ``<tactile>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def user(self) -> _builtins.list[User]:
             """The ``<user>`` children, in document order."""
+            ...
 
         def add_user(self, **kwargs: Unpack[UserAttributes]) -> User:
             """Add a ``<user>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[SensorPlugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[SensorPluginAttributes]) -> SensorPlugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["touch"], /, **kwargs: Unpack[TouchAttributes]) -> Touch: ...
@@ -22819,6 +24875,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["touch"], position: _builtins.int, /, **kwargs: Unpack[TouchAttributes]) -> Touch: ...
@@ -22922,13 +24979,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class SensorContact(_Element):
     """``<contact>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('contact', 'sensor_contact', (
@@ -22962,6 +25021,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -22972,6 +25032,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -22982,6 +25043,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -22992,6 +25054,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -23002,6 +25065,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23012,6 +25076,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -23022,6 +25087,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -23032,6 +25098,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23042,6 +25109,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom1
             """
+            ...
 
         @geom1.setter
         def geom1(self, value: _builtins.str | Geom | None) -> None: ...
@@ -23052,6 +25120,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom2
             """
+            ...
 
         @geom2.setter
         def geom2(self, value: _builtins.str | Geom | None) -> None: ...
@@ -23062,6 +25131,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -23072,6 +25142,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -23082,6 +25153,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree1
             """
+            ...
 
         @subtree1.setter
         def subtree1(self, value: _builtins.str | Body | None) -> None: ...
@@ -23092,6 +25164,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree2
             """
+            ...
 
         @subtree2.setter
         def subtree2(self, value: _builtins.str | Body | None) -> None: ...
@@ -23102,6 +25175,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -23112,6 +25186,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
             """
+            ...
 
         @num.setter
         def num(self, value: _builtins.int | None) -> None: ...
@@ -23122,6 +25197,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
             """
+            ...
 
         @data.setter
         def data(self, value: Literal["found", "force", "torque", "dist", "pos", "normal", "tangent"] | Collection[Literal["found", "force", "torque", "dist", "pos", "normal", "tangent"]] | None) -> None: ...
@@ -23132,6 +25208,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
             """
+            ...
 
         @reduce.setter
         def reduce(self, value: Literal["none", "mindist", "maxforce", "netforce"] | None) -> None: ...
@@ -23141,7 +25218,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-cont
 class SensorPlugin(_Element):
     """``<plugin>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('plugin', 'sensor_plugin', (
@@ -23166,6 +25244,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -23176,6 +25255,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-plugin
             """
+            ...
 
         @plugin.setter
         def plugin(self, value: _builtins.str | None) -> None: ...
@@ -23186,6 +25266,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-instance
             """
+            ...
 
         @instance.setter
         def instance(self, value: _builtins.str | Instance | None) -> None: ...
@@ -23196,6 +25277,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -23208,6 +25290,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: _builtins.str | None) -> None: ...
@@ -23220,6 +25303,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -23230,6 +25314,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-reftype
             """
+            ...
 
         @reftype.setter
         def reftype(self, value: _builtins.str | None) -> None: ...
@@ -23240,6 +25325,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-refname
             """
+            ...
 
         @refname.setter
         def refname(self, value: _builtins.str | None) -> None: ...
@@ -23250,6 +25336,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23257,9 +25344,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
         @property
         def config(self) -> _builtins.list[Config]:
             """The ``<config>`` children, in document order."""
+            ...
 
         def add_config(self, **kwargs: Unpack[ConfigAttributes]) -> Config:
             """Add a ``<config>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -23267,6 +25356,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["config"], position: _builtins.int, /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
@@ -23274,13 +25364,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plug
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Site(_Element):
     """``<site>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('site', 'site', (
@@ -23312,6 +25404,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -23322,6 +25415,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -23334,6 +25428,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"] | None) -> None: ...
@@ -23344,6 +25439,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -23358,6 +25454,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
             """
+            ...
 
         @pos.setter
         def pos(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23370,6 +25467,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
             """
+            ...
 
         @quat.setter
         def quat(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23380,6 +25478,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
             """
+            ...
 
         @axisangle.setter
         def axisangle(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23390,6 +25489,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
             """
+            ...
 
         @xyaxes.setter
         def xyaxes(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23400,6 +25500,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
             """
+            ...
 
         @zaxis.setter
         def zaxis(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23410,6 +25511,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
             """
+            ...
 
         @euler.setter
         def euler(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23420,6 +25522,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -23430,6 +25533,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
             """
+            ...
 
         @mesh.setter
         def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
@@ -23444,6 +25548,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
             """
+            ...
 
         @size.setter
         def size(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23456,6 +25561,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
             """
+            ...
 
         @fromto.setter
         def fromto(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23468,6 +25574,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23478,6 +25585,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23487,7 +25595,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site""
 class Size(_Element):
     """``<size>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('size', 'size', (
@@ -23519,6 +25628,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-memory
             """
+            ...
 
         @memory.setter
         def memory(self, value: _builtins.str | None) -> None: ...
@@ -23533,6 +25643,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-njmax
             """
+            ...
 
         @njmax.setter
         def njmax(self, value: _builtins.int | None) -> None: ...
@@ -23547,6 +25658,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nconmax
             """
+            ...
 
         @nconmax.setter
         def nconmax(self, value: _builtins.int | None) -> None: ...
@@ -23561,6 +25673,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nstack
             """
+            ...
 
         @nstack.setter
         def nstack(self, value: _builtins.int | None) -> None: ...
@@ -23571,6 +25684,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuserdata
             """
+            ...
 
         @nuserdata.setter
         def nuserdata(self, value: _builtins.int | None) -> None: ...
@@ -23581,6 +25695,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nkey
             """
+            ...
 
         @nkey.setter
         def nkey(self, value: _builtins.int | None) -> None: ...
@@ -23593,6 +25708,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
             """
+            ...
 
         @nuser_body.setter
         def nuser_body(self, value: _builtins.int | None) -> None: ...
@@ -23605,6 +25721,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
             """
+            ...
 
         @nuser_jnt.setter
         def nuser_jnt(self, value: _builtins.int | None) -> None: ...
@@ -23617,6 +25734,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
             """
+            ...
 
         @nuser_geom.setter
         def nuser_geom(self, value: _builtins.int | None) -> None: ...
@@ -23629,6 +25747,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
             """
+            ...
 
         @nuser_site.setter
         def nuser_site(self, value: _builtins.int | None) -> None: ...
@@ -23641,6 +25760,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
             """
+            ...
 
         @nuser_cam.setter
         def nuser_cam(self, value: _builtins.int | None) -> None: ...
@@ -23653,6 +25773,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
             """
+            ...
 
         @nuser_tendon.setter
         def nuser_tendon(self, value: _builtins.int | None) -> None: ...
@@ -23665,6 +25786,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
             """
+            ...
 
         @nuser_actuator.setter
         def nuser_actuator(self, value: _builtins.int | None) -> None: ...
@@ -23677,6 +25799,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
             """
+            ...
 
         @nuser_sensor.setter
         def nuser_sensor(self, value: _builtins.int | None) -> None: ...
@@ -23686,7 +25809,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#size"""
 class Skin(_Element):
     """``<skin>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('skin', 'skin', (
@@ -23711,6 +25835,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -23721,6 +25846,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-file
             """
+            ...
 
         @file.setter
         def file(self, value: _t.FileLike | None) -> None: ...
@@ -23731,6 +25857,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -23743,6 +25870,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23753,6 +25881,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-inflate
             """
+            ...
 
         @inflate.setter
         def inflate(self, value: _builtins.float | None) -> None: ...
@@ -23763,6 +25892,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-vertex
             """
+            ...
 
         @vertex.setter
         def vertex(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23773,6 +25903,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-texcoord
             """
+            ...
 
         @texcoord.setter
         def texcoord(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23783,6 +25914,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-face
             """
+            ...
 
         @face.setter
         def face(self, value: _builtins.int | Sequence[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -23793,6 +25925,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -23800,9 +25933,11 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
         @property
         def bone(self) -> _builtins.list[Bone]:
             """The ``<bone>`` children, in document order."""
+            ...
 
         def add_bone(self, **kwargs: Unpack[BoneAttributes]) -> Bone:
             """Add a ``<bone>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["bone"], /, **kwargs: Unpack[BoneAttributes]) -> Bone: ...
@@ -23810,6 +25945,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["bone"], position: _builtins.int, /, **kwargs: Unpack[BoneAttributes]) -> Bone: ...
@@ -23817,13 +25953,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-skin"
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Spatial(_Element):
     """``<spatial>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('spatial', 'spatial', (
@@ -23863,6 +26001,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -23873,6 +26012,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -23883,6 +26023,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -23895,6 +26036,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-limited
             """
+            ...
 
         @limited.setter
         def limited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -23907,6 +26049,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrclimited
             """
+            ...
 
         @actuatorfrclimited.setter
         def actuatorfrclimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -23917,6 +26060,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-range
             """
+            ...
 
         @range.setter
         def range(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23927,6 +26071,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrcrange
             """
+            ...
 
         @actuatorfrcrange.setter
         def actuatorfrcrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23939,6 +26084,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreflimit
             """
+            ...
 
         @solreflimit.setter
         def solreflimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23951,6 +26097,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimplimit
             """
+            ...
 
         @solimplimit.setter
         def solimplimit(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23963,6 +26110,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreffriction
             """
+            ...
 
         @solreffriction.setter
         def solreffriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23975,6 +26123,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimpfriction
             """
+            ...
 
         @solimpfriction.setter
         def solimpfriction(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -23985,6 +26134,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-frictionloss
             """
+            ...
 
         @frictionloss.setter
         def frictionloss(self, value: _builtins.float | None) -> None: ...
@@ -23999,6 +26149,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springlength
             """
+            ...
 
         @springlength.setter
         def springlength(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24011,6 +26162,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-width
             """
+            ...
 
         @width.setter
         def width(self, value: _builtins.float | None) -> None: ...
@@ -24021,6 +26173,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-material
             """
+            ...
 
         @material.setter
         def material(self, value: _builtins.str | Material | None) -> None: ...
@@ -24031,6 +26184,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-margin
             """
+            ...
 
         @margin.setter
         def margin(self, value: _builtins.float | None) -> None: ...
@@ -24043,6 +26197,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-stiffness
             """
+            ...
 
         @stiffness.setter
         def stiffness(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24055,6 +26210,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24065,6 +26221,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -24077,6 +26234,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-rgba
             """
+            ...
 
         @rgba.setter
         def rgba(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24087,6 +26245,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24099,6 +26258,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springyield
             """
+            ...
 
         @springyield.setter
         def springyield(self, value: _builtins.float | None) -> None: ...
@@ -24106,23 +26266,29 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
         @property
         def site(self) -> _builtins.list[SpatialSite]:
             """The ``<site>`` children, in document order."""
+            ...
 
         def add_site(self, **kwargs: Unpack[SpatialSiteAttributes]) -> SpatialSite:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def geom(self) -> _builtins.list[SpatialGeom]:
             """The ``<geom>`` children, in document order."""
+            ...
 
         def add_geom(self, **kwargs: Unpack[SpatialGeomAttributes]) -> SpatialGeom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def pulley(self) -> _builtins.list[Pulley]:
             """The ``<pulley>`` children, in document order."""
+            ...
 
         def add_pulley(self, **kwargs: Unpack[PulleyAttributes]) -> Pulley:
             """Add a ``<pulley>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["site"], /, **kwargs: Unpack[SpatialSiteAttributes]) -> SpatialSite: ...
@@ -24134,6 +26300,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["site"], position: _builtins.int, /, **kwargs: Unpack[SpatialSiteAttributes]) -> SpatialSite: ...
@@ -24145,13 +26312,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spat
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class SpatialGeom(_Element):
     """``<geom>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('geom', 'spatial_geom', (
@@ -24170,6 +26339,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-geom
             """
+            ...
 
         @geom.setter
         def geom(self, value: _builtins.str | Geom | None) -> None: ...
@@ -24180,6 +26350,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-sidesite
             """
+            ...
 
         @sidesite.setter
         def sidesite(self, value: _builtins.str | Site | None) -> None: ...
@@ -24189,7 +26360,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geo
 class SpatialSite(_Element):
     """``<site>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('site', 'spatial_site', (
@@ -24207,6 +26379,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-sit
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -24216,7 +26389,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-sit
 class Statistic(_Element):
     """``<statistic>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('statistic', 'statistic', (
@@ -24236,6 +26410,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meaninertia
             """
+            ...
 
         @meaninertia.setter
         def meaninertia(self, value: _builtins.float | None) -> None: ...
@@ -24246,6 +26421,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meanmass
             """
+            ...
 
         @meanmass.setter
         def meanmass(self, value: _builtins.float | None) -> None: ...
@@ -24256,6 +26432,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meansize
             """
+            ...
 
         @meansize.setter
         def meansize(self, value: _builtins.float | None) -> None: ...
@@ -24268,6 +26445,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
             """
+            ...
 
         @extent.setter
         def extent(self, value: _builtins.float | None) -> None: ...
@@ -24278,6 +26456,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic""
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-center
             """
+            ...
 
         @center.setter
         def center(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24287,7 +26466,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic""
 class Subtreeangmom(_Element):
     """``<subtreeangmom>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('subtreeangmom', 'subtreeangmom', (
@@ -24311,6 +26491,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -24321,6 +26502,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -24331,6 +26513,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -24341,6 +26524,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -24351,6 +26535,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24361,6 +26546,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -24371,6 +26557,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -24381,6 +26568,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24393,6 +26581,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -24402,7 +26591,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 class Subtreecom(_Element):
     """``<subtreecom>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('subtreecom', 'subtreecom', (
@@ -24426,6 +26616,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -24436,6 +26627,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -24446,6 +26638,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -24456,6 +26649,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -24466,6 +26660,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24476,6 +26671,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -24486,6 +26682,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -24496,6 +26693,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24508,6 +26706,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -24517,7 +26716,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 class Subtreelinvel(_Element):
     """``<subtreelinvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('subtreelinvel', 'subtreelinvel', (
@@ -24541,6 +26741,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -24551,6 +26752,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -24561,6 +26763,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -24571,6 +26774,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -24581,6 +26785,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24591,6 +26796,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -24601,6 +26807,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -24611,6 +26818,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24623,6 +26831,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-body
             """
+            ...
 
         @body.setter
         def body(self, value: _builtins.str | Body | None) -> None: ...
@@ -24632,7 +26841,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subt
 class Tactile(_Element):
     """``<tactile>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tactile', 'tactile', (
@@ -24656,6 +26866,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -24668,6 +26879,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-geom
             """
+            ...
 
         @geom.setter
         def geom(self, value: _builtins.str | Geom | None) -> None: ...
@@ -24680,6 +26892,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-mesh
             """
+            ...
 
         @mesh.setter
         def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
@@ -24690,6 +26903,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -24700,6 +26914,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -24710,6 +26925,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -24720,6 +26936,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24730,6 +26947,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -24740,6 +26958,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24749,7 +26968,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tact
 class Tendon(_Element):
     """``<tendon>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendon', 'tendon', (
@@ -24763,16 +26983,20 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon"""
         @property
         def spatial(self) -> _builtins.list[Spatial]:
             """The ``<spatial>`` children, in document order."""
+            ...
 
         def add_spatial(self, **kwargs: Unpack[SpatialAttributes]) -> Spatial:
             """Add a ``<spatial>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def fixed(self) -> _builtins.list[Fixed]:
             """The ``<fixed>`` children, in document order."""
+            ...
 
         def add_fixed(self, **kwargs: Unpack[FixedAttributes]) -> Fixed:
             """Add a ``<fixed>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["spatial"], /, **kwargs: Unpack[SpatialAttributes]) -> Spatial: ...
@@ -24782,6 +27006,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["spatial"], position: _builtins.int, /, **kwargs: Unpack[SpatialAttributes]) -> Spatial: ...
@@ -24791,13 +27016,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Tendonactuatorfrc(_Element):
     """``<tendonactuatorfrc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendonactuatorfrc', 'tendonactuatorfrc', (
@@ -24821,6 +27048,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -24831,6 +27059,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -24841,6 +27070,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -24851,6 +27081,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -24861,6 +27092,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24871,6 +27103,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -24881,6 +27114,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -24891,6 +27125,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24903,6 +27138,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -24912,7 +27148,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 class Tendonlimitfrc(_Element):
     """``<tendonlimitfrc>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendonlimitfrc', 'tendonlimitfrc', (
@@ -24936,6 +27173,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -24946,6 +27184,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -24956,6 +27195,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -24966,6 +27206,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -24976,6 +27217,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -24986,6 +27228,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -24996,6 +27239,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -25006,6 +27250,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25018,6 +27263,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -25027,7 +27273,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 class Tendonlimitpos(_Element):
     """``<tendonlimitpos>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendonlimitpos', 'tendonlimitpos', (
@@ -25051,6 +27298,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25061,6 +27309,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -25071,6 +27320,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -25081,6 +27331,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -25091,6 +27342,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25101,6 +27353,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -25111,6 +27364,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -25121,6 +27375,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25133,6 +27388,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -25142,7 +27398,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 class Tendonlimitvel(_Element):
     """``<tendonlimitvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendonlimitvel', 'tendonlimitvel', (
@@ -25166,6 +27423,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25176,6 +27434,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -25186,6 +27445,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -25196,6 +27456,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -25206,6 +27467,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25216,6 +27478,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -25226,6 +27489,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -25236,6 +27500,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25248,6 +27513,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -25257,7 +27523,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 class Tendonpos(_Element):
     """``<tendonpos>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendonpos', 'tendonpos', (
@@ -25281,6 +27548,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25291,6 +27559,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -25301,6 +27570,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -25311,6 +27581,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -25321,6 +27592,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25331,6 +27603,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -25341,6 +27614,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -25351,6 +27625,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25363,6 +27638,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -25372,7 +27648,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 class Tendonvel(_Element):
     """``<tendonvel>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tendonvel', 'tendonvel', (
@@ -25396,6 +27673,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25406,6 +27684,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -25416,6 +27695,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -25426,6 +27706,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -25436,6 +27717,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25446,6 +27728,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -25456,6 +27739,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -25466,6 +27750,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25478,6 +27763,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -25487,7 +27773,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tend
 class Text(_Element):
     """``<text>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('text', 'text', (
@@ -25506,6 +27793,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25516,6 +27804,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
             """
+            ...
 
         @data.setter
         def data(self, value: _builtins.str | None) -> None: ...
@@ -25525,7 +27814,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text
 class Texture(_Element):
     """``<texture>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('texture', 'texture', (
@@ -25566,6 +27856,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25578,6 +27869,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
             """
+            ...
 
         @type.setter
         def type(self, value: Literal["2d", "cube", "skybox"] | None) -> None: ...
@@ -25590,6 +27882,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
             """
+            ...
 
         @colorspace.setter
         def colorspace(self, value: Literal["auto", "linear", "sRGB"] | None) -> None: ...
@@ -25600,6 +27893,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-content_type
             """
+            ...
 
         @content_type.setter
         def content_type(self, value: _builtins.str | None) -> None: ...
@@ -25610,6 +27904,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-file
             """
+            ...
 
         @file.setter
         def file(self, value: _t.FileLike | None) -> None: ...
@@ -25622,6 +27917,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
             """
+            ...
 
         @gridsize.setter
         def gridsize(self, value: tuple[_builtins.int, _builtins.int] | _builtins.list[_builtins.int] | _t.IntArrayLike | None) -> None: ...
@@ -25634,6 +27930,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
             """
+            ...
 
         @gridlayout.setter
         def gridlayout(self, value: _builtins.str | None) -> None: ...
@@ -25644,6 +27941,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileright
             """
+            ...
 
         @fileright.setter
         def fileright(self, value: _t.FileLike | None) -> None: ...
@@ -25654,6 +27952,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileleft
             """
+            ...
 
         @fileleft.setter
         def fileleft(self, value: _t.FileLike | None) -> None: ...
@@ -25664,6 +27963,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileup
             """
+            ...
 
         @fileup.setter
         def fileup(self, value: _t.FileLike | None) -> None: ...
@@ -25674,6 +27974,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filedown
             """
+            ...
 
         @filedown.setter
         def filedown(self, value: _t.FileLike | None) -> None: ...
@@ -25684,6 +27985,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filefront
             """
+            ...
 
         @filefront.setter
         def filefront(self, value: _t.FileLike | None) -> None: ...
@@ -25694,6 +27996,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileback
             """
+            ...
 
         @fileback.setter
         def fileback(self, value: _t.FileLike | None) -> None: ...
@@ -25704,6 +28007,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
             """
+            ...
 
         @builtin.setter
         def builtin(self, value: Literal["none", "gradient", "checker", "flat"] | None) -> None: ...
@@ -25716,6 +28020,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
             """
+            ...
 
         @rgb1.setter
         def rgb1(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25728,6 +28033,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
             """
+            ...
 
         @rgb2.setter
         def rgb2(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25738,6 +28044,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
             """
+            ...
 
         @mark.setter
         def mark(self, value: Literal["none", "edge", "cross", "random"] | None) -> None: ...
@@ -25748,6 +28055,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
             """
+            ...
 
         @markrgb.setter
         def markrgb(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25760,6 +28068,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
             """
+            ...
 
         @random.setter
         def random(self, value: _builtins.float | None) -> None: ...
@@ -25770,6 +28079,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
             """
+            ...
 
         @width.setter
         def width(self, value: _builtins.int | None) -> None: ...
@@ -25780,6 +28090,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
             """
+            ...
 
         @height.setter
         def height(self, value: _builtins.int | None) -> None: ...
@@ -25790,6 +28101,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
             """
+            ...
 
         @hflip.setter
         def hflip(self, value: _builtins.bool | None) -> None: ...
@@ -25800,6 +28112,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
             """
+            ...
 
         @vflip.setter
         def vflip(self, value: _builtins.bool | None) -> None: ...
@@ -25812,6 +28125,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
             """
+            ...
 
         @nchannel.setter
         def nchannel(self, value: _builtins.int | None) -> None: ...
@@ -25822,6 +28136,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -25834,6 +28149,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
             """
+            ...
 
         @embed.setter
         def embed(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -25843,7 +28159,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-textu
 class Torque(_Element):
     """``<torque>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('torque', 'torque', (
@@ -25867,6 +28184,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25877,6 +28195,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -25887,6 +28206,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -25897,6 +28217,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -25907,6 +28228,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25917,6 +28239,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -25927,6 +28250,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -25937,6 +28261,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -25949,6 +28274,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -25958,7 +28284,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torq
 class Touch(_Element):
     """``<touch>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('touch', 'touch', (
@@ -25982,6 +28309,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -25992,6 +28320,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -26002,6 +28331,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -26012,6 +28342,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -26022,6 +28353,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26032,6 +28364,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -26042,6 +28375,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -26052,6 +28386,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26064,6 +28399,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -26073,13 +28409,14 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touc
 class Tuple(_Element):
     """``<tuple>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('tuple', 'tuple', (
         _A('name', 'name', 'id', namespace='tuple', required=True, anchor='custom-tuple-name'),
     ), (
-        _C('element', 'element', 'Element', False, '*'),
+        _C('element', 'element', 'TupleElement', False, '*'),
     ),
     anchor='custom-tuple', text='')
 
@@ -26092,37 +28429,98 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tupl
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
 
         @property
-        def element(self) -> _builtins.list[Element]:
+        def element(self) -> _builtins.list[TupleElement]:
             """The ``<element>`` children, in document order."""
+            ...
 
-        def add_element(self, **kwargs: Unpack[ElementAttributes]) -> Element:
+        def add_element(self, **kwargs: Unpack[TupleElementAttributes]) -> TupleElement:
             """Add a ``<element>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
-        def add(self, tag: Literal["element"], /, **kwargs: Unpack[ElementAttributes]) -> Element: ...
+        def add(self, tag: Literal["element"], /, **kwargs: Unpack[TupleElementAttributes]) -> TupleElement: ...
         @overload
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
-        def insert(self, tag: Literal["element"], position: _builtins.int, /, **kwargs: Unpack[ElementAttributes]) -> Element: ...
+        def insert(self, tag: Literal["element"], position: _builtins.int, /, **kwargs: Unpack[TupleElementAttributes]) -> TupleElement: ...
         @overload
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
+
+
+
+class TupleElement(_Element):
+    """``<element>``.
+
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element
+    """
+
+    __slots__ = ()
+    _SPEC: ClassVar[_S] = _S('element', 'element', (
+        _A('objtype', 'objtype', 'string', required=True, anchor='tuple-element-objtype'),
+        _A('objname', 'objname', 'string', required=True, anchor='tuple-element-objname'),
+        _A('prm', 'prm', 'real', dtype='double', anchor='tuple-element-prm'),
+    ), (
+    ),
+    anchor='tuple-element', text='')
+
+    if TYPE_CHECKING:
+        @property
+        def objtype(self) -> _builtins.str | None:
+            """``objtype``: string.
+
+            Required.
+
+            Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objtype
+            """
+            ...
+
+        @objtype.setter
+        def objtype(self, value: _builtins.str | None) -> None: ...
+
+        @property
+        def objname(self) -> _builtins.str | None:
+            """``objname``: string.
+
+            Required.
+
+            Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objname
+            """
+            ...
+
+        @objname.setter
+        def objname(self, value: _builtins.str | None) -> None: ...
+
+        @property
+        def prm(self) -> _builtins.float | None:
+            """``prm``: double.
+
+            Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
+            """
+            ...
+
+        @prm.setter
+        def prm(self, value: _builtins.float | None) -> None: ...
 
 
 
 class User(_Element):
     """``<user>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('user', 'user', (
@@ -26147,6 +28545,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -26157,6 +28556,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objtype
             """
+            ...
 
         @objtype.setter
         def objtype(self, value: _builtins.str | None) -> None: ...
@@ -26167,6 +28567,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objname
             """
+            ...
 
         @objname.setter
         def objname(self, value: _builtins.str | None) -> None: ...
@@ -26179,6 +28580,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-datatype
             """
+            ...
 
         @datatype.setter
         def datatype(self, value: Literal["real", "positive", "axis", "quaternion"] | None) -> None: ...
@@ -26191,6 +28593,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-needstage
             """
+            ...
 
         @needstage.setter
         def needstage(self, value: Literal["none", "pos", "vel", "acc"] | None) -> None: ...
@@ -26201,6 +28604,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
             """
+            ...
 
         @dim.setter
         def dim(self, value: _builtins.int | None) -> None: ...
@@ -26211,6 +28615,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -26221,6 +28626,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -26231,6 +28637,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26240,7 +28647,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user
 class Velocimeter(_Element):
     """``<velocimeter>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('velocimeter', 'velocimeter', (
@@ -26264,6 +28672,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -26274,6 +28683,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -26284,6 +28694,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -26294,6 +28705,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -26304,6 +28716,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
             """
+            ...
 
         @interval.setter
         def interval(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26314,6 +28727,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-cutoff
             """
+            ...
 
         @cutoff.setter
         def cutoff(self, value: _builtins.float | None) -> None: ...
@@ -26324,6 +28738,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-noise
             """
+            ...
 
         @noise.setter
         def noise(self, value: _builtins.float | None) -> None: ...
@@ -26334,6 +28749,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26346,6 +28762,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -26355,7 +28772,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velo
 class Velocity(_Element):
     """``<velocity>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('velocity', 'velocity', (
@@ -26394,6 +28812,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -26404,6 +28823,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -26414,6 +28834,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
             """
+            ...
 
         @group.setter
         def group(self, value: _builtins.int | None) -> None: ...
@@ -26424,6 +28845,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
             """
+            ...
 
         @nsample.setter
         def nsample(self, value: _builtins.int | None) -> None: ...
@@ -26434,6 +28856,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
             """
+            ...
 
         @interp.setter
         def interp(self, value: Literal["zoh", "linear", "cubic"] | None) -> None: ...
@@ -26444,6 +28867,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
             """
+            ...
 
         @delay.setter
         def delay(self, value: _builtins.float | None) -> None: ...
@@ -26454,6 +28878,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
             """
+            ...
 
         @ctrlrange.setter
         def ctrlrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26464,6 +28889,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
             """
+            ...
 
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26476,6 +28902,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
             """
+            ...
 
         @ctrllimited.setter
         def ctrllimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -26488,6 +28915,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
             """
+            ...
 
         @forcelimited.setter
         def forcelimited(self, value: Literal["false", "true", "auto"] | _builtins.bool | None) -> None: ...
@@ -26498,6 +28926,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
             """
+            ...
 
         @forcerange.setter
         def forcerange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26508,6 +28937,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-lengthrange
             """
+            ...
 
         @lengthrange.setter
         def lengthrange(self, value: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26520,6 +28950,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
             """
+            ...
 
         @gear.setter
         def gear(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26532,6 +28963,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
             """
+            ...
 
         @damping.setter
         def damping(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26542,6 +28974,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
             """
+            ...
 
         @armature.setter
         def armature(self, value: _builtins.float | None) -> None: ...
@@ -26554,6 +28987,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
             """
+            ...
 
         @cranklength.setter
         def cranklength(self, value: _builtins.float | None) -> None: ...
@@ -26564,6 +28998,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-joint
             """
+            ...
 
         @joint.setter
         def joint(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -26574,6 +29009,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-jointinparent
             """
+            ...
 
         @jointinparent.setter
         def jointinparent(self, value: _builtins.str | Freejoint | Joint | None) -> None: ...
@@ -26584,6 +29020,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-tendon
             """
+            ...
 
         @tendon.setter
         def tendon(self, value: _builtins.str | Fixed | Spatial | None) -> None: ...
@@ -26594,6 +29031,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-slidersite
             """
+            ...
 
         @slidersite.setter
         def slidersite(self, value: _builtins.str | Site | None) -> None: ...
@@ -26604,6 +29042,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranksite
             """
+            ...
 
         @cranksite.setter
         def cranksite(self, value: _builtins.str | Site | None) -> None: ...
@@ -26614,6 +29053,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-site
             """
+            ...
 
         @site.setter
         def site(self, value: _builtins.str | Site | None) -> None: ...
@@ -26624,6 +29064,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-refsite
             """
+            ...
 
         @refsite.setter
         def refsite(self, value: _builtins.str | Site | None) -> None: ...
@@ -26634,6 +29075,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
             """
+            ...
 
         @kv.setter
         def kv(self, value: _builtins.float | None) -> None: ...
@@ -26643,7 +29085,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-ve
 class Visual(_Element):
     """``<visual>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('visual', 'visual', (
@@ -26661,44 +29104,56 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual"""
         @property
         def global_(self) -> Global:
             """The ``<global>`` child, created on first use."""
+            ...
 
         def add_global(self, **kwargs: Unpack[GlobalAttributes]) -> Global:
             """Add a ``<global>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def quality(self) -> Quality:
             """The ``<quality>`` child, created on first use."""
+            ...
 
         def add_quality(self, **kwargs: Unpack[QualityAttributes]) -> Quality:
             """Add a ``<quality>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def headlight(self) -> Headlight:
             """The ``<headlight>`` child, created on first use."""
+            ...
 
         def add_headlight(self, **kwargs: Unpack[HeadlightAttributes]) -> Headlight:
             """Add a ``<headlight>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def map(self) -> Map:
             """The ``<map>`` child, created on first use."""
+            ...
 
         def add_map(self, **kwargs: Unpack[MapAttributes]) -> Map:
             """Add a ``<map>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def scale(self) -> Scale:
             """The ``<scale>`` child, created on first use."""
+            ...
 
         def add_scale(self, **kwargs: Unpack[ScaleAttributes]) -> Scale:
             """Add a ``<scale>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def rgba(self) -> Rgba:
             """The ``<rgba>`` child, created on first use."""
+            ...
 
         def add_rgba(self, **kwargs: Unpack[RgbaAttributes]) -> Rgba:
             """Add a ``<rgba>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["global"], /, **kwargs: Unpack[GlobalAttributes]) -> Global: ...
@@ -26716,6 +29171,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["global"], position: _builtins.int, /, **kwargs: Unpack[GlobalAttributes]) -> Global: ...
@@ -26733,13 +29189,15 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
 class Weld(_Element):
     """``<weld>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('weld', 'weld', (
@@ -26767,6 +29225,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-name
             """
+            ...
 
         @name.setter
         def name(self, value: _builtins.str | None) -> None: ...
@@ -26777,6 +29236,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-class
             """
+            ...
 
         @class_.setter
         def class_(self, value: _builtins.str | Default | None) -> None: ...
@@ -26789,6 +29249,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-active
             """
+            ...
 
         @active.setter
         def active(self, value: _builtins.bool | None) -> None: ...
@@ -26801,6 +29262,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solref
             """
+            ...
 
         @solref.setter
         def solref(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26813,6 +29275,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solimp
             """
+            ...
 
         @solimp.setter
         def solimp(self, value: _builtins.float | tuple[_builtins.float] | tuple[_builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float] | tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26823,6 +29286,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body1
             """
+            ...
 
         @body1.setter
         def body1(self, value: _builtins.str | Body | None) -> None: ...
@@ -26833,6 +29297,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body2
             """
+            ...
 
         @body2.setter
         def body2(self, value: _builtins.str | Body | None) -> None: ...
@@ -26843,6 +29308,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-relpose
             """
+            ...
 
         @relpose.setter
         def relpose(self, value: tuple[_builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26853,6 +29319,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-anchor
             """
+            ...
 
         @anchor.setter
         def anchor(self, value: tuple[_builtins.float, _builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
@@ -26863,6 +29330,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site1
             """
+            ...
 
         @site1.setter
         def site1(self, value: _builtins.str | Site | None) -> None: ...
@@ -26873,6 +29341,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site2
             """
+            ...
 
         @site2.setter
         def site2(self, value: _builtins.str | Site | None) -> None: ...
@@ -26883,6 +29352,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 
             Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-torquescale
             """
+            ...
 
         @torquescale.setter
         def torquescale(self, value: _builtins.float | None) -> None: ...
@@ -26892,7 +29362,8 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-we
 class Worldbody(_Element):
     """``<worldbody>``.
 
-Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
+    Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body
+    """
 
     __slots__ = ()
     _SPEC: ClassVar[_S] = _S('worldbody', 'worldbody', (
@@ -26914,72 +29385,92 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
         @property
         def body(self) -> _builtins.list[Body]:
             """The ``<body>`` children, in document order."""
+            ...
 
         def add_body(self, **kwargs: Unpack[BodyAttributes]) -> Body:
             """Add a ``<body>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def frame(self) -> _builtins.list[Frame]:
             """The ``<frame>`` children, in document order."""
+            ...
 
         def add_frame(self, **kwargs: Unpack[FrameAttributes]) -> Frame:
             """Add a ``<frame>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def replicate(self) -> _builtins.list[Replicate]:
             """The ``<replicate>`` children, in document order."""
+            ...
 
         def add_replicate(self, **kwargs: Unpack[ReplicateAttributes]) -> Replicate:
             """Add a ``<replicate>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def geom(self) -> _builtins.list[Geom]:
             """The ``<geom>`` children, in document order."""
+            ...
 
         def add_geom(self, **kwargs: Unpack[GeomAttributes]) -> Geom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def attach(self) -> _builtins.list[Attach]:
             """The ``<attach>`` children, in document order."""
+            ...
 
         def add_attach(self, **kwargs: Unpack[AttachAttributes]) -> Attach:
             """Add a ``<attach>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def site(self) -> _builtins.list[Site]:
             """The ``<site>`` children, in document order."""
+            ...
 
         def add_site(self, **kwargs: Unpack[SiteAttributes]) -> Site:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def camera(self) -> _builtins.list[Camera]:
             """The ``<camera>`` children, in document order."""
+            ...
 
         def add_camera(self, **kwargs: Unpack[CameraAttributes]) -> Camera:
             """Add a ``<camera>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def light(self) -> _builtins.list[Light]:
             """The ``<light>`` children, in document order."""
+            ...
 
         def add_light(self, **kwargs: Unpack[LightAttributes]) -> Light:
             """Add a ``<light>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def plugin(self) -> _builtins.list[Plugin]:
             """The ``<plugin>`` children, in document order."""
+            ...
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @property
         def flexcomp(self) -> _builtins.list[Flexcomp]:
             """The ``<flexcomp>`` children, in document order."""
+            ...
 
         def add_flexcomp(self, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp:
             """Add a ``<flexcomp>`` child and return it; keyword arguments are its attributes."""
+            ...
 
         @overload
         def add(self, tag: Literal["body"], /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -27005,6 +29496,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
         def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
 
         @overload
         def insert(self, tag: Literal["body"], position: _builtins.int, /, **kwargs: Unpack[BodyAttributes]) -> Body: ...
@@ -27030,6 +29522,7 @@ Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body"""
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element: ...
         def insert(self, tag: _builtins.str, position: _builtins.int, /, **kwargs: object) -> _Element:
             """Add a child ``<tag>`` at ``position`` among the children and return it."""
+            ...
 
 
 
@@ -27217,8 +29710,8 @@ if TYPE_CHECKING:
 
         gain: _builtins.float | None
 
-    class AssetAttributes(TypedDict, total=False):
-        """The attributes of ``Asset`` as keyword arguments."""
+    class AssetSectionAttributes(TypedDict, total=False):
+        """The attributes of ``AssetSection`` as keyword arguments."""
 
     class AttachAttributes(TypedDict, total=False):
         """The attributes of ``Attach`` as keyword arguments."""
@@ -28574,15 +31067,6 @@ if TYPE_CHECKING:
         section: Literal["circle", "box"] | None
 
         sectionsize: tuple[_builtins.float, _builtins.float] | _builtins.list[_builtins.float] | _t.FloatArrayLike | None
-
-    class ElementAttributes(TypedDict, total=False):
-        """The attributes of ``Element`` as keyword arguments."""
-
-        objtype: _builtins.str | None
-
-        objname: _builtins.str | None
-
-        prm: _builtins.float | None
 
     class EqualityAttributes(TypedDict, total=False):
         """The attributes of ``Equality`` as keyword arguments."""
@@ -31096,6 +33580,15 @@ if TYPE_CHECKING:
         """The attributes of ``Tuple`` as keyword arguments."""
 
         name: _builtins.str | None
+
+    class TupleElementAttributes(TypedDict, total=False):
+        """The attributes of ``TupleElement`` as keyword arguments."""
+
+        objtype: _builtins.str | None
+
+        objname: _builtins.str | None
+
+        prm: _builtins.float | None
 
     class UserAttributes(TypedDict, total=False):
         """The attributes of ``User`` as keyword arguments."""

@@ -8,7 +8,6 @@ for a folder uses those names and drops the compiler's folder attributes.
 
 from __future__ import annotations
 
-import io
 import os
 import tempfile
 from dataclasses import dataclass, field
@@ -116,19 +115,9 @@ def _collect(model: ModelRoot, collected: CollectedAssets, models: tuple[str, ..
 
 def _is_model_file(name: str, contents: bytes) -> bool:
     """Whether a file is an MJCF model (an ``<asset><model>``, say)."""
-    if not name.lower().endswith(".xml"):
-        return False
-    from lxml import etree
+    from typed_mjcf._parse import is_model_text
 
-    from typed_mjcf._parse import root_class
-
-    try:
-        for _, node in etree.iterparse(io.BytesIO(contents), events=("start",),
-                                       resolve_entities=False, no_network=True, load_dtd=False):
-            return node.tag == root_class()._SPEC.tag  # pyright: ignore[reportPrivateUsage]
-    except etree.XMLSyntaxError:
-        return False
-    return False
+    return name.lower().endswith(".xml") and is_model_text(contents)
 
 
 def _model_file_contents(element: Element, attribute: AttributeSpec, path: str,

@@ -9,6 +9,7 @@ from lxml import etree
 
 from typed_mjcf._assets_io import collect_assets, xml_with_assets
 from typed_mjcf._export import iter_written
+from typed_mjcf._parse import source_line
 from typed_mjcf._root import ModelRoot
 from typed_mjcf.errors import CompileError
 
@@ -39,7 +40,7 @@ def _path_at_line(model: ModelRoot, xml: str, line: int) -> str | None:
     except etree.XMLSyntaxError:
         return None
     for node, element in zip(nodes, iter_written(model), strict=False):
-        if node.sourceline == line:
+        if source_line(node) == line:
             return element.path
     return None
 

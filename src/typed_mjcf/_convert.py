@@ -9,7 +9,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Iterable
-from typing import TYPE_CHECKING, Final
+from typing import TYPE_CHECKING, Final, SupportsFloat, SupportsInt, cast
 
 import numpy as np
 
@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from typed_mjcf._spec import AttributeSpec
 
 Converter = Callable[[object], object]
+AnyArray = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
 
 INT32_MIN: Final = -(2**31)
 INT32_MAX: Final = 2**31 - 1
@@ -91,7 +92,7 @@ def file_converter(spec: AttributeSpec) -> Converter:
         if isinstance(value, Asset):
             return value
         if isinstance(value, os.PathLike):
-            value = os.fspath(value)  # pyright: ignore[reportUnknownArgumentType]
+            value = os.fspath(cast("os.PathLike[str]", value))
         if not isinstance(value, str):
             raise _type_rejected("a file path or a typed_mjcf.Asset")
         if not value:
@@ -109,7 +110,7 @@ def bool_converter(spec: AttributeSpec) -> Converter:
         if value is True or value is False:
             return value
         if isinstance(value, np.bool_):
-            return bool(value)
+            return bool(cast(object, value))
         if isinstance(value, str):
             found = _TRUE_FALSE.get(value.lower())
             if found is None:
@@ -126,9 +127,9 @@ def _to_int(value: object) -> int:
     elif isinstance(value, bool | np.bool_):
         raise _type_rejected("an integer")
     elif isinstance(value, int | np.integer):
-        result = int(value)
+        result = int(cast(SupportsInt, value))
     elif isinstance(value, float | np.floating):
-        f = float(value)
+        f = float(cast(SupportsFloat, value))
         if not f.is_integer():
             raise Rejected("an integer (the value would be truncated)")
         result = int(f)
@@ -150,7 +151,7 @@ def _to_float(value: object) -> float:
     if isinstance(value, bool | np.bool_):
         raise _type_rejected("a number")
     if isinstance(value, int | float | np.integer | np.floating):
-        return float(value)
+        return float(cast(SupportsFloat, value))
     if isinstance(value, str):
         try:
             return float(value)
@@ -183,7 +184,7 @@ def array_converter(spec: AttributeSpec) -> Converter:
     noun = "integers" if is_int else "numbers"
     expected = f"{_count_text(lo, hi)} {noun}"
 
-    def from_text(text: str) -> np.ndarray[tuple[int, ...], np.dtype[np.generic]]:
+    def from_text(text: str) -> AnyArray:
         parts = text.split()
         if is_int:
             return np.array([_to_int(p) for p in parts], dtype=dtype)
@@ -201,32 +202,32 @@ def array_converter(spec: AttributeSpec) -> Converter:
             raise Rejected(f"{expected}, got {n}")
         return array
 
-    def to_array(value: object) -> np.ndarray[tuple[int, ...], np.dtype[np.generic]]:
+    def to_array(value: object) -> AnyArray:
         if isinstance(value, str):
-            array = from_text(value)
-        elif isinstance(value, np.ndarray):
-            kind: str = value.dtype.kind  # pyright: ignore[reportUnknownMemberType]
-            if kind not in "iuf" or (kind == "f" and is_int):
-                if kind == "f":
-                    array = np.array([_to_int(x) for x in value.ravel().tolist()], dtype=dtype)  # pyright: ignore[reportUnknownMemberType]
-                else:
-                    raise _type_rejected(f"{expected} (got an array of dtype {value.dtype})")  # pyright: ignore[reportUnknownMemberType]
-            else:
-                array = value.astype(dtype)  # pyright: ignore[reportUnknownMemberType]
-            if array.ndim != 1:
-                raise Rejected(f"{expected} in a flat sequence")
-        elif isinstance(value, int | float | np.integer | np.floating) and not isinstance(
+            return from_text(value)
+        if isinstance(value, np.ndarray):
+            return from_numpy(cast(AnyArray, value))
+        if isinstance(value, int | float | np.integer | np.floating) and not isinstance(
                 value, bool | np.bool_):
-            array = np.array([_to_int(value) if is_int else _to_float(value)], dtype=dtype)
-        elif isinstance(value, Iterable):
-            items: list[object] = list(value)  # pyright: ignore[reportUnknownArgumentType]
-            if is_int:
-                array = np.array([_to_int(x) for x in items], dtype=dtype)
-            else:
-                array = np.array([_to_float(x) for x in items], dtype=dtype)
-        else:
-            raise _type_rejected(expected)
-        return array
+            return from_items([value])
+        if isinstance(value, Iterable):
+            return from_items(list(cast(Iterable[object], value)))
+        raise _type_rejected(expected)
+
+    def from_items(items: list[object]) -> AnyArray:
+        if is_int:
+            return np.array([_to_int(x) for x in items], dtype=dtype)
+        return np.array([_to_float(x) for x in items], dtype=dtype)
+
+    def from_numpy(value: AnyArray) -> AnyArray:
+        if value.ndim != 1:
+            raise Rejected(f"{expected} in a flat sequence")
+        kind = value.dtype.kind
+        if kind in "iu" or (kind == "f" and not is_int):
+            return value.astype(dtype)
+        if kind == "f":  # floats for an integer attribute: only if none would be truncated
+            return from_items(cast(list[object], value.tolist()))
+        raise _type_rejected(f"{expected} (got an array of dtype {value.dtype})")
 
     return convert
 

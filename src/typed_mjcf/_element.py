@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import copy as _copy
 from collections.abc import Callable, Iterator, Mapping
-from typing import TYPE_CHECKING, ClassVar, NoReturn, Self, TypeVar, overload
+from typing import TYPE_CHECKING, ClassVar, NoReturn, Self, TypeVar, cast, overload
 
 import numpy as np
 
@@ -250,7 +250,7 @@ class Element:
                 assert id_attribute.namespace is not None
                 if current is not None:
                     self._root._forget_identifier(id_attribute.namespace, current, self)  # pyright: ignore[reportPrivateUsage]
-                if before is not None:
+                if isinstance(before, str):
                     self._root._remember_identifier(id_attribute.namespace, before, self)  # pyright: ignore[reportPrivateUsage]
         self._attrs.clear()
         self._attrs.update(saved)
@@ -390,9 +390,9 @@ class Element:
                     memo: dict[int, object]) -> Self:
         clone = type(self)._blank(parent, root)
         memo[id(self)] = clone
-        clone._attrs.update(
-            (k, v.copy() if isinstance(v, np.ndarray) else v) for k, v in self._attrs.items()
-        )
+        for key, value in self._attrs.items():
+            # arrays are mutable in place: the copy gets its own
+            clone._attrs[key] = cast(object, value.copy()) if isinstance(value, np.ndarray) else value
         for child in self._children:
             copied = child._clone_tree(clone, root, memo)
             clone._children.append(copied)
@@ -414,7 +414,8 @@ class Element:
 
     # ------------------------------------------------------------------ export
 
-    def to_xml(self, *, precision: int | None = None, zero_threshold: float = 0.0) -> etree._Element:
+    def to_xml(self, *, precision: int | None = None,
+               zero_threshold: float = 0.0) -> etree._Element:  # pyright: ignore[reportPrivateUsage]
         """This element as an lxml element."""
         from typed_mjcf._export import to_xml
 

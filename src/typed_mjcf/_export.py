@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
+from typing import TypeAlias
 
 import numpy as np
 from lxml import etree
@@ -12,6 +13,7 @@ from typed_mjcf._spec import AttributeSpec
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
+XmlNode: TypeAlias = etree._Element  # pyright: ignore[reportPrivateUsage]  # lxml's element type
 FileNamer = Callable[[Element, AttributeSpec, object], str]
 
 
@@ -110,7 +112,7 @@ def iter_written(element: Element) -> Iterator[Element]:
                      if not _is_empty_single(current, child))
 
 
-def build(element: Element, formatter: Formatter, parent: etree._Element | None = None) -> etree._Element:
+def build(element: Element, formatter: Formatter, parent: XmlNode | None = None) -> XmlNode:
     """The lxml element for ``element`` and its subtree."""
     attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
     spec = element.spec
@@ -138,7 +140,7 @@ def build(element: Element, formatter: Formatter, parent: etree._Element | None 
 
 
 def to_xml(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,
-           file_namer: FileNamer | None = None) -> etree._Element:
+           file_namer: FileNamer | None = None) -> XmlNode:
     return build(element, Formatter(precision, zero_threshold, file_namer))
 
 

@@ -9,21 +9,31 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field
+from typing import cast
 
 import numpy as np
 from lxml import etree
 
 from typed_mjcf._convert import Rejected
 from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._export import XmlNode
 from typed_mjcf._root import ModelRoot
 from typed_mjcf.errors import MjcfError, ParseError, did_you_mean
 
 INCLUDE = "include"
 
+_Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
+
 
 def _xml_parser() -> etree.XMLParser:
     return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
                            remove_comments=True, remove_pis=True, huge_tree=False)
+
+
+def source_line(node: XmlNode) -> int | None:
+    """The line ``node`` starts on in the text it was read from, if known."""
+    line: object = node.sourceline  # typed loosely by lxml-stubs
+    return line if isinstance(line, int) else None
 
 
 def root_class() -> type[ModelRoot]:
@@ -39,7 +49,16 @@ class _Context:
     included: list[str] = field(default_factory=lambda: [])
 
 
-def _read_xml(data: str | bytes, source: str | None) -> etree._Element:
+def is_model_text(data: bytes) -> bool:
+    """Whether ``data`` is MJCF text: XML whose root element is the model's root."""
+    try:
+        node = etree.fromstring(data, _xml_parser())
+    except etree.XMLSyntaxError:
+        return False
+    return node.tag == root_class()._SPEC.tag  # pyright: ignore[reportPrivateUsage]
+
+
+def _read_xml(data: str | bytes, source: str | None) -> XmlNode:
     if isinstance(data, str):
         data = data.encode("utf-8")
     try:
@@ -68,11 +87,11 @@ def parse_path(path: str) -> ModelRoot:
     return _build_model(node, _Context(os.path.dirname(path), [path]), path)
 
 
-def _build_model(node: etree._Element, context: _Context, source: str | None) -> ModelRoot:
+def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelRoot:
     cls = root_class()
     if node.tag != cls._SPEC.tag:  # pyright: ignore[reportPrivateUsage]
-        raise ParseError(f"the root element is <{node.tag}>, expected <{cls._SPEC.tag}>",  # pyright: ignore[reportPrivateUsage]
-                         source, node.sourceline)
+        raise ParseError(f"the root element is <{node.tag!s}>, expected <{cls._SPEC.tag}>",  # pyright: ignore[reportPrivateUsage]
+                         source, source_line(node))
     model = cls()
     object.__setattr__(model, "_base_dir", context.base_dir)
     _set_attributes(model, node, source)
@@ -80,30 +99,30 @@ def _build_model(node: etree._Element, context: _Context, source: str | None) ->
     return model
 
 
-def _set_attributes(element: Element, node: etree._Element, source: str | None) -> None:
+def _set_attributes(element: Element, node: XmlNode, source: str | None) -> None:
     by_name = element.spec.by_name
     for key, text in node.attrib.items():
         attribute = by_name.get(str(key))
         if attribute is None:
             known = list(by_name)
             raise ParseError(
-                f"<{node.tag}> has no attribute {str(key)!r}{did_you_mean(str(key), known)}",
-                source, node.sourceline)
+                f"<{element.tag}> has no attribute {str(key)!r}{did_you_mean(str(key), known)}",
+                source, source_line(node))
         try:
             element._set_attribute(attribute, str(text))  # pyright: ignore[reportPrivateUsage]
         except MjcfError as error:
-            raise ParseError(str(error), source, node.sourceline) from None
+            raise ParseError(str(error), source, source_line(node)) from None
         except Rejected as rejected:  # pragma: no cover - _set_attribute converts these
-            raise ParseError(rejected.expected, source, node.sourceline) from None
+            raise ParseError(rejected.expected, source, source_line(node)) from None
 
 
-def _add_children(parent: Element, node: etree._Element, context: _Context,
+def _add_children(parent: Element, node: XmlNode, context: _Context,
                   source: str | None) -> None:
     children_specs = parent.spec.children
     for child_node in node:
-        tag = child_node.tag
+        tag: object = child_node.tag
         if not isinstance(tag, str):
-            continue  # comments and processing instructions
+            continue  # entity references (comments and processing instructions are dropped)
         if tag == INCLUDE:
             _expand_include(parent, child_node, context, source)
             continue
@@ -112,7 +131,7 @@ def _add_children(parent: Element, node: etree._Element, context: _Context,
             legal = list(children_specs)
             raise ParseError(
                 f"<{tag}> is not a legal child of <{parent.tag}> ({parent.path})"
-                f"{did_you_mean(tag, legal)}", source, child_node.sourceline)
+                f"{did_you_mean(tag, legal)}", source, source_line(child_node))
         existing = parent._single_child(tag) if child_spec.single else None  # pyright: ignore[reportPrivateUsage]
         if existing is not None:
             # A repeated section: merge into the first.
@@ -123,7 +142,7 @@ def _add_children(parent: Element, node: etree._Element, context: _Context,
         _add_children(child, child_node, context, source)
 
 
-def _merge_section(section: Element, node: etree._Element, context: _Context,
+def _merge_section(section: Element, node: XmlNode, context: _Context,
                    source: str | None) -> None:
     """Merge a repeated once-only section into the first one.
 
@@ -159,7 +178,7 @@ def _merge_section(section: Element, node: etree._Element, context: _Context,
                     f"{label} of an earlier <{section.tag}> section (a class keeps the values "
                     f"it inherited when it was defined); set {attribute} in that class, or "
                     f"move it into the first <{section.tag}> section",
-                    source, node.sourceline)
+                    source, source_line(node))
 
 
 def _element_defaults(section: Element) -> dict[tuple[str, str], object]:
@@ -183,28 +202,27 @@ def _sets_in_chain(level: Element, top: Element, tag: str, attribute: str) -> bo
 
 
 def _same_value(a: object, b: object) -> bool:
-    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        return (isinstance(a, np.ndarray) and isinstance(b, np.ndarray)
-                and bool(np.array_equal(a, b)))  # pyright: ignore[reportUnknownArgumentType]
-    return a == b
+    if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
+        return bool(np.array_equal(cast(_Array, a), cast(_Array, b)))
+    return not isinstance(a, np.ndarray) and not isinstance(b, np.ndarray) and a == b
 
 
-def _expand_include(parent: Element, node: etree._Element, context: _Context,
+def _expand_include(parent: Element, node: XmlNode, context: _Context,
                     source: str | None) -> None:
     file = node.get("file")
     if not file:
-        raise ParseError("<include> needs a file attribute", source, node.sourceline)
+        raise ParseError("<include> needs a file attribute", source, source_line(node))
     base = context.base_dir or os.getcwd()
     path = os.path.abspath(os.path.join(base, file))
     if path in context.included:
         raise ParseError(f"{file!r} ({path}) is already part of the model (MuJoCo includes a "
-                         f"file once)", source, node.sourceline)
+                         f"file once)", source, source_line(node))
     try:
         with open(path, "rb") as f:
             data = f.read()
     except OSError as error:
         raise ParseError(f"cannot read included file {file!r} ({path}): {error.strerror}",
-                         source, node.sourceline) from None
+                         source, source_line(node)) from None
     context.included.append(path)
     included_root = _read_xml(data, path)
     _add_children(parent, included_root, context, path)

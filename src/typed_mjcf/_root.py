@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Self
 
 from typed_mjcf._element import Element
@@ -20,9 +22,11 @@ class ModelRoot(Element):
     _base_dir: str | None
 
     def __init__(self, **kwargs: object) -> None:
-        for name, value in (("_attrs", {}), ("_children", []), ("_parent", None),
-                            ("_root", self), ("_singles", None), ("_identifiers", {}),
-                            ("_base_dir", None)):
+        initial: dict[str, object] = {
+            "_attrs": {}, "_children": [], "_parent": None, "_root": self, "_singles": None,
+            "_identifiers": {}, "_base_dir": None,
+        }
+        for name, value in initial.items():
             object.__setattr__(self, name, value)
         self._init_attributes(kwargs)
 
@@ -87,7 +91,7 @@ class ModelRoot(Element):
         self._check_namespace(namespace)
         return self._lookup_identifier(namespace, identifier)
 
-    def find_all(self, namespace: str) -> list[Element]:
+    def find_all(self, namespace: str) -> Sequence[Element]:
         """Every element of ``namespace`` (named or not), in document order."""
         self._check_namespace(namespace)
         return [e for e in self.iter_elements()
@@ -131,16 +135,11 @@ class ModelRoot(Element):
         return to_spec(self)
 
 
+@functools.cache
 def _namespaces() -> frozenset[str]:
     from typed_mjcf._element import _REGISTRY  # pyright: ignore[reportPrivateUsage]
 
-    global _NAMESPACES
-    if _NAMESPACES is None:
-        _NAMESPACES = frozenset(
-            cls._SPEC.namespace for cls in _REGISTRY.values()  # pyright: ignore[reportPrivateUsage]
-            if cls._SPEC.namespace is not None  # pyright: ignore[reportPrivateUsage]
-        )
-    return _NAMESPACES
-
-
-_NAMESPACES: frozenset[str] | None = None
+    return frozenset(
+        cls._SPEC.namespace for cls in _REGISTRY.values()  # pyright: ignore[reportPrivateUsage]
+        if cls._SPEC.namespace is not None  # pyright: ignore[reportPrivateUsage]
+    )

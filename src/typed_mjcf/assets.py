@@ -18,7 +18,7 @@ class Asset:
     def __init__(self, contents: bytes | str, extension: str, name: str | None = None) -> None:
         if isinstance(contents, str):
             contents = contents.encode("utf-8")
-        if not isinstance(contents, bytes):
+        if not isinstance(contents, bytes):  # pyright: ignore[reportUnnecessaryIsInstance]
             raise TypeError(f"Asset contents must be bytes or str, got {type(contents).__name__}")
         if not extension.startswith("."):
             extension = "." + extension
