@@ -8,6 +8,8 @@
     print(model.to_xml_string())
 """
 
+__version__ = "0.1.0"  # first: the generated package reads it while this module initialises
+
 from typed_mjcf._element import Element
 from typed_mjcf._root import ModelRoot
 from typed_mjcf.assets import Asset
@@ -31,8 +33,6 @@ from typed_mjcf.io import (
     from_spec,
     from_xml_string,
 )
-
-__version__ = "0.1.0"
 
 __all__ = [
     "Asset",
