@@ -1,0 +1,159 @@
+"""The generated classes cover the installed MuJoCo's grammar, and equal a fresh render.
+
+Coverage is checked two ways: at run time (descriptors and ``add_<tag>`` methods on the
+classes) and statically (typed ``@property`` / ``add_<tag>`` declarations in the generated
+source, which is what mypy, pyright and IDEs read).
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+from functools import cache
+
+import pytest
+
+import typed_mjcf as mjcf
+from codegen import ir, render
+from codegen.wheel import WheelRow, read_print_schema, read_reference
+from typed_mjcf._element import Element, element_class
+from typed_mjcf._spec import AttributeSpec
+
+ELEMENTS_PY = render.GENERATED_DIR / "elements.py"
+
+
+def test_generated_equals_a_fresh_render() -> None:
+    files = render.render(ir.load())
+    for name, text in files.items():
+        on_disk = (render.GENERATED_DIR / name).read_text(encoding="utf-8")
+        assert on_disk == text, f"generated/{name} is stale: run `nox -s generate`"
+    assert sorted(p.name for p in render.GENERATED_DIR.glob("*.py")) == sorted(files)
+
+
+@cache
+def static_members() -> dict[str, set[str]]:
+    """Per generated class: the names declared for type checkers (properties and methods)."""
+    tree = ast.parse(ELEMENTS_PY.read_text(encoding="utf-8"))
+    members: dict[str, set[str]] = {}
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            names: set[str] = set()
+            for statement in ast.walk(node):
+                if isinstance(statement, ast.FunctionDef):
+                    names.add(statement.name)
+            members[node.name] = names
+    return members
+
+
+def child_class(cls: type[Element], row: WheelRow) -> tuple[str, type[Element] | None]:
+    """The tag and class a printSchema row stands for under ``cls``.
+
+    ``(world)body`` under the root is the <worldbody> section, and its attributes and children
+    are those of the <body> rows inside it: the class returned is then ``Body``.
+    """
+    children = cls._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    tag = next((t for t in row.spellings if t in children), row.spellings[-1])
+    if tag not in children:
+        return tag, None
+    found = element_class(children[tag].class_name)
+    last = row.spellings[-1]
+    if last != tag and last in found._SPEC.children:  # pyright: ignore[reportPrivateUsage]
+        found = element_class(found._SPEC.children[last].class_name)  # pyright: ignore[reportPrivateUsage]
+    return tag, found
+
+
+def _pairs(row: WheelRow, cls: type[Element], path: str) -> Iterator[tuple[str, type[Element], str]]:
+    for attribute in row.attributes:
+        yield path, cls, attribute
+    for child in row.children:
+        tag, found = child_class(cls, child)
+        assert found is not None, f"{path}: <{tag}> is missing from {cls.__name__}"
+        yield from _pairs(child, found, f"{path}/{tag}")
+
+
+def wheel_pairs() -> list[tuple[str, type[Element], str]]:
+    root = read_print_schema()
+    pairs = list(_pairs(root, mjcf.RootElement, "mujoco"))
+    assert len(pairs) > 1500
+    return pairs
+
+
+def test_every_attribute_mujoco_lists_is_a_typed_property() -> None:
+    members = static_members()
+    missing: list[str] = []
+    for path, cls, name in wheel_pairs():
+        attribute = cls._SPEC.by_name.get(name)  # pyright: ignore[reportPrivateUsage]
+        if attribute is None:
+            missing.append(f"{path}@{name}: not in {cls.__name__}'s grammar row")
+            continue
+        if not isinstance(cls.__dict__.get(attribute.py_name), AttributeSpec):
+            missing.append(f"{path}@{name}: no run-time descriptor {cls.__name__}.{attribute.py_name}")
+        if attribute.py_name not in members[cls.__name__]:
+            missing.append(f"{path}@{name}: no typed property {cls.__name__}.{attribute.py_name}")
+    assert not missing, "\n".join(missing)
+
+
+def test_every_legal_child_has_an_add_method() -> None:
+    members = static_members()
+    missing: list[str] = []
+    root = read_print_schema()
+
+    def visit(row: WheelRow, cls: type[Element], path: str) -> None:
+        for child in row.children:
+            tag, found = child_class(cls, child)
+            if found is None:
+                missing.append(f"{path}: <{tag}> is not a child of {cls.__name__}")
+                continue
+            method = f"add_{tag}"
+            if not callable(getattr(cls, method, None)) or method not in members[cls.__name__]:
+                missing.append(f"{path}: {cls.__name__}.{method} is missing")
+            visit(child, found, f"{path}/{tag}")
+
+    visit(root, mjcf.RootElement, "mujoco")
+    assert not missing, "\n".join(missing)
+
+
+@pytest.mark.parametrize(("class_name", "prefix"), [("Frame", "frame-"), ("Replicate", "replicate-")])
+def test_frame_and_replicate_attributes_from_the_reference(class_name: str, prefix: str) -> None:
+    """mj_printSchema has no rows for frame and replicate; MuJoCo's reference documents them."""
+    reference = read_reference()
+    documented = {a[len(prefix):] for a in reference.anchors
+                  if a.startswith(prefix) and reference.at_val(a) is not None}
+    assert documented
+    cls = element_class(class_name)
+    members = static_members()[class_name]
+    for name in sorted(documented):
+        attribute = cls._SPEC.by_name.get(name)  # pyright: ignore[reportPrivateUsage]
+        assert attribute is not None, f"{class_name} lacks {name}"
+        assert attribute.py_name in members
+
+
+def test_worldbody_children_are_a_subset_of_body_children() -> None:
+    worldbody = element_class("Worldbody")._SPEC  # pyright: ignore[reportPrivateUsage]
+    body = element_class("Body")._SPEC  # pyright: ignore[reportPrivateUsage]
+    assert set(worldbody.children) <= set(body.children)
+    assert not worldbody.attributes
+
+
+def test_default_rows_are_projections_without_names_or_nodefault_attributes() -> None:
+    schema = ir.load()
+    for row in schema.elements.values():
+        if row.projection_of is None:
+            continue
+        primary = schema.elements[row.projection_of]
+        names = {a.name for a in row.attributes}
+        assert "name" not in names and "class" not in names, row.name
+        nodefault = {a.name for a in primary.attributes if a.nodefault}
+        assert not names & nodefault, (row.name, names & nodefault)
+
+
+def test_removed_in_4_0_0_is_absent_and_added_is_present() -> None:
+    assert "composite" not in mjcf.Body._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    assert "flexvert" not in mjcf.Equality._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    for cls, name in [(mjcf.Frame, "scale"), (mjcf.Frame, "massscale"), (mjcf.Joint, "springyield"),
+                      (mjcf.Geom, "castshadow"), (mjcf.Texture, "embed"), (mjcf.Key, "plastic")]:
+        assert name in cls._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
+    assert "texture" in mjcf.Default._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    for name in ("Pid", "Dcmotor", "Flexcomp", "Replicate", "Attach", "DefaultTexture",
+                 "EqualityJoint", "FixedJoint", "SpatialGeom", "DefaultGeom"):
+        assert hasattr(mjcf, name), name
