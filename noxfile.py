@@ -29,11 +29,22 @@ def demo(session: nox.Session) -> None:
     session.run("python", "examples/demo.py", *session.posargs)
 
 
+MUJOCO_VERSION = "4.0.0"  # what schema/ describes; keep in step with the dev extra
+
+
 @nox.session(python=PYTHON)
 def generate(session: nox.Session) -> None:
-    """Refresh schema/ from the installed mujoco (and a grammar file) and render generated/.
+    """Refresh schema/ from a mujoco wheel (and a grammar file) and render generated/.
 
+    nox -s generate                                  # the pinned MuJoCo: expect no changes
+    nox -s generate -- --mujoco-version 4.1.0        # bindings for another MuJoCo
     nox -s generate -- --grammar path/to/mujoco/src/xml/mjcf.schema
     """
-    session.install("-e", ".[codegen]")
-    session.run("python", "-m", "codegen", "generate", *session.posargs)
+    args = list(session.posargs)
+    version = MUJOCO_VERSION
+    if "--mujoco-version" in args:
+        at = args.index("--mujoco-version")
+        version = args[at + 1]
+        del args[at : at + 2]
+    session.install("-e", ".[codegen]", f"mujoco-core=={version}")
+    session.run("python", "-m", "codegen", "generate", *args)
