@@ -93,6 +93,8 @@ class ElementDef:
     projection_of: str | None = None  # default-context rows: the primary declaration
     anchor: str | None = None  # XMLreference.rst anchor of the element
     doc: str = ""
+    compose: str | None = None  # top-level sections: how an attached model's section joins
+    attachable: bool = False  # a model can be attached here (a body-holder, or a posed element in one)
 
     def attribute(self, name: str) -> AttributeDef:
         for a in self.attributes:
@@ -165,10 +167,12 @@ def dumps(schema: Schema) -> str:
     for i, (name, el) in enumerate(elem_items):
         lines.append(f"    {_compact(name)}: {{")
         head: dict[str, object] = {"tag": el.tag, "class_name": el.class_name}
-        for key in ("struct", "alias", "projection_of", "anchor"):
+        for key in ("struct", "alias", "projection_of", "anchor", "compose"):
             value = getattr(el, key)
             if value is not None:
                 head[key] = value
+        if el.attachable:
+            head["attachable"] = True
         if el.doc:
             head["doc"] = el.doc
         for key, value in head.items():
@@ -247,6 +251,8 @@ def loads(text: str) -> Schema:
             projection_of=cast("str | None", body.get("projection_of")),
             anchor=cast("str | None", body.get("anchor")),
             doc=cast(str, body.get("doc", "")),
+            compose=cast("str | None", body.get("compose")),
+            attachable=bool(body.get("attachable", False)),
         )
     return Schema(cast(str, raw["mujoco_version"]), cast(str, raw["root"]), enums, elements)
 

@@ -32,9 +32,8 @@ def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     project_defaults(out)
     apply_overrides(out, on_projections)
     mark_single(out, facts.single)
-    apply_directories(out, directories_of(facts))
-    rename_classes(out, _string_table(facts, "class_names"))
     drop_unreachable(out)
+    finish(out, facts)
     drop_unused_enums(out)
     check(out)
     return out
@@ -119,6 +118,35 @@ def _string_table(facts: Facts, table: str) -> dict[str, str]:
             isinstance(v, str) for v in cast(dict[str, object], raw).values()):
         raise ValueError(f"schema/facts.toml: [{table}] must map names to strings")
     return dict(cast(dict[str, str], raw))
+
+
+def finish(schema: ir.Schema, facts: Facts) -> None:
+    """The fact-derived fields, applied after normalizing and again after a sync (which may
+    have added rows)."""
+    apply_directories(schema, directories_of(facts))
+    rename_classes(schema, _string_table(facts, "class_names"))
+    sites = facts.extra.get("attachment_sites", {})
+    mark_composition(schema, _string_table(facts, "compose"),
+                     cast(dict[str, object], sites).keys() if isinstance(sites, dict) else ())
+
+
+def mark_composition(schema: ir.Schema, compose: Mapping[str, str],
+                     sites: Iterable[str]) -> None:
+    """Which rows can host an attached model, and how top-level sections compose.
+
+    A model attaches to the root (its worldbody), to a row that holds bodies, or to an
+    attachment site (dm_control's semantics: the frame goes beside it, at its pose).
+    """
+    root = schema.elements[schema.root]
+    for child in root.children:
+        row = schema.elements[child.element]
+        row.compose = compose.get(row.tag, row.compose)
+    site_rows = set(sites)
+    for element in schema.elements.values():
+        holds_bodies = element.projection_of is None and any(
+            c.element == "body" for c in element.children)
+        element.attachable = (holds_bodies or element.name == schema.root
+                              or element.name in site_rows)
 
 
 def rename_classes(schema: ir.Schema, names: Mapping[str, str]) -> None:

@@ -28,6 +28,7 @@ def sync_schema(schema: ir.Schema, facts: Facts | None = None,
     """``schema`` made to agree with the installed wheel, checked like ``normalize`` output."""
     facts = load_facts() if facts is None else facts
     synced, report = sync(schema, wheel.read_wheel() if installed is None else installed, facts)
+    passes.finish(synced, facts)
     passes.check(synced)
     return synced, report
 

@@ -53,6 +53,8 @@ class ClassView:
     children: list[ChildView]
     params: list[ParamView]
     is_root: bool
+    attachable: bool
+    attach_alias: bool  # also ``attach()``, dm_control's name, where no <attach> child takes it
 
 
 @dataclass(frozen=True)
@@ -102,7 +104,12 @@ def _element_spec(schema: ir.Schema, el: ir.ElementDef) -> str:
     constraints = tuple((k.kind, tuple(tuple(b) for b in k.bundles)) for k in el.constraints)
     if constraints:
         lines.append(f"constraints={constraints!r},")
-    lines.append(f"anchor={_quote(el.anchor)}, text={el.doc!r})")
+    extra = ""
+    if el.compose is not None:
+        extra += f", compose={el.compose!r}"
+    if el.attachable:
+        extra += ", attachable=True"
+    lines.append(f"anchor={_quote(el.anchor)}, text={el.doc!r}{extra})")
     return "\n".join(lines)
 
 
@@ -154,7 +161,8 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     is_root = el.name == schema.root
     return ClassView(el.class_name, "_ModelRoot" if is_root else "_Element", _class_doc(el),
                      textwrap.indent(_element_spec(schema, el), " " * 4).strip(), properties,
-                     children, params, is_root)
+                     children, params, is_root, el.attachable,
+                     el.attachable and all(ch.tag != "attach" for ch in children))
 
 
 def _environment() -> jinja2.Environment:

@@ -211,7 +211,7 @@ class RootElement(_ModelRoot):
         _C('custom', 'custom', 'Custom', True, '*'),
         _C('keyframe', 'keyframe', 'Keyframe', True, '*'),
     ),
-    anchor='mujoco', text='')
+    anchor='mujoco', text='', attachable=True)
 
     if TYPE_CHECKING:
         def __init__(self, **kwargs: Unpack[RootElementAttributes]) -> None:
@@ -496,6 +496,15 @@ class RootElement(_ModelRoot):
 
         def add_keyframe(self, **kwargs: Unpack[KeyframeAttributes]) -> Keyframe:
             """Add a ``<keyframe>`` child and return it; keyword arguments are its attributes."""
+            ...
+
+        def attach_model(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here and return its attachment frame, a ``<body>`` that joints
+            (e.g. a freejoint) can be added to. The model's names are scoped ``model/...``."""
+            ...
+
+        def attach(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here (dm_control's name for :meth:`attach_model`)."""
             ...
 
         @overload
@@ -2334,7 +2343,7 @@ class Body(_Element):
         _C('flexcomp', 'flexcomp', 'Flexcomp', False, '*'),
     ),
     constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))),),
-    anchor='body', text='')
+    anchor='body', text='', attachable=True)
 
     if TYPE_CHECKING:
         @property
@@ -2614,6 +2623,11 @@ class Body(_Element):
 
         def add_flexcomp(self, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp:
             """Add a ``<flexcomp>`` child and return it; keyword arguments are its attributes."""
+            ...
+
+        def attach_model(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here and return its attachment frame, a ``<body>`` that joints
+            (e.g. a freejoint) can be added to. The model's names are scoped ``model/...``."""
             ...
 
         @overload
@@ -3326,7 +3340,7 @@ class Compiler(_Element):
     ), (
         _C('lengthrange', 'lengthrange', 'Lengthrange', True, '?'),
     ),
-    anchor='compiler', text='')
+    anchor='compiler', text='', compose='attributes')
 
     if TYPE_CHECKING:
         @property
@@ -5033,7 +5047,7 @@ class Default(_Element):
         _C('dcmotor', 'dcmotor', 'DefaultDcmotor', True, '?'),
         _C('texture', 'texture', 'DefaultTexture', True, '?'),
     ),
-    anchor='default', text='')
+    anchor='default', text='', compose='nest')
 
     if TYPE_CHECKING:
         @property
@@ -13744,7 +13758,7 @@ class Frame(_Element):
         _C('flexcomp', 'flexcomp', 'Flexcomp', False, '*'),
     ),
     constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))),),
-    anchor='body-frame', text='')
+    anchor='body-frame', text='', attachable=True)
 
     if TYPE_CHECKING:
         @property
@@ -13991,6 +14005,11 @@ class Frame(_Element):
 
         def add_flexcomp(self, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp:
             """Add a ``<flexcomp>`` child and return it; keyword arguments are its attributes."""
+            ...
+
+        def attach_model(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here and return its attachment frame, a ``<body>`` that joints
+            (e.g. a freejoint) can be added to. The model's names are scoped ``model/...``."""
             ...
 
         @overload
@@ -19175,7 +19194,7 @@ class Keyframe(_Element):
     ), (
         _C('key', 'key', 'Key', False, '*'),
     ),
-    anchor='keyframe', text='')
+    anchor='keyframe', text='', compose='keyframes')
 
     if TYPE_CHECKING:
         @property
@@ -21464,7 +21483,7 @@ class Option(_Element):
     ), (
         _C('flag', 'flag', 'Flag', True, '?'),
     ),
-    anchor='option', text='')
+    anchor='option', text='', compose='attributes')
 
     if TYPE_CHECKING:
         @property
@@ -23437,7 +23456,7 @@ class Replicate(_Element):
         _C('light', 'light', 'Light', False, '*'),
         _C('plugin', 'plugin', 'Plugin', False, '*'),
     ),
-    anchor='replicate', text='')
+    anchor='replicate', text='', attachable=True)
 
     if TYPE_CHECKING:
         @property
@@ -23592,6 +23611,11 @@ class Replicate(_Element):
 
         def add_plugin(self, **kwargs: Unpack[PluginAttributes]) -> Plugin:
             """Add a ``<plugin>`` child and return it; keyword arguments are its attributes."""
+            ...
+
+        def attach_model(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here and return its attachment frame, a ``<body>`` that joints
+            (e.g. a freejoint) can be added to. The model's names are scoped ``model/...``."""
             ...
 
         @overload
@@ -25395,7 +25419,7 @@ class Site(_Element):
     ), (
     ),
     constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))),),
-    anchor='body-site', text='')
+    anchor='body-site', text='', attachable=True)
 
     if TYPE_CHECKING:
         @property
@@ -25590,6 +25614,15 @@ class Site(_Element):
         @user.setter
         def user(self, value: _builtins.float | Sequence[_builtins.float] | _t.FloatArrayLike | None) -> None: ...
 
+        def attach_model(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here and return its attachment frame, a ``<body>`` that joints
+            (e.g. a freejoint) can be added to. The model's names are scoped ``model/...``."""
+            ...
+
+        def attach(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here (dm_control's name for :meth:`attach_model`)."""
+            ...
+
 
 
 class Size(_Element):
@@ -25617,7 +25650,7 @@ class Size(_Element):
     ), (
     ),
     constraints=(('exclusive', (('memory',), ('nstack',))), ('exclusive', (('memory',), ('njmax',)))),
-    anchor='size', text='')
+    anchor='size', text='', compose='attributes')
 
     if TYPE_CHECKING:
         @property
@@ -26401,7 +26434,7 @@ class Statistic(_Element):
         _A('center', 'center', 'real', dtype='double', arity=(3, 3), anchor='statistic-center'),
     ), (
     ),
-    anchor='statistic', text='')
+    anchor='statistic', text='', compose='attributes')
 
     if TYPE_CHECKING:
         @property
@@ -29098,7 +29131,7 @@ class Visual(_Element):
         _C('scale', 'scale', 'Scale', True, '?'),
         _C('rgba', 'rgba', 'Rgba', True, '?'),
     ),
-    anchor='visual', text='')
+    anchor='visual', text='', compose='attributes')
 
     if TYPE_CHECKING:
         @property
@@ -29379,7 +29412,7 @@ class Worldbody(_Element):
         _C('plugin', 'plugin', 'Plugin', False, '*'),
         _C('flexcomp', 'flexcomp', 'Flexcomp', False, '*'),
     ),
-    anchor='body', text='')
+    anchor='body', text='', attachable=True)
 
     if TYPE_CHECKING:
         @property
@@ -29470,6 +29503,11 @@ class Worldbody(_Element):
 
         def add_flexcomp(self, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp:
             """Add a ``<flexcomp>`` child and return it; keyword arguments are its attributes."""
+            ...
+
+        def attach_model(self, model: _ModelRoot) -> Body:
+            """Attach ``model`` here and return its attachment frame, a ``<body>`` that joints
+            (e.g. a freejoint) can be added to. The model's names are scoped ``model/...``."""
             ...
 
         @overload

@@ -31,7 +31,7 @@ class CollectedAssets:
         return self.names[(id(element), attribute.name)]
 
 
-def _compiler_folders(model: ModelRoot) -> dict[str, str]:
+def compiler_folders(model: ModelRoot) -> dict[str, str]:
     """Values of the root's folder attributes (meshdir, texturedir, assetdir, strippath)."""
     folders: dict[str, str] = {}
     for child in model.get_children():
@@ -77,7 +77,7 @@ def collect_assets(model: ModelRoot) -> CollectedAssets:
 
 def _collect(model: ModelRoot, collected: CollectedAssets, models: tuple[str, ...]) -> None:
     """Add ``model``'s files to ``collected``; ``models`` are the MJCF files being read."""
-    folders = _compiler_folders(model)
+    folders = compiler_folders(model)
     directories: set[str] = set()
     for element in model.iter_elements():
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
@@ -110,7 +110,11 @@ def _collect(model: ModelRoot, collected: CollectedAssets, models: tuple[str, ..
             name = _unique(name, contents, collected.files)
             collected.files[name] = contents
             collected.names[(id(element), attribute.name)] = name
-    collected.directory_attributes = frozenset(directories)
+    collected.directory_attributes = collected.directory_attributes | frozenset(directories)
+    from typed_mjcf._compose import attachments
+
+    for _, attached in attachments(model):  # each resolves its files in its own folders
+        _collect(attached, collected, models)
 
 
 def _is_model_file(name: str, contents: bytes) -> bool:

@@ -6,8 +6,10 @@ expected; the element turns that into an error naming its path and the attribute
 
 from __future__ import annotations
 
+import math
 import os
 import re
+from fractions import Fraction
 from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Final, SupportsFloat, SupportsInt, cast
 
@@ -160,6 +162,25 @@ def _to_float(value: object) -> float:
     raise _type_rejected("a number")
 
 
+def _text_to_float32(text: str) -> np.float32:
+    """MJCF text read as MuJoCo reads a float: rounded once, to the nearest float32.
+
+    Going through a double rounds twice; that differs only when the double lands exactly
+    halfway between two float32 values, so only then is the text compared exactly.
+    """
+    double = _to_float(text)
+    single = np.float32(double)
+    if float(single) == double or not math.isfinite(double):
+        return single
+    other = np.nextafter(single, np.float32(math.copysign(math.inf, double - float(single))))
+    if double - float(single) != float(other) - double:
+        return single
+    exact, midpoint = Fraction(text.strip()), (Fraction(float(single)) + Fraction(float(other))) / 2
+    if exact == midpoint:
+        return single  # a true tie: round half to even, as the cast did
+    return other if abs(exact - Fraction(float(other))) < abs(exact - Fraction(float(single))) else single
+
+
 def int_converter(spec: AttributeSpec) -> Converter:
     return _to_int
 
@@ -188,6 +209,8 @@ def array_converter(spec: AttributeSpec) -> Converter:
         parts = text.split()
         if is_int:
             return np.array([_to_int(p) for p in parts], dtype=dtype)
+        if dtype is np.float32:
+            return np.array([_text_to_float32(p) for p in parts], dtype=np.float32)
         return np.array([_to_float(p) for p in parts], dtype=dtype)
 
     def convert(value: object) -> object:

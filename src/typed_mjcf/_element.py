@@ -47,7 +47,8 @@ def _short(value: object, limit: int = 60) -> str:
 class Element:
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
-    __slots__ = ("_attrs", "_children", "_parent", "_root", "_singles", "__weakref__")
+    __slots__ = ("_attrs", "_children", "_parent", "_root", "_singles", "_attached",
+                 "__weakref__")
     _SPEC: ClassVar[ElementSpec]
 
     _attrs: dict[str, object]
@@ -55,6 +56,7 @@ class Element:
     _parent: Element | None
     _root: ModelRoot | None
     _singles: dict[str, Element] | None
+    _attached: ModelRoot | None  # on attachment frames: the model attached there
 
     # ------------------------------------------------------------------ class set-up
 
@@ -69,7 +71,8 @@ class Element:
         for child in spec.children.values():
             setattr(cls, child.py_name, SingleChild(child) if child.single else ChildList(child))
             setattr(cls, "add_" + child.tag, _adder(child.tag))
-
+        if spec.attachable and "attach" not in spec.children:
+            setattr(cls, "attach", cls.attach_model)  # dm_control's name
     def __init__(self) -> None:
         raise TypeError(
             f"{type(self).__name__} elements are created by their parent, "
@@ -85,6 +88,7 @@ class Element:
         setattr_(element, "_parent", parent)
         setattr_(element, "_root", root)
         setattr_(element, "_singles", None)
+        setattr_(element, "_attached", None)
         return element
 
     # ------------------------------------------------------------------ identity
@@ -375,6 +379,24 @@ class Element:
             object.__setattr__(element, "_root", None)
         object.__setattr__(self, "_parent", None)
 
+    # ------------------------------------------------------------------ composition
+
+    def attach_model(self, model: ModelRoot) -> Element:
+        """Attach ``model`` here; return its attachment frame (a ``<body>``).
+
+        The model stays its own object: its names are scoped ``<model name>/...`` in this
+        model (``find("joint", "arm/elbow")``) and in the exported XML; ``model.detach()``
+        undoes the attachment.
+        """
+        from typed_mjcf._compose import attach
+
+        return attach(self, model)
+
+    @property
+    def attached_model(self) -> ModelRoot | None:
+        """On an attachment frame, the model attached there."""
+        return self._attached
+
     # ------------------------------------------------------------------ copies
 
     def __copy__(self) -> Self:
@@ -390,6 +412,10 @@ class Element:
                     memo: dict[int, object]) -> Self:
         clone = type(self)._blank(parent, root)
         memo[id(self)] = clone
+        if self._attached is not None:
+            attached = _copy.deepcopy(self._attached, memo)
+            object.__setattr__(clone, "_attached", attached)
+            object.__setattr__(attached, "_frame", clone)
         for key, value in self._attrs.items():
             # arrays are mutable in place: the copy gets its own
             clone._attrs[key] = cast(object, value.copy()) if isinstance(value, np.ndarray) else value

@@ -8,7 +8,9 @@ from typing import TypeAlias
 import numpy as np
 from lxml import etree
 
+from typed_mjcf._compose import MAIN_CLASS, scope_name
 from typed_mjcf._element import Element
+from typed_mjcf._root import ModelRoot
 from typed_mjcf._spec import AttributeSpec
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
@@ -82,14 +84,15 @@ class Formatter:
         raise ExportError(f"{element.path}: cannot write {attribute.py_name}={value!r}")
 
 
-def reference_name(element: Element, attribute: AttributeSpec, target: Element) -> str:
-    """The name a reference to ``target`` is written with."""
+def reference_name(element: Element, attribute: AttributeSpec, target: Element,
+                   same_model: bool = True) -> str:
+    """The name a reference to ``target`` is written with (unscoped)."""
     id_attribute = target.spec.id_attribute
     name = None if id_attribute is None else target.get_attributes().get(id_attribute.py_name)
     if not isinstance(name, str):
         raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
                           f"which has no name")
-    if target._root is not element._root:  # pyright: ignore[reportPrivateUsage]
+    if same_model and target._root is not element._root:  # pyright: ignore[reportPrivateUsage]
         raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
                           f"which is not part of this model")
     return name
@@ -112,31 +115,209 @@ def iter_written(element: Element) -> Iterator[Element]:
                      if not _is_empty_single(current, child))
 
 
-def build(element: Element, formatter: Formatter, parent: XmlNode | None = None) -> XmlNode:
-    """The lxml element for ``element`` and its subtree."""
-    attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-    spec = element.spec
-    attrib: dict[str, str] = {}
-    skip = formatter.skip_attributes
-    if attrs:
+class Writer:
+    """Builds the lxml tree of an element, writing attached models inline under their scope."""
+
+    def __init__(self, formatter: Formatter, top: Element, keyframes: bool = True) -> None:
+        self.formatter = formatter
+        self.top = top
+        self.keyframes = keyframes  # False: leave keyframes out (to learn the composed layout)
+        self.pending: list[tuple[ModelRoot, str]] = []  # attached models whose sections follow
+        self.joint_owners: list[ModelRoot] = []  # the model of each joint, in document order
+        self.actuator_owners: list[ModelRoot] = []
+        self.mocap_owners: list[ModelRoot] = []
+
+    # --------------------------------------------------------------- attributes
+
+    def attributes(self, element: Element, prefix: str, model: ModelRoot | None) -> dict[str, str]:
+        attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
+        if not attrs:
+            return {}
+        spec = element.spec
+        formatter = self.formatter
+        skip = formatter.skip_attributes
         if skip and any(name in skip for name in attrs):
             attrs = {k: v for k, v in attrs.items() if k not in skip}
-        if len(attrs) == 1:
+        if not prefix and len(attrs) == 1:
             key, value = next(iter(attrs.items()))
-            attrib[key] = formatter.value(element, spec.by_key[key], value)
+            attribute = spec.by_key[key]
+            if not isinstance(value, Element):
+                return {key: formatter.value(element, attribute, value)}
+        attrib: dict[str, str] = {}
+        for attribute in spec.attributes:
+            value = attrs.get(attribute.name)
+            if value is None:
+                continue
+            if isinstance(value, Element):
+                attrib[attribute.name] = self.reference(element, attribute, value)
+            elif prefix and isinstance(value, str) and attribute.kind in ("id", "ref"):
+                scoped = prefix if value == MAIN_CLASS and attribute.namespace == "default" else (
+                    prefix + value)
+                attrib[attribute.name] = scoped
+            elif prefix and model is not None and attribute.kind == "file" and isinstance(
+                    value, str) and formatter.file_namer is None:
+                attrib[attribute.name] = _absolute_file(model, attribute, value)
+            else:
+                attrib[attribute.name] = formatter.value(element, attribute, value)
+        return attrib
+
+    def reference(self, element: Element, attribute: AttributeSpec, target: Element) -> str:
+        """A reference to ``target``, scoped as seen from the model being written."""
+        name = reference_name(element, attribute, target, same_model=False)
+        target_root = target._root  # pyright: ignore[reportPrivateUsage]
+        top_root = self.top._root  # pyright: ignore[reportPrivateUsage]
+        scopes: list[str] = []
+        model = target_root
+        while model is not top_root:
+            frame = None if model is None else model._frame  # pyright: ignore[reportPrivateUsage]
+            if model is None or frame is None:
+                raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
+                                  f"which is not part of this model")
+            scopes.append(scope_name(model))
+            model = frame._root  # pyright: ignore[reportPrivateUsage]
+        return "".join(s + "/" for s in reversed(scopes)) + name
+
+    # --------------------------------------------------------------- elements
+
+    def element(self, element: Element, parent: XmlNode | None, prefix: str,
+                model: ModelRoot | None) -> XmlNode:
+        spec = element.spec
+        attrib = self.attributes(element, prefix, model)
+        if parent is None:
+            node = etree.Element(spec.tag, attrib)
         else:
-            for attribute in spec.attributes:
-                value = attrs.get(attribute.name)
-                if value is not None:
-                    attrib[attribute.name] = formatter.value(element, attribute, value)
-    if parent is None:
-        node = etree.Element(spec.tag, attrib)
-    else:
-        node = etree.SubElement(parent, spec.tag, attrib)
-    for child in element._children:  # pyright: ignore[reportPrivateUsage]
-        if not _is_empty_single(element, child):
-            build(child, formatter, node)
-    return node
+            node = etree.SubElement(parent, spec.tag, attrib)
+        namespace = spec.namespace
+        if namespace is not None and namespace in _TRACKED:
+            self._track(namespace, element, model)
+        for child in element._children:  # pyright: ignore[reportPrivateUsage]
+            if not _is_empty_single(element, child) and (
+                    self.keyframes or child.spec.compose != "keyframes"):
+                self.element(child, node, prefix, model)
+        attached = element._attached  # pyright: ignore[reportPrivateUsage]
+        if attached is not None:
+            self.attachment(node, attached, prefix + scope_name(attached) + "/")
+        return node
+
+    def _track(self, namespace: str, element: Element, model: ModelRoot | None) -> None:
+        if model is None:
+            return
+        if namespace == "joint":
+            self.joint_owners.append(model)
+        elif namespace == "actuator":
+            self.actuator_owners.append(model)
+        elif element._attrs.get("mocap") is True:  # pyright: ignore[reportPrivateUsage]
+            self.mocap_owners.append(model)
+
+    def attachment(self, frame: XmlNode, model: ModelRoot, scope: str) -> None:
+        """The attached model's bodies, inside its frame; its other sections come later."""
+        if _has_defaults(model) and frame.get("childclass") is None:
+            frame.set("childclass", scope)
+        for section in model._children:  # pyright: ignore[reportPrivateUsage]
+            if "body" in section.spec.children:
+                for child in section._children:  # pyright: ignore[reportPrivateUsage]
+                    self.element(child, frame, scope, model)
+        self.pending.append((model, scope))
+
+    # --------------------------------------------------------------- models
+
+    def model(self, root: ModelRoot) -> XmlNode:
+        node = self.element(root, None, "", root)
+        if not root._scopes:  # pyright: ignore[reportPrivateUsage]
+            return node
+        keyframes: list[tuple[ModelRoot, Element]] = [
+            (root, s) for s in root._children if s.spec.compose == "keyframes"]  # pyright: ignore[reportPrivateUsage]
+        while self.pending:
+            model, scope = self.pending.pop(0)
+            for section in model._children:  # pyright: ignore[reportPrivateUsage]
+                if section.spec.compose == "keyframes":
+                    keyframes.append((model, section))
+                elif "body" not in section.spec.children and not _is_empty_single(model, section):
+                    self.section(node, section, model, scope)
+        if self.keyframes and any(section._children for _, section in keyframes):  # pyright: ignore[reportPrivateUsage]
+            from typed_mjcf._keyframes import combine_keyframes
+
+            combine_keyframes(self, node, root, keyframes)
+        return node
+
+    def section_node(self, root: XmlNode, tag: str, root_spec_order: dict[str, int]) -> XmlNode:
+        """The root's ``<tag>`` section, created at its grammar position if missing."""
+        for child in root:
+            if child.tag == tag:
+                return child
+        node = etree.Element(tag)
+        index = next((i for i, child in enumerate(root)
+                      if root_spec_order.get(str(child.tag), -1) > root_spec_order[tag]), len(root))
+        root.insert(index, node)
+        return node
+
+    def section(self, root: XmlNode, section: Element, model: ModelRoot, scope: str) -> None:
+        """Join an attached model's section to the root's, as its grammar row says."""
+        order = {tag: c.index for tag, c in self.top.spec.children.items()}
+        compose = section.spec.compose
+        target = self.section_node(root, section.tag, order)
+        if compose == "attributes":
+            self.merge_attributes(target, section, model, scope)
+        elif compose == "nest":
+            nested = etree.SubElement(target, section.tag, {"class": scope})
+            for child in section._children:  # pyright: ignore[reportPrivateUsage]
+                self.element(child, nested, scope, model)
+        else:
+            classed = _has_defaults(model)
+            for child in section._children:  # pyright: ignore[reportPrivateUsage]
+                node = self.element(child, target, scope, model)
+                if classed and "class" in child.spec.by_name and node.get("class") is None:
+                    node.set("class", scope)
+
+    def merge_attributes(self, target: XmlNode, section: Element, model: ModelRoot,
+                         scope: str) -> None:
+        for name, text in self.attributes(section, scope, model).items():
+            if section.spec.by_name[name].directory or name in _folders():
+                continue
+            mine = target.get(name)
+            if mine is None:
+                target.set(name, text)
+            elif mine != text:
+                raise ExportError(
+                    f"<{section.tag}> {name}: {text!r} in attached model "
+                    f"{scope.rstrip('/')!r} differs from {mine!r} in the model it is attached to")
+        for child in section._children:  # pyright: ignore[reportPrivateUsage]
+            sub = next((c for c in target if c.tag == child.tag), None)
+            if sub is None:
+                sub = etree.SubElement(target, child.tag)
+            self.merge_attributes(sub, child, model, scope)
+
+
+_TRACKED = frozenset({"joint", "actuator", "body"})
+
+
+def _has_defaults(model: ModelRoot) -> bool:
+    for section in model._children:  # pyright: ignore[reportPrivateUsage]
+        if section.spec.compose == "nest":
+            return bool(section._children or section._attrs)  # pyright: ignore[reportPrivateUsage]
+    return False
+
+
+def _folders() -> frozenset[str]:
+    from typed_mjcf._compose import folder_attributes
+
+    return folder_attributes()
+
+
+def _absolute_file(model: ModelRoot, attribute: AttributeSpec, file: str) -> str:
+    """An attached model's file, as a path that does not depend on the parent's folders."""
+    from typed_mjcf._assets_io import compiler_folders, resolve_path
+
+    return resolve_path(model, attribute, file, compiler_folders(model))
+
+
+def build(element: Element, formatter: Formatter, parent: XmlNode | None = None) -> XmlNode:
+    """The lxml element for ``element`` and its subtree (attached models included)."""
+    writer = Writer(formatter, element)
+    root = element._root  # pyright: ignore[reportPrivateUsage]
+    if parent is None and root is not None and root is element:
+        return writer.model(root)
+    return writer.element(element, parent, "", root)
 
 
 def to_xml(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,

@@ -32,7 +32,7 @@ def _xml_parser() -> etree.XMLParser:
 
 def source_line(node: XmlNode) -> int | None:
     """The line ``node`` starts on in the text it was read from, if known."""
-    line: object = node.sourceline  # typed loosely by lxml-stubs
+    line: object = node.sourceline  # lxml-stubs types it loosely
     return line if isinstance(line, int) else None
 
 
@@ -46,7 +46,8 @@ def root_class() -> type[ModelRoot]:
 @dataclass
 class _Context:
     base_dir: str | None
-    included: list[str] = field(default_factory=lambda: [])
+    included: list[str] = field(default_factory=lambda: [])  # every file read, in order
+    nesting: list[str] = field(default_factory=lambda: [])  # the files including the current one
 
 
 def is_model_text(data: bytes) -> bool:
@@ -84,7 +85,7 @@ def parse_path(path: str) -> ModelRoot:
     except OSError as error:
         raise ParseError(f"cannot read the file: {error.strerror}", path) from None
     node = _read_xml(data, path)
-    return _build_model(node, _Context(os.path.dirname(path), [path]), path)
+    return _build_model(node, _Context(os.path.dirname(path), [path], [path]), path)
 
 
 def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelRoot:
@@ -214,6 +215,9 @@ def _expand_include(parent: Element, node: XmlNode, context: _Context,
         raise ParseError("<include> needs a file attribute", source, source_line(node))
     base = context.base_dir or os.getcwd()
     path = os.path.abspath(os.path.join(base, file))
+    if path in context.nesting:
+        chain = " -> ".join([*context.nesting, path])
+        raise ParseError(f"{file!r} includes itself: {chain}", source, source_line(node))
     if path in context.included:
         raise ParseError(f"{file!r} ({path}) is already part of the model (MuJoCo includes a "
                          f"file once)", source, source_line(node))
@@ -225,4 +229,6 @@ def _expand_include(parent: Element, node: XmlNode, context: _Context,
                          source, source_line(node)) from None
     context.included.append(path)
     included_root = _read_xml(data, path)
+    context.nesting.append(path)
     _add_children(parent, included_root, context, path)
+    context.nesting.pop()

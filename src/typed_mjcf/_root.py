@@ -16,15 +16,18 @@ if TYPE_CHECKING:
 class ModelRoot(Element):
     """Behaviour of ``<mujoco>``, the root of a model. Use ``typed_mjcf.RootElement``."""
 
-    __slots__ = ("_identifiers", "_base_dir")
+    __slots__ = ("_identifiers", "_base_dir", "_frame", "_scopes")
 
     _identifiers: dict[str, dict[str, Element]]
     _base_dir: str | None
+    _frame: Element | None  # where this model is attached, if it is
+    _scopes: dict[str, ModelRoot]  # models attached to this one, by scope name
 
     def __init__(self, **kwargs: object) -> None:
         initial: dict[str, object] = {
             "_attrs": {}, "_children": [], "_parent": None, "_root": self, "_singles": None,
-            "_identifiers": {}, "_base_dir": None,
+            "_attached": None, "_identifiers": {}, "_base_dir": None, "_frame": None,
+            "_scopes": {},
         }
         for name, value in initial.items():
             object.__setattr__(self, name, value)
@@ -36,6 +39,8 @@ class ModelRoot(Element):
         object.__setattr__(model, "_root", model)
         object.__setattr__(model, "_identifiers", {})
         object.__setattr__(model, "_base_dir", None)
+        object.__setattr__(model, "_frame", None)
+        object.__setattr__(model, "_scopes", {})
         return model
 
     # ------------------------------------------------------------------ namespaces
@@ -87,9 +92,38 @@ class ModelRoot(Element):
             )
 
     def find(self, namespace: str, identifier: str) -> Element | None:
-        """The element named ``identifier`` in ``namespace``, or ``None``. O(1)."""
+        """The element named ``identifier`` in ``namespace``, or ``None``. O(1) per scope:
+        ``find("joint", "arm/elbow")`` looks in the model attached as ``arm``."""
         self._check_namespace(namespace)
-        return self._lookup_identifier(namespace, identifier)
+        model: ModelRoot = self
+        while "/" in identifier:
+            scope, identifier = identifier.split("/", 1)
+            attached = model._scopes.get(scope)
+            if attached is None:
+                return None
+            model = attached
+        return model._lookup_identifier(namespace, identifier)
+
+    def detach(self) -> None:
+        """Undo this model's attachment: its frame (and anything added to it) is removed."""
+        from typed_mjcf._compose import detach
+
+        detach(self)
+
+    @property
+    def attachment_frame(self) -> Element | None:
+        """Where this model is attached (its frame in the parent model), if it is."""
+        return self._frame
+
+    @property
+    def namescope(self) -> str:
+        """This model's scope prefix in the outermost model it is attached into ("" if none)."""
+        parts: list[str] = []
+        model: ModelRoot = self
+        while model._frame is not None:
+            parts.append(str(model.get_attributes().get("model")))
+            model = model._frame.root
+        return "".join(p + "/" for p in reversed(parts))
 
     def find_all(self, namespace: str) -> Sequence[Element]:
         """Every element of ``namespace`` (named or not), in document order."""
@@ -100,11 +134,16 @@ class ModelRoot(Element):
     # ------------------------------------------------------------------ copies
 
     def __deepcopy__(self, memo: dict[int, object]) -> Self:
+        """An independent copy, with copies of the models attached to it."""
         clone = self._clone_tree(None, None, memo)
         object.__setattr__(clone, "_identifiers", {})
         object.__setattr__(clone, "_base_dir", self._base_dir)
+        object.__setattr__(clone, "_frame", None)
+        object.__setattr__(clone, "_scopes", {
+            name: memo.get(id(model), model) for name, model in self._scopes.items()})
         for element in clone.iter_elements():
             object.__setattr__(element, "_root", clone)
+        object.__setattr__(clone, "_root", clone)
         clone._remap_references(memo)
         clone._rebuild_identifiers()
         return clone

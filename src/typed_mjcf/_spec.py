@@ -48,7 +48,7 @@ class AttributeSpec:
         self.py_name = py_name
         self.kind: Kind = kind
         self.dtype = dtype
-        self.is_array = arity is not None
+        self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
         self.lo, self.hi = arity if arity is not None else (1, 1)
         self.keywords = tuple(keywords)
         self.namespace = namespace
@@ -116,7 +116,7 @@ class ElementSpec:
 
     __slots__ = (
         "tag", "name", "attributes", "by_key", "by_name", "children", "id_attribute", "namespace",
-        "constraints", "anchor", "text",
+        "constraints", "anchor", "text", "compose", "attachable",
     )
 
     def __init__(
@@ -129,9 +129,13 @@ class ElementSpec:
         constraints: Sequence[tuple[str, tuple[tuple[str, ...], ...]]] = (),
         anchor: str | None = None,
         text: str = "",
+        compose: str | None = None,
+        attachable: bool = False,
     ) -> None:
         self.tag = tag
         self.name = name
+        self.compose = compose  # top-level sections: how an attached model's section joins
+        self.attachable = attachable  # a model can be attached here
         self.attributes = tuple(attributes)
         self.by_key: dict[str, AttributeSpec] = {}
         self.by_name = {a.name: a for a in self.attributes}

@@ -50,7 +50,9 @@ def from_spec(spec: mujoco.MjSpec) -> RootElement:
     from typed_mjcf._bridge import spec_to_xml
 
     xml, assets = spec_to_xml(spec)
-    model = from_xml_string(xml)
+    # The spec's files are relative to the folder of the file it was read from (if any).
+    folder: object = getattr(spec, "modelfiledir", None)
+    model = from_xml_string(xml, base_dir=folder if isinstance(folder, str) and folder else None)
     del assets
     return model
 

@@ -1,27 +1,48 @@
 """Field-by-field comparison of two compiled ``mujoco.MjModel`` objects.
 
 Every public attribute of ``MjModel`` that is a numpy array, an int or bytes is compared
-exactly (NaN equals NaN), and so is every field of the ``opt``, ``vis`` and ``stat`` structs.
-Names are compared as the strings ``name_*adr`` resolve to, besides the raw ``names`` buffer.
+exactly (same shape and dtype; NaN equals NaN), and so is every field of the ``opt``, ``vis``
+and ``stat`` structs. Names are compared as the strings ``name_*adr`` resolve to, besides the
+raw ``names`` buffer.
 
 File paths are the one deliberate exception: ``typed_mjcf`` compiles through MuJoCo's virtual
 file system under flat file names, so ``paths``, ``npaths`` and the ``*_pathadr`` offsets
 into it differ from a compile that read the files from disk. They are compared by meaning
-instead: the same elements have a path, and each path names a file with the same contents.
-``nbuffer`` includes the ``paths`` array, padded to MuJoCo's 64-byte buffer alignment, so it
-is compared without that array.
+instead (:func:`file_differences`): the same elements have a path, and each path names a file
+with the same contents. ``nbuffer`` includes the ``paths`` array, padded to MuJoCo's 64-byte
+buffer alignment, so it is compared without that array.
 """
 
 from __future__ import annotations
 
 import os
 from collections.abc import Iterator, Mapping
+from typing import cast
 
 import mujoco
 import numpy as np
 
+Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
+
 PATH_FIELDS = frozenset({"paths", "npaths", "nbuffer"})
 BUFFER_ALIGNMENT = 64  # MuJoCo aligns every array of mjModel's buffer to 64 bytes
+
+
+def _field(obj: object, name: str) -> object:
+    value: object = getattr(obj, name)
+    return value
+
+
+def _int(obj: object, name: str) -> int:
+    value = _field(obj, name)
+    assert isinstance(value, int), name
+    return value
+
+
+def _bytes(obj: object, name: str) -> bytes:
+    value = _field(obj, name)
+    assert isinstance(value, bytes), name
+    return value
 
 
 def _is_path_field(name: str) -> bool:
@@ -33,12 +54,18 @@ def _c_string(buffer: bytes, address: int) -> str:
     return buffer[address:end].decode("utf-8", "replace")
 
 
+def _addresses(model: mujoco.MjModel, name: str) -> list[int]:
+    value = _field(model, name)
+    assert isinstance(value, np.ndarray), name
+    return [int(a) for a in cast(Array, value).ravel().tolist()]
+
+
 def _struct_fields(prefix: str, struct: object) -> Iterator[tuple[str, object]]:
     """Leaf fields of MuJoCo's nested structs (``opt``, ``vis``, ``stat``)."""
     for name in dir(struct):
         if name.startswith("_"):
             continue
-        value = getattr(struct, name)
+        value = _field(struct, name)
         if callable(value):
             continue
         if isinstance(value, np.ndarray | int | float | bytes | str):
@@ -53,46 +80,58 @@ def model_fields(model: mujoco.MjModel) -> dict[str, object]:
     for name in dir(model):
         if name.startswith("_") or _is_path_field(name):
             continue
-        value = getattr(model, name)
+        value = _field(model, name)
         if isinstance(value, np.ndarray | int | float | bytes):
             fields[name] = value
         elif name in ("opt", "vis", "stat"):
             fields.update(_struct_fields(name, value))
-    npaths: int = model.npaths
-    padded_paths = -(-npaths // BUFFER_ALIGNMENT) * BUFFER_ALIGNMENT
-    fields["nbuffer - padded npaths"] = model.nbuffer - padded_paths
-    names: bytes = model.names
+    padded_paths = -(-_int(model, "npaths") // BUFFER_ALIGNMENT) * BUFFER_ALIGNMENT
+    fields["nbuffer - padded npaths"] = _int(model, "nbuffer") - padded_paths
+    names = _bytes(model, "names")
     for name in dir(model):
         if name.startswith("name_") and name.endswith("adr"):
-            addresses = getattr(model, name)
-            fields[f"{name} (resolved)"] = [_c_string(names, int(a)) for a in addresses]
+            fields[f"{name} (resolved)"] = [_c_string(names, a) for a in _addresses(model, name)]
     return fields
 
 
-def _equal(a: object, b: object) -> bool:
+def _as_arrays(a: object, b: object) -> tuple[Array, Array] | None:
     if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
-        if a.shape != b.shape or a.dtype != b.dtype:
+        return cast(Array, a), cast(Array, b)
+    return None
+
+
+def _equal(a: object, b: object) -> bool:
+    arrays = _as_arrays(a, b)
+    if arrays is not None:
+        left, right = arrays
+        if left.shape != right.shape or left.dtype != right.dtype:
             return False
-        equal_nan = a.dtype.kind in "fc"
-        return bool(np.array_equal(a, b, equal_nan=equal_nan))
+        return bool(np.array_equal(left, right, equal_nan=left.dtype.kind in "fc"))
     if isinstance(a, float) and isinstance(b, float):
         return a == b or (a != a and b != b)
     return type(a) is type(b) and a == b
 
 
 def _describe(a: object, b: object) -> str:
-    if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
-        if a.shape != b.shape:
-            return f"shape {a.shape} != {b.shape}"
-        if a.dtype != b.dtype:
-            return f"dtype {a.dtype} != {b.dtype}"
-        diff = np.argwhere(~((a == b) | (np.isnan(a) & np.isnan(b)) if a.dtype.kind in "fc"
-                             else (a == b)))
-        first = tuple(int(i) for i in diff[0])
-        return (f"{len(diff)} entries differ, first at {first}: "
-                f"{a[first]!r} != {b[first]!r}")
+    arrays = _as_arrays(a, b)
+    if arrays is not None:
+        return _describe_arrays(*arrays)
     text = f"{a!r} != {b!r}"
     return text if len(text) < 400 else text[:400] + "..."
+
+
+def _describe_arrays(left: Array, right: Array) -> str:
+    if left.shape != right.shape:
+        return f"shape {left.shape} != {right.shape}"
+    if left.dtype != right.dtype:
+        return f"dtype {left.dtype} != {right.dtype}"
+    same = left == right
+    if left.dtype.kind in "fc":
+        same |= np.isnan(left.astype(np.float64)) & np.isnan(right.astype(np.float64))
+    differing = np.argwhere(~same)
+    first = tuple(int(i) for i in differing[0])
+    return (f"{len(differing)} entries differ, first at {first}: "
+            f"{left[first]!r} != {right[first]!r}")
 
 
 def model_differences(expected: mujoco.MjModel, actual: mujoco.MjModel) -> list[str]:
@@ -108,13 +147,9 @@ def model_differences(expected: mujoco.MjModel, actual: mujoco.MjModel) -> list[
 
 
 def _resolved_paths(model: mujoco.MjModel) -> dict[str, list[str | None]]:
-    paths: bytes = model.paths
-    resolved: dict[str, list[str | None]] = {}
-    for name in dir(model):
-        if name.endswith("_pathadr"):
-            resolved[name] = [None if a < 0 else _c_string(paths, int(a))
-                              for a in getattr(model, name)]
-    return resolved
+    paths = _bytes(model, "paths")
+    return {name: [None if a < 0 else _c_string(paths, a) for a in _addresses(model, name)]
+            for name in dir(model) if name.endswith("_pathadr")}
 
 
 def file_differences(expected: mujoco.MjModel, expected_dir: str, actual: mujoco.MjModel,
@@ -126,12 +161,14 @@ def file_differences(expected: mujoco.MjModel, expected_dir: str, actual: mujoco
     """
     want, got = _resolved_paths(expected), _resolved_paths(actual)
     problems: list[str] = []
-    for field in sorted(want):
+    for field in sorted(want.keys() | got.keys()):
+        if len(want.get(field, [])) != len(got.get(field, [])):
+            problems.append(f"{field}: {len(want.get(field, []))} != {len(got.get(field, []))}")
+            continue
         for i, (a, b) in enumerate(zip(want[field], got[field], strict=True)):
-            if (a is None) != (b is None):
-                problems.append(f"{field}[{i}]: path {a!r} != {b!r}")
-                continue
             if a is None or b is None:
+                if (a is None) != (b is None):
+                    problems.append(f"{field}[{i}]: path {a!r} != {b!r}")
                 continue
             with open(os.path.join(expected_dir, a), "rb") as f:
                 contents = f.read()

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import importlib.util
 from pathlib import Path
+from typing import cast
 
 import mujoco
 import numpy as np
@@ -38,7 +39,7 @@ from lxml import etree
 import typed_mjcf
 from typed_mjcf.errors import ParseError
 
-from .model_compare import file_differences, model_differences
+from .model_compare import Array, file_differences, model_differences
 
 CORPUS_PACKAGES = ("dm_control", "mujoco")
 
@@ -132,6 +133,6 @@ def test_comparison_sees_one_ulp() -> None:
     geom = next(g for g in model.find_all("geom") if "size" in g.get_attributes())
     size = geom.get_attributes()["size"]
     assert isinstance(size, np.ndarray), ident
-    geom.set_attributes(size=np.nextafter(size, np.inf))
+    geom.set_attributes(size=np.nextafter(cast(Array, size).astype(np.float64), np.inf))
     differences = model_differences(expected, model.compile())
     assert any(d.startswith("geom_size:") for d in differences), differences

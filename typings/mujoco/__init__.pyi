@@ -5,6 +5,7 @@ from collections.abc import Mapping
 import numpy as np
 
 _F64 = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
+_I32 = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
 
 __version__: str
 
@@ -32,6 +33,18 @@ class MjModel:
     ntendon: int
     neq: int
     nmesh: int
+    nmocap: int
+    qpos0: _F64
+    jnt_type: _I32
+    jnt_qposadr: _I32
+    jnt_dofadr: _I32
+    actuator_actadr: _I32
+    actuator_actnum: _I32
+    body_mocapid: _I32
+    body_pos: _F64
+    body_quat: _F64
+    key_qpos: _F64
+    key_ctrl: _F64
     def body(self, name: str | int) -> _NamedView: ...
     def joint(self, name: str | int) -> _NamedView: ...
     def geom(self, name: str | int) -> _NamedView: ...

@@ -1,0 +1,506 @@
+"""Whole-model checks: the rules of MuJoCo that no single assignment can enforce.
+
+Assignment already checks each value on its own (types, keywords, lengths, unique names).
+What is left needs the whole model: attributes that exclude or require each other, required
+attributes and children, references that must name something, and default classes. The
+checks run in one pass over the tree (plus work proportional to what they find), so
+validating is O(N) in the number of elements.
+
+Every finding has a rule name (see :data:`RULES`), the path of the element and a message;
+``str(finding)`` is ``"path: rule: message"``. Errors are what MuJoCo would refuse; warnings
+(``unused-default``) are legal but probably not meant.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Final, Literal
+
+from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._root import ModelRoot
+from typed_mjcf._spec import AttributeSpec, ElementSpec
+from typed_mjcf.assets import Asset
+from typed_mjcf.errors import InvalidValueError, did_you_mean
+
+Severity = Literal["error", "warning"]
+Rule = Literal[
+    "exclusive", "together", "requires", "oneof", "required-attribute", "required-child",
+    "unresolved-reference", "default-class", "world-body", "replicate-joint", "self-attach",
+    "unused-default",
+]
+
+RULES: Final[dict[Rule, str]] = {
+    "exclusive": "at most one of the grammar's exclusive attribute bundles may be present",
+    "together": "attributes the grammar ties together appear all or none",
+    "requires": "an attribute the grammar says requires others appears only with them",
+    "oneof": "at least one of the grammar's alternative attribute bundles is complete",
+    "required-attribute": "a required attribute is set (not checked in <default> classes)",
+    "required-child": "a required child element is present",
+    "unresolved-reference": "a reference names an element of the model (or one MuJoCo defines)",
+    "default-class": "a nested <default> has a class name; the top-level one is 'main'",
+    "world-body": "the world body has no joints and no <inertial> (also through <frame>s)",
+    "replicate-joint": "a joint is not a direct child of <replicate> (also through <frame>s)",
+    "self-attach": "an <attach> without model= (self-attachment) names a body= or frame=",
+    "unused-default": "a default class is used by some class= or childclass= (warning)",
+}
+
+# The class of the top-level <default>, and the world body: names MuJoCo defines itself.
+MAIN_CLASS: Final = "main"
+_BUILTIN_NAMES: Final[frozenset[tuple[str, str]]] = frozenset(
+    {("default", MAIN_CLASS), ("body", "world")})
+DEFAULT_NAMESPACE: Final = "default"
+
+# Hand-kept facts (neither the grammar nor the wheel states them):
+# - Assets named after their file: "If omitted, the mesh name equals the file name without the
+#   path and extension" (XMLreference.rst: mesh, hfield, texture; MuJoCo 4.0.0 does the same
+#   for skin, measured with MjSpec.from_string).
+_NAMED_AFTER_FILE: Final = frozenset({"mesh", "hfield", "texture", "skin"})
+# - An unnamed <model> asset takes the name of the model in its file, which is not read here.
+_NAMED_FROM_CONTENTS: Final = frozenset({"model"})
+# - <attach model="m" body="b"/> names a body (or frame) of the child model m, not of this one.
+_REFERS_INTO_CHILD_MODEL: Final = {"attach": ("model", frozenset({"body", "frame"}))}
+# - The element kind of objname/refname is given by objtype/reftype (sensors, tuple elements).
+_NAME_BY_TYPE: Final = (("objtype", "objname"), ("reftype", "refname"))
+_TYPE_NAMESPACES: Final = {"xbody": "body"}  # other words are their namespace's name
+# - The kinematic tree: <frame> is transparent (its children belong to the enclosing body or
+#   replicate). MuJoCo's parser refuses joints and inertia of the world body ("World body
+#   cannot have joints"), and joints whose enclosing element is a <replicate> ("joint cannot
+#   be a direct child of replicate"); measured with MuJoCo 4.0.0.
+_TREE: Final = frozenset({"worldbody", "body", "frame", "replicate"})
+_TRANSPARENT: Final = "frame"
+_JOINTS: Final = frozenset({"joint", "freejoint"})
+_INERTIA: Final = "inertial"
+# - <attach> without model= attaches part of this model: it needs body= or frame= ("either
+#   'body' or 'frame' attribute must be specified for self-attach").
+_SELF_ATTACH: Final = ("attach", "model", ("body", "frame"))
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """One problem found in a model: where, which rule, what."""
+
+    path: str
+    rule: Rule
+    message: str
+    severity: Severity = "error"
+
+    def __str__(self) -> str:
+        return f"{self.path}: {self.rule}: {self.message}"
+
+
+class ValidationError(InvalidValueError):
+    """The model breaks rules MuJoCo enforces; ``findings`` lists every problem found."""
+
+    def __init__(self, findings: Sequence[Finding]) -> None:
+        self.findings: tuple[Finding, ...] = tuple(findings)
+        errors = [f for f in self.findings if f.severity == "error"]
+        warnings = [f for f in self.findings if f.severity == "warning"]
+        lines = [f"the model is not valid MJCF ({_count(len(errors), 'error')}):"]
+        lines += [f"  {finding}" for finding in errors]
+        if warnings:
+            lines.append(f"and {_count(len(warnings), 'warning')}:")
+            lines += [f"  {finding}" for finding in warnings]
+        super().__init__("\n".join(lines))
+
+    @property
+    def errors(self) -> tuple[Finding, ...]:
+        return tuple(f for f in self.findings if f.severity == "error")
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
+def errors(findings: Iterable[Finding]) -> list[Finding]:
+    """The findings that are errors."""
+    return [f for f in findings if f.severity == "error"]
+
+
+def ensure_valid(model: ModelRoot) -> list[Finding]:
+    """Raise :class:`ValidationError` if the model has errors; else return its warnings."""
+    findings = validate(model)
+    if any(f.severity == "error" for f in findings):
+        raise ValidationError(findings)
+    return findings
+
+
+# ---------------------------------------------------------------------------- per-row plans
+
+
+@dataclass(frozen=True, slots=True)
+class _Plan:
+    """What to check on the elements of one grammar row (computed once per row per call)."""
+
+    constraints: tuple[tuple[str, tuple[tuple[str, ...], ...]], ...]
+    required: tuple[AttributeSpec, ...]
+    required_children: tuple[str, ...]
+    references: tuple[AttributeSpec, ...]
+    typed_names: tuple[tuple[str, str], ...]
+
+
+@functools.cache
+def _rows_by_name() -> dict[str, ElementSpec]:
+    return {cls._SPEC.name: cls._SPEC for cls in _REGISTRY.values()}  # pyright: ignore[reportPrivateUsage]
+
+
+def _projection_constraints(spec: ElementSpec) -> list[tuple[str, tuple[tuple[str, ...], ...]]]:
+    """The exclusive constraints of the row a <default> row projects, over attributes the
+    projection keeps: MuJoCo checks them in default classes too (e.g. <default><camera
+    fovy sensorsize/>) though the generated projection rows do not carry them."""
+    primary = _rows_by_name().get(spec.name.removeprefix("default_"))
+    if primary is None or primary is spec:
+        return []
+    return [(kind, bundles) for kind, bundles in primary.constraints
+            if kind == "exclusive"
+            and all(name in spec.by_name for bundle in bundles for name in bundle)]
+
+
+def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
+    constraints = list(spec.constraints)
+    if projection:
+        # Attributes of default classes are optional by design: only exclusions apply.
+        constraints = [c for c in constraints if c[0] == "exclusive"]
+        constraints += [c for c in _projection_constraints(spec) if c not in constraints]
+    by_name = spec.by_name
+    return _Plan(
+        constraints=tuple(constraints),
+        required=() if projection else tuple(a for a in spec.attributes if a.required),
+        required_children=tuple(c.tag for c in spec.children.values() if c.card == "!"),
+        references=tuple(a for a in spec.attributes if a.kind == "ref" and a.namespace),
+        typed_names=tuple((t, n) for t, n in _NAME_BY_TYPE if t in by_name and n in by_name),
+    )
+
+
+# ---------------------------------------------------------------------------- the pass
+
+
+@dataclass(slots=True)
+class _Pending:
+    """A reference by name that the model's namespaces did not resolve during the pass."""
+
+    order: int
+    element: Element
+    attribute: str
+    namespace: str
+    name: str
+
+
+@dataclass(slots=True)
+class _Pass:
+    model: ModelRoot
+    namespaces: frozenset[str]
+    found: list[tuple[int, int, Element, Rule, str, Severity]] = field(
+        default_factory=lambda: [])
+    plans: dict[tuple[int, bool], _Plan] = field(default_factory=lambda: {})
+    pending: list[_Pending] = field(default_factory=lambda: [])
+    implicit_names: dict[str, set[str]] = field(default_factory=lambda: {})
+    unverifiable: set[str] = field(default_factory=lambda: set())  # namespaces
+    prefixes: list[str] = field(default_factory=lambda: [])  # of <attach> elements
+    classes: dict[str, tuple[int, Element]] = field(default_factory=lambda: {})
+    used_classes: set[str] = field(default_factory=lambda: set())
+
+    def add(self, order: int, element: Element, rule: Rule, message: str,
+            severity: Severity = "error") -> None:
+        # The path is computed only for findings, when they are reported.
+        self.found.append((order, len(self.found), element, rule, message, severity))
+
+    def plan(self, spec: ElementSpec, projection: bool) -> _Plan:
+        key = (id(spec), projection)
+        plan = self.plans.get(key)
+        if plan is None:
+            plan = self.plans[key] = _make_plan(spec, projection)
+        return plan
+
+    def findings(self) -> list[Finding]:
+        self.found.sort(key=lambda item: (item[0], item[1]))
+        return [Finding(element.path, rule, message, severity)
+                for _, _, element, rule, message, severity in self.found]
+
+
+def _attributes(element: Element) -> dict[str, object]:
+    return element._attrs  # pyright: ignore[reportPrivateUsage]
+
+
+def _children(element: Element) -> list[Element]:
+    return element._children  # pyright: ignore[reportPrivateUsage]
+
+
+def _root_of(element: Element) -> ModelRoot | None:
+    return element._root  # pyright: ignore[reportPrivateUsage]
+
+
+def _is_written(parent: Element, child: Element) -> bool:
+    """Whether the exporter writes ``child`` (an empty once-only section is left out)."""
+    if _attributes(child) or _children(child):
+        return True
+    child_spec = parent.spec.children.get(child.tag)
+    return child_spec is None or not child_spec.single
+
+
+def _name_of(element: Element) -> str | None:
+    id_attribute = element.spec.id_attribute
+    if id_attribute is None:
+        return None
+    name = _attributes(element).get(id_attribute.name)
+    return name if isinstance(name, str) else None
+
+
+def validate(model: ModelRoot) -> list[Finding]:
+    """Every finding in ``model``, in document order; empty when MuJoCo's rules hold."""
+    state = _Pass(model, model.namespaces)
+    order = 0
+    # (element, parent, the tag of the enclosing worldbody/body/replicate if in the tree)
+    stack: list[tuple[Element, Element | None, str | None]] = [(model, None, None)]
+    while stack:
+        element, parent, owner = stack.pop()
+        order += 1
+        tag = element.spec.tag
+        projection = (parent is not None and parent.spec.namespace == DEFAULT_NAMESPACE
+                      and element.spec.namespace != DEFAULT_NAMESPACE)
+        _check_element(state, order, element, parent, projection)
+        if owner is not None:
+            _check_tree(state, order, element, owner)
+        if tag in _TREE and (owner is not None or parent is model):
+            owner = owner if tag == _TRANSPARENT else tag
+        else:
+            owner = None
+        for child in reversed(_children(element)):
+            if _is_written(element, child):
+                stack.append((child, element, owner))
+    _resolve_pending(state)
+    _check_unused_classes(state)
+    return state.findings()
+
+
+def _check_element(state: _Pass, order: int, element: Element, parent: Element | None,
+                   projection: bool) -> None:
+    spec = element.spec
+    attrs = _attributes(element)
+    plan = state.plan(spec, projection)
+    tag = spec.tag
+    for kind, bundles in plan.constraints:
+        _check_constraint(state, order, element, attrs, kind, bundles)
+    for attribute in plan.required:
+        if attribute.name not in attrs:
+            state.add(order, element, "required-attribute",
+                      f"<{tag}> requires the attribute {attribute.name!r}, which is not set")
+    if plan.required_children:
+        present = {child.tag for child in _children(element) if _is_written(element, child)}
+        for child_tag in plan.required_children:
+            if child_tag not in present:
+                state.add(order, element, "required-child",
+                          f"<{tag}> requires a <{child_tag}> child, which it does not have "
+                          f"(an empty one is not written)")
+    if spec.namespace is not None:
+        _declare(state, order, element, parent, spec, attrs)
+    if plan.references:
+        skipped = _child_model_references(spec, attrs)
+        for attribute in plan.references:
+            value = attrs.get(attribute.name)
+            if value is None or attribute.name in skipped:
+                continue
+            assert attribute.namespace is not None
+            _check_reference(state, order, element, attribute.name, attribute.namespace, value)
+    for type_name, object_name in plan.typed_names:
+        word, name = attrs.get(type_name), attrs.get(object_name)
+        if isinstance(word, str) and isinstance(name, str):
+            namespace = _TYPE_NAMESPACES.get(word.lower(), word.lower())
+            if namespace in state.namespaces:
+                _check_reference(state, order, element, object_name, namespace, name)
+
+
+def _check_tree(state: _Pass, order: int, element: Element, owner: str) -> None:
+    """Rules of the kinematic tree: what the world body and replicates may hold."""
+    tag = element.spec.tag
+    if tag in _JOINTS and owner == "worldbody":
+        state.add(order, element, "world-body",
+                  f"the world body cannot have joints: move the <{tag}> into a <body>")
+    elif tag in _JOINTS and owner == "replicate":
+        state.add(order, element, "replicate-joint",
+                  f"a <{tag}> cannot be a direct child of <replicate> (frames do not count): "
+                  f"wrap it in a <body>")
+    elif tag == _INERTIA and owner == "worldbody":
+        state.add(order, element, "world-body",
+                  "the world body cannot have inertia: move the <inertial> into a <body>")
+    elif tag == _SELF_ATTACH[0]:
+        attrs = _attributes(element)
+        if _SELF_ATTACH[1] not in attrs and not any(a in attrs for a in _SELF_ATTACH[2]):
+            state.add(order, element, "self-attach",
+                      f"an <attach> without {_SELF_ATTACH[1]}= attaches from this model and "
+                      f"needs {' or '.join(a + '=' for a in _SELF_ATTACH[2])}")
+
+
+def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[str, object],
+                      kind: str, bundles: tuple[tuple[str, ...], ...]) -> None:
+    tag = element.spec.tag
+    listing = " | ".join("+".join(bundle) for bundle in bundles)
+    touched = [b for b in bundles if any(name in attrs for name in b)]
+    if kind == "exclusive":
+        if len(touched) > 1:
+            state.add(order, element, "exclusive",
+                      f"<{tag}> may set at most one of {listing}; it sets "
+                      f"{_set_names(touched, attrs)}")
+    elif kind == "together":
+        complete = [b for b in bundles if all(name in attrs for name in b)]
+        if touched and len(complete) < len(bundles):
+            missing = [name for b in bundles for name in b if name not in attrs]
+            state.add(order, element, "together",
+                      f"<{tag}> sets {_set_names(touched, attrs)} but not "
+                      f"{', '.join(missing)}: {listing} go together")
+    elif kind == "requires":
+        first, *needed = bundles
+        if any(name in attrs for name in first):
+            missing = [name for b in needed for name in b if name not in attrs]
+            if missing:
+                state.add(order, element, "requires",
+                          f"<{tag}> sets {'+'.join(first)}, which requires "
+                          f"{', '.join(missing)}")
+    elif kind == "oneof":
+        if not any(all(name in attrs for name in b) for b in bundles):
+            state.add(order, element, "oneof",
+                      f"<{tag}> must set all of at least one of {listing}")
+
+
+def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> str:
+    return ", ".join(name for bundle in bundles for name in bundle if name in attrs)
+
+
+def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
+             spec: ElementSpec, attrs: dict[str, object]) -> None:
+    """Record what the element defines: default classes, implicit names, attach prefixes."""
+    namespace = spec.namespace
+    assert namespace is not None
+    name = _name_of(element)
+    if namespace == DEFAULT_NAMESPACE:
+        top_level = parent is None or parent.spec.namespace != DEFAULT_NAMESPACE
+        if top_level:
+            if name is not None and name != MAIN_CLASS:
+                state.add(order, element, "default-class",
+                          f"the top-level <default> is class {MAIN_CLASS!r}; it cannot be "
+                          f"renamed {name!r} (nest a <default class={name!r}> in it)")
+        elif name is None:
+            state.add(order, element, "default-class",
+                      "a nested <default> needs a class name")
+        else:
+            state.classes[name] = (order, element)
+        return
+    if name is not None:
+        return
+    if namespace in _NAMED_AFTER_FILE:
+        file = attrs.get("file")
+        stem: str | None = None
+        if isinstance(file, str):
+            base = file.replace("\\", "/").rsplit("/", 1)[-1]
+            stem = base.rsplit(".", 1)[0] if "." in base.lstrip(".") else base
+        elif isinstance(file, Asset):
+            stem = file.name or spec.tag  # as the asset writer names in-memory files
+        if stem:
+            state.implicit_names.setdefault(namespace, set()).add(stem)
+    elif namespace in _NAMED_FROM_CONTENTS:
+        state.unverifiable.add(namespace)
+    if spec.tag in _REFERS_INTO_CHILD_MODEL:
+        prefix = attrs.get("prefix")
+        if isinstance(prefix, str):
+            state.prefixes.append(prefix)
+
+
+def _child_model_references(spec: ElementSpec, attrs: dict[str, object]) -> frozenset[str]:
+    fact = _REFERS_INTO_CHILD_MODEL.get(spec.tag)
+    if fact is None or attrs.get(fact[0]) is None:
+        return frozenset()
+    return fact[1]
+
+
+def _check_reference(state: _Pass, order: int, element: Element, attribute: str,
+                     namespace: str, value: object) -> None:
+    model = state.model
+    if isinstance(value, Element):
+        _check_element_reference(state, order, element, attribute, value)
+        name = _name_of(value)
+    elif isinstance(value, str):
+        name = value
+        if (namespace, name) not in _BUILTIN_NAMES and model.find(namespace, name) is None:
+            state.pending.append(_Pending(order, element, attribute, namespace, name))
+    else:
+        return
+    if namespace == DEFAULT_NAMESPACE and name is not None:
+        state.used_classes.add(name)
+
+
+def _check_element_reference(state: _Pass, order: int, element: Element, attribute: str,
+                             target: Element) -> None:
+    if not element_in_model(state.model, target):
+        where = ("was removed from its model" if _root_of(target) is None
+                 else f"is {target.path} of another model")
+        state.add(order, element, "unresolved-reference",
+                  f"{attribute} refers to a <{target.tag}> that {where}")
+    elif _name_of(target) is None:
+        state.add(order, element, "unresolved-reference",
+                  f"{attribute} refers to {target.path}, which has no name")
+
+
+def element_in_model(model: ModelRoot, target: Element) -> bool:
+    """Whether an element-valued reference to ``target`` can be written for ``model``.
+
+    Extension point for attachments: an element of a model attached to ``model`` belongs
+    to it too (its reference is written with the scoped name)."""
+    return _root_of(target) is model
+
+
+def resolve_scoped(model: ModelRoot, namespace: str, name: str) -> bool:
+    """Whether a scoped name ``child/...`` names an element of a model attached to ``model``.
+
+    Extension point for attachments: ``model.find`` resolves scoped names once attached
+    models are part of the namespaces; until then there is nothing else to look in.
+    """
+    return model.find(namespace, name) is not None
+
+
+def _resolve_pending(state: _Pass) -> None:
+    """Resolve the references the namespaces did not: names MuJoCo derives (asset files),
+    names only MuJoCo can see (attached MJCF files), scoped names of attached models."""
+    model = state.model
+    for ref in state.pending:
+        namespace, name = ref.namespace, ref.name
+        if name in state.implicit_names.get(namespace, ()) or namespace in state.unverifiable:
+            continue
+        if any(name.startswith(prefix) for prefix in state.prefixes):
+            continue  # named by an <attach prefix=...> from a model only MuJoCo reads
+        if "/" in name and resolve_scoped(model, namespace, name):
+            continue
+        state.add(ref.order, ref.element, "unresolved-reference",
+                  _unresolved_message(state, ref))
+
+
+def _unresolved_message(state: _Pass, ref: _Pending) -> str:
+    namespace, name = ref.namespace, ref.name
+    identifiers = state.model._identifiers.get(namespace, {})  # pyright: ignore[reportPrivateUsage]
+    known = [*identifiers, *state.implicit_names.get(namespace, ())]
+    hint = did_you_mean(name, known)
+    if namespace == DEFAULT_NAMESPACE:
+        return (f"{ref.attribute}={name!r} names no default class (no <default "
+                f"class={name!r}>){hint}")
+    scoped = " (no attached model provides the scoped name)" if "/" in name else ""
+    return f"{ref.attribute}={name!r} names no {namespace} in the model{scoped}{hint}"
+
+
+def _check_unused_classes(state: _Pass) -> None:
+    """Warn about default classes that no class= or childclass= uses, directly or through a
+    class nested in them."""
+    used: set[str] = set()
+    for name in state.used_classes:
+        entry = state.classes.get(name)
+        element: Element | None = None if entry is None else entry[1]
+        while element is not None and element.spec.namespace == DEFAULT_NAMESPACE:
+            class_name = _name_of(element)
+            if class_name is None or class_name in used:
+                break
+            used.add(class_name)
+            element = element.parent
+    for name, (order, element) in state.classes.items():
+        if name not in used:
+            state.add(order, element, "unused-default",
+                      f"default class {name!r} is defined but no element uses it "
+                      f"(class= or childclass=)", "warning")
