@@ -95,6 +95,7 @@ class ElementDef:
     doc: str = ""
     compose: str | None = None  # top-level sections: how an attached model's section joins
     attachable: bool = False  # a model can be attached here (a body-holder, or a posed element in one)
+    default_row: str | None = None  # the <default> child row holding this element's defaults
 
     def attribute(self, name: str) -> AttributeDef:
         for a in self.attributes:
@@ -167,7 +168,7 @@ def dumps(schema: Schema) -> str:
     for i, (name, el) in enumerate(elem_items):
         lines.append(f"    {_compact(name)}: {{")
         head: dict[str, object] = {"tag": el.tag, "class_name": el.class_name}
-        for key in ("struct", "alias", "projection_of", "anchor", "compose"):
+        for key in ("struct", "alias", "projection_of", "anchor", "compose", "default_row"):
             value = getattr(el, key)
             if value is not None:
                 head[key] = value
@@ -252,6 +253,7 @@ def loads(text: str) -> Schema:
             anchor=cast("str | None", body.get("anchor")),
             doc=cast(str, body.get("doc", "")),
             compose=cast("str | None", body.get("compose")),
+            default_row=cast("str | None", body.get("default_row")),
             attachable=bool(body.get("attachable", False)),
         )
     return Schema(cast(str, raw["mujoco_version"]), cast(str, raw["root"]), enums, elements)

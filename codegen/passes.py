@@ -125,9 +125,26 @@ def finish(schema: ir.Schema, facts: Facts) -> None:
     have added rows)."""
     apply_directories(schema, directories_of(facts))
     rename_classes(schema, _string_table(facts, "class_names"))
+    mark_default_rows(schema, facts.extra.get("default_rows", {}))
     sites = facts.extra.get("attachment_sites", {})
     mark_composition(schema, _string_table(facts, "compose"),
                      cast(dict[str, object], sites).keys() if isinstance(sites, dict) else ())
+
+
+def mark_default_rows(schema: ir.Schema, table: object) -> None:
+    """Point each element row at the <default> child row holding its defaults."""
+    for row in schema.elements.values():
+        if row.projection_of is not None and row.projection_of in schema.elements:
+            schema.elements[row.projection_of].default_row = row.name
+    if not isinstance(table, dict):
+        raise ValueError("schema/facts.toml: [default_rows] must be a table")
+    for default_row, elements in cast(dict[str, object], table).items():
+        _row(schema, default_row, f"[default_rows] {default_row}")
+        if not isinstance(elements, list):
+            raise ValueError(f"schema/facts.toml: [default_rows] {default_row} must be a list")
+        for name in cast(list[object], elements):
+            if isinstance(name, str) and name in schema.elements:
+                schema.elements[name].default_row = default_row
 
 
 def mark_composition(schema: ir.Schema, compose: Mapping[str, str],

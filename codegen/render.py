@@ -109,6 +109,8 @@ def _element_spec(schema: ir.Schema, el: ir.ElementDef) -> str:
         extra += f", compose={el.compose!r}"
     if el.attachable:
         extra += ", attachable=True"
+    if el.default_row is not None:
+        extra += f", defaults_tag={schema.elements[el.default_row].tag!r}"
     lines.append(f"anchor={_quote(el.anchor)}, text={el.doc!r}{extra})")
     return "\n".join(lines)
 

@@ -347,8 +347,11 @@ class RootElement(_ModelRoot):
 
         @property
         def compiler(self) -> Compiler:
-            """The ``<compiler>`` child, created on first use."""
+            """The ``<compiler>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @compiler.deleter
+        def compiler(self) -> None: ...
 
         def add_compiler(self, **kwargs: Unpack[CompilerAttributes]) -> Compiler:
             """Add a ``<compiler>`` child and return it; keyword arguments are its attributes."""
@@ -356,8 +359,11 @@ class RootElement(_ModelRoot):
 
         @property
         def option(self) -> Option:
-            """The ``<option>`` child, created on first use."""
+            """The ``<option>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @option.deleter
+        def option(self) -> None: ...
 
         def add_option(self, **kwargs: Unpack[OptionAttributes]) -> Option:
             """Add a ``<option>`` child and return it; keyword arguments are its attributes."""
@@ -365,8 +371,11 @@ class RootElement(_ModelRoot):
 
         @property
         def size(self) -> Size:
-            """The ``<size>`` child, created on first use."""
+            """The ``<size>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @size.deleter
+        def size(self) -> None: ...
 
         def add_size(self, **kwargs: Unpack[SizeAttributes]) -> Size:
             """Add a ``<size>`` child and return it; keyword arguments are its attributes."""
@@ -374,8 +383,11 @@ class RootElement(_ModelRoot):
 
         @property
         def statistic(self) -> Statistic:
-            """The ``<statistic>`` child, created on first use."""
+            """The ``<statistic>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @statistic.deleter
+        def statistic(self) -> None: ...
 
         def add_statistic(self, **kwargs: Unpack[StatisticAttributes]) -> Statistic:
             """Add a ``<statistic>`` child and return it; keyword arguments are its attributes."""
@@ -383,8 +395,11 @@ class RootElement(_ModelRoot):
 
         @property
         def visual(self) -> Visual:
-            """The ``<visual>`` child, created on first use."""
+            """The ``<visual>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @visual.deleter
+        def visual(self) -> None: ...
 
         def add_visual(self, **kwargs: Unpack[VisualAttributes]) -> Visual:
             """Add a ``<visual>`` child and return it; keyword arguments are its attributes."""
@@ -392,8 +407,11 @@ class RootElement(_ModelRoot):
 
         @property
         def default(self) -> Default:
-            """The ``<default>`` child, created on first use."""
+            """The ``<default>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @default.deleter
+        def default(self) -> None: ...
 
         def add_default(self, **kwargs: Unpack[DefaultAttributes]) -> Default:
             """Add a ``<default>`` child and return it; keyword arguments are its attributes."""
@@ -401,8 +419,11 @@ class RootElement(_ModelRoot):
 
         @property
         def extension(self) -> Extension:
-            """The ``<extension>`` child, created on first use."""
+            """The ``<extension>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @extension.deleter
+        def extension(self) -> None: ...
 
         def add_extension(self, **kwargs: Unpack[ExtensionAttributes]) -> Extension:
             """Add a ``<extension>`` child and return it; keyword arguments are its attributes."""
@@ -410,8 +431,11 @@ class RootElement(_ModelRoot):
 
         @property
         def asset(self) -> AssetSection:
-            """The ``<asset>`` child, created on first use."""
+            """The ``<asset>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @asset.deleter
+        def asset(self) -> None: ...
 
         def add_asset(self, **kwargs: Unpack[AssetSectionAttributes]) -> AssetSection:
             """Add a ``<asset>`` child and return it; keyword arguments are its attributes."""
@@ -419,8 +443,11 @@ class RootElement(_ModelRoot):
 
         @property
         def worldbody(self) -> Worldbody:
-            """The ``<worldbody>`` child, created on first use."""
+            """The ``<worldbody>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @worldbody.deleter
+        def worldbody(self) -> None: ...
 
         def add_worldbody(self, **kwargs: Unpack[WorldbodyAttributes]) -> Worldbody:
             """Add a ``<worldbody>`` child and return it; keyword arguments are its attributes."""
@@ -428,8 +455,11 @@ class RootElement(_ModelRoot):
 
         @property
         def deformable(self) -> Deformable:
-            """The ``<deformable>`` child, created on first use."""
+            """The ``<deformable>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @deformable.deleter
+        def deformable(self) -> None: ...
 
         def add_deformable(self, **kwargs: Unpack[DeformableAttributes]) -> Deformable:
             """Add a ``<deformable>`` child and return it; keyword arguments are its attributes."""
@@ -437,8 +467,11 @@ class RootElement(_ModelRoot):
 
         @property
         def contact(self) -> Contact:
-            """The ``<contact>`` child, created on first use."""
+            """The ``<contact>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @contact.deleter
+        def contact(self) -> None: ...
 
         def add_contact(self, **kwargs: Unpack[ContactAttributes]) -> Contact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
@@ -446,8 +479,11 @@ class RootElement(_ModelRoot):
 
         @property
         def tendon(self) -> Tendon:
-            """The ``<tendon>`` child, created on first use."""
+            """The ``<tendon>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @tendon.deleter
+        def tendon(self) -> None: ...
 
         def add_tendon(self, **kwargs: Unpack[TendonAttributes]) -> Tendon:
             """Add a ``<tendon>`` child and return it; keyword arguments are its attributes."""
@@ -455,8 +491,11 @@ class RootElement(_ModelRoot):
 
         @property
         def equality(self) -> Equality:
-            """The ``<equality>`` child, created on first use."""
+            """The ``<equality>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @equality.deleter
+        def equality(self) -> None: ...
 
         def add_equality(self, **kwargs: Unpack[EqualityAttributes]) -> Equality:
             """Add a ``<equality>`` child and return it; keyword arguments are its attributes."""
@@ -464,8 +503,11 @@ class RootElement(_ModelRoot):
 
         @property
         def actuator(self) -> Actuator:
-            """The ``<actuator>`` child, created on first use."""
+            """The ``<actuator>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @actuator.deleter
+        def actuator(self) -> None: ...
 
         def add_actuator(self, **kwargs: Unpack[ActuatorAttributes]) -> Actuator:
             """Add a ``<actuator>`` child and return it; keyword arguments are its attributes."""
@@ -473,8 +515,11 @@ class RootElement(_ModelRoot):
 
         @property
         def sensor(self) -> Sensor:
-            """The ``<sensor>`` child, created on first use."""
+            """The ``<sensor>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @sensor.deleter
+        def sensor(self) -> None: ...
 
         def add_sensor(self, **kwargs: Unpack[SensorAttributes]) -> Sensor:
             """Add a ``<sensor>`` child and return it; keyword arguments are its attributes."""
@@ -482,8 +527,11 @@ class RootElement(_ModelRoot):
 
         @property
         def custom(self) -> Custom:
-            """The ``<custom>`` child, created on first use."""
+            """The ``<custom>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @custom.deleter
+        def custom(self) -> None: ...
 
         def add_custom(self, **kwargs: Unpack[CustomAttributes]) -> Custom:
             """Add a ``<custom>`` child and return it; keyword arguments are its attributes."""
@@ -491,8 +539,11 @@ class RootElement(_ModelRoot):
 
         @property
         def keyframe(self) -> Keyframe:
-            """The ``<keyframe>`` child, created on first use."""
+            """The ``<keyframe>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @keyframe.deleter
+        def keyframe(self) -> None: ...
 
         def add_keyframe(self, **kwargs: Unpack[KeyframeAttributes]) -> Keyframe:
             """Add a ``<keyframe>`` child and return it; keyword arguments are its attributes."""
@@ -1739,7 +1790,7 @@ class Adhesion(_Element):
         _A('gain', 'gain', 'real', dtype='double', anchor='actuator-adhesion-gain'),
     ), (
     ),
-    anchor='actuator-adhesion', text='')
+    anchor='actuator-adhesion', text='', defaults_tag='adhesion')
 
     if TYPE_CHECKING:
         @property
@@ -2537,8 +2588,11 @@ class Body(_Element):
 
         @property
         def inertial(self) -> Inertial:
-            """The ``<inertial>`` child, created on first use."""
+            """The ``<inertial>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @inertial.deleter
+        def inertial(self) -> None: ...
 
         def add_inertial(self, **kwargs: Unpack[InertialAttributes]) -> Inertial:
             """Add a ``<inertial>`` child and return it; keyword arguments are its attributes."""
@@ -2805,7 +2859,7 @@ class Camera(_Element):
     ), (
     ),
     constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))), ('exclusive', (('fovy',), ('sensorsize',)))),
-    anchor='body-camera', text='')
+    anchor='body-camera', text='', defaults_tag='camera')
 
     if TYPE_CHECKING:
         @property
@@ -3635,8 +3689,11 @@ class Compiler(_Element):
 
         @property
         def lengthrange(self) -> Lengthrange:
-            """The ``<lengthrange>`` child, created on first use."""
+            """The ``<lengthrange>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @lengthrange.deleter
+        def lengthrange(self) -> None: ...
 
         def add_lengthrange(self, **kwargs: Unpack[LengthrangeAttributes]) -> Lengthrange:
             """Add a ``<lengthrange>`` child and return it; keyword arguments are its attributes."""
@@ -3722,7 +3779,7 @@ class Connect(_Element):
     ), (
     ),
     constraints=(('exclusive', (('site1', 'site2'), ('body1', 'body2', 'anchor'))), ('oneof', (('site1', 'site2'), ('body1', 'anchor'))), ('together', (('site1',), ('site2',)))),
-    anchor='equality-connect', text='')
+    anchor='equality-connect', text='', defaults_tag='equality')
 
     if TYPE_CHECKING:
         @property
@@ -4004,7 +4061,7 @@ class Cylinder(_Element):
         _A('bias', 'bias', 'real', dtype='double', arity=(3, 3), anchor='actuator-cylinder-bias'),
     ), (
     ),
-    anchor='actuator-cylinder', text='')
+    anchor='actuator-cylinder', text='', defaults_tag='cylinder')
 
     if TYPE_CHECKING:
         @property
@@ -4349,7 +4406,7 @@ class Damper(_Element):
         _A('kv', 'kv', 'real', dtype='double', anchor='actuator-damper-kv'),
     ), (
     ),
-    anchor='actuator-damper', text='')
+    anchor='actuator-damper', text='', defaults_tag='damper')
 
     if TYPE_CHECKING:
         @property
@@ -4656,7 +4713,7 @@ class Dcmotor(_Element):
         _A('input', 'input', 'flags', keywords=('pos', 'vel', 'ff', 'voltage'), anchor='actuator-dcmotor-input', text='token subset, or the none keyword'),
     ), (
     ),
-    anchor='actuator-dcmotor', text='')
+    anchor='actuator-dcmotor', text='', defaults_tag='dcmotor')
 
     if TYPE_CHECKING:
         @property
@@ -5072,8 +5129,11 @@ class Default(_Element):
 
         @property
         def mesh(self) -> DefaultMesh:
-            """The ``<mesh>`` child, created on first use."""
+            """The ``<mesh>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @mesh.deleter
+        def mesh(self) -> None: ...
 
         def add_mesh(self, **kwargs: Unpack[DefaultMeshAttributes]) -> DefaultMesh:
             """Add a ``<mesh>`` child and return it; keyword arguments are its attributes."""
@@ -5081,8 +5141,11 @@ class Default(_Element):
 
         @property
         def material(self) -> DefaultMaterial:
-            """The ``<material>`` child, created on first use."""
+            """The ``<material>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @material.deleter
+        def material(self) -> None: ...
 
         def add_material(self, **kwargs: Unpack[DefaultMaterialAttributes]) -> DefaultMaterial:
             """Add a ``<material>`` child and return it; keyword arguments are its attributes."""
@@ -5090,8 +5153,11 @@ class Default(_Element):
 
         @property
         def joint(self) -> DefaultJoint:
-            """The ``<joint>`` child, created on first use."""
+            """The ``<joint>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @joint.deleter
+        def joint(self) -> None: ...
 
         def add_joint(self, **kwargs: Unpack[DefaultJointAttributes]) -> DefaultJoint:
             """Add a ``<joint>`` child and return it; keyword arguments are its attributes."""
@@ -5099,8 +5165,11 @@ class Default(_Element):
 
         @property
         def geom(self) -> DefaultGeom:
-            """The ``<geom>`` child, created on first use."""
+            """The ``<geom>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @geom.deleter
+        def geom(self) -> None: ...
 
         def add_geom(self, **kwargs: Unpack[DefaultGeomAttributes]) -> DefaultGeom:
             """Add a ``<geom>`` child and return it; keyword arguments are its attributes."""
@@ -5108,8 +5177,11 @@ class Default(_Element):
 
         @property
         def site(self) -> DefaultSite:
-            """The ``<site>`` child, created on first use."""
+            """The ``<site>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @site.deleter
+        def site(self) -> None: ...
 
         def add_site(self, **kwargs: Unpack[DefaultSiteAttributes]) -> DefaultSite:
             """Add a ``<site>`` child and return it; keyword arguments are its attributes."""
@@ -5117,8 +5189,11 @@ class Default(_Element):
 
         @property
         def camera(self) -> DefaultCamera:
-            """The ``<camera>`` child, created on first use."""
+            """The ``<camera>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @camera.deleter
+        def camera(self) -> None: ...
 
         def add_camera(self, **kwargs: Unpack[DefaultCameraAttributes]) -> DefaultCamera:
             """Add a ``<camera>`` child and return it; keyword arguments are its attributes."""
@@ -5126,8 +5201,11 @@ class Default(_Element):
 
         @property
         def light(self) -> DefaultLight:
-            """The ``<light>`` child, created on first use."""
+            """The ``<light>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @light.deleter
+        def light(self) -> None: ...
 
         def add_light(self, **kwargs: Unpack[DefaultLightAttributes]) -> DefaultLight:
             """Add a ``<light>`` child and return it; keyword arguments are its attributes."""
@@ -5135,8 +5213,11 @@ class Default(_Element):
 
         @property
         def pair(self) -> DefaultPair:
-            """The ``<pair>`` child, created on first use."""
+            """The ``<pair>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @pair.deleter
+        def pair(self) -> None: ...
 
         def add_pair(self, **kwargs: Unpack[DefaultPairAttributes]) -> DefaultPair:
             """Add a ``<pair>`` child and return it; keyword arguments are its attributes."""
@@ -5144,8 +5225,11 @@ class Default(_Element):
 
         @property
         def equality(self) -> DefaultEquality:
-            """The ``<equality>`` child, created on first use."""
+            """The ``<equality>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @equality.deleter
+        def equality(self) -> None: ...
 
         def add_equality(self, **kwargs: Unpack[DefaultEqualityAttributes]) -> DefaultEquality:
             """Add a ``<equality>`` child and return it; keyword arguments are its attributes."""
@@ -5153,8 +5237,11 @@ class Default(_Element):
 
         @property
         def tendon(self) -> DefaultTendon:
-            """The ``<tendon>`` child, created on first use."""
+            """The ``<tendon>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @tendon.deleter
+        def tendon(self) -> None: ...
 
         def add_tendon(self, **kwargs: Unpack[DefaultTendonAttributes]) -> DefaultTendon:
             """Add a ``<tendon>`` child and return it; keyword arguments are its attributes."""
@@ -5162,8 +5249,11 @@ class Default(_Element):
 
         @property
         def general(self) -> DefaultGeneral:
-            """The ``<general>`` child, created on first use."""
+            """The ``<general>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @general.deleter
+        def general(self) -> None: ...
 
         def add_general(self, **kwargs: Unpack[DefaultGeneralAttributes]) -> DefaultGeneral:
             """Add a ``<general>`` child and return it; keyword arguments are its attributes."""
@@ -5171,8 +5261,11 @@ class Default(_Element):
 
         @property
         def motor(self) -> DefaultMotor:
-            """The ``<motor>`` child, created on first use."""
+            """The ``<motor>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @motor.deleter
+        def motor(self) -> None: ...
 
         def add_motor(self, **kwargs: Unpack[DefaultMotorAttributes]) -> DefaultMotor:
             """Add a ``<motor>`` child and return it; keyword arguments are its attributes."""
@@ -5180,8 +5273,11 @@ class Default(_Element):
 
         @property
         def position(self) -> DefaultPosition:
-            """The ``<position>`` child, created on first use."""
+            """The ``<position>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @position.deleter
+        def position(self) -> None: ...
 
         def add_position(self, **kwargs: Unpack[DefaultPositionAttributes]) -> DefaultPosition:
             """Add a ``<position>`` child and return it; keyword arguments are its attributes."""
@@ -5189,8 +5285,11 @@ class Default(_Element):
 
         @property
         def velocity(self) -> DefaultVelocity:
-            """The ``<velocity>`` child, created on first use."""
+            """The ``<velocity>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @velocity.deleter
+        def velocity(self) -> None: ...
 
         def add_velocity(self, **kwargs: Unpack[DefaultVelocityAttributes]) -> DefaultVelocity:
             """Add a ``<velocity>`` child and return it; keyword arguments are its attributes."""
@@ -5198,8 +5297,11 @@ class Default(_Element):
 
         @property
         def intvelocity(self) -> DefaultIntvelocity:
-            """The ``<intvelocity>`` child, created on first use."""
+            """The ``<intvelocity>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @intvelocity.deleter
+        def intvelocity(self) -> None: ...
 
         def add_intvelocity(self, **kwargs: Unpack[DefaultIntvelocityAttributes]) -> DefaultIntvelocity:
             """Add a ``<intvelocity>`` child and return it; keyword arguments are its attributes."""
@@ -5207,8 +5309,11 @@ class Default(_Element):
 
         @property
         def orientation(self) -> DefaultOrientation:
-            """The ``<orientation>`` child, created on first use."""
+            """The ``<orientation>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @orientation.deleter
+        def orientation(self) -> None: ...
 
         def add_orientation(self, **kwargs: Unpack[DefaultOrientationAttributes]) -> DefaultOrientation:
             """Add a ``<orientation>`` child and return it; keyword arguments are its attributes."""
@@ -5216,8 +5321,11 @@ class Default(_Element):
 
         @property
         def pid(self) -> DefaultPid:
-            """The ``<pid>`` child, created on first use."""
+            """The ``<pid>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @pid.deleter
+        def pid(self) -> None: ...
 
         def add_pid(self, **kwargs: Unpack[DefaultPidAttributes]) -> DefaultPid:
             """Add a ``<pid>`` child and return it; keyword arguments are its attributes."""
@@ -5225,8 +5333,11 @@ class Default(_Element):
 
         @property
         def damper(self) -> DefaultDamper:
-            """The ``<damper>`` child, created on first use."""
+            """The ``<damper>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @damper.deleter
+        def damper(self) -> None: ...
 
         def add_damper(self, **kwargs: Unpack[DefaultDamperAttributes]) -> DefaultDamper:
             """Add a ``<damper>`` child and return it; keyword arguments are its attributes."""
@@ -5234,8 +5345,11 @@ class Default(_Element):
 
         @property
         def cylinder(self) -> DefaultCylinder:
-            """The ``<cylinder>`` child, created on first use."""
+            """The ``<cylinder>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @cylinder.deleter
+        def cylinder(self) -> None: ...
 
         def add_cylinder(self, **kwargs: Unpack[DefaultCylinderAttributes]) -> DefaultCylinder:
             """Add a ``<cylinder>`` child and return it; keyword arguments are its attributes."""
@@ -5243,8 +5357,11 @@ class Default(_Element):
 
         @property
         def muscle(self) -> DefaultMuscle:
-            """The ``<muscle>`` child, created on first use."""
+            """The ``<muscle>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @muscle.deleter
+        def muscle(self) -> None: ...
 
         def add_muscle(self, **kwargs: Unpack[DefaultMuscleAttributes]) -> DefaultMuscle:
             """Add a ``<muscle>`` child and return it; keyword arguments are its attributes."""
@@ -5252,8 +5369,11 @@ class Default(_Element):
 
         @property
         def adhesion(self) -> DefaultAdhesion:
-            """The ``<adhesion>`` child, created on first use."""
+            """The ``<adhesion>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @adhesion.deleter
+        def adhesion(self) -> None: ...
 
         def add_adhesion(self, **kwargs: Unpack[DefaultAdhesionAttributes]) -> DefaultAdhesion:
             """Add a ``<adhesion>`` child and return it; keyword arguments are its attributes."""
@@ -5261,8 +5381,11 @@ class Default(_Element):
 
         @property
         def dcmotor(self) -> DefaultDcmotor:
-            """The ``<dcmotor>`` child, created on first use."""
+            """The ``<dcmotor>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @dcmotor.deleter
+        def dcmotor(self) -> None: ...
 
         def add_dcmotor(self, **kwargs: Unpack[DefaultDcmotorAttributes]) -> DefaultDcmotor:
             """Add a ``<dcmotor>`` child and return it; keyword arguments are its attributes."""
@@ -5270,8 +5393,11 @@ class Default(_Element):
 
         @property
         def texture(self) -> DefaultTexture:
-            """The ``<texture>`` child, created on first use."""
+            """The ``<texture>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @texture.deleter
+        def texture(self) -> None: ...
 
         def add_texture(self, **kwargs: Unpack[DefaultTextureAttributes]) -> DefaultTexture:
             """Add a ``<texture>`` child and return it; keyword arguments are its attributes."""
@@ -11265,7 +11391,7 @@ class EqualityFlex(_Element):
         _A('flex', 'flex', 'ref', namespace='flex', required=True, anchor='equality-flex-flex'),
     ), (
     ),
-    anchor='equality-flex', text='')
+    anchor='equality-flex', text='', defaults_tag='equality')
 
     if TYPE_CHECKING:
         @property
@@ -11362,7 +11488,7 @@ class EqualityJoint(_Element):
         _A('polycoef', 'polycoef', 'real', dtype='double', arity=(1, 5), anchor='equality-joint-polycoef'),
     ), (
     ),
-    anchor='equality-joint', text='')
+    anchor='equality-joint', text='', defaults_tag='equality')
 
     if TYPE_CHECKING:
         @property
@@ -11481,7 +11607,7 @@ class EqualityTendon(_Element):
         _A('polycoef', 'polycoef', 'real', dtype='double', arity=(1, 5), anchor='equality-tendon-polycoef'),
     ), (
     ),
-    anchor='equality-tendon', text='')
+    anchor='equality-tendon', text='', defaults_tag='equality')
 
     if TYPE_CHECKING:
         @property
@@ -11761,7 +11887,7 @@ class Fixed(_Element):
     ), (
         _C('joint', 'joint', 'FixedJoint', False, '*'),
     ),
-    anchor='tendon-fixed', text='')
+    anchor='tendon-fixed', text='', defaults_tag='tendon')
 
     if TYPE_CHECKING:
         @property
@@ -12702,8 +12828,11 @@ class Flex(_Element):
 
         @property
         def contact(self) -> FlexcompContact:
-            """The ``<contact>`` child, created on first use."""
+            """The ``<contact>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @contact.deleter
+        def contact(self) -> None: ...
 
         def add_contact(self, **kwargs: Unpack[FlexcompContactAttributes]) -> FlexcompContact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
@@ -12711,8 +12840,11 @@ class Flex(_Element):
 
         @property
         def edge(self) -> FlexEdge:
-            """The ``<edge>`` child, created on first use."""
+            """The ``<edge>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @edge.deleter
+        def edge(self) -> None: ...
 
         def add_edge(self, **kwargs: Unpack[FlexEdgeAttributes]) -> FlexEdge:
             """Add a ``<edge>`` child and return it; keyword arguments are its attributes."""
@@ -12720,8 +12852,11 @@ class Flex(_Element):
 
         @property
         def elasticity(self) -> Elasticity:
-            """The ``<elasticity>`` child, created on first use."""
+            """The ``<elasticity>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @elasticity.deleter
+        def elasticity(self) -> None: ...
 
         def add_elasticity(self, **kwargs: Unpack[ElasticityAttributes]) -> Elasticity:
             """Add a ``<elasticity>`` child and return it; keyword arguments are its attributes."""
@@ -13150,8 +13285,11 @@ class Flexcomp(_Element):
 
         @property
         def edge(self) -> FlexcompEdge:
-            """The ``<edge>`` child, created on first use."""
+            """The ``<edge>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @edge.deleter
+        def edge(self) -> None: ...
 
         def add_edge(self, **kwargs: Unpack[FlexcompEdgeAttributes]) -> FlexcompEdge:
             """Add a ``<edge>`` child and return it; keyword arguments are its attributes."""
@@ -13159,8 +13297,11 @@ class Flexcomp(_Element):
 
         @property
         def elasticity(self) -> Elasticity:
-            """The ``<elasticity>`` child, created on first use."""
+            """The ``<elasticity>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @elasticity.deleter
+        def elasticity(self) -> None: ...
 
         def add_elasticity(self, **kwargs: Unpack[ElasticityAttributes]) -> Elasticity:
             """Add a ``<elasticity>`` child and return it; keyword arguments are its attributes."""
@@ -13168,8 +13309,11 @@ class Flexcomp(_Element):
 
         @property
         def contact(self) -> FlexcompContact:
-            """The ``<contact>`` child, created on first use."""
+            """The ``<contact>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @contact.deleter
+        def contact(self) -> None: ...
 
         def add_contact(self, **kwargs: Unpack[FlexcompContactAttributes]) -> FlexcompContact:
             """Add a ``<contact>`` child and return it; keyword arguments are its attributes."""
@@ -13508,7 +13652,7 @@ class Flexstrain(_Element):
         _A('cell', 'cell', 'real', dtype='double', arity=(3, 3), anchor='equality-flexstrain-cell'),
     ), (
     ),
-    anchor='equality-flexstrain', text='')
+    anchor='equality-flexstrain', text='', defaults_tag='equality')
 
     if TYPE_CHECKING:
         @property
@@ -13919,8 +14063,11 @@ class Frame(_Element):
 
         @property
         def inertial(self) -> Inertial:
-            """The ``<inertial>`` child, created on first use."""
+            """The ``<inertial>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @inertial.deleter
+        def inertial(self) -> None: ...
 
         def add_inertial(self, **kwargs: Unpack[InertialAttributes]) -> Inertial:
             """Add a ``<inertial>`` child and return it; keyword arguments are its attributes."""
@@ -15763,7 +15910,7 @@ class General(_Element):
         _A('actearly', 'actearly', 'bool', anchor='actuator-general-actearly'),
     ), (
     ),
-    anchor='actuator-general', text='')
+    anchor='actuator-general', text='', defaults_tag='general')
 
     if TYPE_CHECKING:
         @property
@@ -16270,7 +16417,7 @@ class Geom(_Element):
         _C('plugin', 'plugin', 'Plugin', False, '*'),
     ),
     constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))),),
-    anchor='body-geom', text='')
+    anchor='body-geom', text='', defaults_tag='geom')
 
     if TYPE_CHECKING:
         @property
@@ -17625,7 +17772,7 @@ class Intvelocity(_Element):
         _A('dampratio', 'dampratio', 'real', dtype='double', anchor='actuator-intvelocity-dampratio'),
     ), (
     ),
-    anchor='actuator-intvelocity', text='')
+    anchor='actuator-intvelocity', text='', defaults_tag='intvelocity')
 
     if TYPE_CHECKING:
         @property
@@ -17996,7 +18143,7 @@ class Joint(_Element):
         _A('springyield', 'springyield', 'real', dtype='double', default='0', anchor='body-joint-springyield'),
     ), (
     ),
-    anchor='body-joint', text='')
+    anchor='body-joint', text='', defaults_tag='joint')
 
     if TYPE_CHECKING:
         @property
@@ -19448,7 +19595,7 @@ class Light(_Element):
     ), (
     ),
     constraints=(('exclusive', (('directional',), ('type',))),),
-    anchor='body-light', text='')
+    anchor='body-light', text='', defaults_tag='light')
 
     if TYPE_CHECKING:
         @property
@@ -20055,7 +20202,7 @@ class Material(_Element):
     ), (
         _C('layer', 'layer', 'Layer', False, '*'),
     ),
-    anchor='asset-material', text='')
+    anchor='asset-material', text='', defaults_tag='material')
 
     if TYPE_CHECKING:
         @property
@@ -20258,7 +20405,7 @@ class Mesh(_Element):
         _C('plugin', 'plugin', 'Plugin', False, '*'),
     ),
     constraints=(('exclusive', (('builtin',), ('file',))), ('exclusive', (('builtin',), ('vertex',)))),
-    anchor='asset-mesh', text='')
+    anchor='asset-mesh', text='', defaults_tag='mesh')
 
     if TYPE_CHECKING:
         @property
@@ -20567,7 +20714,7 @@ class Motor(_Element):
         _A('refsite', 'refsite', 'ref', namespace='site', anchor='actuator-motor-refsite'),
     ), (
     ),
-    anchor='actuator-motor', text='')
+    anchor='actuator-motor', text='', defaults_tag='motor')
 
     if TYPE_CHECKING:
         @property
@@ -20876,7 +21023,7 @@ class Muscle(_Element):
         _A('fvmax', 'fvmax', 'real', dtype='double', anchor='actuator-muscle-fvmax'),
     ), (
     ),
-    anchor='actuator-muscle', text='')
+    anchor='actuator-muscle', text='', defaults_tag='muscle')
 
     if TYPE_CHECKING:
         @property
@@ -21831,8 +21978,11 @@ class Option(_Element):
 
         @property
         def flag(self) -> Flag:
-            """The ``<flag>`` child, created on first use."""
+            """The ``<flag>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @flag.deleter
+        def flag(self) -> None: ...
 
         def add_flag(self, **kwargs: Unpack[FlagAttributes]) -> Flag:
             """Add a ``<flag>`` child and return it; keyword arguments are its attributes."""
@@ -21883,7 +22033,7 @@ class Orientation(_Element):
         _A('input', 'input', 'keyword', keywords=('expmap', 'quat'), anchor='actuator-orientation-input'),
     ), (
     ),
-    anchor='actuator-orientation', text='')
+    anchor='actuator-orientation', text='', defaults_tag='orientation')
 
     if TYPE_CHECKING:
         @property
@@ -22099,7 +22249,7 @@ class Pair(_Element):
         _A('adhesion', 'adhesion', 'real', dtype='double', anchor='contact-pair-adhesion'),
     ), (
     ),
-    anchor='contact-pair', text='')
+    anchor='contact-pair', text='', defaults_tag='pair')
 
     if TYPE_CHECKING:
         @property
@@ -22288,7 +22438,7 @@ class Pid(_Element):
         _A('input', 'input', 'flags', keywords=('pos', 'vel', 'ff', 'voltage'), anchor='actuator-pid-input'),
     ), (
     ),
-    anchor='actuator-pid', text='')
+    anchor='actuator-pid', text='', defaults_tag='pid')
 
     if TYPE_CHECKING:
         @property
@@ -22845,7 +22995,7 @@ class Position(_Element):
         _A('timeconst', 'timeconst', 'real', dtype='double', anchor='actuator-position-timeconst'),
     ), (
     ),
-    anchor='actuator-position', text='')
+    anchor='actuator-position', text='', defaults_tag='position')
 
     if TYPE_CHECKING:
         @property
@@ -23543,8 +23693,11 @@ class Replicate(_Element):
 
         @property
         def inertial(self) -> Inertial:
-            """The ``<inertial>`` child, created on first use."""
+            """The ``<inertial>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @inertial.deleter
+        def inertial(self) -> None: ...
 
         def add_inertial(self, **kwargs: Unpack[InertialAttributes]) -> Inertial:
             """Add a ``<inertial>`` child and return it; keyword arguments are its attributes."""
@@ -25419,7 +25572,7 @@ class Site(_Element):
     ), (
     ),
     constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))),),
-    anchor='body-site', text='', attachable=True)
+    anchor='body-site', text='', attachable=True, defaults_tag='site')
 
     if TYPE_CHECKING:
         @property
@@ -26025,7 +26178,7 @@ class Spatial(_Element):
         _C('geom', 'geom', 'SpatialGeom', False, '*'),
         _C('pulley', 'pulley', 'Pulley', False, '*'),
     ),
-    anchor='tendon-spatial', text='')
+    anchor='tendon-spatial', text='', defaults_tag='tendon')
 
     if TYPE_CHECKING:
         @property
@@ -27880,7 +28033,7 @@ class Texture(_Element):
         _A('embed', 'embed', 'keyword', keywords=('false', 'true', 'auto'), default='auto', anchor='asset-texture-embed'),
     ), (
     ),
-    anchor='asset-texture', text='')
+    anchor='asset-texture', text='', defaults_tag='texture')
 
     if TYPE_CHECKING:
         @property
@@ -28836,7 +28989,7 @@ class Velocity(_Element):
         _A('kv', 'kv', 'real', dtype='double', anchor='actuator-velocity-kv'),
     ), (
     ),
-    anchor='actuator-velocity', text='')
+    anchor='actuator-velocity', text='', defaults_tag='velocity')
 
     if TYPE_CHECKING:
         @property
@@ -29136,8 +29289,11 @@ class Visual(_Element):
     if TYPE_CHECKING:
         @property
         def global_(self) -> Global:
-            """The ``<global>`` child, created on first use."""
+            """The ``<global>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @global_.deleter
+        def global_(self) -> None: ...
 
         def add_global(self, **kwargs: Unpack[GlobalAttributes]) -> Global:
             """Add a ``<global>`` child and return it; keyword arguments are its attributes."""
@@ -29145,8 +29301,11 @@ class Visual(_Element):
 
         @property
         def quality(self) -> Quality:
-            """The ``<quality>`` child, created on first use."""
+            """The ``<quality>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @quality.deleter
+        def quality(self) -> None: ...
 
         def add_quality(self, **kwargs: Unpack[QualityAttributes]) -> Quality:
             """Add a ``<quality>`` child and return it; keyword arguments are its attributes."""
@@ -29154,8 +29313,11 @@ class Visual(_Element):
 
         @property
         def headlight(self) -> Headlight:
-            """The ``<headlight>`` child, created on first use."""
+            """The ``<headlight>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @headlight.deleter
+        def headlight(self) -> None: ...
 
         def add_headlight(self, **kwargs: Unpack[HeadlightAttributes]) -> Headlight:
             """Add a ``<headlight>`` child and return it; keyword arguments are its attributes."""
@@ -29163,8 +29325,11 @@ class Visual(_Element):
 
         @property
         def map(self) -> Map:
-            """The ``<map>`` child, created on first use."""
+            """The ``<map>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @map.deleter
+        def map(self) -> None: ...
 
         def add_map(self, **kwargs: Unpack[MapAttributes]) -> Map:
             """Add a ``<map>`` child and return it; keyword arguments are its attributes."""
@@ -29172,8 +29337,11 @@ class Visual(_Element):
 
         @property
         def scale(self) -> Scale:
-            """The ``<scale>`` child, created on first use."""
+            """The ``<scale>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @scale.deleter
+        def scale(self) -> None: ...
 
         def add_scale(self, **kwargs: Unpack[ScaleAttributes]) -> Scale:
             """Add a ``<scale>`` child and return it; keyword arguments are its attributes."""
@@ -29181,8 +29349,11 @@ class Visual(_Element):
 
         @property
         def rgba(self) -> Rgba:
-            """The ``<rgba>`` child, created on first use."""
+            """The ``<rgba>`` child, created on first use (``del`` removes it)."""
             ...
+
+        @rgba.deleter
+        def rgba(self) -> None: ...
 
         def add_rgba(self, **kwargs: Unpack[RgbaAttributes]) -> Rgba:
             """Add a ``<rgba>`` child and return it; keyword arguments are its attributes."""
@@ -29249,7 +29420,7 @@ class Weld(_Element):
     ), (
     ),
     constraints=(('exclusive', (('site1', 'site2'), ('body1', 'body2', 'anchor', 'relpose'))), ('oneof', (('site1', 'site2'), ('body1',))), ('together', (('site1',), ('site2',)))),
-    anchor='equality-weld', text='')
+    anchor='equality-weld', text='', defaults_tag='equality')
 
     if TYPE_CHECKING:
         @property

@@ -126,7 +126,8 @@ class Element:
             element = element._parent
         if not steps:
             return "<root>" if element is self and self._root is self else f"<{self.tag}>"
-        return "/".join(reversed(steps))
+        scope = self._root.namescope if self._root is not None else ""
+        return scope + "/".join(reversed(steps))
 
     def _step(self) -> str:
         parent = self._parent
@@ -222,6 +223,14 @@ class Element:
                 f"{self.path}: invalid {attribute.py_name}={target!r} on <{self._SPEC.tag}>: "
                 f"expected a named element (give {target.path} a name first)"
             )
+
+    def resolve(self, name: str) -> object:
+        """The value MuJoCo uses for attribute ``name``: set here, else from the default
+        classes that apply (``class``, an ancestor's ``childclass``, the root class), else the
+        grammar's default; ``None`` where MuJoCo computes it (e.g. from other attributes)."""
+        from typed_mjcf._defaults import resolve
+
+        return resolve(self, name)
 
     def get_attributes(self) -> dict[str, object]:
         """The attributes that are set, by Python name, in grammar order."""
@@ -379,6 +388,59 @@ class Element:
             object.__setattr__(element, "_root", None)
         object.__setattr__(self, "_parent", None)
 
+    def add_copy(self, element: E, position: int | None = None) -> E:
+        """Add a deep copy of ``element`` (from this model or another) as a child; return it.
+
+        References inside the copied subtree point into the copy; references to elements
+        outside it are kept by name, to resolve in this model. Names must be free here.
+        """
+        child_spec = self._child_spec(element.tag)
+        if type(element).__name__ != child_spec.class_name:
+            raise ChildError(f"{self.path}: a {type(element).__name__} cannot be a child of "
+                             f"<{self._SPEC.tag}> (its <{element.tag}> children are "
+                             f"{child_spec.class_name})")
+        if child_spec.single and self._single_child(element.tag) is not None:
+            raise ChildError(f"{self.path}: <{self._SPEC.tag}> already has a <{element.tag}>")
+        memo: dict[int, object] = {}
+        clone = element._clone_tree(self, self._root, memo)
+        clone._remap_references(memo)
+        root = self._root
+        for copied in clone.iter_elements():
+            attrs = copied._attrs
+            for key, value in attrs.items():
+                if isinstance(value, Element) and value._root is not root:
+                    name = value._attrs.get(value._SPEC.id_attribute.name) if (
+                        value._SPEC.id_attribute) else None
+                    attrs[key] = name  # kept by name: it must resolve in this model
+            id_attribute = copied._SPEC.id_attribute
+            name = None if id_attribute is None else attrs.get(id_attribute.name)
+            if root is not None and id_attribute is not None and isinstance(name, str):
+                assert id_attribute.namespace is not None
+                holder = root._lookup_identifier(id_attribute.namespace, name)  # pyright: ignore[reportPrivateUsage]
+                if holder is not None:
+                    raise DuplicateIdentifierError(
+                        f"{self.path}: cannot add a copy of {element.path}: its "
+                        f"{id_attribute.namespace} name {name!r} is taken by {holder.path}")
+        if root is not None:
+            for copied in clone.iter_elements():
+                attached = copied._attached
+                if attached is not None:
+                    from typed_mjcf._compose import scope_name
+
+                    scope = scope_name(attached)
+                    if scope in root._scopes:  # pyright: ignore[reportPrivateUsage]
+                        raise ChildError(f"{self.path}: the copy holds an attached model named "
+                                         f"{scope!r}, and one of that name is attached here")
+                    root._scopes[scope] = attached  # pyright: ignore[reportPrivateUsage]
+            for copied in clone.iter_elements():
+                id_attribute = copied._SPEC.id_attribute
+                name = None if id_attribute is None else copied._attrs.get(id_attribute.name)
+                if id_attribute is not None and isinstance(name, str):
+                    assert id_attribute.namespace is not None
+                    root._remember_identifier(id_attribute.namespace, name, copied)  # pyright: ignore[reportPrivateUsage]
+        self._place(clone, child_spec, position)
+        return clone
+
     # ------------------------------------------------------------------ composition
 
     def attach_model(self, model: ModelRoot) -> Element:
@@ -484,6 +546,11 @@ class SingleChild:
     def __set__(self, obj: Element, value: object) -> None:
         raise ChildError(f"{obj.path}: {self.child.py_name} is a child element; "
                          f"set its attributes instead")
+
+    def __delete__(self, obj: Element) -> None:
+        existing = obj._single_child(self.child.tag)  # pyright: ignore[reportPrivateUsage]
+        if existing is not None:
+            existing.remove()
 
 
 class ChildList:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import functools
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from typing import TYPE_CHECKING, Self
 
 from typed_mjcf._element import Element
@@ -126,10 +126,36 @@ class ModelRoot(Element):
         return "".join(p + "/" for p in reversed(parts))
 
     def find_all(self, namespace: str) -> Sequence[Element]:
-        """Every element of ``namespace`` (named or not), in document order."""
+        """Every element of ``namespace`` (named or not), attached models' included, in the
+        order the exported XML has them."""
         self._check_namespace(namespace)
-        return [e for e in self.iter_elements()
+        return [e for e in self.iter_exported()
                 if e._SPEC.namespace == namespace and e is not self]  # pyright: ignore[reportPrivateUsage]
+
+    def iter_exported(self) -> Iterator[Element]:
+        """Every element of the composed model, in the order the exported XML has them:
+        attached models' bodies inside their frames, their other sections after ours."""
+        pending: list[ModelRoot] = []
+
+        def walk(element: Element, include_self: bool = True) -> Iterator[Element]:
+            if include_self:
+                yield element
+            for child in element._children:  # pyright: ignore[reportPrivateUsage]
+                yield from walk(child)
+            attached = element._attached  # pyright: ignore[reportPrivateUsage]
+            if attached is not None:
+                for section in attached._children:  # pyright: ignore[reportPrivateUsage]
+                    if "body" in section._SPEC.children:  # pyright: ignore[reportPrivateUsage]
+                        for child in section._children:  # pyright: ignore[reportPrivateUsage]
+                            yield from walk(child)
+                pending.append(attached)
+
+        yield from walk(self)
+        while pending:
+            model = pending.pop(0)
+            for section in model._children:  # pyright: ignore[reportPrivateUsage]
+                if "body" not in section._SPEC.children:  # pyright: ignore[reportPrivateUsage]
+                    yield from walk(section, include_self=False)
 
     # ------------------------------------------------------------------ copies
 

@@ -116,7 +116,7 @@ class ElementSpec:
 
     __slots__ = (
         "tag", "name", "attributes", "by_key", "by_name", "children", "id_attribute", "namespace",
-        "constraints", "anchor", "text", "compose", "attachable",
+        "constraints", "anchor", "text", "compose", "attachable", "defaults_tag",
     )
 
     def __init__(
@@ -131,11 +131,13 @@ class ElementSpec:
         text: str = "",
         compose: str | None = None,
         attachable: bool = False,
+        defaults_tag: str | None = None,
     ) -> None:
         self.tag = tag
         self.name = name
         self.compose = compose  # top-level sections: how an attached model's section joins
         self.attachable = attachable  # a model can be attached here
+        self.defaults_tag = defaults_tag  # the child of a <default> class holding our defaults
         self.attributes = tuple(attributes)
         self.by_key: dict[str, AttributeSpec] = {}
         self.by_name = {a.name: a for a in self.attributes}

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from typing import Final, Literal
 
 from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._export import _is_empty_single  # pyright: ignore[reportPrivateUsage]
 from typed_mjcf._root import ModelRoot
 from typed_mjcf._spec import AttributeSpec, ElementSpec
 from typed_mjcf.assets import Asset
@@ -232,11 +233,9 @@ def _root_of(element: Element) -> ModelRoot | None:
 
 
 def _is_written(parent: Element, child: Element) -> bool:
-    """Whether the exporter writes ``child`` (an empty once-only section is left out)."""
-    if _attributes(child) or _children(child):
-        return True
-    child_spec = parent.spec.children.get(child.tag)
-    return child_spec is None or not child_spec.single
+    """Whether the exporter writes ``child`` (an empty once-only section is left out): only
+    what MuJoCo reads is checked."""
+    return not _is_empty_single(parent, child)
 
 
 def _name_of(element: Element) -> str | None:
