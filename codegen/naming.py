@@ -8,7 +8,8 @@ import keyword
 RESERVED = frozenset({
     "add", "insert", "remove", "parent", "root", "tag", "get_children", "find", "find_all",
     "get_attributes", "set_attributes", "to_xml", "to_xml_string", "compile", "to_spec",
-    "get_assets", "validate", "path", "spec", "namescope", "full_identifier",
+    "get_assets", "validate", "path", "spec", "namescope", "full_identifier", "paste",
+    "resolve", "attach_model", "detach", "iter_elements", "attached_model",
 })
 
 

@@ -154,17 +154,19 @@ class Element:
 
     # ------------------------------------------------------------------ attributes
 
-    def __getattr__(self, name: str) -> NoReturn:
-        # Only reached when normal lookup fails: an attribute the grammar doesn't have.
-        if name.startswith("__"):
-            raise AttributeError(name)
-        raise self._unknown_attribute(name)
+    if not TYPE_CHECKING:  # run time only: checkers should see unknown attributes as errors
 
-    def __setattr__(self, name: str, value: object) -> None:
-        try:
-            object.__setattr__(self, name, value)
-        except AttributeError:
-            raise self._unknown_attribute(name) from None
+        def __getattr__(self, name: str) -> NoReturn:
+            # Only reached when normal lookup fails: an attribute the grammar doesn't have.
+            if name.startswith("__"):
+                raise AttributeError(name)
+            raise self._unknown_attribute(name)
+
+        def __setattr__(self, name: str, value: object) -> None:
+            try:
+                object.__setattr__(self, name, value)
+            except AttributeError:
+                raise self._unknown_attribute(name) from None
 
     def _unknown_attribute(self, name: str) -> UnknownAttributeError:
         spec = self._SPEC
@@ -388,7 +390,7 @@ class Element:
             object.__setattr__(element, "_root", None)
         object.__setattr__(self, "_parent", None)
 
-    def add_copy(self, element: E, position: int | None = None) -> E:
+    def paste(self, element: E, position: int | None = None) -> E:
         """Add a deep copy of ``element`` (from this model or another) as a child; return it.
 
         References inside the copied subtree point into the copy; references to elements

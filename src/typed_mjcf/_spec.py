@@ -27,6 +27,24 @@ class AttributeSpec:
         "default", "required", "pattern", "directory", "anchor", "text", "convert", "index",
     )
 
+    name: str
+    py_name: str
+    kind: Kind
+    dtype: str | None
+    lo: int
+    hi: int | None
+    is_array: bool
+    keywords: tuple[str, ...]
+    namespace: str | None
+    default: str | None
+    required: bool
+    pattern: str | None
+    directory: tuple[str, ...]
+    anchor: str | None
+    text: str
+    convert: Converter
+    index: int
+
     def __init__(
         self,
         name: str,
@@ -46,10 +64,11 @@ class AttributeSpec:
     ) -> None:
         self.name = name
         self.py_name = py_name
-        self.kind: Kind = kind
+        self.kind = kind
         self.dtype = dtype
         self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
         self.lo, self.hi = arity if arity is not None else (1, 1)
+
         self.keywords = tuple(keywords)
         self.namespace = namespace
         self.default = default
@@ -102,6 +121,13 @@ class ChildSpec:
 
     __slots__ = ("tag", "py_name", "class_name", "single", "card", "index")
 
+    tag: str
+    py_name: str
+    class_name: str
+    single: bool
+    card: str
+    index: int
+
     def __init__(self, tag: str, py_name: str, class_name: str, single: bool, card: str) -> None:
         self.tag = tag
         self.py_name = py_name
@@ -118,6 +144,20 @@ class ElementSpec:
         "tag", "name", "attributes", "by_key", "by_name", "children", "id_attribute", "namespace",
         "constraints", "anchor", "text", "compose", "attachable", "defaults_tag",
     )
+
+    tag: str
+    name: str
+    attributes: tuple[AttributeSpec, ...]
+    by_key: dict[str, AttributeSpec]
+    by_name: dict[str, AttributeSpec]
+    children: dict[str, ChildSpec]
+    namespace: str | None
+    constraints: tuple[tuple[str, tuple[tuple[str, ...], ...]], ...]
+    anchor: str | None
+    text: str
+    compose: str | None
+    attachable: bool
+    defaults_tag: str | None
 
     def __init__(
         self,
@@ -139,8 +179,9 @@ class ElementSpec:
         self.attachable = attachable  # a model can be attached here
         self.defaults_tag = defaults_tag  # the child of a <default> class holding our defaults
         self.attributes = tuple(attributes)
-        self.by_key: dict[str, AttributeSpec] = {}
+        self.by_key = {}
         self.by_name = {a.name: a for a in self.attributes}
+        # annotated here: at class level mypy would read an AttributeSpec as a descriptor
         self.id_attribute: AttributeSpec | None = None
         for i, a in enumerate(self.attributes):
             a.index = i
@@ -151,7 +192,7 @@ class ElementSpec:
         if "class" in self.by_key:
             self.by_key.setdefault("dclass", self.by_key["class"])  # dm_control's spelling
         self.namespace = self.id_attribute.namespace if self.id_attribute else None
-        self.children: dict[str, ChildSpec] = {}
+        self.children = {}
         for i, c in enumerate(children):
             c.index = i
             self.children[c.tag] = c

@@ -15,6 +15,11 @@ class Asset:
 
     __slots__ = ("contents", "extension", "name", "digest")
 
+    contents: bytes
+    extension: str
+    name: str | None
+    digest: str  # SHA-1 of the contents
+
     def __init__(self, contents: bytes | str, extension: str, name: str | None = None) -> None:
         if isinstance(contents, str):
             contents = contents.encode("utf-8")

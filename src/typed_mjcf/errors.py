@@ -34,6 +34,9 @@ class DuplicateIdentifierError(InvalidValueError):
 class ParseError(MjcfError, ValueError):
     """MJCF text that cannot be read: malformed XML or something the grammar forbids."""
 
+    source: str | None  # the file (or description) the text came from
+    line: int | None
+
     def __init__(self, message: str, source: str | None = None, line: int | None = None) -> None:
         self.source = source
         self.line = line

@@ -181,15 +181,15 @@ def test_a_subtree_can_be_copied_into_another_model() -> None:
     target = mjcf.RootElement(model="target")
     link = source.find("body", "link1")
     assert link is not None
-    copied = target.worldbody.add_copy(link)
+    copied = target.worldbody.paste(link)
     assert isinstance(copied, mjcf.Body)
     assert target.find("joint", "joint2") is copied.body[0].joint[0]
     copied.name = "renamed"
     assert source.find("body", "link1") is link  # the source is untouched
     with pytest.raises(mjcf.DuplicateIdentifierError):
-        target.worldbody.add_copy(link.body[0])  # its names are taken now
+        target.worldbody.paste(link.body[0])  # its names are taken now
     with pytest.raises(mjcf.ChildError):
-        target.actuator.add_copy(link)
+        target.actuator.paste(link)
 
 
 @pytest.mark.parametrize("attribute", ["damping", "armature", "axis"])
