@@ -203,6 +203,7 @@ def array_converter(spec: AttributeSpec) -> Converter:
     is_int = spec.kind == "int"
     dtype = DTYPES[spec.dtype or ("int" if is_int else "double")]
     noun = "integers" if is_int else "numbers"
+    plain_types = frozenset({int}) if is_int else frozenset({int, float})
     expected = f"{_count_text(lo, hi)} {noun}"
 
     def from_text(text: str) -> AnyArray:
@@ -226,6 +227,14 @@ def array_converter(spec: AttributeSpec) -> Converter:
         return array
 
     def to_array(value: object) -> AnyArray:
+        kind = type(value)
+        if kind is tuple or kind is list:  # the common case: plain Python numbers
+            items = cast("tuple[object, ...] | list[object]", value)
+            if set(map(type, items)) <= plain_types:
+                try:
+                    return np.array(items, dtype=dtype)
+                except OverflowError:
+                    raise Rejected(f"{expected} that fit in 32 bits") from None
         if isinstance(value, str):
             return from_text(value)
         if isinstance(value, np.ndarray):

@@ -237,7 +237,10 @@ class Element:
     def get_attributes(self) -> dict[str, object]:
         """The attributes that are set, by Python name, in grammar order."""
         attrs = self._attrs
-        return {a.py_name: attrs[a.name] for a in self._SPEC.attributes if a.name in attrs}
+        spec = self._SPEC
+        by_name = spec.by_name
+        return {by_name[name].py_name: attrs[name]
+                for name in sorted(attrs, key=spec.order.__getitem__)}
 
     def set_attributes(self, **kwargs: object) -> None:
         """Set several attributes at once; if any is refused, none is changed."""
@@ -324,7 +327,10 @@ class Element:
             raise ChildError(
                 f"{self.path}: <{self._SPEC.tag}> already has a <{tag}> (it may appear once)"
             )
-        child = _REGISTRY[child_spec.class_name]._blank(self, self._root)
+        cls = child_spec.cls
+        if cls is None:
+            cls = child_spec.cls = _REGISTRY[child_spec.class_name]
+        child = cls._blank(self, self._root)
         child._init_attributes(kwargs)
         self._place(child, child_spec, position)
         return child

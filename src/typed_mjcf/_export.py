@@ -24,6 +24,12 @@ def _shortest_double(x: float) -> str:
     return text[:-2] if text.endswith(".0") else text
 
 
+def _shortest_doubles(values: list[float]) -> str:
+    """Space-separated shortest forms: one C-level join, then drop each trailing ".0"."""
+    text = " ".join(map(repr, values)).replace(".0 ", " ")
+    return text[:-2] if text.endswith(".0") else text
+
+
 def _shortest_float32(x: np.float32) -> str:
     text = str(x)
     return text[:-2] if text.endswith(".0") else text
@@ -53,16 +59,16 @@ class Formatter:
         if self.precision is None and not self.zero_threshold:
             if attribute.dtype == "float":
                 return " ".join(_shortest_float32(x) for x in value)  # pyright: ignore[reportArgumentType]
-            return " ".join(map(_shortest_double, value.tolist()))
+            return _shortest_doubles(value.tolist())
         return " ".join(map(self.number, value.tolist()))
 
     def value(self, element: Element, attribute: AttributeSpec, value: object) -> str:
         kind = attribute.kind
         if kind == "file" and self.file_namer is not None:
             return self.file_namer(element, attribute, value)
-        if isinstance(value, str):
+        if type(value) is str:
             return value
-        if isinstance(value, np.ndarray):
+        if type(value) is np.ndarray:
             return self.array(attribute, value)  # pyright: ignore[reportUnknownArgumentType]
         if kind == "real":
             assert isinstance(value, float)
@@ -88,7 +94,7 @@ def reference_name(element: Element, attribute: AttributeSpec, target: Element,
                    same_model: bool = True) -> str:
     """The name a reference to ``target`` is written with (unscoped)."""
     id_attribute = target.spec.id_attribute
-    name = None if id_attribute is None else target.get_attributes().get(id_attribute.py_name)
+    name = None if id_attribute is None else target._attrs.get(id_attribute.name)  # pyright: ignore[reportPrivateUsage]
     if not isinstance(name, str):
         raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
                           f"which has no name")
@@ -122,6 +128,9 @@ class Writer:
         self.formatter = formatter
         self.top = top
         self.keyframes = keyframes  # False: leave keyframes out (to learn the composed layout)
+        root = top._root  # pyright: ignore[reportPrivateUsage]
+        # which model each joint/actuator/mocap body came from: only composed models need it
+        self.tracking = root is not None and bool(root._scopes)  # pyright: ignore[reportPrivateUsage]
         self.pending: list[tuple[ModelRoot, str]] = []  # attached models whose sections follow
         self.joint_owners: list[ModelRoot] = []  # the model of each joint, in document order
         self.actuator_owners: list[ModelRoot] = []
@@ -138,27 +147,25 @@ class Writer:
         skip = formatter.skip_attributes
         if skip and any(name in skip for name in attrs):
             attrs = {k: v for k, v in attrs.items() if k not in skip}
-        if not prefix and len(attrs) == 1:
-            key, value = next(iter(attrs.items()))
-            attribute = spec.by_key[key]
-            if not isinstance(value, Element):
-                return {key: formatter.value(element, attribute, value)}
+        by_name = spec.by_name
+        # grammar order: sort the few attributes set rather than scan every attribute there is
+        names = sorted(attrs, key=spec.order.__getitem__) if len(attrs) > 1 else list(attrs)
         attrib: dict[str, str] = {}
-        for attribute in spec.attributes:
-            value = attrs.get(attribute.name)
-            if value is None:
-                continue
+        value_text = formatter.value
+        for name in names:
+            value = attrs[name]
+            attribute = by_name[name]
             if isinstance(value, Element):
-                attrib[attribute.name] = self.reference(element, attribute, value)
+                attrib[name] = self.reference(element, attribute, value)
             elif prefix and isinstance(value, str) and attribute.kind in ("id", "ref"):
                 scoped = prefix if value == MAIN_CLASS and attribute.namespace == "default" else (
                     prefix + value)
-                attrib[attribute.name] = scoped
+                attrib[name] = scoped
             elif prefix and model is not None and attribute.kind == "file" and isinstance(
                     value, str) and formatter.file_namer is None:
-                attrib[attribute.name] = _absolute_file(model, attribute, value)
+                attrib[name] = _absolute_file(model, attribute, value)
             else:
-                attrib[attribute.name] = formatter.value(element, attribute, value)
+                attrib[name] = value_text(element, attribute, value)
         return attrib
 
     def reference(self, element: Element, attribute: AttributeSpec, target: Element) -> str:
@@ -187,9 +194,10 @@ class Writer:
             node = etree.Element(spec.tag, attrib)
         else:
             node = etree.SubElement(parent, spec.tag, attrib)
-        namespace = spec.namespace
-        if namespace is not None and namespace in _TRACKED:
-            self._track(namespace, element, model)
+        if self.tracking:
+            namespace = spec.namespace
+            if namespace is not None and namespace in _TRACKED:
+                self._track(namespace, element, model)
         for child in element._children:  # pyright: ignore[reportPrivateUsage]
             if not _is_empty_single(element, child) and (
                     self.keyframes or child.spec.compose != "keyframes"):

@@ -119,7 +119,7 @@ class AttributeSpec:
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once."""
 
-    __slots__ = ("tag", "py_name", "class_name", "single", "card", "index")
+    __slots__ = ("tag", "py_name", "class_name", "single", "card", "index", "cls")
 
     tag: str
     py_name: str
@@ -127,6 +127,7 @@ class ChildSpec:
     single: bool
     card: str
     index: int
+    cls: type[Element] | None  # the generated class, resolved on first use
 
     def __init__(self, tag: str, py_name: str, class_name: str, single: bool, card: str) -> None:
         self.tag = tag
@@ -135,6 +136,7 @@ class ChildSpec:
         self.single = single
         self.card = card
         self.index = 0
+        self.cls = None
 
 
 class ElementSpec:
@@ -142,7 +144,7 @@ class ElementSpec:
 
     __slots__ = (
         "tag", "name", "attributes", "by_key", "by_name", "children", "id_attribute", "namespace",
-        "constraints", "anchor", "text", "compose", "attachable", "defaults_tag",
+        "constraints", "anchor", "text", "compose", "attachable", "defaults_tag", "order",
     )
 
     tag: str
@@ -158,6 +160,7 @@ class ElementSpec:
     compose: str | None
     attachable: bool
     defaults_tag: str | None
+    order: dict[str, int]  # XML attribute name -> grammar position
 
     def __init__(
         self,
@@ -181,6 +184,7 @@ class ElementSpec:
         self.attributes = tuple(attributes)
         self.by_key = {}
         self.by_name = {a.name: a for a in self.attributes}
+        self.order = {a.name: i for i, a in enumerate(self.attributes)}
         # annotated here: at class level mypy would read an AttributeSpec as a descriptor
         self.id_attribute: AttributeSpec | None = None
         for i, a in enumerate(self.attributes):
