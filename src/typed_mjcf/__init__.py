@@ -27,6 +27,7 @@ from typed_mjcf.errors import (
 from typed_mjcf_generated import elements as _elements
 from typed_mjcf_generated.elements import *  # noqa: F403
 from typed_mjcf.io import (
+    ParseLimits,
     export_with_assets,
     from_file,
     from_path,
@@ -46,6 +47,7 @@ __all__ = [
     "MjcfError",
     "ModelRoot",
     "ParseError",
+    "ParseLimits",
     "UnknownAttributeError",
     "export_with_assets",
     "from_file",

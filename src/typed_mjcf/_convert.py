@@ -208,6 +208,8 @@ def array_converter(spec: AttributeSpec) -> Converter:
 
     def from_text(text: str) -> AnyArray:
         parts = text.split()
+        if hi is not None and len(parts) > hi:  # refuse before converting millions of numbers
+            raise Rejected(f"{expected}, got {len(parts)}")
         if is_int:
             return np.array([_to_int(p) for p in parts], dtype=dtype)
         if dtype is np.float32:

@@ -31,6 +31,8 @@ if TYPE_CHECKING:
     from typed_mjcf._root import ModelRoot
 
 _REGISTRY: dict[str, type[Element]] = {}
+_new_object = object.__new__
+_set_slot = object.__setattr__  # elements' own __setattr__ validates; their slots bypass it
 E = TypeVar("E", bound="Element")
 
 
@@ -322,17 +324,34 @@ class Element:
         return child_spec
 
     def _add_child(self, tag: str, position: int | None, kwargs: Mapping[str, object]) -> Element:
-        child_spec = self._child_spec(tag)
-        if child_spec.single and self._single_child(tag) is not None:
-            raise ChildError(
-                f"{self.path}: <{self._SPEC.tag}> already has a <{tag}> (it may appear once)"
-            )
+        child_spec = self._SPEC.children.get(tag)
+        if child_spec is None:
+            child_spec = self._child_spec(tag)  # raises, with a suggestion
         cls = child_spec.cls
         if cls is None:
             cls = child_spec.cls = _REGISTRY[child_spec.class_name]
-        child = cls._blank(self, self._root)
-        child._init_attributes(kwargs)
-        self._place(child, child_spec, position)
+        if child_spec.single:
+            if self._single_child(tag) is not None:
+                raise ChildError(
+                    f"{self.path}: <{self._SPEC.tag}> already has a <{tag}> (it may appear once)")
+            child = cls._blank(self, self._root)
+            child._init_attributes(kwargs)
+            self._place(child, child_spec, position)
+            return child
+        # the hot path (a repeated child), with _blank inlined
+        child = _new_object(cls)
+        _set_slot(child, "_attrs", {})
+        _set_slot(child, "_children", [])
+        _set_slot(child, "_parent", self)
+        _set_slot(child, "_root", self._root)
+        _set_slot(child, "_singles", None)
+        _set_slot(child, "_attached", None)
+        if kwargs:
+            child._init_attributes(kwargs)
+        if position is None:
+            self._children.append(child)
+        else:
+            self._children.insert(position, child)
         return child
 
     def _place(self, child: Element, child_spec: ChildSpec, position: int | None) -> None:

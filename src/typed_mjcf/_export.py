@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from typing import TypeAlias
+from typing import TypeAlias, cast
 
 import numpy as np
 from lxml import etree
@@ -12,6 +12,7 @@ from typed_mjcf._compose import MAIN_CLASS, scope_name
 from typed_mjcf._element import Element
 from typed_mjcf._root import ModelRoot
 from typed_mjcf._spec import AttributeSpec
+from typed_mjcf._xmltext import Node, serialize
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
@@ -105,10 +106,14 @@ def reference_name(element: Element, attribute: AttributeSpec, target: Element,
 
 
 def _is_empty_single(parent: Element, child: Element) -> bool:
-    if child._attrs or child._children:  # pyright: ignore[reportPrivateUsage]
+    """A once-only child with nothing to say: no attributes, no attached model, and only
+    children like itself. Such sections are not written (reading them gives nothing back)."""
+    if child._attrs or child._attached is not None:  # pyright: ignore[reportPrivateUsage]
         return False
-    child_spec = parent.spec.children.get(child.tag)
-    return child_spec is not None and child_spec.single
+    child_spec = parent._SPEC.children.get(child._SPEC.tag)  # pyright: ignore[reportPrivateUsage]
+    if child_spec is None or not child_spec.single:
+        return False
+    return all(_is_empty_single(child, grandchild) for grandchild in child._children)  # pyright: ignore[reportPrivateUsage]
 
 
 def iter_written(element: Element) -> Iterator[Element]:
@@ -128,6 +133,10 @@ class Writer:
         self.formatter = formatter
         self.top = top
         self.keyframes = keyframes  # False: leave keyframes out (to learn the composed layout)
+        self.skip = formatter.skip_attributes
+        # plain output: no precision, threshold or renamed files, so values format inline
+        self.plain = (formatter.precision is None and not formatter.zero_threshold
+                      and formatter.file_namer is None)
         root = top._root  # pyright: ignore[reportPrivateUsage]
         # which model each joint/actuator/mocap body came from: only composed models need it
         self.tracking = root is not None and bool(root._scopes)  # pyright: ignore[reportPrivateUsage]
@@ -140,33 +149,43 @@ class Writer:
 
     def attributes(self, element: Element, prefix: str, model: ModelRoot | None) -> dict[str, str]:
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-        if not attrs:
-            return {}
-        spec = element.spec
-        formatter = self.formatter
-        skip = formatter.skip_attributes
-        if skip and any(name in skip for name in attrs):
-            attrs = {k: v for k, v in attrs.items() if k not in skip}
-        by_name = spec.by_name
+        spec = element._SPEC  # pyright: ignore[reportPrivateUsage]
+        if self.skip and any(name in self.skip for name in attrs):
+            attrs = {k: v for k, v in attrs.items() if k not in self.skip}
         # grammar order: sort the few attributes set rather than scan every attribute there is
-        names = sorted(attrs, key=spec.order.__getitem__) if len(attrs) > 1 else list(attrs)
+        names = sorted(attrs, key=spec.order.__getitem__) if len(attrs) > 1 else attrs
+        by_name = spec.by_name
+        plain = self.plain and not prefix
         attrib: dict[str, str] = {}
-        value_text = formatter.value
         for name in names:
             value = attrs[name]
-            attribute = by_name[name]
-            if isinstance(value, Element):
-                attrib[name] = self.reference(element, attribute, value)
-            elif prefix and isinstance(value, str) and attribute.kind in ("id", "ref"):
-                scoped = prefix if value == MAIN_CLASS and attribute.namespace == "default" else (
-                    prefix + value)
-                attrib[name] = scoped
-            elif prefix and model is not None and attribute.kind == "file" and isinstance(
-                    value, str) and formatter.file_namer is None:
-                attrib[name] = _absolute_file(model, attribute, value)
-            else:
-                attrib[name] = value_text(element, attribute, value)
+            if plain:  # the common cases, formatted inline
+                if type(value) is str:
+                    attrib[name] = value
+                    continue
+                if type(value) is float:
+                    text = repr(value)
+                    attrib[name] = text[:-2] if text.endswith(".0") else text
+                    continue
+                if type(value) is np.ndarray and by_name[name].dtype == "double":
+                    doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
+                    attrib[name] = _shortest_doubles(doubles.tolist())
+                    continue
+            attrib[name] = self.general(element, by_name[name], value, prefix, model)
         return attrib
+
+    def general(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
+                model: ModelRoot | None) -> str:
+        if isinstance(value, Element):
+            return self.reference(element, attribute, value)
+        if prefix and isinstance(value, str) and attribute.kind in ("id", "ref"):
+            if value == MAIN_CLASS and attribute.namespace == "default":
+                return prefix
+            return prefix + value
+        if prefix and model is not None and attribute.kind == "file" and isinstance(
+                value, str) and self.formatter.file_namer is None:
+            return _absolute_file(model, attribute, value)
+        return self.formatter.value(element, attribute, value)
 
     def reference(self, element: Element, attribute: AttributeSpec, target: Element) -> str:
         """A reference to ``target``, scoped as seen from the model being written."""
@@ -186,28 +205,41 @@ class Writer:
 
     # --------------------------------------------------------------- elements
 
-    def element(self, element: Element, parent: XmlNode | None, prefix: str,
-                model: ModelRoot | None) -> XmlNode:
-        spec = element.spec
-        attrib = self.attributes(element, prefix, model)
-        if parent is None:
-            node = etree.Element(spec.tag, attrib)
-        else:
-            node = etree.SubElement(parent, spec.tag, attrib)
-        if self.tracking:
-            namespace = spec.namespace
-            if namespace is not None and namespace in _TRACKED:
-                self._track(namespace, element, model)
-        for child in element._children:  # pyright: ignore[reportPrivateUsage]
-            if not _is_empty_single(element, child) and (
-                    self.keyframes or child.spec.compose != "keyframes"):
-                self.element(child, node, prefix, model)
-        attached = element._attached  # pyright: ignore[reportPrivateUsage]
-        if attached is not None:
-            self.attachment(node, attached, prefix + scope_name(attached) + "/")
-        return node
+    def element(self, element: Element, parent: Node | None, prefix: str,
+                model: ModelRoot | None) -> Node:
+        """Write ``element``'s subtree under ``parent``; iterative, so depth is unlimited."""
+        first: Node | None = None
+        stack: list[tuple[Element, Node | None, str, ModelRoot | None]] = [
+            (element, parent, prefix, model)]
+        pop, push = stack.pop, stack.append
+        tracking, keyframes = self.tracking, self.keyframes
+        while stack:
+            current, parent_node, scope, owner = pop()
+            spec = current._SPEC  # pyright: ignore[reportPrivateUsage]
+            attrib = self.attributes(current, scope, owner) if current._attrs else {}  # pyright: ignore[reportPrivateUsage]
+            node = Node(spec.tag, attrib)
+            if first is None:
+                first = node
+            if parent_node is not None:
+                parent_node.children.append(node)
+            if tracking and spec.namespace in _TRACKED:
+                self._track(spec.namespace, current, owner)
+            pending: list[tuple[Element, Node | None, str, ModelRoot | None]] = []
+            child_specs = spec.children
+            for child in current._children:  # pyright: ignore[reportPrivateUsage]
+                if child._attrs or not child_specs[child._SPEC.tag].single or (  # pyright: ignore[reportPrivateUsage]
+                        not _is_empty_single(current, child)):
+                    if keyframes or child._SPEC.compose != "keyframes":  # pyright: ignore[reportPrivateUsage]
+                        pending.append((child, node, scope, owner))
+            attached = current._attached  # pyright: ignore[reportPrivateUsage]
+            if attached is not None:
+                pending += self.attachment(node, attached, scope + scope_name(attached) + "/")
+            for task in reversed(pending):
+                push(task)
+        assert first is not None
+        return first
 
-    def _track(self, namespace: str, element: Element, model: ModelRoot | None) -> None:
+    def _track(self, namespace: str | None, element: Element, model: ModelRoot | None) -> None:
         if model is None:
             return
         if namespace == "joint":
@@ -217,19 +249,21 @@ class Writer:
         elif element._attrs.get("mocap") is True:  # pyright: ignore[reportPrivateUsage]
             self.mocap_owners.append(model)
 
-    def attachment(self, frame: XmlNode, model: ModelRoot, scope: str) -> None:
-        """The attached model's bodies, inside its frame; its other sections come later."""
+    def attachment(self, frame: Node, model: ModelRoot, scope: str
+                   ) -> list[tuple[Element, Node | None, str, ModelRoot | None]]:
+        """The attached model's bodies, to be written inside its frame; its other sections
+        join the parent's later."""
         if _has_defaults(model) and frame.get("childclass") is None:
             frame.set("childclass", scope)
-        for section in model._children:  # pyright: ignore[reportPrivateUsage]
-            if "body" in section.spec.children:
-                for child in section._children:  # pyright: ignore[reportPrivateUsage]
-                    self.element(child, frame, scope, model)
         self.pending.append((model, scope))
+        return [(child, frame, scope, model)
+                for section in model._children  # pyright: ignore[reportPrivateUsage]
+                if "body" in section._SPEC.children  # pyright: ignore[reportPrivateUsage]
+                for child in section._children]  # pyright: ignore[reportPrivateUsage]
 
     # --------------------------------------------------------------- models
 
-    def model(self, root: ModelRoot) -> XmlNode:
+    def model(self, root: ModelRoot) -> Node:
         node = self.element(root, None, "", root)
         if not root._scopes:  # pyright: ignore[reportPrivateUsage]
             return node
@@ -248,18 +282,18 @@ class Writer:
             combine_keyframes(self, node, root, keyframes)
         return node
 
-    def section_node(self, root: XmlNode, tag: str, root_spec_order: dict[str, int]) -> XmlNode:
+    def section_node(self, root: Node, tag: str, root_spec_order: dict[str, int]) -> Node:
         """The root's ``<tag>`` section, created at its grammar position if missing."""
         for child in root:
             if child.tag == tag:
                 return child
-        node = etree.Element(tag)
+        node = Node(tag)
         index = next((i for i, child in enumerate(root)
                       if root_spec_order.get(str(child.tag), -1) > root_spec_order[tag]), len(root))
         root.insert(index, node)
         return node
 
-    def section(self, root: XmlNode, section: Element, model: ModelRoot, scope: str) -> None:
+    def section(self, root: Node, section: Element, model: ModelRoot, scope: str) -> None:
         """Join an attached model's section to the root's, as its grammar row says."""
         order = {tag: c.index for tag, c in self.top.spec.children.items()}
         compose = section.spec.compose
@@ -267,7 +301,7 @@ class Writer:
         if compose == "attributes":
             self.merge_attributes(target, section, model, scope)
         elif compose == "nest":
-            nested = etree.SubElement(target, section.tag, {"class": scope})
+            nested = target.sub(section.tag, {"class": scope})
             for child in section._children:  # pyright: ignore[reportPrivateUsage]
                 self.element(child, nested, scope, model)
         else:
@@ -277,7 +311,7 @@ class Writer:
                 if classed and "class" in child.spec.by_name and node.get("class") is None:
                     node.set("class", scope)
 
-    def merge_attributes(self, target: XmlNode, section: Element, model: ModelRoot,
+    def merge_attributes(self, target: Node, section: Element, model: ModelRoot,
                          scope: str) -> None:
         for name, text in self.attributes(section, scope, model).items():
             if section.spec.by_name[name].directory or name in _folders():
@@ -292,7 +326,7 @@ class Writer:
         for child in section._children:  # pyright: ignore[reportPrivateUsage]
             sub = next((c for c in target if c.tag == child.tag), None)
             if sub is None:
-                sub = etree.SubElement(target, child.tag)
+                sub = target.sub(child.tag)
             self.merge_attributes(sub, child, model, scope)
 
 
@@ -319,7 +353,7 @@ def _absolute_file(model: ModelRoot, attribute: AttributeSpec, file: str) -> str
     return resolve_path(model, attribute, file, compiler_folders(model))
 
 
-def build(element: Element, formatter: Formatter, parent: XmlNode | None = None) -> XmlNode:
+def build(element: Element, formatter: Formatter, parent: Node | None = None) -> Node:
     """The lxml element for ``element`` and its subtree (attached models included)."""
     writer = Writer(formatter, element)
     root = element._root  # pyright: ignore[reportPrivateUsage]
@@ -330,11 +364,12 @@ def build(element: Element, formatter: Formatter, parent: XmlNode | None = None)
 
 def to_xml(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,
            file_namer: FileNamer | None = None) -> XmlNode:
-    return build(element, Formatter(precision, zero_threshold, file_namer))
+    text = to_xml_string(element, precision=precision, zero_threshold=zero_threshold,
+                         pretty_print=False, file_namer=file_namer)
+    return etree.fromstring(text)
 
 
 def to_xml_string(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,
                   pretty_print: bool = True, file_namer: FileNamer | None = None) -> str:
-    node = to_xml(element, precision=precision, zero_threshold=zero_threshold,
-                  file_namer=file_namer)
-    return etree.tostring(node, pretty_print=pretty_print, encoding="unicode")
+    node = build(element, Formatter(precision, zero_threshold, file_namer))
+    return serialize(node, pretty_print)

@@ -14,15 +14,14 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
-from lxml import etree
-
+from typed_mjcf._xmltext import Node, serialize
 from typed_mjcf.errors import ExportError
 
 if TYPE_CHECKING:
     import mujoco
 
     from typed_mjcf._element import Element
-    from typed_mjcf._export import Writer, XmlNode
+    from typed_mjcf._export import Writer
     from typed_mjcf._root import ModelRoot
 
 Vector = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
@@ -41,7 +40,7 @@ def _layout(root: ModelRoot) -> mujoco.MjModel:
     formatter = Formatter(file_namer=collected.name_of,
                           skip_attributes=collected.directory_attributes)
     writer = Writer(formatter, root, keyframes=False)
-    xml = etree.tostring(writer.model(root), encoding="unicode")
+    xml = serialize(writer.model(root), pretty_print=False)
     try:
         return mujoco.MjModel.from_xml_string(xml, collected.files)
     except ValueError as error:
@@ -107,7 +106,7 @@ def _place(key: _Key, kind: str, slots: list[tuple[int, int]], values: Vector,
         offset += size
 
 
-def combine_keyframes(writer: Writer, node: XmlNode, root: ModelRoot,
+def combine_keyframes(writer: Writer, node: Node, root: ModelRoot,
                       parts: list[tuple[ModelRoot, Element]]) -> None:
     """Replace the keyframe section of ``node`` with whole-model keys."""
     m = _layout(root)
@@ -145,4 +144,4 @@ def combine_keyframes(writer: Writer, node: XmlNode, root: ModelRoot,
             attrib["time"] = number(combined.time)
         for kind, vector in combined.values.items():
             attrib[kind] = " ".join(number(float(x)) for x in vector)
-        etree.SubElement(section_node, key_tag, attrib)
+        section_node.sub(key_tag, attrib)

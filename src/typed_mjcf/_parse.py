@@ -1,15 +1,29 @@
 """Reading MJCF text into typed elements.
 
-Parsing is safe by default (no DTDs, entities or network). ``<include>`` elements are
-expanded in place, wherever they appear, so document order (and so qpos layout) is kept.
+Parsing is safe by default: no DTD or external entity is loaded, nothing is fetched from the
+network, entity declarations are refused (MuJoCo's XML reader does not expand them; they are
+how "billion laughs" documents multiply text), and :class:`ParseLimits` bounds the bytes
+read, the nesting depth and the number of elements, all counted over the assembled model
+(includes too). The document is read by a streaming parser that stops as soon as a limit is
+passed, and the typed tree is built without recursion, so a deeply nested document gives a
+:class:`~typed_mjcf.ParseError` naming the limit, never a ``RecursionError``.
+
+``<include>`` elements are expanded in place, wherever they appear, so document order (and
+so qpos layout) is kept. As in MuJoCo, an included file's path is relative to the folder of
+the main model file (not of the file that includes it), and a file may be included once.
 Repeated once-only sections (two ``<asset>`` blocks, say) merge, as they do in MuJoCo.
+
+Every failure is a :class:`~typed_mjcf.ParseError` (a ``ValueError``) with the file and line
+where it is known.
 """
 
 from __future__ import annotations
 
 import os
+import stat
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import cast
+from typing import Final, cast
 
 import numpy as np
 from lxml import etree
@@ -18,16 +32,55 @@ from typed_mjcf._convert import Rejected
 from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
 from typed_mjcf._export import XmlNode
 from typed_mjcf._root import ModelRoot
-from typed_mjcf.errors import MjcfError, ParseError, did_you_mean
+from typed_mjcf.errors import (
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    ParseError,
+    did_you_mean,
+)
 
 INCLUDE = "include"
 
 _Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
 
+# The deepest nesting libxml2 reads at all (with XML_PARSE_HUGE; 256 without). MuJoCo's own
+# XML reader (tinyxml2) stops at 500.
+_XML_READER_DEPTH: Final = 2048
+_CHUNK: Final = 1 << 16  # bytes fed to the streaming parser at a time
 
-def _xml_parser() -> etree.XMLParser:
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                           remove_comments=True, remove_pis=True, huge_tree=False)
+
+@dataclass(frozen=True, slots=True)
+class ParseLimits:
+    """Bounds on what reading one model may consume; pass a raised copy to read more.
+
+    Every limit counts the assembled model: the main text and every included file.
+
+    ``max_bytes``
+        Bytes of MJCF text read (64 MiB).
+    ``max_depth``
+        Nesting depth of elements, the root ``<mujoco>`` being 1 (500, the depth MuJoCo's
+        own XML reader stops at). The XML reader cannot go past 2048 in one file.
+    ``max_elements``
+        XML elements read (1,000,000).
+
+    ``typed_mjcf.from_path(path, limits=ParseLimits(max_bytes=1 << 30))`` reads a 1 GiB file.
+    """
+
+    max_bytes: int = 64 * 1024 * 1024
+    max_depth: int = 500
+    max_elements: int = 1_000_000
+
+    def __post_init__(self) -> None:
+        for name in ("max_bytes", "max_depth", "max_elements"):
+            value: object = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, int):
+                raise InvalidTypeError(f"ParseLimits.{name} must be an int, got {value!r}")
+            if value < 1:
+                raise InvalidValueError(f"ParseLimits.{name} must be at least 1, got {value!r}")
+
+
+DEFAULT_LIMITS: Final = ParseLimits()
 
 
 def source_line(node: XmlNode) -> int | None:
@@ -43,192 +96,542 @@ def root_class() -> type[ModelRoot]:
     raise RuntimeError("no generated root class is registered")  # pragma: no cover
 
 
+# ----------------------------------------------------------------------------- context
+
+
+@dataclass
+class _Include:
+    """One level of ``<include>``: the file read, and the include element that read it."""
+
+    path: str
+    by: str | None  # the including file (None: text given in memory)
+    line: int | None
+
+
 @dataclass
 class _Context:
     base_dir: str | None
-    included: list[str] = field(default_factory=lambda: [])  # every file read, in order
-    nesting: list[str] = field(default_factory=lambda: [])  # the files including the current one
+    limits: ParseLimits = DEFAULT_LIMITS
+    main: str | None = None  # the main model file, if the model was read from one
+    bytes_read: int = 0
+    elements: int = 0
+    included: dict[str, _Include] = field(default_factory=lambda: {})  # every file, how first read
+    nesting: list[_Include] = field(default_factory=lambda: [])  # includes around the current one
+
+    def shown(self, path: str | None) -> str:
+        """A path as messages show it: relative to the main file's folder when inside it."""
+        if path is None:
+            return "<text>"
+        if self.base_dir is not None:
+            try:
+                relative = os.path.relpath(path, self.base_dir)
+            except ValueError:  # another drive (Windows)
+                return path
+            if not relative.startswith(os.pardir):
+                return relative
+        return path
+
+    def leave_include(self) -> None:
+        self.nesting.pop()
+
+    def error(self, message: str, source: str | None, line: int | None) -> ParseError:
+        """A ParseError at ``source:line``, saying which includes led there."""
+        levels = [f"in {self.shown(level.path)}, included from {self.shown(level.by)}"
+                  + (f":{level.line}" if level.line is not None else "")
+                  for level in reversed(self.nesting)]
+        if levels:
+            message += f" ({'; '.join(levels)})"
+        return ParseError(message, source, line)
+
+
+# ----------------------------------------------------------------------------- reading XML
+
+
+def _refuse_entity_declarations(data: bytes, source: str | None, context: _Context) -> None:
+    """Refuse ``<!ENTITY`` in a DOCTYPE before the XML parser can expand anything.
+
+    MuJoCo does not expand declared entities, and they are the means of entity-expansion
+    bombs. NUL bytes are dropped first, so UTF-16 and UTF-32 text is checked too.
+    """
+    text = data.replace(b"\0", b"") if b"\0" in data else data
+    doctype = text.find(b"<!DOCTYPE")
+    if doctype >= 0 and text.find(b"<!ENTITY", doctype) >= 0:
+        line = text.count(b"\n", 0, text.find(b"<!ENTITY", doctype)) + 1
+        raise context.error(
+            "entity declarations (<!ENTITY ...>) are not allowed: MJCF does not use them "
+            "and MuJoCo does not expand them", source, line)
+
+
+def _name(name: object, limit: int = 60) -> str:
+    """A tag or attribute name for a message, shortened if (absurdly) long."""
+    text = str(name)
+    return text if len(text) <= limit else text[:limit - 3] + "..."
+
+
+def _limit_message(what: str, limit: int, name: str) -> str:
+    return (f"{what}, more than the limit of {limit} (ParseLimits.{name}); to read it anyway, "
+            f"pass limits=typed_mjcf.ParseLimits({name}=...) with a larger value")
+
+
+def _syntax_error(error: etree.XMLSyntaxError, source: str | None, context: _Context,
+                  depth_limit: int) -> ParseError:
+    line = error.lineno if error.lineno else None
+    message = str(error.msg)
+    if "Excessive depth" in message:
+        if depth_limit < _XML_READER_DEPTH:
+            return context.error(_limit_message(
+                "elements are nested too deep", context.limits.max_depth, "max_depth"),
+                source, line)
+        return context.error(f"elements are nested more than {_XML_READER_DEPTH} deep, the "
+                             f"most the XML reader can read in one file", source, line)
+    return context.error(f"malformed XML: {message}", source, line)
+
+
+def _read_xml(data: bytes, source: str | None, context: _Context, *,
+              encoding: str | None = None) -> XmlNode:
+    """Parse one document, counting its bytes, depth and elements against the limits."""
+    limits = context.limits
+    if context.bytes_read + len(data) > limits.max_bytes:
+        raise context.error(_limit_message(
+            f"the model text is at least {context.bytes_read + len(data)} bytes long",
+            limits.max_bytes,
+            "max_bytes"), source, None)
+    context.bytes_read += len(data)
+    _refuse_entity_declarations(data, source, context)
+    depth_limit = min(limits.max_depth, _XML_READER_DEPTH)
+    # Every element starts with "<" (entities are refused, so none expand into elements):
+    # text with fewer "<" than the elements still allowed is read without watching each
+    # element go by; the builder counts them, and checks the depth, exactly.
+    watch = data.count(b"<") > limits.max_elements - context.elements
+    parser: etree.XMLParser
+    if watch:
+        parser = etree.XMLPullParser(
+            events=("start", "end"), encoding=encoding, resolve_entities=False,
+            no_network=True, load_dtd=False, remove_comments=True, remove_pis=True,
+            huge_tree=True)
+    else:
+        parser = etree.XMLParser(
+            encoding=encoding, resolve_entities=False, no_network=True, load_dtd=False,
+            remove_comments=True, remove_pis=True, huge_tree=True)
+    depth, elements = 0, context.elements
+    try:
+        # Fed in chunks: libxml2's push parser does not recurse, however deep the nesting.
+        for start in range(0, max(len(data), 1), _CHUNK):
+            parser.feed(data[start:start + _CHUNK])
+            if not isinstance(parser, etree.XMLPullParser):
+                continue
+            for event, node in parser.read_events():  # stop as soon as a limit is passed
+                if event == "end":
+                    depth -= 1
+                    continue
+                depth += 1
+                elements += 1
+                if depth > depth_limit:
+                    raise context.error(_limit_message(
+                        f"<{_name(node.tag)}> is nested {depth} deep", limits.max_depth,
+                        "max_depth"), source, source_line(node))
+                if elements > limits.max_elements:
+                    raise context.error(_limit_message(
+                        f"the model has more than {elements - 1} elements",
+                        limits.max_elements, "max_elements"), source, source_line(node))
+        root = parser.close()
+    except etree.XMLSyntaxError as error:
+        if not error.lineno:
+            error = _located(data, encoding) or error
+        raise _syntax_error(error, source, context, depth_limit) from None
+    dtd = root.getroottree().docinfo.internalDTD
+    if dtd is not None and any(True for _ in dtd.iterentities()):  # an encoding not scanned
+        raise context.error("entity declarations (<!ENTITY ...>) are not allowed: MJCF does "
+                            "not use them and MuJoCo does not expand them", source, 1)
+    return root
+
+
+def _located(data: bytes, encoding: str | None) -> etree.XMLSyntaxError | None:
+    """The error of a document the streaming parser gave up on without saying where (an
+    undefined entity, say), from libxml2's ordinary parser, if it has a line.
+
+    Only for the message: the limits were checked up to that point, entity declarations are
+    refused already, and without ``huge_tree`` libxml2 stops at 256 levels of nesting.
+    """
+    parser = etree.XMLParser(encoding=encoding, resolve_entities=False, no_network=True,
+                             load_dtd=False, huge_tree=False)
+    try:
+        etree.fromstring(data, parser)
+    except etree.XMLSyntaxError as error:
+        return error if error.lineno else None
+    return None
+
+
+def read_bounded(read: Callable[[int], bytes], limit: int, expected: int = 0) -> bytes:
+    """Read until the end or until more than ``limit`` bytes are read (one more byte than
+    allowed shows that the limit is passed), without allocating for the limit up front."""
+    chunks: list[bytes] = []
+    total = 0
+    size = min(max(expected, 0), limit) + 1
+    while total <= limit:
+        chunk = read(min(size, limit + 1 - total))
+        if not chunk:
+            break
+        chunks.append(chunk)
+        total += len(chunk)
+        size = 1 << 20
+    return b"".join(chunks)
+
+
+def _read_file(path: str, context: _Context, what: str, where: str | None,
+               line: int | None) -> bytes:
+    """A file's bytes, refusing what is not a regular file and what passes ``max_bytes``."""
+    try:
+        mode = os.stat(path).st_mode
+        if not stat.S_ISREG(mode):
+            kind = "a folder" if stat.S_ISDIR(mode) else "not a regular file"
+            raise context.error(f"cannot read {what}: it is {kind}", where, line)
+        remaining = max(context.limits.max_bytes - context.bytes_read, 0)
+        with open(path, "rb") as f:
+            return read_bounded(f.read, remaining, os.fstat(f.fileno()).st_size)
+    except OSError as error:
+        reason = error.strerror or str(error)
+        raise context.error(f"cannot read {what}: {reason}", where, line) from None
+
+
+def _encode(text: str, source: str | None, context: _Context) -> bytes:
+    try:
+        return text.encode("utf-8")
+    except UnicodeEncodeError as error:  # lone surrogates
+        line = text.count("\n", 0, error.start) + 1
+        raise context.error(f"the text holds a character that is not valid Unicode "
+                            f"({text[error.start]!r} at offset {error.start})", source,
+                            line) from None
 
 
 def is_model_text(data: bytes) -> bool:
     """Whether ``data`` is MJCF text: XML whose root element is the model's root."""
     try:
-        node = etree.fromstring(data, _xml_parser())
-    except etree.XMLSyntaxError:
+        node = _read_xml(data, None, _Context(None))
+    except ParseError:
         return False
     return node.tag == root_class()._SPEC.tag  # pyright: ignore[reportPrivateUsage]
 
 
-def _read_xml(data: str | bytes, source: str | None) -> XmlNode:
-    if isinstance(data, str):
-        data = data.encode("utf-8")
-    try:
-        return etree.fromstring(data, _xml_parser())
-    except etree.XMLSyntaxError as error:
-        line = error.lineno if error.lineno else None
-        raise ParseError(f"malformed XML: {error.msg}", source, line) from None
+# ----------------------------------------------------------------------------- entry points
 
 
-def parse_text(data: str | bytes, *, base_dir: str | None = None,
-               source: str | None = None) -> ModelRoot:
+def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
+               limits: ParseLimits | None = None) -> ModelRoot:
     """Parse MJCF text into a model."""
-    node = _read_xml(data, source)
-    return _build_model(node, _Context(base_dir), source)
+    context = _Context(base_dir, limits or DEFAULT_LIMITS)
+    return _guarded(lambda: _parse_text(data, source, context), source)
 
 
-def parse_path(path: str) -> ModelRoot:
+def _parse_text(data: object, source: str | None, context: _Context) -> ModelRoot:
+    if isinstance(data, str):
+        node = _read_xml(_encode(data, source, context), source, context, encoding="utf-8")
+    elif isinstance(data, bytes):
+        node = _read_xml(data, source, context)
+    elif isinstance(data, bytearray):
+        node = _read_xml(bytes(data), source, context)
+    else:
+        raise InvalidTypeError(f"MJCF text must be str or bytes, got {type(data).__name__}")
+    return _build_model(node, context, source)
+
+
+def parse_path(path: str, *, limits: ParseLimits | None = None) -> ModelRoot:
     """Parse an MJCF file; its folder is the base of relative paths."""
     path = os.path.abspath(path)
+    context = _Context(os.path.dirname(path), limits or DEFAULT_LIMITS, main=path)
+    return _guarded(lambda: _parse_path(path, context), path)
+
+
+def _parse_path(path: str, context: _Context) -> ModelRoot:
+    data = _read_file(path, context, "the file", path, None)
+    context.included[path] = _Include(path, None, None)
+    node = _read_xml(data, path, context)
+    return _build_model(node, context, path)
+
+
+def _guarded(parse: Callable[[], ModelRoot], source: str | None) -> ModelRoot:
+    """Run ``parse``; a failure that is not the library's own error becomes a ParseError.
+
+    Such a failure is a bug in typed-mjcf; the original exception is kept as the cause.
+    """
     try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError as error:
-        raise ParseError(f"cannot read the file: {error.strerror}", path) from None
-    node = _read_xml(data, path)
-    return _build_model(node, _Context(os.path.dirname(path), [path], [path]), path)
+        return parse()
+    except MjcfError:
+        raise
+    except (RecursionError, MemoryError) as error:
+        raise ParseError(f"the model is too large or too deeply nested to read "
+                         f"({type(error).__name__})", source) from error
+    except Exception as error:
+        raise ParseError(f"internal error while reading the model: {type(error).__name__}: "
+                         f"{error}", source) from error
+
+
+# ----------------------------------------------------------------------------- building
 
 
 def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelRoot:
     cls = root_class()
     if node.tag != cls._SPEC.tag:  # pyright: ignore[reportPrivateUsage]
-        raise ParseError(f"the root element is <{node.tag!s}>, expected <{cls._SPEC.tag}>",  # pyright: ignore[reportPrivateUsage]
-                         source, source_line(node))
+        raise context.error(
+            f"the root element is <{_name(node.tag)}>, expected <{cls._SPEC.tag}>",  # pyright: ignore[reportPrivateUsage]
+            source, source_line(node))
     model = cls()
     object.__setattr__(model, "_base_dir", context.base_dir)
-    _set_attributes(model, node, source)
-    _add_children(model, node, context, source)
+    _set_attributes(model, node, source, context)
+    _Builder(context).run(model, node, source)
     return model
 
 
-def _set_attributes(element: Element, node: XmlNode, source: str | None) -> None:
+def _set_attributes(element: Element, node: XmlNode, source: str | None,
+                    context: _Context) -> None:
     by_name = element.spec.by_name
     for key, text in node.attrib.items():
         attribute = by_name.get(str(key))
         if attribute is None:
             known = list(by_name)
-            raise ParseError(
-                f"<{element.tag}> has no attribute {str(key)!r}{did_you_mean(str(key), known)}",
+            raise context.error(
+                f"<{element.tag}> has no attribute {_name(key)!r}{did_you_mean(_name(key), known)}",
                 source, source_line(node))
         try:
             element._set_attribute(attribute, str(text))  # pyright: ignore[reportPrivateUsage]
         except MjcfError as error:
-            raise ParseError(str(error), source, source_line(node)) from None
+            raise context.error(str(error), source, source_line(node)) from None
         except Rejected as rejected:  # pragma: no cover - _set_attribute converts these
-            raise ParseError(rejected.expected, source, source_line(node)) from None
+            raise context.error(rejected.expected, source, source_line(node)) from None
 
 
-def _add_children(parent: Element, node: XmlNode, context: _Context,
-                  source: str | None) -> None:
-    children_specs = parent.spec.children
-    for child_node in node:
-        tag: object = child_node.tag
-        if not isinstance(tag, str):
-            continue  # entity references (comments and processing instructions are dropped)
-        if tag == INCLUDE:
-            _expand_include(parent, child_node, context, source)
-            continue
-        child_spec = children_specs.get(tag)
-        if child_spec is None:
-            legal = list(children_specs)
-            raise ParseError(
-                f"<{tag}> is not a legal child of <{parent.tag}> ({parent.path})"
-                f"{did_you_mean(tag, legal)}", source, source_line(child_node))
-        existing = parent._single_child(tag) if child_spec.single else None  # pyright: ignore[reportPrivateUsage]
-        if existing is not None:
-            # A repeated section: merge into the first.
-            _merge_section(existing, child_node, context, source)
-            continue
-        child = parent._add_child(tag, None, {})  # pyright: ignore[reportPrivateUsage]
-        _set_attributes(child, child_node, source)
-        _add_children(child, child_node, context, source)
+# Children still to read into an element: (element, its remaining XML children, the file
+# they are in, the element's depth in the assembled model (the root is 1), where the chain of
+# same-tag ancestors of the element starts (or the element), what to run once all are read).
+_Frame = tuple[Element, Iterator[XmlNode], str | None, int, Element, Callable[[], None] | None]
 
 
-def _merge_section(section: Element, node: XmlNode, context: _Context,
-                   source: str | None) -> None:
-    """Merge a repeated once-only section into the first one.
+class _Builder:
+    """Builds the typed tree from XML with an explicit stack (no recursion)."""
 
-    MuJoCo reads repeated sections in order, so merging keeps their meaning, with one
-    exception: a section that nests itself (``<default>``: classes in classes) is a class
-    hierarchy, and MuJoCo gives a class a copy of its parent's defaults as they are when the
-    class is read. Main defaults that a later ``<default>`` section sets or changes therefore
-    do not reach the classes of earlier sections, but would after merging; such a model is
-    refused rather than silently changed.
-    """
-    nests = section.spec.children.get(section.tag)
-    earlier_classes = ([e for e in section.iter_elements() if e.tag == section.tag
-                        and e is not section] if nests is not None else [])
-    before = _element_defaults(section) if earlier_classes else {}
-    _set_attributes(section, node, source)
-    _add_children(section, node, context, source)
-    if not earlier_classes:
-        return
-    after = _element_defaults(section)
-    for key, value in after.items():
-        if key in before and _same_value(before[key], value):
-            continue
-        element_tag, attribute = key
-        for hierarchy_class in earlier_classes:
-            if not _sets_in_chain(hierarchy_class, section, element_tag, attribute):
+    def __init__(self, context: _Context) -> None:
+        self.context = context
+        self.stack: list[_Frame] = []
+        self.nested: list[tuple[Element, Element]] = []  # (class, its section), not counted
+        self.hierarchies: dict[int, _Hierarchy] = {}  # by id(section): repeated hierarchies
+
+    def run(self, root: Element, node: XmlNode, source: str | None) -> None:
+        context, stack = self.context, self.stack
+        max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
+        self.count(node, source, 1)  # the root
+        stack.append((root, iter(node), source, 1, root, None))
+        while stack:
+            frame = stack[-1]
+            parent, nodes, source, depth, top, on_exit = frame
+            child_node = next(nodes, None)
+            if child_node is None:
+                stack.pop()
+                if on_exit is not None:
+                    on_exit()
+                continue
+            tag: object = child_node.tag
+            if not isinstance(tag, str):
+                continue  # entity references (comments and processing instructions are dropped)
+            context.elements += 1
+            if context.elements > max_elements:
+                self.count(child_node, source)
+            if tag == INCLUDE:
+                self.include(frame, child_node)
+                continue
+            child_spec = parent.spec.children.get(tag)
+            if child_spec is None:
+                legal = list(parent.spec.children)
+                raise context.error(
+                    f"<{_name(tag)}> is not a legal child of <{parent.tag}> ({parent.path})"
+                    f"{did_you_mean(_name(tag), legal)}", source, source_line(child_node))
+            if depth >= max_depth:
+                raise context.error(_limit_message(
+                    f"<{tag}> is nested {depth + 1} deep", max_depth, "max_depth"),
+                    source, source_line(child_node))
+            existing = parent._single_child(tag) if child_spec.single else None  # pyright: ignore[reportPrivateUsage]
+            if existing is not None:
+                # A repeated section: merge into the first.
+                check = self.merge(existing, child_node, source)
+                stack.append((existing, iter(child_node), source, depth + 1, existing, check))
+                continue
+            try:
+                child = parent._add_child(tag, None, {})  # pyright: ignore[reportPrivateUsage]
+            except MjcfError as error:
+                raise context.error(str(error), source, source_line(child_node)) from None
+            _set_attributes(child, child_node, source, context)
+            child_top = child
+            if tag == parent.tag:
+                child_top = top
+                above = top.parent
+                if above is not None and above.spec.children[top.tag].single:
+                    self.nested.append((child, top))  # a class of a section that may repeat
+            if len(child_node):
+                stack.append((child, iter(child_node), source, depth + 1, child_top, None))
+
+    def count(self, node: XmlNode, source: str | None, elements: int = 0) -> None:
+        """Count ``elements`` more (or check the count); refuse past ``max_elements``."""
+        context = self.context
+        context.elements += elements
+        if context.elements > context.limits.max_elements:
+            raise context.error(_limit_message(
+                f"the model has more than {context.elements - 1} elements",
+                context.limits.max_elements, "max_elements"), source, source_line(node))
+
+    def merge(self, section: Element, node: XmlNode,
+              source: str | None) -> Callable[[], None] | None:
+        """Merge a repeated once-only section's attributes into the first one; return the
+        check to run once its children are read too (see :class:`_Hierarchy`)."""
+        context = self.context
+        if section.tag not in section.spec.children:
+            _set_attributes(section, node, source, context)
+            return None
+        hierarchy = self.hierarchies.get(id(section))
+        if hierarchy is None:
+            hierarchy = self.hierarchies[id(section)] = _Hierarchy(section)
+        remaining: list[tuple[Element, Element]] = []
+        for nested, top in self.nested:  # the classes read since the last repeat
+            if top is section:
+                hierarchy.add(nested)
+            else:
+                remaining.append((nested, top))
+        self.nested = remaining
+        count = len(hierarchy.classes)
+        before = _section_defaults(section) if count else {}
+        _set_attributes(section, node, source, context)
+        if not count:
+            return None
+        nesting = list(context.nesting)
+
+        def check() -> None:
+            for key, value in _section_defaults(section).items():
+                if key in before and _same_value(before[key], value):
+                    continue
+                hierarchy_class = hierarchy.uncovered(key)
+                if hierarchy_class is None:
+                    continue
+                element_tag, attribute = key
                 id_attribute = hierarchy_class.spec.id_attribute
                 name = (None if id_attribute is None
                         else hierarchy_class._attrs.get(id_attribute.name))  # pyright: ignore[reportPrivateUsage]
                 label = repr(name) if isinstance(name, str) else hierarchy_class.path
-                raise ParseError(
+                saved, context.nesting = context.nesting, nesting
+                error = context.error(
                     f"this repeated <{section.tag}> section sets <{element_tag} {attribute}> "
                     f"for the whole model, but MuJoCo does not apply it to {section.tag} class "
                     f"{label} of an earlier <{section.tag}> section (a class keeps the values "
                     f"it inherited when it was defined); set {attribute} in that class, or "
-                    f"move it into the first <{section.tag}> section",
-                    source, source_line(node))
+                    f"move it into the first <{section.tag}> section", source, source_line(node))
+                context.nesting = saved
+                raise error
+
+        return check
+
+    def include(self, frame: _Frame, node: XmlNode) -> None:
+        parent, _, source, depth, top, _ = frame
+        context, line = self.context, source_line(node)
+        file = node.get("file")
+        if not file:
+            raise context.error("<include> needs a file attribute", source, line)
+        unexpected = [str(key) for key in node.attrib if key != "file"]
+        if unexpected or len(node):
+            what = f"attribute {_name(unexpected[0])!r}" if unexpected else "children"
+            raise context.error(f"<include> takes only a file attribute, not {what}",
+                                source, line)
+        base = context.base_dir or os.getcwd()  # MuJoCo: relative to the main file's folder
+        path = os.path.abspath(os.path.join(base, file))
+        chain = [level.path for level in context.nesting]
+        if context.main is not None:
+            chain.insert(0, context.main)
+        if path in chain:
+            shown = " -> ".join(context.shown(p) for p in [*chain, path])
+            raise context.error(f"include cycle: {context.shown(source)} includes {file!r}, "
+                                f"which is already being read: {shown}", source, line)
+        first = context.included.get(path)
+        if first is not None:
+            where = ("is the main model file" if first.by is None else
+                     f"was already included by {context.shown(first.by)}"
+                     + (f":{first.line}" if first.line is not None else ""))
+            raise context.error(f"{file!r} ({context.shown(path)}) {where}; MuJoCo includes "
+                                f"a file at most once per model", source, line)
+        data = _read_file(path, context, f"included file {file!r} ({context.shown(path)})",
+                          source, line)
+        level = _Include(path, source, line)
+        context.included[path] = level
+        context.nesting.append(level)
+        included_root = _read_xml(data, path, context)
+        self.count(included_root, path, 1)
+        self.stack.append((parent, iter(included_root), path, depth, top,
+                           context.leave_include))
 
 
-def _element_defaults(section: Element) -> dict[tuple[str, str], object]:
+# ----------------------------------------------------------------------------- repeated sections
+
+_Key = tuple[str, str]  # (element tag, attribute) of a default
+
+
+class _Hierarchy:
+    """The classes of a section that nests itself (``<default>``), for merging repeats.
+
+    MuJoCo reads repeated sections in order, so merging keeps their meaning, with one
+    exception: a section that nests itself is a class hierarchy, and MuJoCo gives a class a
+    copy of its parent's defaults as they are when the class is read. Main defaults that a
+    later ``<default>`` section sets or changes therefore do not reach the classes of earlier
+    sections, but would after merging; such a model is refused rather than silently changed.
+
+    To check that in time linear in the model, the classes read so far are counted, and so
+    are, for each ``(tag, attribute)``, the classes that set it themselves or through a
+    parent class (those keep their own value whatever the main default is).
+    """
+
+    def __init__(self, section: Element) -> None:
+        self.section = section
+        self.classes: list[Element] = []  # every class of the section, in document order
+        self.covered: dict[_Key, int] = {}  # classes whose chain sets the key
+        self.chains: dict[int, frozenset[_Key]] = {}  # by id(class): the keys its chain sets
+
+    def add(self, hierarchy_class: Element) -> None:
+        """Count a class that is completely read."""
+        parent = hierarchy_class.parent
+        none: frozenset[_Key] = frozenset()
+        inherited = (self.chains.get(id(parent), none)
+                     if parent is not None and parent is not self.section else none)
+        chain = inherited | _element_defaults(hierarchy_class).keys()
+        self.chains[id(hierarchy_class)] = chain
+        self.classes.append(hierarchy_class)
+        for key in chain:
+            self.covered[key] = self.covered.get(key, 0) + 1
+
+    def uncovered(self, key: _Key) -> Element | None:
+        """The first class that takes ``key`` from the main defaults, if one does."""
+        if self.covered.get(key, 0) == len(self.classes):
+            return None
+        for hierarchy_class in self.classes:
+            if key not in self.chains[id(hierarchy_class)]:
+                return hierarchy_class
+        return None
+
+
+def _section_defaults(section: Element) -> dict[_Key, object]:
+    """The attributes a section sets on its element children (not on nested classes)."""
+    spec = section.spec
+    if all(child.single for tag, child in spec.children.items() if tag != spec.tag):
+        singles = section._singles or {}  # pyright: ignore[reportPrivateUsage]
+        return {(tag, name): value for tag, child in singles.items() if tag != spec.tag
+                for name, value in child._attrs.items()}  # pyright: ignore[reportPrivateUsage]
+    return _element_defaults(section)
+
+
+def _element_defaults(level: Element) -> dict[_Key, object]:
     """The attributes a hierarchy level sets on its element children, by (tag, attribute)."""
-    values: dict[tuple[str, str], object] = {}
-    for child in section.get_children():
-        if child.tag != section.tag:
+    values: dict[_Key, object] = {}
+    for child in level._children:  # pyright: ignore[reportPrivateUsage]
+        if child.tag != level.tag:
             for name, value in child._attrs.items():  # pyright: ignore[reportPrivateUsage]
                 values[(child.tag, name)] = value
     return values
-
-
-def _sets_in_chain(level: Element, top: Element, tag: str, attribute: str) -> bool:
-    """Whether ``level`` or one of its ancestors below ``top`` sets ``<tag attribute>``."""
-    current: Element | None = level
-    while current is not None and current is not top:
-        if (tag, attribute) in _element_defaults(current):
-            return True
-        current = current.parent
-    return False
 
 
 def _same_value(a: object, b: object) -> bool:
     if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
         return bool(np.array_equal(cast(_Array, a), cast(_Array, b)))
     return not isinstance(a, np.ndarray) and not isinstance(b, np.ndarray) and a == b
-
-
-def _expand_include(parent: Element, node: XmlNode, context: _Context,
-                    source: str | None) -> None:
-    file = node.get("file")
-    if not file:
-        raise ParseError("<include> needs a file attribute", source, source_line(node))
-    base = context.base_dir or os.getcwd()
-    path = os.path.abspath(os.path.join(base, file))
-    if path in context.nesting:
-        chain = " -> ".join([*context.nesting, path])
-        raise ParseError(f"{file!r} includes itself: {chain}", source, source_line(node))
-    if path in context.included:
-        raise ParseError(f"{file!r} ({path}) is already part of the model (MuJoCo includes a "
-                         f"file once)", source, source_line(node))
-    try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError as error:
-        raise ParseError(f"cannot read included file {file!r} ({path}): {error.strerror}",
-                         source, source_line(node)) from None
-    context.included.append(path)
-    included_root = _read_xml(data, path)
-    context.nesting.append(path)
-    _add_children(parent, included_root, context, path)
-    context.nesting.pop()

@@ -1,0 +1,76 @@
+"""A minimal XML node and its serialiser: what the exporter builds instead of an lxml tree.
+
+Building lxml elements costs more than the rest of an export; these nodes are plain Python
+objects with the few operations the writer needs, written out in one iterative pass (deep
+models do not hit Python's recursion limit).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+_SPECIAL = re.compile('[&<>"\n\r\t]')
+_ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;",
+                          "\n": "&#10;", "\r": "&#13;", "\t": "&#9;"})
+
+
+class Node:
+    """An XML element: tag, attributes in order, children."""
+
+    __slots__ = ("tag", "attrib", "children")
+
+    def __init__(self, tag: str, attrib: dict[str, str] | None = None) -> None:
+        self.tag = tag
+        self.attrib: dict[str, str] = {} if attrib is None else attrib
+        self.children: list[Node] = []
+
+    def sub(self, tag: str, attrib: dict[str, str] | None = None) -> Node:
+        """A new last child."""
+        node = Node(tag, attrib)
+        self.children.append(node)
+        return node
+
+    def get(self, key: str) -> str | None:
+        return self.attrib.get(key)
+
+    def set(self, key: str, value: str) -> None:
+        self.attrib[key] = value
+
+    def __iter__(self) -> Iterator[Node]:
+        return iter(self.children)
+
+    def __len__(self) -> int:
+        return len(self.children)
+
+    def insert(self, index: int, node: Node) -> None:
+        self.children.insert(index, node)
+
+    def remove(self, node: Node) -> None:
+        self.children.remove(node)
+
+
+def _escape(value: str) -> str:
+    return value.translate(_ESCAPES) if _SPECIAL.search(value) else value
+
+
+def serialize(root: Node, pretty_print: bool = True) -> str:
+    """The XML text, indented by two spaces per level like lxml's pretty printing."""
+    parts: list[str] = []
+    append = parts.append
+    newline = "\n" if pretty_print else ""
+    stack: list[tuple[Node, int, bool]] = [(root, 0, False)]
+    while stack:
+        node, depth, closing = stack.pop()
+        indent = "  " * depth if pretty_print else ""
+        if closing:
+            append(f"{indent}</{node.tag}>{newline}")
+            continue
+        attributes = "".join([f' {k}="{_escape(v)}"' for k, v in node.attrib.items()])
+        if node.children:
+            append(f"{indent}<{node.tag}{attributes}>{newline}")
+            stack.append((node, depth, True))
+            stack.extend([(child, depth + 1, False) for child in reversed(node.children)])
+        else:
+            append(f"{indent}<{node.tag}{attributes}/>{newline}")
+    return "".join(parts)

@@ -1,0 +1,169 @@
+"""export_with_assets writes only into its folder, atomically, and never silently replaces a
+different file."""
+
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+
+import mujoco
+import pytest
+
+import typed_mjcf as mjcf
+from typed_mjcf import _assets_io  # pyright: ignore[reportPrivateUsage]
+
+from ..runtime.test_io import box_stl
+
+UNSAFE_NAMES = ["../../escape", "/abs/olute", "a/b", "a\\b", "..", ".", ".hidden", "con",
+                "c:evil", "x" * 300, "tab\there", " ", "nul.txt"]
+
+
+def files_under(folder: Path) -> set[str]:
+    return {str(p.relative_to(folder)) for p in folder.rglob("*")}
+
+
+def model_with_meshes(names: list[str | None], model_name: str = "m") -> mjcf.RootElement:
+    model = mjcf.RootElement(model=model_name)
+    for i, name in enumerate(names):
+        mesh = model.asset.add_mesh(name=f"mesh{i}",
+                                    file=mjcf.Asset(box_stl(0.1 + i / 100), ".stl", name=name))
+        body = model.worldbody.add_body()
+        body.add_freejoint()
+        body.add_geom(type="mesh", mesh=mesh)
+    return model
+
+
+def test_asset_and_element_names_cannot_leave_the_folder(tmp_path: Path) -> None:
+    model = model_with_meshes(list(UNSAFE_NAMES), model_name="../../model")
+    # Element names feed file names too (an in-memory asset without a name of its own).
+    for i, name in enumerate(["..", ".env", "x:y"]):
+        model.asset.add_mesh(name=name, file=mjcf.Asset(box_stl(0.5 + i / 10), "stl"))
+    out = tmp_path / "deep" / "out"
+    path = mjcf.export_with_assets(model, out)
+    assert files_under(tmp_path) == {"deep", "deep/out"} | {f"deep/out/{n}" for n in os.listdir(out)}
+    names = os.listdir(out)
+    assert len(names) == len(UNSAFE_NAMES) + 3 + 1
+    for name in names:
+        assert _assets_io.is_plain_file_name(name), name
+        assert not name.startswith(".") and "/" not in name and "\\" not in name
+        assert len(name.encode()) <= 210
+    assert Path(path).parent == out and Path(path).name == "_.._model.xml"
+    # get_assets() (what a user might write to disk) gives the same safe names.
+    assert set(model.get_assets()) | {Path(path).name} == set(names)
+    assert mujoco.MjModel.from_xml_path(path).nmesh == len(UNSAFE_NAMES) + 3
+
+
+@pytest.mark.parametrize(("stem", "extension", "expected"), [
+    ("mesh", ".stl", "mesh.stl"),
+    ("my mesh.v2", ".STL", "my mesh.v2.STL"),
+    ("../../x", ".stl", "_.._x.stl"),
+    ("ok", "../../../y", "ok._.._.._y"),
+    ("..", "", "file"),
+    ("trailing. ", "", "trailing"),
+    ("LPT1", ".png", "_LPT1.png"),
+])
+def test_safe_file_name(stem: str, extension: str, expected: str) -> None:
+    assert _assets_io.safe_file_name(stem, extension) == expected
+    assert _assets_io.is_plain_file_name(expected)
+
+
+def test_names_differing_only_in_case_do_not_collide() -> None:
+    model = model_with_meshes(["Part", "part", "PART"])
+    assert sorted(model.get_assets()) == ["PART-3.stl", "Part.stl", "part-2.stl"]
+
+
+def test_explicit_model_filename_must_be_plain(tmp_path: Path) -> None:
+    model = model_with_meshes(["part"])
+    for bad in ["../m.xml", "sub/m.xml", str(tmp_path / "m.xml"), ".m.xml", ""]:
+        with pytest.raises(mjcf.ExportError, match="plain file name"):
+            mjcf.export_with_assets(model, tmp_path / "out", bad)
+    with pytest.raises(mjcf.ExportError, match="also the name of a file the model uses"):
+        mjcf.export_with_assets(model, tmp_path / "out", "PART.stl")
+    assert not (tmp_path / "out").exists() or not os.listdir(tmp_path / "out")
+
+
+def test_different_existing_files_are_not_overwritten_silently(tmp_path: Path) -> None:
+    model = model_with_meshes(["part", "other"])
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "part.stl").write_bytes(b"someone else's mesh")
+    with pytest.raises(mjcf.ExportError, match=r"would replace 1 file.*part.stl.*overwrite=True"):
+        mjcf.export_with_assets(model, out)
+    assert sorted(os.listdir(out)) == ["part.stl"]  # nothing written
+    assert (out / "part.stl").read_bytes() == b"someone else's mesh"
+    path = mjcf.export_with_assets(model, out, overwrite=True)
+    assert (out / "part.stl").read_bytes() == box_stl(0.1)
+    assert sorted(os.listdir(out)) == ["m.xml", "other.stl", "part.stl"]
+    # Identical files are fine, and left untouched.
+    os.utime(path, (1, 1))
+    assert mjcf.export_with_assets(model, out) == path
+    assert os.stat(path).st_mtime == 1
+
+
+def test_links_and_folders_in_the_way(tmp_path: Path) -> None:
+    model = model_with_meshes(["part"])
+    out = tmp_path / "out"
+    out.mkdir()
+    outside = tmp_path / "outside.stl"
+    outside.write_bytes(b"do not touch")
+    (out / "part.stl").symlink_to(outside)
+    with pytest.raises(mjcf.ExportError, match=r"part.stl \(a symbolic link\)"):
+        mjcf.export_with_assets(model, out)
+    mjcf.export_with_assets(model, out, overwrite=True)
+    assert outside.read_bytes() == b"do not touch"  # the link was replaced, not followed
+    assert not (out / "part.stl").is_symlink()
+    (out / "m.xml").unlink()
+    (out / "m.xml").mkdir()
+    with pytest.raises(mjcf.ExportError, match="a folder of that name is in the way"):
+        mjcf.export_with_assets(model, out, overwrite=True)
+
+
+def test_writes_are_atomic(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    model = model_with_meshes(["part"])
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "part.stl").write_bytes(b"old")
+
+    def failing_replace(source: str, target: str) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "replace", failing_replace)
+    with pytest.raises(mjcf.ExportError, match="cannot write .*part.stl: No space left"):
+        mjcf.export_with_assets(model, out, overwrite=True)
+    monkeypatch.undo()
+    assert os.listdir(out) == ["part.stl"]  # no temporary file left behind
+    assert (out / "part.stl").read_bytes() == b"old"  # and the old file intact
+
+
+def test_a_file_appearing_meanwhile_is_not_replaced(tmp_path: Path,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    model = model_with_meshes(["part"])
+    out = tmp_path / "out"
+    real_link = os.link
+
+    def racing_link(source: str, target: str) -> None:
+        if target.endswith("part.stl"):
+            Path(target).write_bytes(b"written by someone else meanwhile")
+        real_link(source, target)
+
+    monkeypatch.setattr(os, "link", racing_link)
+    with pytest.raises(mjcf.ExportError, match="appeared while exporting"):
+        mjcf.export_with_assets(model, out)
+    assert (out / "part.stl").read_bytes() == b"written by someone else meanwhile"
+    assert not [n for n in os.listdir(out) if n.startswith(".")]
+
+
+def test_written_files_have_ordinary_permissions(tmp_path: Path) -> None:
+    path = mjcf.export_with_assets(model_with_meshes(["part"]), tmp_path)
+    umask = os.umask(0o022)
+    os.umask(umask)
+    for name in (path, tmp_path / "part.stl"):
+        assert stat.S_IMODE(os.stat(name).st_mode) == 0o666 & ~umask
+
+
+def test_unwritable_folder_is_an_export_error(tmp_path: Path) -> None:
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    with pytest.raises(mjcf.ExportError, match="cannot create the folder"):
+        mjcf.export_with_assets(model_with_meshes(["part"]), blocker / "out")
