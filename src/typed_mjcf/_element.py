@@ -499,25 +499,32 @@ class Element:
 
     def _clone_tree(self, parent: Element | None, root: ModelRoot | None,
                     memo: dict[int, object]) -> Self:
-        clone = type(self)._blank(parent, root)
-        memo[id(self)] = clone
-        if self._attached is not None:
-            attached = _copy.deepcopy(self._attached, memo)
-            object.__setattr__(clone, "_attached", attached)
-            object.__setattr__(attached, "_frame", clone)
-        for key, value in self._attrs.items():
-            # arrays are mutable in place: the copy gets its own
-            clone._attrs[key] = cast(object, value.copy()) if isinstance(value, np.ndarray) else value
-        for child in self._children:
-            copied = child._clone_tree(clone, root, memo)
-            clone._children.append(copied)
-            child_spec = self._SPEC.children[child._SPEC.tag]
-            if child_spec.single:
-                if clone._singles is None:
-                    object.__setattr__(clone, "_singles", {})
-                assert clone._singles is not None
-                clone._singles[child_spec.tag] = copied
-        return clone
+        """A copy of this subtree under ``parent`` (not added to its children); iterative."""
+        top: Self | None = None
+        stack: list[tuple[Element, Element | None]] = [(self, parent)]
+        while stack:
+            original, clone_parent = stack.pop()
+            clone = type(original)._blank(clone_parent, root)
+            memo[id(original)] = clone
+            if original._attached is not None:
+                attached = _copy.deepcopy(original._attached, memo)
+                object.__setattr__(clone, "_attached", attached)
+                object.__setattr__(attached, "_frame", clone)
+            for key, value in original._attrs.items():
+                # arrays are mutable in place: the copy gets its own
+                clone._attrs[key] = cast(object, value.copy()) if isinstance(value, np.ndarray) else value
+            if top is None:
+                top = cast(Self, clone)
+            elif clone_parent is not None:
+                clone_parent._children.append(clone)
+                if clone_parent._SPEC.children[clone._SPEC.tag].single:
+                    if clone_parent._singles is None:
+                        object.__setattr__(clone_parent, "_singles", {})
+                    assert clone_parent._singles is not None
+                    clone_parent._singles[clone._SPEC.tag] = clone
+            stack.extend((child, clone) for child in reversed(original._children))
+        assert top is not None
+        return top
 
     def _remap_references(self, memo: Mapping[int, object]) -> None:
         """Point references to elements that were copied at their copies."""

@@ -137,25 +137,26 @@ class ModelRoot(Element):
         attached models' bodies inside their frames, their other sections after ours."""
         pending: list[ModelRoot] = []
 
-        def walk(element: Element, include_self: bool = True) -> Iterator[Element]:
-            if include_self:
+        def walk(elements: list[Element]) -> Iterator[Element]:
+            stack = list(reversed(elements))
+            while stack:
+                element = stack.pop()
                 yield element
-            for child in element._children:  # pyright: ignore[reportPrivateUsage]
-                yield from walk(child)
-            attached = element._attached  # pyright: ignore[reportPrivateUsage]
-            if attached is not None:
-                for section in attached._children:  # pyright: ignore[reportPrivateUsage]
-                    if "body" in section._SPEC.children:  # pyright: ignore[reportPrivateUsage]
-                        for child in section._children:  # pyright: ignore[reportPrivateUsage]
-                            yield from walk(child)
-                pending.append(attached)
+                inside = list(element._children)  # pyright: ignore[reportPrivateUsage]
+                attached = element._attached  # pyright: ignore[reportPrivateUsage]
+                if attached is not None:
+                    for section in attached._children:  # pyright: ignore[reportPrivateUsage]
+                        if "body" in section._SPEC.children:  # pyright: ignore[reportPrivateUsage]
+                            inside += section._children  # pyright: ignore[reportPrivateUsage]
+                    pending.append(attached)
+                stack.extend(reversed(inside))
 
-        yield from walk(self)
+        yield from walk([self])
         while pending:
             model = pending.pop(0)
             for section in model._children:  # pyright: ignore[reportPrivateUsage]
                 if "body" not in section._SPEC.children:  # pyright: ignore[reportPrivateUsage]
-                    yield from walk(section, include_self=False)
+                    yield from walk(list(section._children))  # pyright: ignore[reportPrivateUsage]
 
     # ------------------------------------------------------------------ copies
 
