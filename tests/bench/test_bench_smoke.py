@@ -1,0 +1,39 @@
+"""The benchmark suite runs end to end at tiny sizes (no timing is asserted)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from tests.bench.cli import main
+
+
+def test_quick_benchmark_runs_and_reports(tmp_path: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    libs = "typed,lxml,mjspec"
+    try:
+        import dm_control  # noqa: F401
+    except ImportError:
+        pass
+    else:
+        libs += ",dm_control"
+    out = tmp_path / "bench.json"
+    assert main(["--quick", "--libs", libs, "--json", str(out)]) == 0
+    report = capsys.readouterr().out
+    for heading in ("## W1 build + export", "## W2 parse + export", "## W3 compose",
+                    "## Import time", "## Peak memory", "## Targets"):
+        assert heading in report
+    data = json.loads(out.read_text())
+    assert {c["library"] for c in data["W1"]} == set(libs.split(","))
+    # every output the suite produced compiled with MuJoCo to the expected model, except
+    # dm_control's export of humanoid_CMU.xml (it writes its explicit "main" class twice)
+    wrong = [v for v in data["validity"] if not v["valid"]]
+    assert all(v["case"].startswith("W2 dm_control.mjcf humanoid") for v in wrong), wrong
+    assert all(r["samples"] for c in data["W1"] for r in c["sizes"]), "a W1 case did not run"
+    assert data["import"][0]["median"] is not None
+    assert all("error" not in m for m in data["memory"])
+    # a saved run renders again to the same report
+    assert main(["--from-json", str(out)]) == 0
+    assert capsys.readouterr().out == report
