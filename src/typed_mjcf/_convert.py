@@ -181,6 +181,20 @@ def _text_to_float32(text: str) -> np.float32:
     return other if abs(exact - Fraction(float(other))) < abs(exact - Fraction(float(single))) else single
 
 
+def _doubles_to_float32(doubles: np.ndarray[tuple[int, ...], np.dtype[np.float64]],
+                        parts: list[str]) -> np.ndarray[tuple[int, ...], np.dtype[np.float32]]:
+    """Round to float32 as MuJoCo does; only exact halfway doubles need the text again."""
+    singles = doubles.astype(np.float32)
+    back = singles.astype(np.float64)
+    toward = np.nextafter(singles, np.where(doubles > back, np.float32(np.inf),
+                                            np.float32(-np.inf)).astype(np.float32))
+    ties = np.flatnonzero((back != doubles) & np.isfinite(doubles)
+                          & (doubles - back == toward.astype(np.float64) - doubles))
+    for i in ties.tolist():
+        singles[i] = _text_to_float32(parts[i])
+    return singles
+
+
 def int_converter(spec: AttributeSpec) -> Converter:
     return _to_int
 
@@ -210,11 +224,16 @@ def array_converter(spec: AttributeSpec) -> Converter:
         parts = text.split()
         if hi is not None and len(parts) > hi:  # refuse before converting millions of numbers
             raise Rejected(f"{expected}, got {len(parts)}")
-        if is_int:
-            return np.array([_to_int(p) for p in parts], dtype=dtype)
+        try:  # C-level conversion; on any trouble, the per-item path says what was wrong
+            if is_int:
+                return np.array(list(map(int, parts)), dtype=dtype)
+            doubles = np.array(list(map(float, parts)), dtype=np.float64)
+        except (ValueError, OverflowError):
+            converter = _to_int if is_int else _to_float
+            return np.array([converter(p) for p in parts], dtype=dtype)
         if dtype is np.float32:
-            return np.array([_text_to_float32(p) for p in parts], dtype=np.float32)
-        return np.array([_to_float(p) for p in parts], dtype=dtype)
+            return _doubles_to_float32(doubles, parts)
+        return doubles
 
     def convert(value: object) -> object:
         try:

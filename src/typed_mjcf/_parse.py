@@ -19,6 +19,7 @@ where it is known.
 
 from __future__ import annotations
 
+import gc
 import os
 import stat
 from collections.abc import Callable, Iterator
@@ -378,7 +379,15 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelR
     model = cls()
     object.__setattr__(model, "_base_dir", context.base_dir)
     _set_attributes(model, node, source, context)
-    _Builder(context).run(model, node, source)
+    # A parse creates only objects that live on; the cyclic collector would rescan them
+    # again and again (superlinear time on large models) to find no garbage.
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        _Builder(context).run(model, node, source)
+    finally:
+        if collecting:
+            gc.enable()
     return model
 
 
