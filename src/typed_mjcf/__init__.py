@@ -24,6 +24,7 @@ from typed_mjcf.errors import (
     ParseError,
     UnknownAttributeError,
 )
+from typed_mjcf._validate import Finding, ValidationError
 from typed_mjcf_generated import elements as _elements
 from typed_mjcf_generated.elements import *  # noqa: F403
 from typed_mjcf.io import (
@@ -42,6 +43,7 @@ __all__ = [
     "DuplicateIdentifierError",
     "Element",
     "ExportError",
+    "Finding",
     "InvalidTypeError",
     "InvalidValueError",
     "MjcfError",
@@ -49,6 +51,7 @@ __all__ = [
     "ParseError",
     "ParseLimits",
     "UnknownAttributeError",
+    "ValidationError",
     "export_with_assets",
     "from_file",
     "from_path",

@@ -33,6 +33,7 @@ if TYPE_CHECKING:
 _REGISTRY: dict[str, type[Element]] = {}
 _new_object = object.__new__
 _set_slot = object.__setattr__  # elements' own __setattr__ validates; their slots bypass it
+_NO_CHILDREN: tuple[()] = ()
 E = TypeVar("E", bound="Element")
 
 
@@ -54,7 +55,7 @@ class Element:
     _SPEC: ClassVar[ElementSpec]
 
     _attrs: dict[str, object]
-    _children: list[Element]
+    _children: list[Element] | tuple[()]  # () until the first child: fewer objects for the GC
     _parent: Element | None
     _root: ModelRoot | None
     _singles: dict[str, Element] | None
@@ -86,7 +87,7 @@ class Element:
         element = object.__new__(cls)
         setattr_ = object.__setattr__
         setattr_(element, "_attrs", {})
-        setattr_(element, "_children", [])
+        setattr_(element, "_children", _NO_CHILDREN)
         setattr_(element, "_parent", parent)
         setattr_(element, "_root", root)
         setattr_(element, "_singles", None)
@@ -207,7 +208,11 @@ class Element:
         if root is None:
             return
         assert isinstance(name, str) and attribute.namespace is not None
-        holder = root._lookup_identifier(attribute.namespace, name)  # pyright: ignore[reportPrivateUsage]
+        tables = root._identifiers  # pyright: ignore[reportPrivateUsage]
+        table = tables.get(attribute.namespace)
+        if table is None:
+            table = tables[attribute.namespace] = {}
+        holder = table.get(name)
         if holder is not None and holder is not self:
             raise DuplicateIdentifierError(
                 f"{self.path}: invalid {attribute.py_name}={name!r} on <{self._SPEC.tag}>: "
@@ -215,9 +220,9 @@ class Element:
                 f"but {holder.path} has it"
             )
         old = self._attrs.get(attribute.name)
-        if old is not None and old != name:
-            root._forget_identifier(attribute.namespace, old, self)  # pyright: ignore[reportPrivateUsage]
-        root._remember_identifier(attribute.namespace, name, self)  # pyright: ignore[reportPrivateUsage]
+        if isinstance(old, str) and old != name and table.get(old) is self:
+            del table[old]
+        table[name] = self
 
     def _check_reference(self, attribute: AttributeSpec, target: object) -> None:
         assert isinstance(target, Element)
@@ -341,21 +346,32 @@ class Element:
         # the hot path (a repeated child), with _blank inlined
         child = _new_object(cls)
         _set_slot(child, "_attrs", {})
-        _set_slot(child, "_children", [])
+        _set_slot(child, "_children", _NO_CHILDREN)
         _set_slot(child, "_parent", self)
         _set_slot(child, "_root", self._root)
         _set_slot(child, "_singles", None)
         _set_slot(child, "_attached", None)
         if kwargs:
             child._init_attributes(kwargs)
+        children = self._children
+        if isinstance(children, tuple):
+            children = []
+            _set_slot(self, "_children", children)
         if position is None:
-            self._children.append(child)
+            children.append(child)
         else:
-            self._children.insert(position, child)
+            children.insert(position, child)
         return child
 
-    def _place(self, child: Element, child_spec: ChildSpec, position: int | None) -> None:
+    def _mutable_children(self) -> list[Element]:
         children = self._children
+        if isinstance(children, tuple):
+            children = []
+            _set_slot(self, "_children", children)
+        return children
+
+    def _place(self, child: Element, child_spec: ChildSpec, position: int | None) -> None:
+        children = self._mutable_children()
         if child_spec.single:
             if self._singles is None:
                 object.__setattr__(self, "_singles", {})
@@ -405,7 +421,7 @@ class Element:
         parent = self._parent
         if parent is None:
             raise ChildError(f"{self.path}: a model's root (or a removed element) has no parent")
-        parent._children.remove(self)
+        parent._mutable_children().remove(self)
         if parent._singles is not None and parent._singles.get(self._SPEC.tag) is self:
             del parent._singles[self._SPEC.tag]
         root = self._root
@@ -516,7 +532,7 @@ class Element:
             if top is None:
                 top = cast(Self, clone)
             elif clone_parent is not None:
-                clone_parent._children.append(clone)
+                clone_parent._mutable_children().append(clone)
                 if clone_parent._SPEC.children[clone._SPEC.tag].single:
                     if clone_parent._singles is None:
                         object.__setattr__(clone_parent, "_singles", {})

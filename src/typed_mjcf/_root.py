@@ -12,6 +12,8 @@ from typed_mjcf.errors import InvalidValueError, did_you_mean
 if TYPE_CHECKING:
     import mujoco
 
+    from typed_mjcf._validate import Finding
+
 
 class ModelRoot(Element):
     """Behaviour of ``<mujoco>``, the root of a model. Use ``typed_mjcf.RootElement``."""
@@ -188,10 +190,23 @@ class ModelRoot(Element):
 
         return collect_assets(self).files
 
-    def compile(self) -> mujoco.MjModel:
-        """Compile with MuJoCo (assets passed through a virtual file system)."""
-        from typed_mjcf._bridge import compile_model
+    def validate(self) -> list[Finding]:
+        """What MuJoCo's grammar forbids beyond single values: presence constraints, required
+        attributes and children, references that name nothing, unused default classes, ...
+        Each finding names the element path and the rule; warnings don't stop compile()."""
+        from typed_mjcf._validate import validate
 
+        return validate(self)
+
+    def compile(self) -> mujoco.MjModel:
+        """Validate, then compile with MuJoCo (assets passed through a virtual file system).
+
+        Raises ``ValidationError`` listing every error ``validate()`` finds, or
+        ``CompileError`` with MuJoCo's message and the path of the element it concerns."""
+        from typed_mjcf._bridge import compile_model
+        from typed_mjcf._validate import ensure_valid
+
+        ensure_valid(self)
         return compile_model(self)
 
     def to_spec(self) -> mujoco.MjSpec:

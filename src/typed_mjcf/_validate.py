@@ -13,6 +13,8 @@ Every finding has a rule name (see :data:`RULES`), the path of the element and a
 
 from __future__ import annotations
 
+import re
+
 import functools
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
@@ -29,7 +31,7 @@ Severity = Literal["error", "warning"]
 Rule = Literal[
     "exclusive", "together", "requires", "oneof", "required-attribute", "required-child",
     "unresolved-reference", "default-class", "world-body", "replicate-joint", "self-attach",
-    "unused-default",
+    "replicate-names", "unused-default",
 ]
 
 RULES: Final[dict[Rule, str]] = {
@@ -39,11 +41,13 @@ RULES: Final[dict[Rule, str]] = {
     "oneof": "at least one of the grammar's alternative attribute bundles is complete",
     "required-attribute": "a required attribute is set (not checked in <default> classes)",
     "required-child": "a required child element is present",
-    "unresolved-reference": "a reference names an element of the model (or one MuJoCo defines)",
+    "unresolved-reference": "a reference names an element of the model (or one MuJoCo "
+                            "defines); a warning in a <default> class",
     "default-class": "a nested <default> has a class name; the top-level one is 'main'",
     "world-body": "the world body has no joints and no <inertial> (also through <frame>s)",
     "replicate-joint": "a joint is not a direct child of <replicate> (also through <frame>s)",
     "self-attach": "an <attach> without model= (self-attachment) names a body= or frame=",
+    "replicate-names": "no named sensor without an object when the model has several <replicate>s",
     "unused-default": "a default class is used by some class= or childclass= (warning)",
 }
 
@@ -76,6 +80,15 @@ _INERTIA: Final = "inertial"
 # - <attach> without model= attaches part of this model: it needs body= or frame= ("either
 #   'body' or 'frame' attribute must be specified for self-attach").
 _SELF_ATTACH: Final = ("attach", "model", ("body", "frame"))
+# - MuJoCo 4.0.0 copies a sensor that refers to no object (clock, e_kinetic, user without
+#   objname, ...) once per <replicate> in the model, suffixing its name the same way each
+#   time: with two or more replicates a named one fails ("repeated name 'c0' in sensor").
+_REPLICATE: Final = "replicate"
+_SENSOR_SECTION: Final = "sensor"
+
+# Suggestions ("did you mean") compare a name with every name of its namespace: only the first
+# unresolved references get one, so that a broken model still validates in linear time.
+_MAX_HINTS: Final = 20
 
 
 @dataclass(frozen=True, slots=True)
@@ -186,6 +199,7 @@ class _Pending:
     attribute: str
     namespace: str
     name: str
+    in_default: bool  # made in a <default> class (not the class= of an element)
 
 
 @dataclass(slots=True)
@@ -193,14 +207,18 @@ class _Pass:
     model: ModelRoot
     namespaces: frozenset[str]
     found: list[tuple[int, int, Element, Rule, str, Severity]] = field(
-        default_factory=lambda: [])
-    plans: dict[tuple[int, bool], _Plan] = field(default_factory=lambda: {})
-    pending: list[_Pending] = field(default_factory=lambda: [])
-    implicit_names: dict[str, set[str]] = field(default_factory=lambda: {})
-    unverifiable: set[str] = field(default_factory=lambda: set())  # namespaces
-    prefixes: list[str] = field(default_factory=lambda: [])  # of <attach> elements
-    classes: dict[str, tuple[int, Element]] = field(default_factory=lambda: {})
-    used_classes: set[str] = field(default_factory=lambda: set())
+        default_factory=list[tuple[int, int, Element, Rule, str, Severity]])
+    plans: dict[tuple[int, bool], _Plan] = field(default_factory=dict[tuple[int, bool], _Plan])
+    pending: list[_Pending] = field(default_factory=list[_Pending])
+    implicit_names: dict[str, set[str]] = field(default_factory=dict[str, set[str]])
+    unverifiable: set[str] = field(default_factory=set[str])  # namespaces
+    prefixes: list[str] = field(default_factory=list[str])  # of <attach> elements
+    replicates: int = 0
+    replicate_seps: set[str] = field(default_factory=set[str])  # how copies' names are suffixed
+    objectless_sensors: list[tuple[int, Element]] = field(
+        default_factory=list[tuple[int, Element]])
+    classes: dict[str, tuple[int, Element]] = field(default_factory=dict[str, tuple[int, Element]])
+    used_classes: set[str] = field(default_factory=set[str])
 
     def add(self, order: int, element: Element, rule: Rule, message: str,
             severity: Severity = "error") -> None:
@@ -224,7 +242,7 @@ def _attributes(element: Element) -> dict[str, object]:
     return element._attrs  # pyright: ignore[reportPrivateUsage]
 
 
-def _children(element: Element) -> list[Element]:
+def _children(element: Element) -> Sequence[Element]:
     return element._children  # pyright: ignore[reportPrivateUsage]
 
 
@@ -269,6 +287,7 @@ def validate(model: ModelRoot) -> list[Finding]:
             if _is_written(element, child):
                 stack.append((child, element, owner))
     _resolve_pending(state)
+    _check_replicated_sensors(state)
     _check_unused_classes(state)
     return state.findings()
 
@@ -294,6 +313,10 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
                           f"(an empty one is not written)")
     if spec.namespace is not None:
         _declare(state, order, element, parent, spec, attrs)
+    elif tag in _REFERS_INTO_CHILD_MODEL:
+        prefix = attrs.get("prefix")
+        if isinstance(prefix, str):
+            state.prefixes.append(prefix)
     if plan.references:
         skipped = _child_model_references(spec, attrs)
         for attribute in plan.references:
@@ -302,6 +325,15 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
                 continue
             assert attribute.namespace is not None
             _check_reference(state, order, element, attribute.name, attribute.namespace, value)
+    if tag == _REPLICATE:
+        state.replicates += 1
+        sep = attrs.get("sep")
+        state.replicate_seps.add(sep if isinstance(sep, str) else "")
+    elif (parent is not None and parent.spec.tag == _SENSOR_SECTION and spec.namespace
+          and _name_of(element) is not None
+          and not any(a.name in attrs for a in plan.references)
+          and not any(name in attrs for _, name in plan.typed_names)):
+        state.objectless_sensors.append((order, element))
     for type_name, object_name in plan.typed_names:
         word, name = attrs.get(type_name), attrs.get(object_name)
         if isinstance(word, str) and isinstance(name, str):
@@ -356,10 +388,8 @@ def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[st
                 state.add(order, element, "requires",
                           f"<{tag}> sets {'+'.join(first)}, which requires "
                           f"{', '.join(missing)}")
-    elif kind == "oneof":
-        if not any(all(name in attrs for name in b) for b in bundles):
-            state.add(order, element, "oneof",
-                      f"<{tag}> must set all of at least one of {listing}")
+    elif kind == "oneof" and not any(all(name in attrs for name in b) for b in bundles):
+        state.add(order, element, "oneof", f"<{tag}> must set all of at least one of {listing}")
 
 
 def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> str:
@@ -368,7 +398,7 @@ def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> 
 
 def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
              spec: ElementSpec, attrs: dict[str, object]) -> None:
-    """Record what the element defines: default classes, implicit names, attach prefixes."""
+    """Record what the element defines: default classes, names MuJoCo derives."""
     namespace = spec.namespace
     assert namespace is not None
     name = _name_of(element)
@@ -399,10 +429,6 @@ def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
             state.implicit_names.setdefault(namespace, set()).add(stem)
     elif namespace in _NAMED_FROM_CONTENTS:
         state.unverifiable.add(namespace)
-    if spec.tag in _REFERS_INTO_CHILD_MODEL:
-        prefix = attrs.get("prefix")
-        if isinstance(prefix, str):
-            state.prefixes.append(prefix)
 
 
 def _child_model_references(spec: ElementSpec, attrs: dict[str, object]) -> frozenset[str]:
@@ -421,7 +447,10 @@ def _check_reference(state: _Pass, order: int, element: Element, attribute: str,
     elif isinstance(value, str):
         name = value
         if (namespace, name) not in _BUILTIN_NAMES and model.find(namespace, name) is None:
-            state.pending.append(_Pending(order, element, attribute, namespace, name))
+            in_default = (namespace != DEFAULT_NAMESPACE and element.parent is not None
+                          and element.parent.spec.namespace == DEFAULT_NAMESPACE)
+            state.pending.append(_Pending(order, element, attribute, namespace, name,
+                                          in_default))
     else:
         return
     if namespace == DEFAULT_NAMESPACE and name is not None:
@@ -445,7 +474,24 @@ def element_in_model(model: ModelRoot, target: Element) -> bool:
 
     Extension point for attachments: an element of a model attached to ``model`` belongs
     to it too (its reference is written with the scoped name)."""
-    return _root_of(target) is model
+    root = _root_of(target)
+    while root is not None and root is not model:
+        frame = root.attachment_frame
+        root = None if frame is None else _root_of(frame)
+    return root is model
+
+
+def _replicated_name(model: ModelRoot, namespace: str, name: str, seps: set[str]) -> bool:
+    """Whether ``name`` is a copy's name that <replicate> derives: ``base<sep><index>``, once
+    per level of nested replicates."""
+    for sep in seps:
+        suffix = re.compile(re.escape(sep) + r"\d+$")
+        base = name
+        while (match := suffix.search(base)) is not None and match.start() > 0:
+            base = base[: match.start()]
+            if model.find(namespace, base) is not None:
+                return True
+    return False
 
 
 def resolve_scoped(model: ModelRoot, namespace: str, name: str) -> bool:
@@ -461,6 +507,7 @@ def _resolve_pending(state: _Pass) -> None:
     """Resolve the references the namespaces did not: names MuJoCo derives (asset files),
     names only MuJoCo can see (attached MJCF files), scoped names of attached models."""
     model = state.model
+    hints = _MAX_HINTS
     for ref in state.pending:
         namespace, name = ref.namespace, ref.name
         if name in state.implicit_names.get(namespace, ()) or namespace in state.unverifiable:
@@ -469,20 +516,38 @@ def _resolve_pending(state: _Pass) -> None:
             continue  # named by an <attach prefix=...> from a model only MuJoCo reads
         if "/" in name and resolve_scoped(model, namespace, name):
             continue
+        if _replicated_name(model, namespace, name, state.replicate_seps):
+            continue
+        # In a default class the reference matters only to elements that use the class, and
+        # MuJoCo accepts a class nobody uses it from: a warning there, an error elsewhere.
+        severity: Severity = "warning" if ref.in_default else "error"
         state.add(ref.order, ref.element, "unresolved-reference",
-                  _unresolved_message(state, ref))
+                  _unresolved_message(state, ref, hint=hints > 0), severity)
+        hints -= 1
 
 
-def _unresolved_message(state: _Pass, ref: _Pending) -> str:
+def _unresolved_message(state: _Pass, ref: _Pending, *, hint: bool) -> str:
     namespace, name = ref.namespace, ref.name
-    identifiers = state.model._identifiers.get(namespace, {})  # pyright: ignore[reportPrivateUsage]
-    known = [*identifiers, *state.implicit_names.get(namespace, ())]
-    hint = did_you_mean(name, known)
+    suggestion = ""
+    if hint:
+        identifiers = state.model._identifiers.get(namespace, {})  # pyright: ignore[reportPrivateUsage]
+        suggestion = did_you_mean(name, [*identifiers, *state.implicit_names.get(namespace, ())])
     if namespace == DEFAULT_NAMESPACE:
         return (f"{ref.attribute}={name!r} names no default class (no <default "
-                f"class={name!r}>){hint}")
+                f"class={name!r}>){suggestion}")
     scoped = " (no attached model provides the scoped name)" if "/" in name else ""
-    return f"{ref.attribute}={name!r} names no {namespace} in the model{scoped}{hint}"
+    return f"{ref.attribute}={name!r} names no {namespace} in the model{scoped}{suggestion}"
+
+
+def _check_replicated_sensors(state: _Pass) -> None:
+    if state.replicates < 2:
+        return
+    for order, element in state.objectless_sensors:
+        state.add(order, element, "replicate-names",
+                  f"MuJoCo copies a <{element.tag}> that refers to no object once per "
+                  f"<replicate>, with the same name each time: with {state.replicates} "
+                  f"replicates in the model, {_name_of(element)!r} would repeat; leave it "
+                  f"unnamed")
 
 
 def _check_unused_classes(state: _Pass) -> None:

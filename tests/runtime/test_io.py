@@ -186,10 +186,15 @@ def test_different_files_with_the_same_name_get_distinct_names() -> None:
 # ----------------------------------------------------------------------------- bridge
 
 
-def test_compile_errors_are_the_library_error() -> None:
+def test_compile_validates_first_and_reraises_mujoco_errors_with_the_element_path() -> None:
     model = mjcf.RootElement()
     model.actuator.add_motor(joint="nonexistent")
-    with pytest.raises(mjcf.CompileError, match="nonexistent"):
+    with pytest.raises(mjcf.ValidationError, match=r"actuator/motor\[0\]: unresolved-reference"):
+        model.compile()
+    model = mjcf.RootElement()
+    body = model.worldbody.add_body(name="massless")
+    body.add_joint(name="hinge")  # a moving body with no mass: only MuJoCo knows
+    with pytest.raises(mjcf.CompileError, match=r"(?s)mass and inertia.*worldbody/body\[massless\]"):
         model.compile()
 
 

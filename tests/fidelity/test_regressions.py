@@ -1,0 +1,303 @@
+"""Regressions from the property tests and the parser sweeps: concrete models.
+
+Each case is MJCF that MuJoCo 4.0.0's parser refuses (checked every run). The library must
+refuse it too: at assignment (so parsing raises) or in ``validate()``. Cases the library
+does not refuse yet are listed in ``KNOWN_GAPS`` with the cause; they are reported as xfail,
+and fail once fixed so that the entry gets removed.
+"""
+
+from __future__ import annotations
+
+import mujoco
+import pytest
+
+import typed_mjcf as mjcf
+from typed_mjcf._validate import validate
+
+WORLD = ('<worldbody><body name="b"><joint name="j"/><geom size="0.1"/>'
+         '<site name="s"/><site name="s2"/></body></worldbody>')
+
+
+def doc(*parts: str) -> str:
+    return "<mujoco>" + "".join(parts) + "</mujoco>"
+
+
+CASES: dict[str, str] = {
+    # --- refused by validate() -------------------------------------------------------------
+    "orientation-exclusive": doc('<worldbody><body quat="1 0 0 0" euler="0 0 0"/></worldbody>'),
+    "default-camera-exclusive": doc('<default><camera fovy="45" sensorsize="1 1"/></default>'),
+    "connect-oneof": doc('<equality><connect anchor="0 0 0"/></equality>'),
+    "framepos-together": doc(WORLD, '<sensor><framepos objtype="body" objname="b" '
+                                    'reftype="body"/></sensor>'),
+    "replicate-count": doc('<worldbody><replicate><geom size="1"/></replicate></worldbody>'),
+    "undefined-class": doc('<worldbody><geom class="nope" size="1"/></worldbody>'),
+    "undefined-childclass": doc('<worldbody><frame childclass="nope"/></worldbody>'),
+    "nested-default-without-class": doc('<default><default/></default>'),
+    "renamed-main-class": doc('<default class="base"/>'),
+    "joint-in-world-frame": doc('<worldbody><frame><joint/></frame></worldbody>'),
+    "inertial-in-world-frame": doc('<worldbody><frame><inertial pos="0 0 0" mass="1"/>'
+                                   '</frame></worldbody>'),
+    "joint-in-replicate": doc('<worldbody><body><replicate count="2"><frame><joint/></frame>'
+                              '</replicate></body></worldbody>'),
+    "self-attach-without-body": doc('<worldbody><body><attach prefix="p"/></body></worldbody>'),
+    # found by test_properties: a named clock is copied per replicate under one name
+    "named-clock-with-two-replicates": doc(
+        '<worldbody><replicate count="1"/><replicate count="1"/></worldbody>',
+        '<sensor><clock name="c"/></sensor>'),
+    # --- value ranges (found by test_properties and the sweeps) ----------------------------
+    "statistic-extent-zero": doc('<statistic extent="0"/>'),
+    "global-realtime-zero": doc('<visual><global realtime="0"/></visual>'),
+    "map-znear-zero": doc('<visual><map znear="0"/></visual>'),
+    "size-nuser-below-minus-one": doc('<size nuser_body="-2"/>'),
+    "skin-group-above-5": doc('<asset><skin group="6" vertex="0 0 0" face="0 0 0"/></asset>'),
+    "zero-quaternion": doc('<worldbody><geom size="1" quat="0 0 0 0"/></worldbody>'),
+    "negative-kv": doc(WORLD, '<actuator><position joint="j" kv="-1"/></actuator>'),
+    "negative-dampratio": doc('<default><position dampratio="-1"/></default>'),
+    "negative-tausmooth": doc(WORLD, '<actuator><muscle joint="j" tausmooth="-1"/></actuator>'),
+    "negative-adhesion-gain": doc(WORLD, '<actuator><adhesion body="b" gain="-1"/></actuator>'),
+    "negative-damper-ctrlrange": doc(WORLD, '<actuator><damper joint="j" ctrlrange="-1 1"/>'
+                                            '</actuator>'),
+    "maxhullvert-below-4": doc('<default><mesh maxhullvert="2"/></default>'),
+    "headlight-active-5": doc('<visual><headlight active="5"/></visual>'),
+    "contact-sensor-num-zero": doc(WORLD, '<sensor><contact body1="b" num="0"/></sensor>'),
+    "actuatorgroupdisable-above-30": doc('<option actuatorgroupdisable="31"/>'),
+    "actuatorgroupdisable-negative": doc('<option actuatorgroupdisable="-1"/>'),
+    "dcmotor-zero-resistance": doc(WORLD, '<actuator><dcmotor joint="j" motorconst="1" '
+                                          'resistance="0"/></actuator>'),
+    # --- arity and keywords ----------------------------------------------------------------
+    "frame-scale-two-values": doc('<worldbody><frame scale="1 2"/></worldbody>'),
+    "compiler-coordinate-global": doc('<compiler coordinate="global"/>'),
+    # --- attributes the parser requires ----------------------------------------------------
+    "fixed-joint-coef": doc(WORLD, '<tendon><fixed><joint joint="j"/></fixed></tendon>'),
+    "pulley-divisor": doc(WORLD, '<tendon><spatial><site site="s"/><pulley/><site site="s2"/>'
+                                 '</spatial></tendon>'),
+    "user-sensor-dim": doc('<sensor><user/></sensor>'),
+    "extension-plugin-plugin": doc('<extension><plugin/></extension>'),
+    "plugin-config-value": doc('<extension><plugin plugin="mujoco.pid"><instance name="i">'
+                               '<config key="k"/></instance></plugin></extension>'),
+    "material-layer-texture": doc('<asset><material name="m"><layer role="rgb"/></material>'
+                                  '</asset>'),
+    "builtin-mesh-params": doc('<asset><mesh name="m" builtin="sphere"/></asset>'),
+    "numeric-size-or-data": doc('<custom><numeric name="n"/></custom>'),
+    "text-data": doc('<custom><text name="t"/></custom>'),
+    "dcmotor-constants": doc('<default><dcmotor/></default>'),
+    # --- attributes the parser refuses together --------------------------------------------
+    "kv-and-dampratio": doc(WORLD, '<actuator><position joint="j" kv="1" dampratio="1"/>'
+                                   '</actuator>'),
+    "ctrlrange-and-inheritrange": doc(WORLD, '<actuator><position joint="j" ctrlrange="0 1" '
+                                             'inheritrange="1"/></actuator>'),
+    "actrange-and-inheritrange": doc(WORLD, '<actuator><intvelocity joint="j" actrange="0 1" '
+                                            'inheritrange="1"/></actuator>'),
+    "posrange-and-inheritrange": doc(WORLD, '<actuator><pid joint="j" posrange="0 1" '
+                                            'inheritrange="1"/></actuator>'),
+    "cranklength-without-cranksite": doc(WORLD, '<actuator><motor joint="j" cranklength="1"/>'
+                                                '</actuator>'),
+    "slidersite-without-cranksite": doc(WORLD, '<actuator><motor joint="j" slidersite="s"/>'
+                                               '</actuator>'),
+    "refsite-without-site": doc(WORLD, '<actuator><motor joint="j" refsite="s"/></actuator>'),
+    # found by test_properties: the actuator rows of a default class share one actuator
+    "default-general-sets-adhesion-gain": doc(
+        '<default><general gainprm="-1"/></default>', WORLD,
+        '<actuator><adhesion body="b"/></actuator>'),
+    "default-texture-gridlayout": doc('<default><texture gridlayout="aa"/></default>'),
+}
+
+# What MuJoCo says for each case (the first line of its error, after "XML Error: ").
+MESSAGES: dict[str, str] = {
+    'actrange-and-inheritrange': 'actrange and inheritrange cannot both be defined',
+    'actuatorgroupdisable-above-30': 'disabled actuator group value cannot exceed 30',
+    'actuatorgroupdisable-negative': 'disabled actuator group value must be non-negative',
+    'builtin-mesh-params': "required attribute missing: 'params'",
+    'compiler-coordinate-global': 'global coordinates no longer supported',
+    'connect-oneof': "one of ('site1', 'site2'), ('body1', 'anchor') must be specified",
+    'contact-sensor-num-zero': "'num' must be positive in sensor",
+    'cranklength-without-cranksite': 'cranklength and slidersite can only be used in slidercrank transmission',
+    'ctrlrange-and-inheritrange': 'ctrlrange and inheritrange cannot both be defined',
+    'dcmotor-constants': 'DC motor: motor constant K must be positive',
+    'dcmotor-zero-resistance': 'DC motor: resistance R must be positive',
+    'default-camera-exclusive': "at most one of 'fovy', 'sensorsize' can be specified",
+    'default-general-sets-adhesion-gain': 'adhesion gain cannot be negative',
+    'default-texture-gridlayout': 'gridlayout length must match gridsize',
+    'extension-plugin-plugin': "required attribute missing: 'plugin'",
+    'fixed-joint-coef': "required attribute missing: 'coef'",
+    'frame-scale-two-values': "attribute 'scale' must have 1 or 3 values",
+    'framepos-together': "attributes 'reftype', 'refname' must be specified together",
+    'global-realtime-zero': 'realtime must be greater than 0',
+    'headlight-active-5': "invalid keyword: '5'",
+    'inertial-in-world-frame': 'World body cannot have inertia',
+    'joint-in-replicate': 'joint cannot be a direct child of replicate',
+    'joint-in-world-frame': 'World body cannot have joints',
+    'kv-and-dampratio': 'kv and dampratio cannot both be defined',
+    'map-znear-zero': 'znear must be strictly positive',
+    'material-layer-texture': "required attribute missing: 'texture'",
+    'maxhullvert-below-4': 'maxhullvert must be larger than 3',
+    'named-clock-with-two-replicates': "repeated name 'c0' in sensor",
+    'negative-adhesion-gain': 'adhesion gain cannot be negative',
+    'negative-damper-ctrlrange': 'damper control range cannot be negative',
+    'negative-dampratio': 'dampratio cannot be negative',
+    'negative-kv': 'kv cannot be negative',
+    'negative-tausmooth': 'muscle tausmooth cannot be negative',
+    'nested-default-without-class': 'empty class name',
+    'numeric-size-or-data': 'custom field size must be positive',
+    'orientation-exclusive': 'multiple orientation specifiers are not allowed',
+    'plugin-config-value': "required attribute missing: 'value'",
+    'posrange-and-inheritrange': 'posrange and inheritrange cannot both be defined',
+    'pulley-divisor': "required attribute missing: 'divisor'",
+    'refsite-without-site': 'refsite can only be used with site transmission',
+    'renamed-main-class': "top-level default class 'main' cannot be renamed",
+    'replicate-count': "required attribute missing: 'count'",
+    'self-attach-without-body': "either 'body' or 'frame' attribute must be specified for self-attach",
+    'size-nuser-below-minus-one': 'nuser_body must be >= -1',
+    'skin-group-above-5': 'skin group must be between 0 and 5',
+    'slidersite-without-cranksite': 'cranklength and slidersite can only be used in slidercrank transmission',
+    'statistic-extent-zero': 'extent must be strictly positive',
+    'text-data': 'text field cannot be empty',
+    'undefined-childclass': 'unknown default childclass',
+    'undefined-class': "unknown default class name 'nope'",
+    'user-sensor-dim': "required attribute missing: 'dim'",
+    'zero-quaternion': 'zero quaternion is not allowed',
+}
+
+_RANGES = ("the schema carries no numeric ranges: MuJoCo's grammar file has min=/max=/"
+           "positive facets that codegen drops, and the parser checks more ranges than it lists")
+_REQUIRED = "the schema does not mark the attribute required (the parser requires it)"
+_EXCLUSIVE = "the schema lacks this presence constraint (the parser enforces it)"
+_SEMANTIC = "a MuJoCo rule on values that the schema cannot state"
+KNOWN_GAPS: dict[str, str] = {
+    "statistic-extent-zero": _RANGES, "global-realtime-zero": _RANGES,
+    "map-znear-zero": _RANGES, "size-nuser-below-minus-one": _RANGES,
+    "skin-group-above-5": _RANGES, "zero-quaternion": _RANGES, "negative-kv": _RANGES,
+    "negative-dampratio": _RANGES, "negative-tausmooth": _RANGES,
+    "negative-adhesion-gain": _RANGES, "negative-damper-ctrlrange": _RANGES,
+    "maxhullvert-below-4": _RANGES, "headlight-active-5": _RANGES,
+    "contact-sensor-num-zero": _RANGES, "actuatorgroupdisable-above-30": _RANGES,
+    "actuatorgroupdisable-negative": _RANGES, "dcmotor-zero-resistance": _RANGES,
+    "frame-scale-two-values": "arity 1..3 in the schema; the parser takes 1 or 3 values",
+    "compiler-coordinate-global": "a grammar keyword the parser no longer accepts",
+    "fixed-joint-coef": _REQUIRED, "pulley-divisor": _REQUIRED, "user-sensor-dim": _REQUIRED,
+    "extension-plugin-plugin": _REQUIRED, "plugin-config-value": _REQUIRED,
+    "material-layer-texture": _REQUIRED, "builtin-mesh-params": _REQUIRED,
+    "numeric-size-or-data": _REQUIRED, "text-data": _REQUIRED,
+    "dcmotor-constants": _REQUIRED,
+    "kv-and-dampratio": _EXCLUSIVE, "ctrlrange-and-inheritrange": _EXCLUSIVE,
+    "actrange-and-inheritrange": _EXCLUSIVE, "posrange-and-inheritrange": _EXCLUSIVE,
+    "cranklength-without-cranksite": _EXCLUSIVE, "slidersite-without-cranksite": _EXCLUSIVE,
+    "refsite-without-site": _EXCLUSIVE,
+    "default-general-sets-adhesion-gain": _SEMANTIC, "default-texture-gridlayout": _SEMANTIC,
+}
+
+
+def mujoco_error(xml: str) -> str | None:
+    try:
+        mujoco.MjSpec.from_string(xml)
+    except ValueError as error:
+        return str(error)
+    return None
+
+
+def library_refuses(xml: str) -> bool:
+    try:
+        model = mjcf.from_xml_string(xml)
+    except mjcf.MjcfError:
+        return True  # refused at assignment
+    return any(f.severity == "error" for f in validate(model))
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_the_library_refuses_what_mujoco_refuses(case: str) -> None:
+    xml = CASES[case]
+    error = mujoco_error(xml)
+    assert error is not None, f"MuJoCo now accepts {case}: {xml}"
+    assert MESSAGES[case] in error, error
+    refused = library_refuses(xml)
+    gap = KNOWN_GAPS.get(case)
+    if gap is None:
+        assert refused, f"{case} is accepted by the library: {xml}"
+    elif refused:
+        pytest.fail(f"{case} is refused now: remove it from KNOWN_GAPS")
+    else:
+        pytest.xfail(gap)
+
+
+def test_known_gaps_are_cases() -> None:
+    assert set(KNOWN_GAPS) <= set(CASES) == set(MESSAGES)
+
+
+# ----------------------------------------------------------------------------- accepted
+
+# MJCF that MuJoCo accepts (some of it is what MuJoCo itself writes): the library must read
+# it and find no error in it.
+ACCEPTED: dict[str, str] = {
+    "implicit-mesh-name": doc('<asset><mesh file="meshes/part.v2.stl"/></asset>',
+                              '<worldbody><geom type="mesh" mesh="part.v2"/></worldbody>'),
+    "world-and-main": doc('<worldbody><body name="b"><geom class="main" size="1"/></body>'
+                          '</worldbody><contact><exclude body1="world" body2="b"/></contact>'),
+    "unnamed-clock-with-two-replicates": doc(
+        '<worldbody><replicate count="1"/><replicate count="1"/></worldbody>',
+        '<sensor><clock/></sensor>'),
+    "joint-in-frame-in-body": doc('<worldbody><body><frame><joint/></frame></body></worldbody>'),
+    "inertial-in-replicate-in-world": doc(
+        '<worldbody><replicate count="2"><inertial pos="0 0 0" mass="1"/></replicate>'
+        '</worldbody>'),
+    # found by test_round_trip: what MuJoCo writes for a <pid> and a <dcmotor>
+    "general-input-servo-tokens": doc(WORLD, '<actuator><general joint="j" input="pos ff"/>'
+                                             '</actuator>'),
+    "dcmotor-input-none": doc(WORLD, '<actuator><dcmotor joint="j" motorconst="1" '
+                                     'resistance="1" input="none"/></actuator>'),
+}
+_INPUT = ("general@input is typed keyword expmap|quat and pid/dcmotor@input flags "
+          "pos|vel|ff|voltage, but MuJoCo takes (and writes) a chart keyword, a subset of "
+          "servo tokens, or 'none' in each")
+ACCEPTED_GAPS: dict[str, str] = {"general-input-servo-tokens": _INPUT,
+                                 "dcmotor-input-none": _INPUT}
+
+
+def library_accepts(xml: str) -> bool:
+    try:
+        model = mjcf.from_xml_string(xml)
+    except mjcf.MjcfError:
+        return False
+    return not any(f.severity == "error" for f in validate(model))
+
+
+@pytest.mark.parametrize("case", sorted(ACCEPTED))
+def test_the_library_accepts_what_mujoco_accepts(case: str) -> None:
+    xml = ACCEPTED[case]
+    assert mujoco_error(xml) is None
+    accepted = library_accepts(xml)
+    gap = ACCEPTED_GAPS.get(case)
+    if gap is None:
+        assert accepted, f"{case} is refused by the library: {xml}"
+    elif accepted:
+        pytest.fail(f"{case} is accepted now: remove it from ACCEPTED_GAPS")
+    else:
+        pytest.xfail(gap)
+
+
+def test_what_mujoco_writes_for_a_pid_parses() -> None:
+    spec = mujoco.MjSpec.from_string(doc(WORLD, '<actuator><pid joint="j" kp="1" '
+                                                'input="pos ff"/></actuator>'))
+    spec.compile()
+    xml = spec.to_xml()
+    assert 'input="pos ff"' in xml
+    try:
+        mjcf.from_xml_string(xml)
+    except mjcf.ParseError as error:
+        pytest.xfail(f"{_INPUT}: {error}")
+
+
+# ----------------------------------------------------------------------------- round trip
+
+
+def test_empty_section_inside_a_section_round_trips() -> None:
+    # found by test_properties: touching model.option.flag writes <option/>, which parses
+    # to an option with no children, which is not written: parse -> export is not a fixed
+    # point (and an empty tag is written for nothing)
+    model = mjcf.RootElement()
+    _ = model.option.flag, model.default.mesh
+    xml = model.to_xml_string()
+    again = mjcf.from_xml_string(xml).to_xml_string()
+    if again != xml:
+        pytest.xfail("_export._is_empty_single is not recursive: an empty once-only section "
+                     "holding only empty once-only sections is written as an empty tag")
+    assert xml == "<mujoco/>\n"
