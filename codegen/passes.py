@@ -221,30 +221,18 @@ def _row(schema: ir.Schema, name: str, where: str) -> ir.ElementDef:
     return row
 
 
+_OVERRIDABLE = ("dtype", "arity", "enum", "namespace", "default", "required", "nodefault",
+                "pattern", "field", "doc")
+
+
 def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
     if o.kind is not None and o.kind != attr.kind:
         attr.kind = o.kind
         _drop_fields_of_other_kinds(attr)
-    if o.dtype is not None:
-        attr.dtype = o.dtype
-    if o.arity is not None:
-        attr.arity = o.arity
-    if o.enum is not None:
-        attr.enum = o.enum
-    if o.namespace is not None:
-        attr.namespace = o.namespace
-    if o.default is not None:
-        attr.default = o.default
-    if o.required is not None:
-        attr.required = o.required
-    if o.nodefault is not None:
-        attr.nodefault = o.nodefault
-    if o.pattern is not None:
-        attr.pattern = o.pattern
-    if o.field is not None:
-        attr.field = o.field
-    if o.doc is not None:
-        attr.doc = o.doc
+    for name in _OVERRIDABLE:  # None in an override means "unchanged"
+        value: object = getattr(o, name)
+        if value is not None:
+            setattr(attr, name, value)
 
 
 def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
