@@ -144,8 +144,7 @@ def conflicts(parent: Element | None, child: Element, where: str) -> list[str]:
     """Attributes set in ``child``'s section whose value differs from the parent's."""
     found: list[str] = []
     for name in child._attrs:  # pyright: ignore[reportPrivateUsage]
-        attribute = child.spec.by_name[name]
-        if attribute.directory or name in folder_attributes():
+        if name in folder_attributes():
             continue  # folders resolve the attached model's own files
         mine, theirs = _effective(parent, child, name), _effective(child, child, name)
         if not _same(mine, theirs):

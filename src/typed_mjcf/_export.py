@@ -1,4 +1,5 @@
-"""Writing elements as MJCF: an lxml tree built in one pass, then serialised."""
+"""Writing elements as MJCF: light XML nodes built in one iterative pass, then serialised
+(``to_xml()`` parses that text into lxml)."""
 
 from __future__ import annotations
 
@@ -127,7 +128,7 @@ def iter_written(element: Element) -> Iterator[Element]:
 
 
 class Writer:
-    """Builds the lxml tree of an element, writing attached models inline under their scope."""
+    """Builds the XML nodes of an element, writing attached models inline under their scope."""
 
     def __init__(self, formatter: Formatter, top: Element, keyframes: bool = True) -> None:
         self.formatter = formatter
@@ -164,8 +165,7 @@ class Writer:
                     attrib[name] = value
                     continue
                 if type(value) is float:
-                    text = repr(value)
-                    attrib[name] = text[:-2] if text.endswith(".0") else text
+                    attrib[name] = _shortest_double(value)
                     continue
                 if type(value) is np.ndarray and by_name[name].dtype == "double":
                     doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
@@ -282,22 +282,23 @@ class Writer:
             combine_keyframes(self, node, root, keyframes)
         return node
 
-    def section_node(self, root: Node, tag: str, root_spec_order: dict[str, int]) -> Node:
+    def section_node(self, root: Node, tag: str) -> Node:
         """The root's ``<tag>`` section, created at its grammar position if missing."""
         for child in root:
             if child.tag == tag:
                 return child
+        sections = self.top.spec.children
+        rank = sections[tag].index
         node = Node(tag)
-        index = next((i for i, child in enumerate(root)
-                      if root_spec_order.get(str(child.tag), -1) > root_spec_order[tag]), len(root))
+        index = next((i for i, child in enumerate(root) if sections[child.tag].index > rank),
+                     len(root))
         root.insert(index, node)
         return node
 
     def section(self, root: Node, section: Element, model: ModelRoot, scope: str) -> None:
         """Join an attached model's section to the root's, as its grammar row says."""
-        order = {tag: c.index for tag, c in self.top.spec.children.items()}
         compose = section.spec.compose
-        target = self.section_node(root, section.tag, order)
+        target = self.section_node(root, section.tag)
         if compose == "attributes":
             self.merge_attributes(target, section, model, scope)
         elif compose == "nest":
@@ -314,8 +315,8 @@ class Writer:
     def merge_attributes(self, target: Node, section: Element, model: ModelRoot,
                          scope: str) -> None:
         for name, text in self.attributes(section, scope, model).items():
-            if section.spec.by_name[name].directory or name in _folders():
-                continue
+            if name in _folders():
+                continue  # each model's files resolve in its own folders
             mine = target.get(name)
             if mine is None:
                 target.set(name, text)

@@ -134,8 +134,7 @@ def combine_keyframes(writer: Writer, node: Node, root: ModelRoot,
                            np.asarray(value, dtype=np.float64), key.path)
     for old in [child for child in node if child.tag == tag]:
         node.remove(old)
-    order = {t: c.index for t, c in root.spec.children.items()}
-    section_node = writer.section_node(node, tag, order)
+    section_node = writer.section_node(node, tag)
     number = writer.formatter.number
     key_tag = next(iter(parts[0][1].spec.children))
     for name, combined in keys.items():
