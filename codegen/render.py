@@ -13,6 +13,7 @@ from pathlib import Path
 import jinja2
 
 from codegen import ir
+from codegen.naming import py_name
 from codegen.typing_names import Typer
 
 GENERATOR_VERSION = "1"
@@ -98,7 +99,7 @@ def _element_spec(schema: ir.Schema, el: ir.ElementDef) -> str:
     lines.append("), (")
     for c in el.children:
         child = schema.elements[c.element]
-        lines.append(f"    _C({child.tag!r}, {_py(child.tag)!r}, {child.class_name!r}, "
+        lines.append(f"    _C({child.tag!r}, {py_name(child.tag)!r}, {child.class_name!r}, "
                      f"{c.single!r}, {c.card!r}),")
     lines.append("),")
     constraints = tuple((k.kind, tuple(tuple(b) for b in k.bundles)) for k in el.constraints)
@@ -113,12 +114,6 @@ def _element_spec(schema: ir.Schema, el: ir.ElementDef) -> str:
         extra += f", defaults_tag={schema.elements[el.default_row].tag!r}"
     lines.append(f"anchor={_quote(el.anchor)}, text={el.doc!r}{extra})")
     return "\n".join(lines)
-
-
-def _py(tag: str) -> str:
-    from codegen.naming import py_name
-
-    return py_name(tag)
 
 
 def _property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
@@ -156,7 +151,7 @@ def _class_doc(el: ir.ElementDef) -> str:
 def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
                                _property_doc(typer, el, a)) for a in el.attributes]
-    children = [ChildView(schema.elements[c.element].tag, _py(schema.elements[c.element].tag),
+    children = [ChildView(schema.elements[c.element].tag, py_name(schema.elements[c.element].tag),
                           schema.elements[c.element].class_name, c.single)
                 for c in el.children]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
