@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import copy
 from collections.abc import Iterable, Mapping
-
 from typing import cast
 
 from codegen import ir, naming

@@ -10,8 +10,12 @@
 
 __version__ = "0.1.0"  # first: the generated package reads it while this module initialises
 
+from typed_mjcf_generated import elements as _elements
+from typed_mjcf_generated.elements import *
+
 from typed_mjcf._element import Element
 from typed_mjcf._root import ModelRoot
+from typed_mjcf._validate import Finding, ValidationError
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import (
     ChildError,
@@ -24,9 +28,6 @@ from typed_mjcf.errors import (
     ParseError,
     UnknownAttributeError,
 )
-from typed_mjcf._validate import Finding, ValidationError
-from typed_mjcf_generated import elements as _elements
-from typed_mjcf_generated.elements import *  # noqa: F403
 from typed_mjcf.io import (
     ParseLimits,
     export_with_assets,

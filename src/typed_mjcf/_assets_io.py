@@ -214,7 +214,6 @@ def xml_with_assets(model: ModelRoot, collected: CollectedAssets, *,
                     pretty_print: bool = True) -> str:
     """The model's XML with file attributes replaced by their flat names."""
     from typed_mjcf._export import Formatter, build
-
     from typed_mjcf._xmltext import serialize
 
     formatter = Formatter(file_namer=collected.name_of,

@@ -9,8 +9,8 @@ from __future__ import annotations
 import math
 import os
 import re
-from fractions import Fraction
 from collections.abc import Callable, Iterable
+from fractions import Fraction
 from typing import TYPE_CHECKING, Final, SupportsFloat, SupportsInt, cast
 
 import numpy as np

@@ -14,6 +14,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from typed_mjcf._xmltext import Node, serialize
 from typed_mjcf.errors import ExportError
 
@@ -31,10 +32,10 @@ DOF_SIZE = (6, 3, 1, 1)
 
 
 def _layout(root: ModelRoot) -> mujoco.MjModel:
+    import mujoco
+
     from typed_mjcf._assets_io import collect_assets
     from typed_mjcf._export import Formatter, Writer
-
-    import mujoco
 
     collected = collect_assets(root)
     formatter = Formatter(file_namer=collected.name_of,

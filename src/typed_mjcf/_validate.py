@@ -13,9 +13,8 @@ Every finding has a rule name (see :data:`RULES`), the path of the element and a
 
 from __future__ import annotations
 
-import re
-
 import functools
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal
