@@ -213,12 +213,11 @@ def _element_stem(element: Element) -> str:
 def xml_with_assets(model: ModelRoot, collected: CollectedAssets, *,
                     pretty_print: bool = True) -> str:
     """The model's XML with file attributes replaced by their flat names."""
-    from typed_mjcf._export import Formatter, build
-    from typed_mjcf._xmltext import serialize
+    from typed_mjcf._export import Formatter, write_text
 
     formatter = Formatter(file_namer=collected.name_of,
                           skip_attributes=collected.directory_attributes)
-    return serialize(build(model, formatter), pretty_print)
+    return write_text(model, formatter, pretty_print)
 
 
 def export_with_assets(model: ModelRoot, directory: str, model_filename: str | None = None,

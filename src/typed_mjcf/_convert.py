@@ -236,6 +236,15 @@ def array_converter(spec: AttributeSpec) -> Converter:
         return doubles
 
     def convert(value: object) -> object:
+        kind = type(value)
+        if kind is tuple or kind is list:  # the common case: a few plain Python numbers
+            items = cast("tuple[object, ...] | list[object]", value)
+            n = len(items)
+            if lo <= n and (hi is None or n <= hi) and plain_types.issuperset(map(type, items)):
+                try:
+                    return np.array(items, dtype)
+                except OverflowError:
+                    raise Rejected(f"{expected} that fit in 32 bits") from None
         try:
             array = to_array(value)
         except Rejected as rejected:
@@ -248,14 +257,6 @@ def array_converter(spec: AttributeSpec) -> Converter:
         return array
 
     def to_array(value: object) -> AnyArray:
-        kind = type(value)
-        if kind is tuple or kind is list:  # the common case: plain Python numbers
-            items = cast("tuple[object, ...] | list[object]", value)
-            if set(map(type, items)) <= plain_types:
-                try:
-                    return np.array(items, dtype=dtype)
-                except OverflowError:
-                    raise Rejected(f"{expected} that fit in 32 bits") from None
         if isinstance(value, str):
             return from_text(value)
         if isinstance(value, np.ndarray):

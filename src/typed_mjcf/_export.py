@@ -11,9 +11,10 @@ from lxml import etree
 
 from typed_mjcf._compose import MAIN_CLASS, scope_name
 from typed_mjcf._element import Element
+from typed_mjcf._gc import collector_paused
 from typed_mjcf._root import ModelRoot
 from typed_mjcf._spec import AttributeSpec
-from typed_mjcf._xmltext import Node, serialize
+from typed_mjcf._xmltext import Node, escape, serialize
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
@@ -117,14 +118,21 @@ def _is_empty_single(parent: Element, child: Element) -> bool:
     return all(_is_empty_single(child, grandchild) for grandchild in child._children)  # pyright: ignore[reportPrivateUsage]
 
 
+def written_children(element: Element) -> list[Element]:
+    """The children an export writes: all but once-only sections with nothing to say."""
+    child_specs = element._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    return [child for child in element._children  # pyright: ignore[reportPrivateUsage]
+            if child._attrs or not child_specs[child._SPEC.tag].single  # pyright: ignore[reportPrivateUsage]
+            or not _is_empty_single(element, child)]
+
+
 def iter_written(element: Element) -> Iterator[Element]:
     """The elements :func:`build` writes for ``element``'s subtree, in document order."""
     stack: list[Element] = [element]
     while stack:
         current = stack.pop()
         yield current
-        stack.extend(child for child in reversed(current._children)  # pyright: ignore[reportPrivateUsage]
-                     if not _is_empty_single(current, child))
+        stack.extend(reversed(written_children(current)))
 
 
 class Writer:
@@ -149,30 +157,58 @@ class Writer:
     # --------------------------------------------------------------- attributes
 
     def attributes(self, element: Element, prefix: str, model: ModelRoot | None) -> dict[str, str]:
+        """The attributes to write, as unescaped text, in grammar order."""
+        by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-        spec = element._SPEC  # pyright: ignore[reportPrivateUsage]
-        if self.skip and any(name in self.skip for name in attrs):
-            attrs = {k: v for k, v in attrs.items() if k not in self.skip}
-        # grammar order: sort the few attributes set rather than scan every attribute there is
-        names = sorted(attrs, key=spec.order.__getitem__) if len(attrs) > 1 else attrs
-        by_name = spec.by_name
-        plain = self.plain and not prefix
-        attrib: dict[str, str] = {}
-        for name in names:
+        return {name: self.value_text(element, by_name[name], attrs[name], prefix, model)
+                for name in self.names(element)}
+
+    def names(self, element: Element) -> list[str]:
+        """The names of the attributes to write, in grammar order."""
+        attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
+        skip = self.skip
+        names = [name for name in attrs if name not in skip] if skip else list(attrs)
+        # sort the few attributes set rather than scan every attribute the grammar has
+        if len(names) > 1:
+            names.sort(key=element._SPEC.order.__getitem__)  # pyright: ignore[reportPrivateUsage]
+        return names
+
+    def value_text(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
+                   model: ModelRoot | None) -> str:
+        """One attribute's value as unescaped text."""
+        if self.plain and not prefix:  # the common cases, formatted inline
+            if type(value) is str:
+                return value
+            if type(value) is float:
+                return _shortest_double(value)
+            if type(value) is np.ndarray and attribute.dtype == "double":
+                doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
+                return _shortest_doubles(doubles.tolist())
+        return self.general(element, attribute, value, prefix, model)
+
+    def attribute_text(self, element: Element) -> str:
+        """`` name="value"`` for each attribute of an element written without a scope.
+
+        :meth:`value_text` inlined, with escaping only where text can need it: this loop
+        is most of an export's time.
+        """
+        attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
+        by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
+        plain = self.plain
+        parts: list[str] = []
+        for name in self.names(element):
             value = attrs[name]
-            if plain:  # the common cases, formatted inline
-                if type(value) is str:
-                    attrib[name] = value
-                    continue
-                if type(value) is float:
-                    attrib[name] = _shortest_double(value)
-                    continue
-                if type(value) is np.ndarray and by_name[name].dtype == "double":
-                    doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
-                    attrib[name] = _shortest_doubles(doubles.tolist())
-                    continue
-            attrib[name] = self.general(element, by_name[name], value, prefix, model)
-        return attrib
+            if plain and type(value) is str:
+                text = escape(value)
+            elif plain and type(value) is np.ndarray and by_name[name].dtype == "double":
+                doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
+                text = _shortest_doubles(doubles.tolist())
+            elif plain and type(value) is float:
+                text = _shortest_double(value)
+            else:
+                text = escape(self.general(element, by_name[name], value, "", None))
+            parts.append(f' {name}="{text}"')
+        return "".join(parts)
 
     def general(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
                 model: ModelRoot | None) -> str:
@@ -224,13 +260,9 @@ class Writer:
                 parent_node.children.append(node)
             if tracking and spec.namespace in _TRACKED:
                 self._track(spec.namespace, current, owner)
-            pending: list[tuple[Element, Node | None, str, ModelRoot | None]] = []
-            child_specs = spec.children
-            for child in current._children:  # pyright: ignore[reportPrivateUsage]
-                if child._attrs or not child_specs[child._SPEC.tag].single or (  # pyright: ignore[reportPrivateUsage]
-                        not _is_empty_single(current, child)):
-                    if keyframes or child._SPEC.compose != "keyframes":  # pyright: ignore[reportPrivateUsage]
-                        pending.append((child, node, scope, owner))
+            pending: list[tuple[Element, Node | None, str, ModelRoot | None]] = [
+                (child, node, scope, owner) for child in written_children(current)
+                if keyframes or child._SPEC.compose != "keyframes"]  # pyright: ignore[reportPrivateUsage]
             attached = current._attached  # pyright: ignore[reportPrivateUsage]
             if attached is not None:
                 pending += self.attachment(node, attached, scope + scope_name(attached) + "/")
@@ -238,6 +270,39 @@ class Writer:
                 push(task)
         assert first is not None
         return first
+
+    def text(self, element: Element, pretty_print: bool) -> str:
+        """``element``'s subtree as XML text, written in one pass without building nodes.
+
+        Only for models with nothing attached: composition joins attached models' sections
+        to the parent's, which needs the node tree :meth:`element` builds.
+        """
+        parts: list[str] = []
+        append = parts.append
+        newline = "\n" if pretty_print else ""
+        step = "  " if pretty_print else ""
+        # an element to open, or the text that closes one
+        stack: list[tuple[Element | str, int]] = [(element, 0)]
+        pop, push = stack.pop, stack.append
+        attribute_text = self.attribute_text
+        while stack:
+            current, depth = pop()
+            if isinstance(current, str):
+                append(current)
+                continue
+            tag = current._SPEC.tag  # pyright: ignore[reportPrivateUsage]
+            attrs = attribute_text(current) if current._attrs else ""  # pyright: ignore[reportPrivateUsage]
+            indent = step * depth
+            children = written_children(current) if current._children else None  # pyright: ignore[reportPrivateUsage]
+            if children:
+                append(f"{indent}<{tag}{attrs}>{newline}")
+                push((f"{indent}</{tag}>{newline}", depth))
+                depth += 1
+                for child in reversed(children):
+                    push((child, depth))
+            else:
+                append(f"{indent}<{tag}{attrs}/>{newline}")
+        return "".join(parts)
 
     def _track(self, namespace: str | None, element: Element, model: ModelRoot | None) -> None:
         if model is None:
@@ -370,7 +435,15 @@ def to_xml(element: Element, *, precision: int | None = None, zero_threshold: fl
     return etree.fromstring(text)
 
 
+def write_text(element: Element, formatter: Formatter, pretty_print: bool = True) -> str:
+    """The XML text of ``element`` and its subtree (attached models included)."""
+    root = element._root  # pyright: ignore[reportPrivateUsage]
+    with collector_paused():  # an export makes no reference cycles, only short-lived text
+        if root is not None and not root._scopes:  # pyright: ignore[reportPrivateUsage]
+            return Writer(formatter, element).text(element, pretty_print)
+        return serialize(build(element, formatter), pretty_print)
+
+
 def to_xml_string(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,
                   pretty_print: bool = True, file_namer: FileNamer | None = None) -> str:
-    node = build(element, Formatter(precision, zero_threshold, file_namer))
-    return serialize(node, pretty_print)
+    return write_text(element, Formatter(precision, zero_threshold, file_namer), pretty_print)

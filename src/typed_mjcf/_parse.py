@@ -19,7 +19,6 @@ where it is known.
 
 from __future__ import annotations
 
-import gc
 import os
 import stat
 from collections.abc import Callable, Iterator
@@ -32,6 +31,7 @@ from lxml import etree
 from typed_mjcf._convert import Rejected
 from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
 from typed_mjcf._export import XmlNode
+from typed_mjcf._gc import collector_paused
 from typed_mjcf._root import ModelRoot
 from typed_mjcf.errors import (
     InvalidTypeError,
@@ -379,15 +379,8 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelR
     model = cls()
     object.__setattr__(model, "_base_dir", context.base_dir)
     _set_attributes(model, node, source, context)
-    # A parse creates only objects that live on; the cyclic collector would rescan them
-    # again and again (superlinear time on large models) to find no garbage.
-    collecting = gc.isenabled()
-    gc.disable()
-    try:
+    with collector_paused():  # a parse creates only objects that live on
         _Builder(context).run(model, node, source)
-    finally:
-        if collecting:
-            gc.enable()
     return model
 
 

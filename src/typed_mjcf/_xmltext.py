@@ -50,7 +50,8 @@ class Node:
         self.children.remove(node)
 
 
-def _escape(value: str) -> str:
+def escape(value: str) -> str:
+    """``value`` as the text of an XML attribute."""
     return value.translate(_ESCAPES) if _SPECIAL.search(value) else value
 
 
@@ -66,7 +67,7 @@ def serialize(root: Node, pretty_print: bool = True) -> str:
         if closing:
             append(f"{indent}</{node.tag}>{newline}")
             continue
-        attributes = "".join([f' {k}="{_escape(v)}"' for k, v in node.attrib.items()])
+        attributes = "".join([f' {k}="{escape(v)}"' for k, v in node.attrib.items()])
         if node.children:
             append(f"{indent}<{node.tag}{attributes}>{newline}")
             stack.append((node, depth, True))
