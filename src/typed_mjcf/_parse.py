@@ -386,20 +386,28 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelR
 
 def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
-    by_name = element.spec.by_name
+    """Read ``node``'s attributes into ``element`` (as ``Element._set_attribute`` would,
+    inlined: text is never ``None`` and a reference read from text is a name)."""
+    spec = element._SPEC  # pyright: ignore[reportPrivateUsage]
+    by_name = spec.by_name
+    attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
     for key, text in node.attrib.items():
-        attribute = by_name.get(str(key))
+        attribute = by_name.get(key)  # pyright: ignore[reportArgumentType]
         if attribute is None:
             known = list(by_name)
             raise context.error(
-                f"<{element.tag}> has no attribute {_name(key)!r}{did_you_mean(_name(key), known)}",
+                f"<{spec.tag}> has no attribute {_name(key)!r}{did_you_mean(_name(key), known)}",
                 source, source_line(node))
         try:
-            element._set_attribute(attribute, str(text))  # pyright: ignore[reportPrivateUsage]
+            value = attribute.convert(text)
+            if attribute.kind == "id":
+                element._claim_identifier(attribute, value)  # pyright: ignore[reportPrivateUsage]
+        except Rejected as rejected:
+            error = element._reject(attribute, str(text), rejected)  # pyright: ignore[reportPrivateUsage]
+            raise context.error(str(error), source, source_line(node)) from None
         except MjcfError as error:
             raise context.error(str(error), source, source_line(node)) from None
-        except Rejected as rejected:  # pragma: no cover - _set_attribute converts these
-            raise context.error(rejected.expected, source, source_line(node)) from None
+        attrs[attribute.name] = value
 
 
 # Children still to read into an element: (element, its remaining XML children, the file
@@ -440,7 +448,7 @@ class _Builder:
             if tag == INCLUDE:
                 self.include(frame, child_node)
                 continue
-            child_spec = parent.spec.children.get(tag)
+            child_spec = parent._SPEC.children.get(tag)  # pyright: ignore[reportPrivateUsage]
             if child_spec is None:
                 legal = list(parent.spec.children)
                 raise context.error(
