@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable, Iterator
 from typing import TypeAlias, cast
 
@@ -149,7 +150,7 @@ class Writer:
         root = top._root  # pyright: ignore[reportPrivateUsage]
         # which model each joint/actuator/mocap body came from: only composed models need it
         self.tracking = root is not None and bool(root._scopes)  # pyright: ignore[reportPrivateUsage]
-        self.pending: list[tuple[ModelRoot, str]] = []  # attached models whose sections follow
+        self.pending: deque[tuple[ModelRoot, str]] = deque()  # attached models whose sections follow
         self.joint_owners: list[ModelRoot] = []  # the model of each joint, in document order
         self.actuator_owners: list[ModelRoot] = []
         self.mocap_owners: list[ModelRoot] = []
@@ -176,7 +177,8 @@ class Writer:
     def value_text(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
                    model: ModelRoot | None) -> str:
         """One attribute's value as unescaped text."""
-        if self.plain and not prefix:  # the common cases, formatted inline
+        # the common cases, formatted inline; a scope only changes names and files
+        if self.plain and (not prefix or attribute.kind not in _SCOPED_KINDS):
             if type(value) is str:
                 return value
             if type(value) is float:
@@ -335,7 +337,7 @@ class Writer:
         keyframes: list[tuple[ModelRoot, Element]] = [
             (root, s) for s in root._children if s.spec.compose == "keyframes"]  # pyright: ignore[reportPrivateUsage]
         while self.pending:
-            model, scope = self.pending.pop(0)
+            model, scope = self.pending.popleft()
             for section in model._children:  # pyright: ignore[reportPrivateUsage]
                 if section.spec.compose == "keyframes":
                     keyframes.append((model, section))
@@ -397,6 +399,7 @@ class Writer:
 
 
 _TRACKED = frozenset({"joint", "actuator", "body"})
+_SCOPED_KINDS = frozenset({"id", "ref", "file"})  # values an attached model's scope changes
 
 
 def _has_defaults(model: ModelRoot) -> bool:
