@@ -31,10 +31,11 @@ def _pyright_paths() -> list[str]:
 
 @nox.session(python=PYTHON)
 def tests(session: nox.Session) -> None:
-    """The test suite, then mypy --strict and pyright over the typed code."""
+    """The test suite, then ruff, mypy --strict and pyright over the typed code."""
     session.install("-e", ".[dev]")
     session.run("python", "-m", "codegen", "check")
     session.run("pytest", *session.posargs)
+    session.run("ruff", "check", ".")
     session.run("mypy", *TYPED_PATHS)
     session.run("pyright", *_pyright_paths())
 

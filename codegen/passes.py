@@ -102,7 +102,7 @@ def directories_of(facts: Facts) -> dict[str, list[str]]:
     """The ``[directories]`` table: ``"row@attribute"`` -> compiler folder attributes."""
     table = facts.extra.get("directories", {})
     if not isinstance(table, dict):
-        raise ValueError("schema/facts.toml: [directories] must be a table")
+        raise TypeError("schema/facts.toml: [directories] must be a table")
     result: dict[str, list[str]] = {}
     for key, value in cast(dict[str, object], table).items():
         if not isinstance(value, list) or not all(isinstance(v, str) for v in cast(list[object], value)):
@@ -136,11 +136,11 @@ def mark_default_rows(schema: ir.Schema, table: object) -> None:
         if row.projection_of is not None and row.projection_of in schema.elements:
             schema.elements[row.projection_of].default_row = row.name
     if not isinstance(table, dict):
-        raise ValueError("schema/facts.toml: [default_rows] must be a table")
+        raise TypeError("schema/facts.toml: [default_rows] must be a table")
     for default_row, elements in cast(dict[str, object], table).items():
         _row(schema, default_row, f"[default_rows] {default_row}")
         if not isinstance(elements, list):
-            raise ValueError(f"schema/facts.toml: [default_rows] {default_row} must be a list")
+            raise TypeError(f"schema/facts.toml: [default_rows] {default_row} must be a list")
         for name in cast(list[object], elements):
             if isinstance(name, str) and name in schema.elements:
                 schema.elements[name].default_row = default_row

@@ -50,8 +50,15 @@ def _short(value: object, limit: int = 60) -> str:
 class Element:
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
-    __slots__ = ("_attrs", "_children", "_parent", "_root", "_singles", "_attached",
-                 "__weakref__")
+    __slots__ = (
+        "__weakref__",
+        "_attached",
+        "_attrs",
+        "_children",
+        "_parent",
+        "_root",
+        "_singles",
+    )
     _SPEC: ClassVar[ElementSpec]
 
     _attrs: dict[str, object]

@@ -25,18 +25,18 @@ FileNamer = Callable[[Element, AttributeSpec, object], str]
 
 def _shortest_double(x: float) -> str:
     text = repr(x)
-    return text[:-2] if text.endswith(".0") else text
+    return text.removesuffix(".0")
 
 
 def _shortest_doubles(values: list[float]) -> str:
     """Space-separated shortest forms: one C-level join, then drop each trailing ".0"."""
     text = " ".join(map(repr, values)).replace(".0 ", " ")
-    return text[:-2] if text.endswith(".0") else text
+    return text.removesuffix(".0")
 
 
 def _shortest_float32(x: np.float32) -> str:
     text = str(x)
-    return text[:-2] if text.endswith(".0") else text
+    return text.removesuffix(".0")
 
 
 class Formatter:

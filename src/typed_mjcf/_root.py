@@ -18,7 +18,7 @@ if TYPE_CHECKING:
 class ModelRoot(Element):
     """Behaviour of ``<mujoco>``, the root of a model. Use ``typed_mjcf.RootElement``."""
 
-    __slots__ = ("_identifiers", "_base_dir", "_frame", "_scopes")
+    __slots__ = ("_base_dir", "_frame", "_identifiers", "_scopes")
 
     _identifiers: dict[str, dict[str, Element]]
     _base_dir: str | None

@@ -23,8 +23,23 @@ class AttributeSpec:
     """One attribute of one grammar row, and the descriptor that accesses it."""
 
     __slots__ = (
-        "name", "py_name", "kind", "dtype", "lo", "hi", "is_array", "keywords", "namespace",
-        "default", "required", "pattern", "directory", "anchor", "text", "convert", "index",
+        "anchor",
+        "convert",
+        "default",
+        "directory",
+        "dtype",
+        "hi",
+        "index",
+        "is_array",
+        "keywords",
+        "kind",
+        "lo",
+        "name",
+        "namespace",
+        "pattern",
+        "py_name",
+        "required",
+        "text",
     )
 
     name: str
@@ -119,7 +134,7 @@ class AttributeSpec:
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once."""
 
-    __slots__ = ("tag", "py_name", "class_name", "single", "card", "index", "cls")
+    __slots__ = ("card", "class_name", "cls", "index", "py_name", "single", "tag")
 
     tag: str
     py_name: str
@@ -143,8 +158,21 @@ class ElementSpec:
     """One grammar row: tag, attributes in grammar order, legal children, constraints."""
 
     __slots__ = (
-        "tag", "name", "attributes", "by_key", "by_name", "children", "id_attribute", "namespace",
-        "constraints", "anchor", "text", "compose", "attachable", "defaults_tag", "order",
+        "anchor",
+        "attachable",
+        "attributes",
+        "by_key",
+        "by_name",
+        "children",
+        "compose",
+        "constraints",
+        "defaults_tag",
+        "id_attribute",
+        "name",
+        "namespace",
+        "order",
+        "tag",
+        "text",
     )
 
     tag: str

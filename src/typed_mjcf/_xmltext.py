@@ -18,7 +18,7 @@ _ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;",
 class Node:
     """An XML element: tag, attributes in order, children."""
 
-    __slots__ = ("tag", "attrib", "children")
+    __slots__ = ("attrib", "children", "tag")
 
     def __init__(self, tag: str, attrib: dict[str, str] | None = None) -> None:
         self.tag = tag

@@ -13,7 +13,7 @@ class Asset:
     name stem used when the model is exported with its assets.
     """
 
-    __slots__ = ("contents", "extension", "name", "digest")
+    __slots__ = ("contents", "digest", "extension", "name")
 
     contents: bytes
     extension: str

@@ -326,9 +326,9 @@ def render(results: Results) -> str:
             if case.note:
                 out.append(f"- {case.label}: {case.note}")
         out += ["", phase_table(results.w1, sizes[-1], "N"), "",
-                ("lxml's make builds its tree, so its export is serialisation alone; the "
-                "libraries build their lxml tree (dm_control, typed-mjcf) or compile "
-                "(MjSpec) inside export."), ""]
+                ("lxml's make builds its tree, so its export is serialisation alone; inside "
+                "export, dm_control builds an lxml tree, typed-mjcf formats every value and "
+                "writes the text, MjSpec compiles."), ""]
     if results.w2:
         out += ["## W2 parse + export", "",
                 ("Parse (typed-mjcf from_path / from_xml_string, dm_control the same, "

@@ -15,6 +15,7 @@ buffer alignment, so it is compared without that array.
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Iterator, Mapping
 from typing import cast
@@ -108,7 +109,7 @@ def _equal(a: object, b: object) -> bool:
             return False
         return bool(np.array_equal(left, right, equal_nan=left.dtype.kind in "fc"))
     if isinstance(a, float) and isinstance(b, float):
-        return a == b or (a != a and b != b)
+        return a == b or (math.isnan(a) and math.isnan(b))
     return type(a) is type(b) and a == b
 
 

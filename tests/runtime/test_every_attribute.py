@@ -93,9 +93,7 @@ def invalid_values(attribute: AttributeSpec) -> list[tuple[object, type[Exceptio
     elif kind == "id":
         bad += [("a/b", mjcf.InvalidValueError), ("", mjcf.InvalidValueError),
                 (7, mjcf.InvalidTypeError)]
-    elif kind == "ref":
-        bad += [("", mjcf.InvalidValueError), (7, mjcf.InvalidTypeError)]
-    elif kind in ("string", "file"):
+    elif kind == "ref" or kind in ("string", "file"):
         bad += [("", mjcf.InvalidValueError), (7, mjcf.InvalidTypeError)]
     elif kind == "chars":
         if attribute.hi is not None:

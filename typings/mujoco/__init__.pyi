@@ -1,11 +1,12 @@
 # Minimal type stubs for the part of `mujoco` that typed-mjcf's typed code uses.
 # mujoco ships no type information; these are ours, and cover only what we call.
 from collections.abc import Mapping
+from typing import TypeAlias
 
 import numpy as np
 
-_F64 = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
-_I32 = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
+_F64: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
+_I32: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
 
 __version__: str
 
