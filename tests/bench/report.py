@@ -54,7 +54,8 @@ class Results:
                 for r in item["sizes"]:
                     case.sizes[r["size"]] = SizeResult(
                         r["size"],
-                        [Sample(s["make"], s["export"], s["make_cpu"], s["export_cpu"])
+                        [Sample(s["make"], s["export"], s["make_cpu"], s["export_cpu"],
+                                s.get("gc", 0.0), s.get("full_collections", 0))
                          for s in r["samples"]],
                         skipped=r["skipped"] or "", estimate=r["estimate"], valid=r["valid"],
                         invalid=r["invalid"] or "", error=r["error"] or "")
@@ -167,7 +168,8 @@ def sized_table(cases: Sequence[Case], sizes: Sequence[int], unit: str) -> str:
 
 def phase_table(cases: Sequence[Case], size: int, unit: str) -> str:
     header = ["library", "API", "names"] if cases and cases[0].workload == "W1" else ["library"]
-    header += ["make ms", "export ms", "make x floor", "export x floor", "CPU/wall"]
+    header += ["make ms", "export ms", "make x floor", "export x floor", "cyclic GC ms (full)",
+               "CPU/wall"]
     rows = []
     for case in cases:
         result = case.sizes.get(size)
@@ -183,10 +185,37 @@ def phase_table(cases: Sequence[Case], size: int, unit: str) -> str:
                     times(ratio(export, floor_result.median("export")))]
         else:
             row += ["-", "-"]
+        row.append(_collector(result))
         cpu, wall = result.median(clock="cpu"), result.median(clock="wall")
         row.append("-" if not cpu or not wall else f"{cpu / wall:.2f}")
         rows.append(row)
     return f"Phases at {unit}={size:,} (median ms):\n\n" + table(header, rows)
+
+
+def _collector(result: SizeResult) -> str:
+    """The collector's median time per run, with its median count of full collections."""
+    medians = result.median_gc()
+    return "-" if medians is None else f"{ms(medians[0])} ({medians[1]:g})"
+
+
+def collector_table(cases: Sequence[Case], sizes: Sequence[int], unit: str) -> str:
+    """Time inside CPython's cyclic collector per run, and growth with that time left out."""
+    header = ["library", "API", "names"] + [f"{unit}={n:,}" for n in sizes]
+    header.append(f"{sizes[-1]:,}/{sizes[-2]:,} less GC")
+    rows = []
+    for case in cases:
+        row = [case.title, case.api or "-", case.naming]
+        row += [_collector(case.sizes[n]) if n in case.sizes else "-" for n in sizes]
+        a, b = case.sizes.get(sizes[-2]), case.sizes.get(sizes[-1])
+        less: list[float] = []
+        for result in (a, b):
+            total, collected = (None, None) if result is None else (
+                result.median(), result.median_gc())
+            if total is not None and collected is not None:
+                less.append(total - collected[0])
+        row.append(f"{less[1] / less[0]:.2f}" if len(less) == 2 and less[0] > 0 else "-")
+        rows.append(row)
+    return table(header, rows)
 
 
 def w2_table(cases: Sequence[Case]) -> str:
@@ -328,7 +357,13 @@ def render(results: Results) -> str:
         out += ["", phase_table(results.w1, sizes[-1], "N"), "",
                 ("lxml's make builds its tree, so its export is serialisation alone; inside "
                 "export, dm_control builds an lxml tree, typed-mjcf formats every value and "
-                "writes the text, MjSpec compiles."), ""]
+                "writes the text, MjSpec compiles."), "",
+                ("CPython's cyclic garbage collector, median ms per run (full collections "
+                "in parentheses; wall-clock, through gc.callbacks, with gc.collect() before "
+                "each run): a full collection scans every live container object, so its cost "
+                "depends on how many the process holds, the model being built included; "
+                "'less GC' is the growth with that time taken out."), "",
+                collector_table(results.w1, sizes, "N"), ""]
     if results.w2:
         out += ["## W2 parse + export", "",
                 ("Parse (typed-mjcf from_path / from_xml_string, dm_control the same, "

@@ -15,7 +15,7 @@ import statistics
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Self
 
 from tests.bench.workloads import Workload
 
@@ -29,6 +29,8 @@ class Sample:
     export: float
     make_cpu: float  # seconds of process CPU time
     export_cpu: float
+    gc: float = 0.0  # seconds (wall-clock) the cyclic collector ran during make + export
+    full_collections: int = 0  # of them, collections of the oldest generation
 
     @property
     def total(self) -> float:
@@ -72,6 +74,13 @@ class SizeResult:
     invalid: str = ""  # what is wrong with the output
     error: str = ""  # the run failed
 
+    def median_gc(self) -> tuple[float, float] | None:
+        """Median seconds in the cyclic collector, and median full collections, per run."""
+        if not self.samples:
+            return None
+        return (statistics.median(s.gc for s in self.samples),
+                statistics.median(s.full_collections for s in self.samples))
+
     def median(self, phase: str = "total", clock: str | None = None) -> float | None:
         """The median seconds of ``phase`` (make, export or total) on ``clock``."""
         if not self.samples:
@@ -82,7 +91,8 @@ class SizeResult:
         return {
             "size": self.size,
             "samples": [{"make": s.make, "export": s.export, "total": s.total,
-                         "make_cpu": s.make_cpu, "export_cpu": s.export_cpu, "cpu": s.cpu}
+                         "make_cpu": s.make_cpu, "export_cpu": s.export_cpu, "cpu": s.cpu,
+                         "gc": s.gc, "full_collections": s.full_collections}
                         for s in self.samples],
             "median": {f"{phase}_{clock}": self.median(phase, clock)
                        for clock in CLOCKS for phase in ("make", "export", "total")},
@@ -94,16 +104,42 @@ class SizeResult:
         }
 
 
+class CollectorClock:
+    """Time spent in CPython's cyclic garbage collector, through ``gc.callbacks``."""
+
+    def __init__(self) -> None:
+        self.seconds = 0.0
+        self.full_collections = 0
+        self._started = 0.0
+
+    def __enter__(self) -> Self:
+        gc.callbacks.append(self._callback)
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        gc.callbacks.remove(self._callback)
+
+    def _callback(self, phase: str, info: dict[str, int]) -> None:
+        if phase == "start":
+            self._started = time.perf_counter()
+            return
+        self.seconds += time.perf_counter() - self._started
+        if info["generation"] == 2:
+            self.full_collections += 1
+
+
 def run_once(workload: Workload) -> tuple[Sample, str]:
     """Time ``make`` then ``export``; return the sample and the text written."""
     gc.collect()
-    c0, t0 = time.process_time(), time.perf_counter()
-    model = workload.make()
-    c1, t1 = time.process_time(), time.perf_counter()
-    text = workload.export(model)
-    c2, t2 = time.process_time(), time.perf_counter()
+    with CollectorClock() as collector:
+        c0, t0 = time.process_time(), time.perf_counter()
+        model = workload.make()
+        c1, t1 = time.process_time(), time.perf_counter()
+        text = workload.export(model)
+        c2, t2 = time.process_time(), time.perf_counter()
     del model
-    return Sample(t1 - t0, t2 - t1, c1 - c0, c2 - c1), text
+    return Sample(t1 - t0, t2 - t1, c1 - c0, c2 - c1, collector.seconds,
+                  collector.full_collections), text
 
 
 def growth_exponent(n1: float, t1: float, n2: float, t2: float) -> float:
