@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import copy as _copy
 from collections.abc import Callable, Iterator, Mapping
-from typing import TYPE_CHECKING, ClassVar, NoReturn, Self, TypeVar, cast, overload
+from typing import TYPE_CHECKING, ClassVar, NoReturn, Protocol, Self, TypeVar, cast, overload
 
 import numpy as np
 
@@ -80,7 +80,7 @@ class Element:
             setattr(cls, attribute.py_name, attribute)
         for child in spec.children.values():
             setattr(cls, child.py_name, SingleChild(child) if child.single else ChildList(child))
-            setattr(cls, "add_" + child.tag, _adder(child.tag))
+            setattr(cls, "add_" + child.tag, _adder(child))
         if spec.attachable and "attach" not in spec.children:
             setattr(cls, "attach", cls.attach_model)  # dm_control's name
     def __init__(self) -> None:
@@ -91,14 +91,13 @@ class Element:
 
     @classmethod
     def _blank(cls, parent: Element | None, root: ModelRoot | None) -> Self:
-        element = object.__new__(cls)
-        setattr_ = object.__setattr__
-        setattr_(element, "_attrs", {})
-        setattr_(element, "_children", _NO_CHILDREN)
-        setattr_(element, "_parent", parent)
-        setattr_(element, "_root", root)
-        setattr_(element, "_singles", None)
-        setattr_(element, "_attached", None)
+        element = _new_object(cls)
+        _init_attrs(element, {})
+        _init_children(element, _NO_CHILDREN)
+        _init_parent(element, parent)
+        _init_root(element, root)
+        _init_singles(element, None)
+        _init_attached(element, None)
         return element
 
     # ------------------------------------------------------------------ identity
@@ -292,7 +291,8 @@ class Element:
         refused value leaves the model untouched."""
         by_key = self._SPEC.by_key
         attrs = self._attrs
-        identifier: tuple[AttributeSpec, object] | None = None
+        identifier: AttributeSpec | None = None
+        name: object = None
         for key, value in kwargs.items():
             attribute = by_key.get(key)
             if attribute is None:
@@ -303,15 +303,23 @@ class Element:
                 converted = attribute.convert(value)
             except Rejected as rejected:
                 raise self._reject(attribute, value, rejected) from None
-            if attribute.kind == "id":
-                identifier = (attribute, converted)
+            kind = attribute.kind
+            if kind == "id":
+                identifier, name = attribute, converted
                 continue
-            if attribute.kind == "ref" and not isinstance(converted, str):
+            if kind == "ref" and type(converted) is not str:
                 self._check_reference(attribute, converted)
             attrs[attribute.name] = converted
-        if identifier is not None:
-            self._claim_identifier(identifier[0], identifier[1])
-            attrs[identifier[0].name] = identifier[1]
+        if identifier is None:
+            return
+        root, namespace = self._root, identifier.namespace
+        # _claim_identifier inlined for the common case: a new name in an existing table
+        table = None if root is None or namespace is None else root._identifiers.get(namespace)  # pyright: ignore[reportPrivateUsage]
+        if table is not None and isinstance(name, str) and name not in table:
+            table[name] = self
+        else:
+            self._claim_identifier(identifier, name)  # creates the table, or refuses
+        attrs[identifier.name] = name
 
     # ------------------------------------------------------------------ children
 
@@ -350,25 +358,7 @@ class Element:
             child._init_attributes(kwargs)
             self._place(child, child_spec, position)
             return child
-        # the hot path (a repeated child), with _blank inlined
-        child = _new_object(cls)
-        _set_slot(child, "_attrs", {})
-        _set_slot(child, "_children", _NO_CHILDREN)
-        _set_slot(child, "_parent", self)
-        _set_slot(child, "_root", self._root)
-        _set_slot(child, "_singles", None)
-        _set_slot(child, "_attached", None)
-        if kwargs:
-            child._init_attributes(kwargs)
-        children = self._children
-        if isinstance(children, tuple):
-            children = []
-            _set_slot(self, "_children", children)
-        if position is None:
-            children.append(child)
-        else:
-            children.insert(position, child)
-        return child
+        return _append_child(self, cls, position, kwargs)
 
     def _mutable_children(self) -> list[Element]:
         children = self._children
@@ -633,9 +623,61 @@ class ChildList:
                          f"children; use add_{self.child.tag}() or remove()")
 
 
-def _adder(tag: str) -> Callable[..., Element]:
-    def add_child(self: Element, **kwargs: object) -> Element:
-        return self._add_child(tag, None, kwargs)  # pyright: ignore[reportPrivateUsage]
+def _slot_writer(name: str) -> Callable[[Element, object], None]:
+    """The setter of one of Element's slots: writes it without Element.__setattr__, and
+    faster than object.__setattr__ (no lookup of the slot by name)."""
+    slot = cast("_SlotDescriptor", Element.__dict__[name])
+    return slot.__set__
+
+
+class _SlotDescriptor(Protocol):
+    def __set__(self, obj: Element, value: object, /) -> None: ...
+
+
+# Every element's slots, written once when it is created (the hot path of every add).
+_init_attrs = _slot_writer("_attrs")
+_init_children = _slot_writer("_children")
+_init_parent = _slot_writer("_parent")
+_init_root = _slot_writer("_root")
+_init_singles = _slot_writer("_singles")
+_init_attached = _slot_writer("_attached")
+
+
+def _append_child(parent: Element, cls: type[E], position: int | None,
+                  kwargs: Mapping[str, object]) -> E:
+    """A new repeated child of ``parent`` (the hot path of every add, ``_blank`` inlined)."""
+    child = _new_object(cls)
+    _init_attrs(child, {})
+    _init_children(child, _NO_CHILDREN)
+    _init_parent(child, parent)
+    _init_root(child, parent._root)  # pyright: ignore[reportPrivateUsage]
+    _init_singles(child, None)
+    _init_attached(child, None)
+    if kwargs:
+        child._init_attributes(kwargs)  # pyright: ignore[reportPrivateUsage]
+    children = parent._children  # pyright: ignore[reportPrivateUsage]
+    if isinstance(children, tuple):
+        first: list[Element] = []
+        _init_children(parent, first)
+        children = first
+    if position is None:
+        children.append(child)
+    else:
+        children.insert(position, child)
+    return child
+
+
+def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
+    tag = child_spec.tag
+    if child_spec.single:
+        def add_child(self: Element, **kwargs: object) -> Element:
+            return self._add_child(tag, None, kwargs)  # pyright: ignore[reportPrivateUsage]
+    else:
+        def add_child(self: Element, **kwargs: object) -> Element:
+            cls = child_spec.cls
+            if cls is None:
+                cls = child_spec.cls = _REGISTRY[child_spec.class_name]
+            return _append_child(self, cls, None, kwargs)
 
     add_child.__name__ = add_child.__qualname__ = f"add_{tag}"
     add_child.__doc__ = f"Add a <{tag}> child with the given attributes and return it."
