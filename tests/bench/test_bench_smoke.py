@@ -25,6 +25,7 @@ def test_quick_benchmark_runs_and_reports(tmp_path: Path,
     for heading in ("## W1 build + export", "## W2 parse + export", "## W3 compose",
                     "## Import time", "## Peak memory", "## Targets"):
         assert heading in report
+    assert "cyclic GC ms (full)" in report and "less GC" in report  # the collector's share
     data = json.loads(out.read_text())
     assert {c["library"] for c in data["W1"]} == set(libs.split(","))
     # every output the suite produced compiled with MuJoCo to the expected model, except
