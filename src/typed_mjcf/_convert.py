@@ -227,7 +227,7 @@ def array_converter(spec: AttributeSpec) -> Converter:
         try:  # C-level conversion; on any trouble, the per-item path says what was wrong
             if is_int:
                 return np.array(list(map(int, parts)), dtype=dtype)
-            doubles = np.array(list(map(float, parts)), dtype=np.float64)
+            doubles = np.fromiter(map(float, parts), np.float64, len(parts))
         except (ValueError, OverflowError):
             converter = _to_int if is_int else _to_float
             return np.array([converter(p) for p in parts], dtype=dtype)
@@ -246,7 +246,7 @@ def array_converter(spec: AttributeSpec) -> Converter:
                 except OverflowError:
                     raise Rejected(f"{expected} that fit in 32 bits") from None
         try:
-            array = to_array(value)
+            array = from_text(cast(str, value)) if kind is str else to_array(value)
         except Rejected as rejected:
             if rejected.expected == expected or rejected.expected.startswith(expected):
                 raise

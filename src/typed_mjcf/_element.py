@@ -310,16 +310,9 @@ class Element:
             if kind == "ref" and type(converted) is not str:
                 self._check_reference(attribute, converted)
             attrs[attribute.name] = converted
-        if identifier is None:
-            return
-        root, namespace = self._root, identifier.namespace
-        # _claim_identifier inlined for the common case: a new name in an existing table
-        table = None if root is None or namespace is None else root._identifiers.get(namespace)  # pyright: ignore[reportPrivateUsage]
-        if table is not None and isinstance(name, str) and name not in table:
-            table[name] = self
-        else:
-            self._claim_identifier(identifier, name)  # creates the table, or refuses
-        attrs[identifier.name] = name
+        if identifier is not None:
+            claim_first_name(self, identifier, name)
+            attrs[identifier.name] = name
 
     # ------------------------------------------------------------------ children
 
@@ -347,9 +340,7 @@ class Element:
         child_spec = self._SPEC.children.get(tag)
         if child_spec is None:
             child_spec = self._child_spec(tag)  # raises, with a suggestion
-        cls = child_spec.cls
-        if cls is None:
-            cls = child_spec.cls = _REGISTRY[child_spec.class_name]
+        cls = child_spec.cls or child_class(child_spec)
         if child_spec.single:
             if self._single_child(tag) is not None:
                 raise ChildError(
@@ -358,7 +349,7 @@ class Element:
             child._init_attributes(kwargs)
             self._place(child, child_spec, position)
             return child
-        return _append_child(self, cls, position, kwargs)
+        return append_child(self, cls, position, kwargs)
 
     def _mutable_children(self) -> list[Element]:
         children = self._children
@@ -623,6 +614,24 @@ class ChildList:
                          f"children; use add_{self.child.tag}() or remove()")
 
 
+def child_class(child_spec: ChildSpec) -> type[Element]:
+    """The generated class of a child (resolved on first use: classes refer to classes
+    defined after them)."""
+    cls = child_spec.cls = _REGISTRY[child_spec.class_name]
+    return cls
+
+
+def claim_first_name(element: Element, attribute: AttributeSpec, name: object) -> None:
+    """``element._claim_identifier`` for an element that has no name yet: the common case
+    (a new name in a namespace that has names) without a method call or old-name check."""
+    root, namespace = element._root, attribute.namespace  # pyright: ignore[reportPrivateUsage]
+    table = None if root is None or namespace is None else root._identifiers.get(namespace)  # pyright: ignore[reportPrivateUsage]
+    if table is not None and isinstance(name, str) and name not in table:
+        table[name] = element
+    else:
+        element._claim_identifier(attribute, name)  # pyright: ignore[reportPrivateUsage]  # creates the table, or refuses
+
+
 def _slot_writer(name: str) -> Callable[[Element, object], None]:
     """The setter of one of Element's slots: writes it without Element.__setattr__, and
     faster than object.__setattr__ (no lookup of the slot by name)."""
@@ -643,7 +652,7 @@ _init_singles = _slot_writer("_singles")
 _init_attached = _slot_writer("_attached")
 
 
-def _append_child(parent: Element, cls: type[E], position: int | None,
+def append_child(parent: Element, cls: type[E], position: int | None,
                   kwargs: Mapping[str, object]) -> E:
     """A new repeated child of ``parent`` (the hot path of every add, ``_blank`` inlined)."""
     child = _new_object(cls)
@@ -674,10 +683,7 @@ def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
             return self._add_child(tag, None, kwargs)  # pyright: ignore[reportPrivateUsage]
     else:
         def add_child(self: Element, **kwargs: object) -> Element:
-            cls = child_spec.cls
-            if cls is None:
-                cls = child_spec.cls = _REGISTRY[child_spec.class_name]
-            return _append_child(self, cls, None, kwargs)
+            return append_child(self, child_spec.cls or child_class(child_spec), None, kwargs)
 
     add_child.__name__ = add_child.__qualname__ = f"add_{tag}"
     add_child.__doc__ = f"Add a <{tag}> child with the given attributes and return it."

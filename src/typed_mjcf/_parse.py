@@ -21,15 +21,22 @@ from __future__ import annotations
 
 import os
 import stat
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import Final, cast
 
 import numpy as np
 from lxml import etree
 
 from typed_mjcf._convert import Rejected
-from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._element import (
+    _REGISTRY,  # pyright: ignore[reportPrivateUsage]
+    Element,
+    append_child,
+    child_class,
+    claim_first_name,
+)
 from typed_mjcf._export import XmlNode
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._root import ModelRoot
@@ -401,7 +408,10 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
         try:
             value = attribute.convert(text)
             if attribute.kind == "id":
-                element._claim_identifier(attribute, value)  # pyright: ignore[reportPrivateUsage]
+                if attribute.name in attrs:  # a repeated section renames: drop the old name
+                    element._claim_identifier(attribute, value)  # pyright: ignore[reportPrivateUsage]
+                else:
+                    claim_first_name(element, attribute, value)
         except Rejected as rejected:
             error = element._reject(attribute, str(text), rejected)  # pyright: ignore[reportPrivateUsage]
             raise context.error(str(error), source, source_line(node)) from None
@@ -409,6 +419,8 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
             raise context.error(str(error), source, source_line(node)) from None
         attrs[attribute.name] = value
 
+
+_NO_ATTRIBUTES: Final[Mapping[str, object]] = MappingProxyType({})
 
 # Children still to read into an element: (element, its remaining XML children, the file
 # they are in, the element's depth in the assembled model (the root is 1), where the chain of
@@ -464,10 +476,14 @@ class _Builder:
                 check = self.merge(existing, child_node, source)
                 stack.append((existing, iter(child_node), source, depth + 1, existing, check))
                 continue
-            try:
-                child = parent._add_child(tag, None, {})  # pyright: ignore[reportPrivateUsage]
-            except MjcfError as error:
-                raise context.error(str(error), source, source_line(child_node)) from None
+            if child_spec.single:
+                try:
+                    child = parent._add_child(tag, None, _NO_ATTRIBUTES)  # pyright: ignore[reportPrivateUsage]
+                except MjcfError as error:
+                    raise context.error(str(error), source, source_line(child_node)) from None
+            else:
+                cls = child_spec.cls or child_class(child_spec)
+                child = append_child(parent, cls, None, _NO_ATTRIBUTES)
             _set_attributes(child, child_node, source, context)
             child_top = child
             if tag == parent.tag:
