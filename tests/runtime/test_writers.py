@@ -1,0 +1,86 @@
+"""The exporter's two writers, and the garbage collector around bulk work.
+
+Models with nothing attached are written straight to text in one pass; composed models are
+built as nodes first (attached models' sections join the parent's) and then serialised.
+Both must write the same text for the same elements.
+"""
+
+from __future__ import annotations
+
+import gc
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+import typed_mjcf as mjcf
+from typed_mjcf._export import Formatter, Writer, build, write_text
+from typed_mjcf._xmltext import serialize
+from typed_mjcf.errors import ExportError, ParseError
+
+from .test_corpus import CORPUS
+
+
+def _models() -> list[object]:
+    return [pytest.param(path, id=ident) for ident, path in CORPUS]
+
+
+@pytest.mark.parametrize("path", _models())
+def test_text_writer_and_node_writer_agree(path: Path) -> None:
+    try:
+        model = mjcf.from_path(path)
+    except ParseError:
+        pytest.skip("typed-mjcf does not read it (tested in test_corpus)")
+    for pretty in (True, False):
+        for formatter in (Formatter(), Formatter(precision=4, zero_threshold=1e-6)):
+            text = Writer(formatter, model).text(model, pretty)
+            assert text == serialize(build(model, formatter), pretty)
+
+
+def test_text_writer_escapes_what_needs_escaping() -> None:
+    model = mjcf.RootElement(model='a "quoted" <name> & more\tand a tab')
+    model.worldbody.add_body(name="b&c")
+    text = write_text(model, Formatter(), pretty_print=False)
+    assert text == serialize(build(model, Formatter()), pretty_print=False)
+    assert 'model="a &quot;quoted&quot; &lt;name&gt; &amp; more&#9;and a tab"' in text
+    assert mjcf.from_xml_string(text).model == model.model
+
+
+@pytest.fixture
+def collector_enabled() -> Iterator[None]:
+    was = gc.isenabled()
+    gc.enable()
+    yield
+    if not was:
+        gc.disable()
+
+
+@pytest.mark.usefixtures("collector_enabled")
+def test_export_and_parse_give_the_collector_back() -> None:
+    model = mjcf.RootElement()
+    model.worldbody.add_body(name="b").add_geom(size=(0.1,))
+    text = model.to_xml_string()
+    assert gc.isenabled()
+    mjcf.from_xml_string(text)
+    assert gc.isenabled()
+    with pytest.raises(ParseError):
+        mjcf.from_xml_string("<mujoco><worldbody><bodyy/></worldbody></mujoco>")
+    assert gc.isenabled()
+    joint = model.worldbody.add_body().add_joint(name="j")
+    model.actuator.add_motor(joint=joint)
+    joint.name = None
+    with pytest.raises(ExportError, match="no name"):
+        model.to_xml_string()
+    assert gc.isenabled()
+
+
+def test_a_disabled_collector_stays_disabled() -> None:
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        model = mjcf.from_xml_string("<mujoco><worldbody><body/></worldbody></mujoco>")
+        model.to_xml_string()
+        assert not gc.isenabled()
+    finally:
+        if was:
+            gc.enable()
