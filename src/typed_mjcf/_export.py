@@ -1,5 +1,11 @@
-"""Writing elements as MJCF: light XML nodes built in one iterative pass, then serialised
-(``to_xml()`` parses that text into lxml)."""
+"""Writing elements as MJCF text, iteratively (depth is unlimited).
+
+A model with nothing attached is written straight to text in one pass. A composed model
+is built as light nodes where composition joins the attached models' sections and bodies
+to the parent's (the sections, the attachment frames and their ancestors), with every other
+subtree a chunk of text written in place when the nodes are serialised. ``to_xml()`` parses
+the text into lxml.
+"""
 
 from __future__ import annotations
 
@@ -15,7 +21,7 @@ from typed_mjcf._element import Element
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._root import ModelRoot
 from typed_mjcf._spec import AttributeSpec
-from typed_mjcf._xmltext import Node, escape, serialize
+from typed_mjcf._xmltext import Chunk, Node, escape, serialize
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
@@ -137,7 +143,7 @@ def iter_written(element: Element) -> Iterator[Element]:
 
 
 class Writer:
-    """Builds the XML nodes of an element, writing attached models inline under their scope."""
+    """Writes an element and its subtree, attached models inline under their scope."""
 
     def __init__(self, formatter: Formatter, top: Element, keyframes: bool = True) -> None:
         self.formatter = formatter
@@ -150,6 +156,9 @@ class Writer:
         root = top._root  # pyright: ignore[reportPrivateUsage]
         # which model each joint/actuator/mocap body came from: only composed models need it
         self.tracking = root is not None and bool(root._scopes)  # pyright: ignore[reportPrivateUsage]
+        # elements with an attachment frame in their subtree: written as nodes, so attached
+        # models' bodies can join them; everything else is written as chunks of text
+        self.hosts: set[int] = _hosts(root) if self.tracking and root is not None else set()
         self.pending: deque[tuple[ModelRoot, str]] = deque()  # attached models whose sections follow
         self.joint_owners: list[ModelRoot] = []  # the model of each joint, in document order
         self.actuator_owners: list[ModelRoot] = []
@@ -188,28 +197,31 @@ class Writer:
                 return _shortest_doubles(doubles.tolist())
         return self.general(element, attribute, value, prefix, model)
 
-    def attribute_text(self, element: Element) -> str:
-        """`` name="value"`` for each attribute of an element written without a scope.
-
-        :meth:`value_text` inlined, with escaping only where text can need it: this loop
-        is most of an export's time.
-        """
+    def attribute_text(self, element: Element, prefix: str = "",
+                       model: ModelRoot | None = None) -> str:
+        """`` name="value"`` for each attribute: :meth:`value_text` inlined, escaping only
+        where text can need it (this loop is most of an export's time)."""
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
         by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
         plain = self.plain
         parts: list[str] = []
         for name in self.names(element):
             value = attrs[name]
-            if plain and type(value) is str:
-                text = escape(value)
-            elif plain and type(value) is np.ndarray and by_name[name].dtype == "double":
-                doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
-                text = _shortest_doubles(doubles.tolist())
-            elif plain and type(value) is float:
-                text = _shortest_double(value)
-            else:
-                text = escape(self.general(element, by_name[name], value, "", None))
-            parts.append(f' {name}="{text}"')
+            attribute = by_name[name]
+            if plain and (not prefix or attribute.kind not in _SCOPED_KINDS):
+                kind = type(value)
+                if kind is str:
+                    parts.append(f' {name}="{escape(cast(str, value))}"')
+                    continue
+                if kind is np.ndarray and attribute.dtype == "double":
+                    doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
+                    parts.append(f' {name}="{_shortest_doubles(doubles.tolist())}"')
+                    continue
+                if kind is float:
+                    parts.append(f' {name}="{_shortest_double(cast(float, value))}"')
+                    continue
+            text = self.general(element, attribute, value, prefix, model)
+            parts.append(f' {name}="{escape(text)}"')
         return "".join(parts)
 
     def general(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
@@ -245,14 +257,24 @@ class Writer:
 
     def element(self, element: Element, parent: Node | None, prefix: str,
                 model: ModelRoot | None) -> Node:
-        """Write ``element``'s subtree under ``parent``; iterative, so depth is unlimited."""
+        """Write ``element``'s subtree under ``parent``; iterative, so depth is unlimited.
+
+        Composition still adds to, or looks into, the model's sections, the attachment
+        frames and their ancestors, and sections whose attributes merge (``<option>``...):
+        those are nodes. Everything below them is written as chunks of text.
+        """
         first: Node | None = None
-        stack: list[tuple[Element, Node | None, str, ModelRoot | None]] = [
-            (element, parent, prefix, model)]
+        # (element, parent node, scope, model it belongs to, inside a merging section)
+        stack: list[tuple[Element, Node | None, str, ModelRoot | None, bool]] = [
+            (element, parent, prefix, model, False)]
         pop, push = stack.pop, stack.append
         tracking, keyframes = self.tracking, self.keyframes
         while stack:
-            current, parent_node, scope, owner = pop()
+            current, parent_node, scope, owner, merging = pop()
+            if parent_node is not None and first is not None and not self.needs_node(
+                    current, merging):
+                parent_node.children.append(self.chunk(current, scope, owner))
+                continue
             spec = current._SPEC  # pyright: ignore[reportPrivateUsage]
             attrib = self.attributes(current, scope, owner) if current._attrs else {}  # pyright: ignore[reportPrivateUsage]
             node = Node(spec.tag, attrib)
@@ -262,8 +284,10 @@ class Writer:
                 parent_node.children.append(node)
             if tracking and spec.namespace in _TRACKED:
                 self._track(spec.namespace, current, owner)
-            pending: list[tuple[Element, Node | None, str, ModelRoot | None]] = [
-                (child, node, scope, owner) for child in written_children(current)
+            inner = merging or (spec.compose == "attributes" and isinstance(
+                current._parent, ModelRoot))  # pyright: ignore[reportPrivateUsage]
+            pending: list[tuple[Element, Node | None, str, ModelRoot | None, bool]] = [
+                (child, node, scope, owner, inner) for child in written_children(current)
                 if keyframes or child._SPEC.compose != "keyframes"]  # pyright: ignore[reportPrivateUsage]
             attached = current._attached  # pyright: ignore[reportPrivateUsage]
             if attached is not None:
@@ -273,35 +297,58 @@ class Writer:
         assert first is not None
         return first
 
-    def text(self, element: Element, pretty_print: bool) -> str:
-        """``element``'s subtree as XML text, written in one pass without building nodes.
+    def needs_node(self, element: Element, merging: bool) -> bool:
+        """Whether composition may add to or look into ``element``: a model's section, an
+        attachment frame or one of its ancestors, or part of a section whose attributes
+        merge with the attached models'."""
+        return (merging or id(element) in self.hosts
+                or isinstance(element._parent, ModelRoot))  # pyright: ignore[reportPrivateUsage]
 
-        Only for models with nothing attached: composition joins attached models' sections
-        to the parent's, which needs the node tree :meth:`element` builds.
-        """
+    def chunk(self, element: Element, prefix: str, model: ModelRoot | None,
+              extra: dict[str, str] | None = None) -> Chunk:
+        """``element``'s subtree, to be written as text where it lands (it holds no
+        attachment frame); ``extra`` attributes follow the element's own."""
+        if self.tracking:
+            for written in iter_written(element):
+                namespace = written._SPEC.namespace  # pyright: ignore[reportPrivateUsage]
+                if namespace in _TRACKED:
+                    self._track(namespace, written, model)
+        return Chunk(lambda depth, pretty_print: self.write(
+            element, prefix, model, depth, pretty_print, extra))
+
+    def text(self, element: Element, pretty_print: bool) -> str:
+        """``element``'s subtree as XML text, written in one pass without building nodes
+        (for models with nothing attached: composition needs :meth:`element`'s nodes)."""
+        return self.write(element, "", None, 0, pretty_print)
+
+    def write(self, element: Element, prefix: str, model: ModelRoot | None, depth: int,
+              pretty_print: bool, extra: dict[str, str] | None = None) -> str:
+        """The text of ``element``'s subtree, indented from ``depth``."""
         parts: list[str] = []
         append = parts.append
         newline = "\n" if pretty_print else ""
         step = "  " if pretty_print else ""
         # an element to open, or the text that closes one
-        stack: list[tuple[Element | str, int]] = [(element, 0)]
+        stack: list[tuple[Element | str, int]] = [(element, depth)]
         pop, push = stack.pop, stack.append
         attribute_text = self.attribute_text
         while stack:
-            current, depth = pop()
+            current, level = pop()
             if isinstance(current, str):
                 append(current)
                 continue
             tag = current._SPEC.tag  # pyright: ignore[reportPrivateUsage]
-            attrs = attribute_text(current) if current._attrs else ""  # pyright: ignore[reportPrivateUsage]
-            indent = step * depth
+            attrs = attribute_text(current, prefix, model) if current._attrs else ""  # pyright: ignore[reportPrivateUsage]
+            if extra is not None and current is element:
+                attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
+            indent = step * level
             children = written_children(current) if current._children else None  # pyright: ignore[reportPrivateUsage]
             if children:
                 append(f"{indent}<{tag}{attrs}>{newline}")
-                push((f"{indent}</{tag}>{newline}", depth))
-                depth += 1
+                push((f"{indent}</{tag}>{newline}", level))
+                level += 1
                 for child in reversed(children):
-                    push((child, depth))
+                    push((child, level))
             else:
                 append(f"{indent}<{tag}{attrs}/>{newline}")
         return "".join(parts)
@@ -317,13 +364,13 @@ class Writer:
             self.mocap_owners.append(model)
 
     def attachment(self, frame: Node, model: ModelRoot, scope: str
-                   ) -> list[tuple[Element, Node | None, str, ModelRoot | None]]:
+                   ) -> list[tuple[Element, Node | None, str, ModelRoot | None, bool]]:
         """The attached model's bodies, to be written inside its frame; its other sections
         join the parent's later."""
         if _has_defaults(model) and frame.get("childclass") is None:
             frame.set("childclass", scope)
         self.pending.append((model, scope))
-        return [(child, frame, scope, model)
+        return [(child, frame, scope, model, False)
                 for section in model._children  # pyright: ignore[reportPrivateUsage]
                 if "body" in section._SPEC.children  # pyright: ignore[reportPrivateUsage]
                 for child in section._children]  # pyright: ignore[reportPrivateUsage]
@@ -357,8 +404,9 @@ class Writer:
         sections = self.top.spec.children
         rank = sections[tag].index
         node = Node(tag)
-        index = next((i for i, child in enumerate(root) if sections[child.tag].index > rank),
-                     len(root))
+        index = next((i for i, child in enumerate(root.children)
+                      if isinstance(child, Node) and sections[child.tag].index > rank),
+                     len(root.children))
         root.insert(index, node)
         return node
 
@@ -370,14 +418,14 @@ class Writer:
             self.merge_attributes(target, section, model, scope)
         elif compose == "nest":
             nested = target.sub(section.tag, {"class": scope})
-            for child in section._children:  # pyright: ignore[reportPrivateUsage]
-                self.element(child, nested, scope, model)
+            nested.children += [self.chunk(child, scope, model)
+                                for child in written_children(section)]
         else:
             classed = _has_defaults(model)
-            for child in section._children:  # pyright: ignore[reportPrivateUsage]
-                node = self.element(child, target, scope, model)
-                if classed and "class" in child.spec.by_name and node.get("class") is None:
-                    node.set("class", scope)
+            for child in written_children(section):
+                unclassed = "class" in child.spec.by_name and "class" not in child._attrs  # pyright: ignore[reportPrivateUsage]
+                extra = {"class": scope} if classed and unclassed else None
+                target.children.append(self.chunk(child, scope, model, extra))
 
     def merge_attributes(self, target: Node, section: Element, model: ModelRoot,
                          scope: str) -> None:
@@ -402,6 +450,21 @@ _TRACKED = frozenset({"joint", "actuator", "body"})
 _SCOPED_KINDS = frozenset({"id", "ref", "file"})  # values an attached model's scope changes
 
 
+def _hosts(root: ModelRoot) -> set[int]:
+    """The ids of the attachment frames of ``root`` and of the models attached to it,
+    nested ones included, and of all their ancestors."""
+    hosts: set[int] = set()
+    models = [root]
+    while models:
+        for attached in models.pop()._scopes.values():  # pyright: ignore[reportPrivateUsage]
+            models.append(attached)
+            element = attached._frame  # pyright: ignore[reportPrivateUsage]
+            while element is not None and id(element) not in hosts:
+                hosts.add(id(element))
+                element = element._parent  # pyright: ignore[reportPrivateUsage]
+    return hosts
+
+
 def _has_defaults(model: ModelRoot) -> bool:
     for section in model._children:  # pyright: ignore[reportPrivateUsage]
         if section.spec.compose == "nest":
@@ -423,7 +486,7 @@ def _absolute_file(model: ModelRoot, attribute: AttributeSpec, file: str) -> str
 
 
 def build(element: Element, formatter: Formatter, parent: Node | None = None) -> Node:
-    """The lxml element for ``element`` and its subtree (attached models included)."""
+    """The nodes of ``element`` and its subtree (attached models included)."""
     writer = Writer(formatter, element)
     root = element._root  # pyright: ignore[reportPrivateUsage]
     if parent is None and root is not None and root is element:

@@ -1,29 +1,39 @@
-"""A minimal XML node and its serialiser: what the exporter builds instead of an lxml tree.
+"""A minimal XML node, a chunk of text standing for a subtree, and their serialiser: what
+the exporter builds for composed models instead of an lxml tree.
 
 Building lxml elements costs more than the rest of an export; these nodes are plain Python
-objects with the few operations the writer needs, written out in one iterative pass (deep
+objects with the few operations composition needs, written out in one iterative pass (deep
 models do not hit Python's recursion limit).
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 _SPECIAL = re.compile('[&<>"\n\r\t]')
 _ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;",
                           "\n": "&#10;", "\r": "&#13;", "\t": "&#9;"})
 
 
+class Chunk:
+    """A subtree written straight to text when serialised, at the depth it lands at."""
+
+    __slots__ = ("render",)
+
+    def __init__(self, render: Callable[[int, bool], str]) -> None:
+        self.render = render  # (depth, pretty_print) -> the subtree's text
+
+
 class Node:
-    """An XML element: tag, attributes in order, children."""
+    """An XML element: tag, attributes in order, children (nodes, or chunks of text)."""
 
     __slots__ = ("attrib", "children", "tag")
 
     def __init__(self, tag: str, attrib: dict[str, str] | None = None) -> None:
         self.tag = tag
         self.attrib: dict[str, str] = {} if attrib is None else attrib
-        self.children: list[Node] = []
+        self.children: list[Node | Chunk] = []
 
     def sub(self, tag: str, attrib: dict[str, str] | None = None) -> Node:
         """A new last child."""
@@ -38,15 +48,16 @@ class Node:
         self.attrib[key] = value
 
     def __iter__(self) -> Iterator[Node]:
-        return iter(self.children)
+        """The child nodes (sections and the other nodes merging looks into)."""
+        return (child for child in self.children if isinstance(child, Node))
 
     def __len__(self) -> int:
         return len(self.children)
 
-    def insert(self, index: int, node: Node) -> None:
+    def insert(self, index: int, node: Node | Chunk) -> None:
         self.children.insert(index, node)
 
-    def remove(self, node: Node) -> None:
+    def remove(self, node: Node | Chunk) -> None:
         self.children.remove(node)
 
 
@@ -60,9 +71,12 @@ def serialize(root: Node, pretty_print: bool = True) -> str:
     parts: list[str] = []
     append = parts.append
     newline = "\n" if pretty_print else ""
-    stack: list[tuple[Node, int, bool]] = [(root, 0, False)]
+    stack: list[tuple[Node | Chunk, int, bool]] = [(root, 0, False)]
     while stack:
         node, depth, closing = stack.pop()
+        if isinstance(node, Chunk):
+            append(node.render(depth, pretty_print))
+            continue
         indent = "  " * depth if pretty_print else ""
         if closing:
             append(f"{indent}</{node.tag}>{newline}")
