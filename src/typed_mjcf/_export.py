@@ -170,7 +170,7 @@ class Writer:
         """The attributes to write, as unescaped text, in grammar order."""
         by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-        return {name: self.value_text(element, by_name[name], attrs[name], prefix, model)
+        return {name: self.general(element, by_name[name], attrs[name], prefix, model)
                 for name in self.names(element)}
 
     def names(self, element: Element) -> list[str]:
@@ -183,24 +183,11 @@ class Writer:
             names.sort(key=element._SPEC.order.__getitem__)  # pyright: ignore[reportPrivateUsage]
         return names
 
-    def value_text(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
-                   model: ModelRoot | None) -> str:
-        """One attribute's value as unescaped text."""
-        # the common cases, formatted inline; a scope only changes names and files
-        if self.plain and (not prefix or attribute.kind not in _SCOPED_KINDS):
-            if type(value) is str:
-                return value
-            if type(value) is float:
-                return _shortest_double(value)
-            if type(value) is np.ndarray and attribute.dtype == "double":
-                doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
-                return _shortest_doubles(doubles.tolist())
-        return self.general(element, attribute, value, prefix, model)
-
     def attribute_text(self, element: Element, prefix: str = "",
                        model: ModelRoot | None = None) -> str:
-        """`` name="value"`` for each attribute: :meth:`value_text` inlined, escaping only
-        where text can need it (this loop is most of an export's time)."""
+        """`` name="value"`` for each attribute, escaped where text can need it. The common
+        values are formatted inline (this loop is most of an export's time); the rest, and
+        names and files a scope changes, as :meth:`general` formats them."""
         attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
         by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
         plain = self.plain

@@ -51,9 +51,6 @@ class Node:
         """The child nodes (sections and the other nodes merging looks into)."""
         return (child for child in self.children if isinstance(child, Node))
 
-    def __len__(self) -> int:
-        return len(self.children)
-
     def insert(self, index: int, node: Node | Chunk) -> None:
         self.children.insert(index, node)
 
