@@ -22,7 +22,7 @@ def _generate(grammar: Path | None, allow_untyped: bool) -> int:
     print(report.format())
     if report.untyped and not allow_untyped:
         print("error: the attributes above cannot be typed precisely; add them to "
-              "schema/facts.toml ([[attribute_type]]) or pass --allow-untyped", file=sys.stderr)
+              "schema/facts.toml ([[attribute]]) or pass --allow-untyped", file=sys.stderr)
         return 1
     ir.dump(schema)
     changed = render.write(render.render(schema))

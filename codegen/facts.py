@@ -1,26 +1,31 @@
 """Hand-kept facts about MJCF (``schema/facts.toml``) as typed values.
 
-The tables this module knows are checked strictly (a typo in a key is an error, not a silent
-no-op). Top-level tables it does not know are kept uninterpreted in ``Facts.extra`` so other
-passes can add their own tables without touching this loader.
+This module owns every table of the file and checks it strictly: an unknown table, an unknown
+key in an ``[[attribute]]`` entry or a value of the wrong type raises FactsError naming the
+file, the table and the key. The passes read the typed fields only.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import TypeVar, cast
+from typing import Literal, TypeVar, cast
 
 from codegen import ir
 
 FACTS_PATH = Path(__file__).resolve().parent.parent / "schema" / "facts.toml"
 
-_KNOWN_TABLES = ("root_children", "single", "attribute")
+Compose = Literal["attributes", "nest", "keyframes"]
+_COMPOSE: dict[str, Compose] = {"attributes": "attributes", "nest": "nest",
+                                "keyframes": "keyframes"}
 _DTYPES: dict[str, ir.DType] = {"double": "double", "float": "float", "int": "int"}
 _KINDS: dict[str, ir.AttrKind] = {k: k for k in ir.ATTR_KINDS}
 _T = TypeVar("_T")
+# The top-level tables of facts.toml, in the file's order.
+TABLES = ("root_children", "single", "attribute", "directories", "class_names", "compose",
+          "attachment_sites", "default_rows")
 
 
 class FactsError(ValueError):
@@ -29,7 +34,10 @@ class FactsError(ValueError):
 
 @dataclasses.dataclass(frozen=True)
 class AttributeOverride:
-    """One ``[[attribute]]`` entry: fields of ``element@name`` set by hand (None: unchanged)."""
+    """One ``[[attribute]]`` entry: fields of ``element@name`` set by hand (None: unchanged).
+
+    It applies to an attribute the grammar file declares and to one the installed wheel adds
+    (for which ``kind`` gives the whole type, as nothing else may know it)."""
 
     element: str  # declaration name of the row
     name: str  # XML name of the attribute
@@ -44,17 +52,31 @@ class AttributeOverride:
     pattern: str | None = None
     field: str | None = None
     doc: str | None = None
-    reason: str = ""  # why the entry exists; documentation only
+    reason: str = ""  # why the entry exists (required in facts.toml); documentation only
 
 
 @dataclasses.dataclass(frozen=True)
 class Facts:
+    """The tables of ``schema/facts.toml``; see the comments there for what each means."""
+
+    # root child -> the row standing for it at the root (``body`` -> ``worldbody``)
     root_children: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
+    # parent row -> child tags exposed as properties created on first use
     single: dict[str, list[str]] = dataclasses.field(default_factory=dict[str, list[str]])
     attributes: list[AttributeOverride] = dataclasses.field(
         default_factory=list[AttributeOverride])
-    # top-level tables this loader does not interpret, as tomllib read them
-    extra: dict[str, object] = dataclasses.field(default_factory=dict[str, object])
+    # (row, file attribute) -> the <compiler> attributes naming its folder, in order
+    directories: dict[tuple[str, str], list[str]] = dataclasses.field(
+        default_factory=dict[tuple[str, str], list[str]])
+    # row -> Python class name, where the declaration name would clash with the runtime
+    class_names: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
+    # top-level section tag -> how an attached model's section joins the parent's
+    compose: dict[str, Compose] = dataclasses.field(default_factory=dict[str, Compose])
+    # row -> why a model can be attached beside it
+    attachment_sites: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
+    # default-class row -> the element rows taking their defaults from it
+    default_rows: dict[str, list[str]] = dataclasses.field(
+        default_factory=dict[str, list[str]])
 
 
 def load_facts(path: Path = FACTS_PATH) -> Facts:
@@ -68,18 +90,68 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
         raw: dict[str, object] = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise FactsError(f"{path}: {exc}") from None
-    roots = _table(raw.get("root_children", {}), f"{path}: [root_children]")
-    single = _table(raw.get("single", {}), f"{path}: [single]")
-    entries = raw.get("attribute", [])
-    if not isinstance(entries, list):
-        raise FactsError(f"{path}: 'attribute' must be an array of tables ([[attribute]])")
+    unknown = sorted(set(raw) - set(TABLES))
+    if unknown:
+        raise FactsError(f"{path}: unknown table {unknown[0]!r} (known tables: "
+                         f"{', '.join(TABLES)})")
+
+    def read(table: str, parse: Callable[[object, str], _T], empty: _T) -> _T:
+        return parse(raw[table], f"{path}: {_header(table)}") if table in raw else empty
+
     return Facts(
-        root_children={k: _str(v, f"{path}: [root_children] {k}") for k, v in roots.items()},
-        single={k: _str_list(v, f"{path}: [single] {k}") for k, v in single.items()},
-        attributes=[_override(e, f"{path}: [[attribute]] #{i + 1}")
-                    for i, e in enumerate(cast(list[object], entries))],
-        extra={k: v for k, v in raw.items() if k not in _KNOWN_TABLES},
+        root_children=read("root_children", _strings, {}),
+        single=read("single", _string_lists, {}),
+        attributes=read("attribute", _overrides, []),
+        directories=read("directories", _directories, {}),
+        class_names=read("class_names", _strings, {}),
+        compose=read("compose", _compose, {}),
+        attachment_sites=read("attachment_sites", _strings, {}),
+        default_rows=read("default_rows", _string_lists, {}),
     )
+
+
+# ------------------------------------------------------------------------------- tables
+
+
+def _header(table: str) -> str:
+    return f"[[{table}]]" if table == "attribute" else f"[{table}]"
+
+
+def _strings(value: object, where: str) -> dict[str, str]:
+    return {k: _str(v, f"{where} {k}") for k, v in _table(value, where).items()}
+
+
+def _string_lists(value: object, where: str) -> dict[str, list[str]]:
+    return {k: _str_list(v, f"{where} {k}") for k, v in _table(value, where).items()}
+
+
+def _compose(value: object, where: str) -> dict[str, Compose]:
+    return {k: _choice(v, _COMPOSE, f"{where} {k}") for k, v in _table(value, where).items()}
+
+
+def _directories(value: object, where: str) -> dict[tuple[str, str], list[str]]:
+    out: dict[tuple[str, str], list[str]] = {}
+    for key, folders in _table(value, where).items():
+        row, at, attribute = key.partition("@")
+        if not (row and at and attribute):
+            raise FactsError(f"{where} {key}: expected a key \"row@attribute\"")
+        out[(row, attribute)] = _str_list(folders, f"{where} {key}")
+    return out
+
+
+def _overrides(value: object, where: str) -> list[AttributeOverride]:
+    if not isinstance(value, list):
+        raise FactsError(f"{where}: expected an array of tables ([[attribute]] entries)")
+    entries: list[AttributeOverride] = []
+    for i, raw in enumerate(cast(list[object], value)):
+        entry = _override(raw, f"{where} #{i + 1}")
+        if any((e.element, e.name) == (entry.element, entry.name) for e in entries):
+            raise FactsError(f"{where} #{i + 1}: a second entry for "
+                             f"{entry.element}@{entry.name}")
+        entries.append(entry)
+    return entries
+
+# ------------------------------------------------------------------------------- values
 
 
 def _table(value: object, where: str) -> dict[str, object]:
@@ -113,21 +185,24 @@ def _choice(value: object, choices: Mapping[str, _T], where: str) -> _T:
     return choices[text]
 
 
-def _arity(value: object, where: str) -> tuple[int, int]:
-    """``[lo, hi]``; an unbounded arity cannot be written in TOML and is not needed yet."""
+def _arity(value: object, where: str) -> tuple[int, int | None]:
+    """``[lo, hi]``, or ``[lo]`` for lo or more values (TOML has no null for "unbounded")."""
     items = cast(list[object], value) if isinstance(value, list) else []
-    if len(items) != 2 or not all(type(v) is int for v in items):
-        raise FactsError(f"{where}: expected [lo, hi] integers, got {value!r}")
-    low, high = cast(list[int], items)
-    return (low, high)
+    if not 1 <= len(items) <= 2 or not all(type(v) is int for v in items):
+        raise FactsError(f"{where}: expected [lo, hi] or [lo] integers, got {value!r}")
+    bounds = cast(list[int], items)
+    return (bounds[0], bounds[1] if len(bounds) == 2 else None)
+
+
+_OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride))
 
 
 def _override(value: object, where: str) -> AttributeOverride:
     entry = _table(value, where)
-    unknown = sorted(set(entry) - {f.name for f in dataclasses.fields(AttributeOverride)})
+    unknown = sorted(set(entry) - _OVERRIDE_KEYS)
     if unknown:
         raise FactsError(f"{where}: unknown key {unknown[0]!r}")
-    for key in ("element", "name"):
+    for key in ("element", "name", "reason"):
         if key not in entry:
             raise FactsError(f"{where}: missing key {key!r}")
 
@@ -146,5 +221,5 @@ def _override(value: object, where: str) -> AttributeOverride:
         enum=opt_str("enum"), namespace=opt_str("namespace"), default=opt_str("default"),
         required=opt_bool("required"), nodefault=opt_bool("nodefault"),
         pattern=opt_str("pattern"), field=opt_str("field"), doc=opt_str("doc"),
-        reason=opt_str("reason") or "",
+        reason=_str(entry["reason"], f"{where} reason"),
     )

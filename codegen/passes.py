@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import copy
 from collections.abc import Iterable, Mapping
-from typing import cast
 
 from codegen import ir, naming
 from codegen.facts import AttributeOverride, Facts
@@ -22,14 +21,15 @@ _NOT_DEFAULTABLE = frozenset({"name", "class"})  # identity, never inherited fro
 def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     """The renderer's IR: ``schema`` (left untouched) with ``facts`` applied and checked."""
     out = copy.deepcopy(schema)
-    # Overrides on declared rows go first so default projections inherit them; an entry may
-    # also name a projection row, which only exists afterwards.
-    on_rows = [o for o in facts.attributes if o.element in out.elements]
-    on_projections = [o for o in facts.attributes if o.element not in out.elements]
     route_root_children(out, facts.root_children)
-    apply_overrides(out, on_rows)
+    # Overrides on declared rows go first so default projections inherit them; an entry may
+    # also name a projection row, which only exists afterwards, or an attribute the wheel
+    # adds, which sync types (and where an entry that names nothing is an error).
+    declared = set(out.elements)
+    apply_overrides(out, overrides_on(out, facts.attributes))
     project_defaults(out)
-    apply_overrides(out, on_projections)
+    apply_overrides(out, [o for o in overrides_on(out, facts.attributes)
+                          if o.element not in declared])
     mark_single(out, facts.single)
     drop_unreachable(out)
     finish(out, facts)
@@ -68,6 +68,13 @@ def mark_single(schema: ir.Schema, single: Mapping[str, Iterable[str]]) -> None:
             child.single = True
 
 
+def overrides_on(schema: ir.Schema, overrides: Iterable[AttributeOverride],
+                 ) -> list[AttributeOverride]:
+    """The ``overrides`` naming an attribute ``schema`` has."""
+    return [o for o in overrides if o.element in schema.elements
+            and any(a.name == o.name for a in schema.elements[o.element].attributes)]
+
+
 def apply_overrides(schema: ir.Schema, overrides: Iterable[AttributeOverride]) -> None:
     """Hand-kept corrections of single attributes (e.g. ``mujoco@model`` is a string)."""
     for override in overrides:
@@ -77,10 +84,16 @@ def apply_overrides(schema: ir.Schema, overrides: Iterable[AttributeOverride]) -
             attr = row.attribute(override.name)
         except KeyError:
             raise ValueError(f"{where}: row {row.name!r} has no such attribute") from None
-        _apply_override(attr, override)
-        problem = _attribute_problem(attr, schema)
-        if problem:
-            raise ValueError(f"{where}: {problem}")
+        apply_override(attr, override, schema)
+
+
+def apply_override(attr: ir.AttributeDef, override: AttributeOverride,
+                   schema: ir.Schema) -> None:
+    """Set the fields ``override`` gives on ``attr``; raise if they contradict its kind."""
+    _apply_override(attr, override)
+    problem = _attribute_problem(attr, schema)
+    if problem:
+        raise ValueError(f"attribute override {override.element}@{override.name}: {problem}")
 
 
 def project_defaults(schema: ir.Schema) -> None:
@@ -98,51 +111,24 @@ def project_defaults(schema: ir.Schema) -> None:
         default.children[index] = ir.ChildDef(element, child.card, single=True)
 
 
-def directories_of(facts: Facts) -> dict[str, list[str]]:
-    """The ``[directories]`` table: ``"row@attribute"`` -> compiler folder attributes."""
-    table = facts.extra.get("directories", {})
-    if not isinstance(table, dict):
-        raise TypeError("schema/facts.toml: [directories] must be a table")
-    result: dict[str, list[str]] = {}
-    for key, value in cast(dict[str, object], table).items():
-        if not isinstance(value, list) or not all(isinstance(v, str) for v in cast(list[object], value)):
-            raise ValueError(f"schema/facts.toml: [directories] {key!r} must be a list of names")
-        result[key] = list(cast(list[str], value))
-    return result
-
-
-def _string_table(facts: Facts, table: str) -> dict[str, str]:
-    raw = facts.extra.get(table, {})
-    if not isinstance(raw, dict) or not all(
-            isinstance(v, str) for v in cast(dict[str, object], raw).values()):
-        raise ValueError(f"schema/facts.toml: [{table}] must map names to strings")
-    return dict(cast(dict[str, str], raw))
-
-
 def finish(schema: ir.Schema, facts: Facts) -> None:
     """The fact-derived fields, applied after normalizing and again after a sync (which may
     have added rows)."""
-    apply_directories(schema, directories_of(facts))
-    rename_classes(schema, _string_table(facts, "class_names"))
-    mark_default_rows(schema, facts.extra.get("default_rows", {}))
-    sites = facts.extra.get("attachment_sites", {})
-    mark_composition(schema, _string_table(facts, "compose"),
-                     cast(dict[str, object], sites).keys() if isinstance(sites, dict) else ())
+    apply_directories(schema, facts.directories)
+    rename_classes(schema, facts.class_names)
+    mark_default_rows(schema, facts.default_rows)
+    mark_composition(schema, facts.compose, facts.attachment_sites)
 
 
-def mark_default_rows(schema: ir.Schema, table: object) -> None:
+def mark_default_rows(schema: ir.Schema, table: Mapping[str, Iterable[str]]) -> None:
     """Point each element row at the <default> child row holding its defaults."""
     for row in schema.elements.values():
         if row.projection_of is not None and row.projection_of in schema.elements:
             schema.elements[row.projection_of].default_row = row.name
-    if not isinstance(table, dict):
-        raise TypeError("schema/facts.toml: [default_rows] must be a table")
-    for default_row, elements in cast(dict[str, object], table).items():
+    for default_row, elements in table.items():
         _row(schema, default_row, f"[default_rows] {default_row}")
-        if not isinstance(elements, list):
-            raise TypeError(f"schema/facts.toml: [default_rows] {default_row} must be a list")
-        for name in cast(list[object], elements):
-            if isinstance(name, str) and name in schema.elements:
+        for name in elements:
+            if name in schema.elements:  # a listed row the installed wheel lacks: nothing to mark
                 schema.elements[name].default_row = default_row
 
 
@@ -171,14 +157,14 @@ def rename_classes(schema: ir.Schema, names: Mapping[str, str]) -> None:
         _row(schema, row_name, f"[class_names] {row_name}").class_name = class_name
 
 
-def apply_directories(schema: ir.Schema, directories: Mapping[str, list[str]]) -> None:
+def apply_directories(schema: ir.Schema,
+                      directories: Mapping[tuple[str, str], list[str]]) -> None:
     """Tell file attributes which <compiler> attributes name their folder."""
-    for key, folders in directories.items():
-        row_name, _, attribute_name = key.partition("@")
-        row = _row(schema, row_name, f"[directories] {key}")
-        attribute = row.attribute(attribute_name)
+    for (row_name, attribute_name), folders in directories.items():
+        key = f"[directories] {row_name}@{attribute_name}"
+        attribute = _row(schema, row_name, key).attribute(attribute_name)
         if attribute.kind != "file":
-            raise ValueError(f"schema/facts.toml: [directories] {key} is not a file attribute")
+            raise ValueError(f"schema/facts.toml: {key} is not a file attribute")
         attribute.directory = list(folders)
 
 

@@ -11,7 +11,8 @@ the parser accepts now. ``sync`` walks ``mj_printSchema``'s tree alongside the I
   reference documents, and checks enum C constants against ``mujoco.introspect``.
 
 What cannot be typed precisely is added as a string and listed in ``Report.untyped``; a
-hand-kept type goes in ``schema/facts.toml`` as an ``[[attribute_type]]`` entry.
+hand-kept type goes in ``schema/facts.toml`` as an ``[[attribute]]`` entry, which sync also
+applies to attributes the schema has.
 """
 
 from __future__ import annotations
@@ -19,13 +20,11 @@ from __future__ import annotations
 import copy
 import dataclasses
 import re
-from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import cast
 
 from codegen import ir, naming
-from codegen.facts import Facts
-from codegen.passes import DEFAULT_ROW, PROJECTION_PREFIX
+from codegen.facts import AttributeOverride, Facts
+from codegen.passes import DEFAULT_ROW, PROJECTION_PREFIX, apply_override
 from codegen.wheel import AtVal, Reference, Wheel, WheelRow, parse_at_val
 
 # The longest tag path an anchor spells before the attribute: ``compiler-lengthrange-mode``.
@@ -94,7 +93,7 @@ class Report:
         if self.anchors:
             out.append(f"anchors: {self.anchors} set or changed")
         if self.untyped:
-            out.append("UNTYPED (added as strings; add [[attribute_type]] entries to "
+            out.append("UNTYPED (added as strings; add [[attribute]] entries to "
                        "schema/facts.toml):")
             out.extend(f"  ! {line}" for line in self.untyped)
         return "\n".join(out) + self._format_notes()
@@ -103,101 +102,6 @@ class Report:
         if not self.notes:
             return ""
         return "\nnotes:\n" + "\n".join(f"  * {line}" for line in self.notes)
-
-
-# -------------------------------------------------------------- hand-kept attribute types
-
-
-@dataclass(frozen=True)
-class AttributeType:
-    """An ``[[attribute_type]]`` entry of ``schema/facts.toml``: the type of ``element@name``
-    where neither the grammar nor the reference states one precisely."""
-
-    element: str
-    name: str
-    kind: ir.AttrKind
-    dtype: ir.DType | None = None
-    arity: tuple[int, int | None] | None = None
-    enum: str | None = None
-    namespace: str | None = None
-    default: str | None = None
-    required: bool = False
-    reason: str = ""
-
-
-_TYPE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeType))
-
-
-class AttributeTypeError(ValueError):
-    """A malformed ``[[attribute_type]]`` entry."""
-_DTYPES: dict[str, ir.DType] = {"double": "double", "float": "float", "int": "int"}
-
-
-def attribute_types(facts: Facts) -> list[AttributeType]:
-    """The ``[[attribute_type]]`` entries (kept by ``Facts`` as an uninterpreted table)."""
-    entries = _as_list(facts.extra.get("attribute_type", []))
-    if entries is None:
-        raise AttributeTypeError("facts: 'attribute_type' must be an array of tables")
-    return [_attribute_type(e, f"facts: [[attribute_type]] #{i + 1}")
-            for i, e in enumerate(entries)]
-
-
-def _as_list(raw: object) -> list[object] | None:
-    return list(cast("list[object]", raw)) if isinstance(raw, list) else None
-
-
-def _as_table(raw: object) -> dict[str, object] | None:
-    if not isinstance(raw, dict):
-        return None
-    return {str(k): v for k, v in cast("dict[object, object]", raw).items()}
-
-
-def _attribute_type(raw: object, where: str) -> AttributeType:
-    entry = _as_table(raw)
-    if entry is None:
-        raise AttributeTypeError(f"{where}: expected a table")
-    unknown = sorted(set(entry) - _TYPE_KEYS)
-    if unknown or not {"element", "name", "kind"} <= set(entry):
-        raise AttributeTypeError(f"{where}: keys must be among {sorted(_TYPE_KEYS)} and "
-                                 f"include element, name, kind; got {sorted(entry)}")
-    kinds: dict[str, ir.AttrKind] = {k: k for k in ir.ATTR_KINDS}
-    return AttributeType(
-        element=_text(entry["element"], where), name=_text(entry["name"], where),
-        kind=kinds[_choice(entry["kind"], kinds, where)],
-        dtype=_DTYPES[_choice(entry["dtype"], _DTYPES, where)] if "dtype" in entry else None,
-        arity=_toml_arity(entry["arity"], where) if "arity" in entry else None,
-        enum=_opt_text(entry.get("enum"), where),
-        namespace=_opt_text(entry.get("namespace"), where),
-        default=_opt_text(entry.get("default"), where),
-        required=entry.get("required") is True,
-        reason=_opt_text(entry.get("reason"), where) or "",
-    )
-
-
-def _text(value: object, where: str) -> str:
-    if not isinstance(value, str):
-        raise AttributeTypeError(f"{where}: expected a string, got {value!r}")
-    return value
-
-
-def _opt_text(value: object, where: str) -> str | None:
-    return None if value is None else _text(value, where)
-
-
-def _choice(value: object, choices: Mapping[str, object], where: str) -> str:
-    text = _text(value, where)
-    if text not in choices:
-        raise AttributeTypeError(f"{where}: {text!r} is not one of {', '.join(choices)}")
-    return text
-
-
-def _toml_arity(value: object, where: str) -> tuple[int, int | None]:
-    """``[n, m]`` bounds, or ``[n]`` for n or more values."""
-    items = _as_list(value) or []
-    if not 1 <= len(items) <= 2 or not all(type(v) is int for v in items):
-        raise AttributeTypeError(f"{where}: arity must be [lo, hi] or [lo], got {value!r}")
-    bounds = [v for v in items if isinstance(v, int)]
-    return (bounds[0], bounds[1] if len(bounds) == 2 else None)
 
 
 # ------------------------------------------------------------------------ describing types
@@ -248,7 +152,7 @@ class _Sync:
         self.ref: Reference = wheel.reference
         self.report = report
         self.single = facts.single
-        self.types = {(t.element, t.name): t for t in attribute_types(facts)}
+        self.overrides = {(o.element, o.name): o for o in facts.attributes}
         self.matches: dict[str, WheelRow] = {}  # IR row -> the printSchema row it stands for
         self.added_edges: dict[str, list[ir.ChildDef]] = {}  # per row, edges sync added
         self.touched: set[str] = set()
@@ -269,7 +173,7 @@ class _Sync:
             self._sync_attributes(row, self.matches[row.name])
         for row in self._alias_rows():
             self._sync_documented_attributes(row)
-        self._apply_attribute_types()
+        self._apply_overrides()
         self._report_committed_untyped()
         self._check_enums()
         self._drop_unused_enums()
@@ -508,8 +412,8 @@ class _Sync:
 
     def _new_attribute(self, row: ir.ElementDef, name: str) -> tuple[ir.AttributeDef, str]:
         """A definition for a new attribute and where its type came from."""
-        hand = self.types.get((row.name, name))
-        if hand is not None:
+        hand = self.overrides.get((row.name, name))
+        if hand is not None and hand.kind is not None:
             return self._from_hand(hand), "facts.toml"
         copied = self._copied(row, name)
         if copied is not None:
@@ -530,7 +434,7 @@ class _Sync:
             why = f"{anchor} says {text!r}, but {name} is an identifier elsewhere"
         self.report.untyped.append(f"{row.name}@{name}: {why}")
         self.new_untyped.add((row.name, name))
-        doc = f"{UNTYPED_DOC}{why}; give its type in schema/facts.toml [[attribute_type]]"
+        doc = f"{UNTYPED_DOC}{why}; give its type in schema/facts.toml [[attribute]]"
         return ir.AttributeDef(name=name, py_name=naming.py_name(name), kind="string",
                                doc=doc), "UNTYPED"
 
@@ -560,11 +464,10 @@ class _Sync:
         attr.required = False
         return attr, f"shared by {', '.join(n for n, _ in defs)}"
 
-    def _from_hand(self, hand: AttributeType) -> ir.AttributeDef:
-        return ir.AttributeDef(
-            name=hand.name, py_name=naming.py_name(hand.name), kind=hand.kind, dtype=hand.dtype,
-            arity=hand.arity, enum=hand.enum, namespace=hand.namespace, default=hand.default,
-            required=hand.required)
+    def _from_hand(self, hand: AttributeOverride) -> ir.AttributeDef:
+        attr = ir.AttributeDef(name=hand.name, py_name=naming.py_name(hand.name), kind="string")
+        apply_override(attr, hand, self.schema)
+        return attr
 
     def _from_at_val(self, row: ir.ElementDef, name: str, val: AtVal) -> ir.AttributeDef | None:
         attr = ir.AttributeDef(name=name, py_name=naming.py_name(name), kind="string",
@@ -660,25 +563,36 @@ class _Sync:
 
     # -- hand-kept types on existing attributes
 
-    def _apply_attribute_types(self) -> None:
-        for (element, name), hand in sorted(self.types.items()):
+    def _apply_overrides(self) -> None:
+        """Every ``[[attribute]]`` entry holds after a sync, on its row and on the default
+        projections of that row (as when normalizing the grammar, ``required`` stays off
+        there); an entry naming no attribute is an error."""
+        for (element, name), hand in sorted(self.overrides.items()):
             row = self.rows.get(element)
-            attr = next((a for a in row.attributes if a.name == name), None) if row else None
-            if attr is None:
-                self.report.notes.append(f"facts [[attribute_type]] {element}@{name}: no such "
-                                         "attribute; the entry is stale")
-                continue
-            typed = self._from_hand(hand)
-            if attr.doc.startswith(UNTYPED_DOC):
-                attr.doc = ""
-                self.touched.add(element)
-            if _type_of(attr)[:6] != _type_of(typed)[:6] or attr.required != typed.required:
-                before = describe(attr)
-                for key in ("kind", "dtype", "arity", "enum", "namespace", "default", "required"):
-                    setattr(attr, key, getattr(typed, key))
-                self.report.changed_attributes.append(
-                    f"{element}@{name}: {before} -> {describe(attr)}  [facts.toml]")
-                self.touched.add(element)
+            if row is None or all(a.name != name for a in row.attributes):
+                raise ValueError(f"schema/facts.toml [[attribute]] {element}@{name}: the synced "
+                                 "schema has no such attribute; fix or remove the entry")
+            self._override(row, hand)
+            for projection in sorted(self.rows.values(), key=lambda r: r.name):
+                if (projection.projection_of == element and (projection.name, name) not in
+                        self.overrides and any(a.name == name for a in projection.attributes)):
+                    self._override(projection, dataclasses.replace(
+                        hand, element=projection.name, required=None, nodefault=None))
+
+    def _override(self, row: ir.ElementDef, hand: AttributeOverride) -> None:
+        index = next(i for i, a in enumerate(row.attributes) if a.name == hand.name)
+        attr = row.attributes[index]
+        typed = copy.deepcopy(attr)
+        apply_override(typed, hand, self.schema)
+        if attr.doc.startswith(UNTYPED_DOC) and hand.kind is not None and hand.doc is None:
+            typed.doc = ""  # typed by hand now
+        if typed == attr:
+            return
+        if _type_of(attr) != _type_of(typed) or attr.required != typed.required:
+            self.report.changed_attributes.append(
+                f"{row.name}@{hand.name}: {describe(attr)} -> {describe(typed)}  [facts.toml]")
+        row.attributes[index] = typed
+        self.touched.add(row.name)
 
     def _report_committed_untyped(self) -> None:
         """Attributes an earlier sync added as strings stay loud until facts.toml types them."""

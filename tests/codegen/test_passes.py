@@ -90,7 +90,7 @@ def test_repository_facts_load() -> None:
     assert model.kind == "string"
 
 
-def test_facts_tables_and_unknown_tables_are_kept() -> None:
+def test_every_facts_table_is_parsed_into_typed_fields() -> None:
     facts = parse_facts(textwrap.dedent("""\
         [root_children]
         body = "worldbody"
@@ -105,42 +105,99 @@ def test_facts_tables_and_unknown_tables_are_kept() -> None:
         required = false
         reason = "because"
 
-        [[attribute_type]]
+        [[attribute]]
+        element = "key"
+        name = "qpos"
         kind = "real"
-        python = "float"
-        """))
-    assert facts.root_children == {"body": "worldbody"}
-    assert facts.single == {"mujoco": ["option"]}
-    assert facts.attributes == [AttributeOverride("joint", "axis", arity=(3, 3),
-                                                  required=False, reason="because")]
-    assert facts.extra == {"attribute_type": [{"kind": "real", "python": "float"}]}
+        dtype = "double"
+        arity = [0]
+        reason = "any number"
+
+        [directories]
+        "mesh@file" = ["meshdir", "assetdir"]
+
+        [class_names]
+        asset = "AssetSection"
+
+        [compose]
+        default = "nest"
+
+        [attachment_sites]
+        site = "dm_control does"
+
+        [default_rows]
+        default_tendon = ["spatial", "fixed"]
+        """), "f.toml")
+    assert facts == Facts(
+        root_children={"body": "worldbody"},
+        single={"mujoco": ["option"]},
+        attributes=[AttributeOverride("joint", "axis", arity=(3, 3), required=False,
+                                      reason="because"),
+                    AttributeOverride("key", "qpos", kind="real", dtype="double",
+                                      arity=(0, None), reason="any number")],
+        directories={("mesh", "file"): ["meshdir", "assetdir"]},
+        class_names={"asset": "AssetSection"},
+        compose={"default": "nest"},
+        attachment_sites={"site": "dm_control does"},
+        default_rows={"default_tendon": ["spatial", "fixed"]},
+    )
 
 
 def test_empty_facts() -> None:
     assert parse_facts("") == Facts()
 
 
+ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
+
+
 @pytest.mark.parametrize(("text", "message"), [
     ("[root_children\n", "f.toml: Expected ']' at the end of a table declaration"),
+    ("[root_childern]\nbody = \"worldbody\"\n",
+     ("f.toml: unknown table 'root_childern' (known tables: root_children, single, attribute, "
+      "directories, class_names, compose, attachment_sites, default_rows)")),
+    ("[[attribute_type]]\nelement = \"a\"\n", "f.toml: unknown table 'attribute_type'"),
     ("root_children = 3\n", "f.toml: [root_children]: expected a table"),
     ("[root_children]\nbody = 1\n", "f.toml: [root_children] body: expected a string, got 1"),
     ("[single]\nmujoco = \"option\"\n", "f.toml: [single] mujoco: expected a list of strings"),
-    ("attribute = 1\n", "f.toml: 'attribute' must be an array of tables ([[attribute]])"),
-    ("[[attribute]]\nelement = \"a\"\n", "f.toml: [[attribute]] #1: missing key 'name'"),
-    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\nkin = \"string\"\n",
-     "f.toml: [[attribute]] #1: unknown key 'kin'"),
-    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\nkind = \"text\"\n",
+    ("[single]\nmujoco = [1]\n", "f.toml: [single] mujoco: expected a string, got 1"),
+    ("attribute = 1\n", "f.toml: [[attribute]]: expected an array of tables"),
+    ("[[attribute]]\nelement = \"a\"\nreason = \"r\"\n",
+     "f.toml: [[attribute]] #1: missing key 'name'"),
+    ('[[attribute]]\nelement = "a"\nname = "b"\nkind = "string"\n',
+     "f.toml: [[attribute]] #1: missing key 'reason'"),
+    (ENTRY + 'kin = "string"\n', "f.toml: [[attribute]] #1: unknown key 'kin'"),
+    (ENTRY + 'kind = "text"\n',
      ("f.toml: [[attribute]] #1 kind: 'text' is not one of string, file, chars, bool, int, "
      "real, keyword, flags, id, ref")),
-    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\narity = [1]\n",
-     "f.toml: [[attribute]] #1 arity: expected [lo, hi] integers, got [1]"),
-    ("[[attribute]]\nelement = \"a\"\nname = \"b\"\nrequired = 1\n",
-     "f.toml: [[attribute]] #1 required: expected true or false, got 1"),
+    (ENTRY + 'dtype = "single"\n',
+     "f.toml: [[attribute]] #1 dtype: 'single' is not one of double, float, int"),
+    (ENTRY + "arity = [1, 2, 3]\n",
+     "f.toml: [[attribute]] #1 arity: expected [lo, hi] or [lo] integers, got [1, 2, 3]"),
+    (ENTRY + "required = 1\n", "f.toml: [[attribute]] #1 required: expected true or false, got 1"),
+    (ENTRY + "doc = 2\n", "f.toml: [[attribute]] #1 doc: expected a string, got 2"),
+    ('[[attribute]]\nelement = "a"\nname = "b"\nreason = 2\n',
+     "f.toml: [[attribute]] #1 reason: expected a string, got 2"),
+    (ENTRY + ENTRY, "f.toml: [[attribute]] #2: a second entry for a@b"),
+    ('[directories]\n"mesh" = ["meshdir"]\n',
+     'f.toml: [directories] mesh: expected a key "row@attribute"'),
+    ('[directories]\n"mesh@file" = "meshdir"\n',
+     "f.toml: [directories] mesh@file: expected a list of strings"),
+    ("[class_names]\nasset = 3\n", "f.toml: [class_names] asset: expected a string, got 3"),
+    ('[compose]\ndefault = "nested"\n',
+     "f.toml: [compose] default: 'nested' is not one of attributes, nest, keyframes"),
+    ("[attachment_sites]\nsite = true\n",
+     "f.toml: [attachment_sites] site: expected a string, got True"),
+    ('[default_rows]\ndefault_tendon = "spatial"\n',
+     "f.toml: [default_rows] default_tendon: expected a list of strings"),
 ])
 def test_malformed_facts(text: str, message: str) -> None:
     with pytest.raises(FactsError) as info:
         parse_facts(text, "f.toml")
     assert str(info.value).startswith(message)
+
+
+def test_repository_facts_entries_all_give_a_reason() -> None:
+    assert all(o.reason.strip() for o in load_facts().attributes)
 
 
 # ---------------------------------------------------------------------- root children
@@ -211,9 +268,6 @@ def test_override_to_keyword_needs_an_enum() -> None:
 
 
 @pytest.mark.parametrize(("override", "message"), [
-    (AttributeOverride("joint", "nope", kind="string"),
-     "attribute override joint@nope: row 'joint' has no such attribute"),
-    (AttributeOverride("nope", "x", kind="string"), "attribute override nope@x: no row 'nope'"),
     (AttributeOverride("joint", "type", kind="real"),
      "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
     (AttributeOverride("joint", "type", kind="chars"),
@@ -225,6 +279,16 @@ def test_override_errors(override: AttributeOverride, message: str) -> None:
     with pytest.raises(ValueError) as info:
         normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
     assert str(info.value) == message
+
+
+def test_override_naming_no_grammar_attribute_is_left_to_sync() -> None:
+    # the installed wheel may add the attribute; sync types it or rejects the entry
+    facts = Facts(root_children=FACTS.root_children, attributes=[
+        AttributeOverride("joint", "nope", kind="string"),
+        AttributeOverride("nope", "x", kind="string")])
+    assert normalized(facts) == normalized(Facts(root_children=FACTS.root_children))
+    with pytest.raises(ValueError, match="joint@nope: row 'joint' has no such attribute"):
+        passes.apply_overrides(normalized(facts), facts.attributes)
 
 
 def test_override_to_int_sets_dtype() -> None:

@@ -7,8 +7,8 @@ import textwrap
 import pytest
 
 from codegen import ir, naming
-from codegen.facts import Facts
-from codegen.reconcile import AttributeTypeError, Report, attribute_types, describe, sync
+from codegen.facts import AttributeOverride, Facts
+from codegen.reconcile import Report, describe, sync
 from codegen.wheel import Wheel, parse_print_schema, parse_reference
 
 
@@ -169,6 +169,8 @@ def wheel(print_schema: str = PRINT_SCHEMA) -> Wheel:
 SITE_NAME_UNTYPED = ("site@name: body-site-name says 'string, optional', but name is an "
                      "identifier elsewhere")
 FACTS = Facts(single={"mujoco": ["default", "asset", "worldbody", "tendon"]})
+SITE_NAME_ID = AttributeOverride("site", "name", kind="id", namespace="site",
+                                 reason="the docs say string")
 
 
 @pytest.fixture(scope="module")
@@ -345,17 +347,14 @@ def test_untyped_attribute_stays_loud_until_facts_type_it(
     _, again = sync(s, wheel(), FACTS)
     assert again.untyped == [f"site@name: still a string ({name.doc.removeprefix('UNTYPED: ')})"]
     assert not again.is_empty()
-    facts = Facts(single=FACTS.single, extra={"attribute_type": [
-        {"element": "site", "name": "name", "kind": "id", "namespace": "site"}]})
+    facts = Facts(single=FACTS.single, attributes=[SITE_NAME_ID])
     typed, report = sync(s, wheel(), facts)
     assert report.untyped == [] and typed.elements["site"].attribute("name").doc == ""
     assert report.changed_attributes == ["site@name: string -> id<site>  [facts.toml]"]
 
 
 def test_hand_kept_type_from_facts() -> None:
-    facts = Facts(single=FACTS.single, extra={"attribute_type": [
-        {"element": "site", "name": "name", "kind": "id", "namespace": "site",
-         "reason": "the docs say string"}]})
+    facts = Facts(single=FACTS.single, attributes=[SITE_NAME_ID])
     s, report = sync(schema(), wheel(), facts)
     assert describe(s.elements["site"].attribute("name")) == "id<site>"
     assert report.untyped == []
@@ -363,23 +362,54 @@ def test_hand_kept_type_from_facts() -> None:
 
 
 def test_hand_kept_type_overrides_an_existing_attribute() -> None:
-    facts = Facts(extra={"attribute_type": [
-        {"element": "geom", "name": "size", "kind": "real", "dtype": "float", "arity": [3]}]})
+    facts = Facts(attributes=[AttributeOverride("geom", "size", kind="real", dtype="float",
+                                                arity=(3, None))])
     s, report = sync(schema(), wheel(), facts)
     assert describe(s.elements["geom"].attribute("size")) == "real float[3..]"
     assert report.changed_attributes == [
         "geom@size: real double[1..3] -> real float[3..]  [facts.toml]"]
 
 
-@pytest.mark.parametrize("entry, message", [
-    ({"element": "a", "name": "b"}, "include element, name, kind"),
-    ({"element": "a", "name": "b", "kind": "text"}, "'text' is not one of"),
-    ({"element": "a", "name": "b", "kind": "real", "arity": [1, 2, 3]}, "arity must be"),
-    ({"element": "a", "name": "b", "kind": "real", "typo": 1}, "keys must be among"),
+def test_override_sets_only_the_fields_it_gives() -> None:
+    facts = Facts(attributes=[AttributeOverride("joint", "damping", default="2", doc="d")])
+    s, report = sync(schema(), wheel(), facts)
+    damping = s.elements["joint"].attribute("damping")
+    assert (describe(damping), damping.doc) == ('real double = "2"', "d")
+    assert 'joint@damping: real double -> real double = "2"  [facts.toml]' in \
+        report.changed_attributes
+
+
+def test_override_on_a_primary_reaches_its_default_projection() -> None:
+    facts = Facts(attributes=[AttributeOverride("joint", "damping", dtype="float",
+                                                required=True)])
+    s, _ = sync(schema(), wheel(), facts)
+    assert describe(s.elements["joint"].attribute("damping")) == "real float (required)"
+    assert describe(s.elements["default_joint"].attribute("damping")) == "real float"
+
+
+def test_override_without_a_kind_does_not_type_a_new_attribute() -> None:
+    facts = Facts(single=FACTS.single,
+                  attributes=[AttributeOverride("site", "name", doc="its name")])
+    s, report = sync(schema(), wheel(), facts)
+    assert s.elements["site"].attribute("name").kind == "string"
+    assert s.elements["site"].attribute("name").doc == "its name"
+    assert report.untyped == [SITE_NAME_UNTYPED]
+
+
+@pytest.mark.parametrize("override, message", [
+    (AttributeOverride("joint", "nope", kind="string"),
+     "schema/facts.toml [[attribute]] joint@nope: the synced schema has no such attribute"),
+    (AttributeOverride("nope", "x", kind="string"),
+     "schema/facts.toml [[attribute]] nope@x: the synced schema has no such attribute"),
+    (AttributeOverride("site", "name", kind="ref"),
+     "attribute override site@name: ref attribute needs a namespace"),
+    (AttributeOverride("joint", "type", kind="real"),
+     "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
 ])
-def test_malformed_attribute_types(entry: dict[str, object], message: str) -> None:
-    with pytest.raises(AttributeTypeError, match=message):
-        attribute_types(Facts(extra={"attribute_type": [entry]}))
+def test_malformed_overrides(override: AttributeOverride, message: str) -> None:
+    with pytest.raises(ValueError) as info:
+        sync(schema(), wheel(), Facts(single=FACTS.single, attributes=[override]))
+    assert str(info.value).startswith(message)
 
 
 def test_enum_constants_missing_from_the_wheel_are_dropped(
@@ -413,8 +443,7 @@ def test_version_and_report(synced: tuple[ir.Schema, Report]) -> None:
 
 
 def test_sync_is_idempotent_and_leaves_its_input_alone() -> None:
-    facts = Facts(single=FACTS.single, extra={"attribute_type": [
-        {"element": "site", "name": "name", "kind": "id", "namespace": "site"}]})
+    facts = Facts(single=FACTS.single, attributes=[SITE_NAME_ID])
     s, _ = sync(schema(), wheel(), facts)
     again, report = sync(s, wheel(), facts)
     assert report.is_empty(), report.format()
