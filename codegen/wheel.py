@@ -7,7 +7,9 @@ The wheel is the authority on what the installed parser accepts:
 * ``mujoco.introspect``: C enums and the field types of the ``mjs*`` structs;
 * ``mujoco/doc/XMLreference.rst``: anchors and the ``:at-val:`` text of attribute entries,
   parsed by :func:`parse_reference` and typed by :func:`parse_at_val`;
-* ``MjSpec().default``: the default values of the ``mjs*`` objects (:func:`spec_defaults`).
+* ``MjSpec().default``: the default values of the ``mjs*`` objects (:func:`spec_defaults`);
+* the parser itself (``MjSpec.from_string``), which :mod:`codegen.probe` asks what the rows
+  printSchema omits (``frame``, ``replicate``, ``worldbody``) take.
 
 The parsers are pure functions of text so tests can feed them small snippets; the ``read_*``
 functions are thin adapters over the installed module. ``mujoco`` ships no type information,
@@ -26,6 +28,7 @@ from types import ModuleType
 from typing import Literal, SupportsInt, cast
 
 from codegen import ir
+from codegen.probe import MujocoParser, Parser
 
 # ----------------------------------------------------------------------- printSchema tree
 
@@ -126,10 +129,12 @@ class RstEntry:
 
 @dataclass(frozen=True)
 class Reference:
-    """The anchors of ``XMLreference.rst`` (in document order) and their attribute entries."""
+    """The anchors of ``XMLreference.rst`` (in document order), their attribute entries, and
+    every attribute name the text spells (``:at:`name```, in entries and in prose)."""
 
     anchors: tuple[str, ...]
     entries: Mapping[str, RstEntry]
+    names: frozenset[str] = frozenset()
 
     def __contains__(self, anchor: str) -> bool:
         return anchor in self._positions
@@ -155,6 +160,7 @@ class Reference:
 
 _ANCHOR_RE = re.compile(r"\.\. _([\w.-]+):\s*")
 _AT_VAL_RE = re.compile(r":at-val:`([^`]*)`")
+_AT_NAME_RE = re.compile(r":at:`([A-Za-z_]\w*)`")
 _SUBST_DEF_RE = re.compile(r"\.\. \|[^|]+\| replace::")
 _SUBST_USE_RE = re.compile(r"\|[^|]+ attrib list\|\s*")
 _REF_TARGET_RE = re.compile(r":ref:`[^`<]*<([\w.-]+)>`")
@@ -173,7 +179,8 @@ class _ReferenceReader:
         index = 0
         while index < len(self.lines):
             index = self._line(index)
-        return Reference(tuple(self.anchors), self.entries)
+        names = {m for line in self.lines for m in _AT_NAME_RE.findall(line)}
+        return Reference(tuple(self.anchors), self.entries, frozenset(names))
 
     def _line(self, index: int) -> int:
         line = self.lines[index]
@@ -356,6 +363,8 @@ class Wheel:
     # mjs struct -> field -> C type ("float", "double", "int", "mjtGeom", ...)
     structs: Mapping[str, Mapping[str, str]] = field(
         default_factory=dict[str, Mapping[str, str]])
+    # loads MJCF text: sync asks it which attributes rows without a printSchema row take
+    parser: Parser | None = None
 
 
 def _module(name: str) -> ModuleType:
@@ -442,7 +451,7 @@ def read_reference() -> Reference:
 def read_wheel() -> Wheel:
     """Everything sync reads, from the installed ``mujoco``."""
     return Wheel(read_version(), read_print_schema(), read_enums(), read_reference(),
-                 read_structs())
+                 read_structs(), MujocoParser())
 
 
 # -------------------------------------------------------------------- MjSpec default objects

@@ -155,6 +155,13 @@ def test_reference_entries() -> None:
     assert "default-joint-type" not in ref.entries  # anchors before a heading
 
 
+def test_reference_names_every_attribute_it_spells() -> None:
+    ref = parse_reference(REFERENCE + "Prose naming :at:`fromto` and :at:`data =`.\n")
+    # entries, shared entries, substitution definitions and prose; not what is no name
+    assert ref.names == {"name", "quat", "euler", "solreflimit", "solimplimit", "springyield",
+                         "fromto"}
+
+
 def test_reference_substituted_attribute_lists_defer_to_another_element() -> None:
     ref = parse_reference(REFERENCE)
     assert ref.entries["tendon-fixed-springyield"] == RstEntry(same_as="tendon-spatial")
@@ -233,6 +240,7 @@ def test_installed_wheel_reads() -> None:
     assert wheel.structs["mjsJoint"]["pos"] == "double"
     assert wheel.reference.at_val("body-joint-type") is not None
     assert read_constants()["mjNREF"] == 2
+    assert wheel.parser is not None and wheel.parser("<mujoco/>").error is None
 
 
 def test_spec_defaults_are_plain_values() -> None:
