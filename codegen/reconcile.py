@@ -5,6 +5,8 @@ the parser accepts now. ``sync`` walks ``mj_printSchema``'s tree alongside the I
 
 * adds rows, child edges and attributes the wheel has and the IR lacks, typing attributes
   from ``XMLreference.rst`` (or from the primary row, for default-class projections);
+* gives the rows printSchema omits (``worldbody``, ``frame``, ``replicate``) the attributes
+  the wheel's parser reads there (:mod:`codegen.probe`), adding and removing like the rest;
 * removes child edges and attributes the wheel no longer has, then drops unreachable rows
   and enums no attribute uses;
 * takes child cardinalities from the wheel, sets ``anchor`` on every row and attribute the
@@ -22,7 +24,7 @@ import dataclasses
 import re
 from dataclasses import dataclass, field
 
-from codegen import ir, naming
+from codegen import ir, naming, probe
 from codegen.facts import AttributeOverride, Facts
 from codegen.passes import DEFAULT_ROW, PROJECTION_PREFIX, apply_override
 from codegen.wheel import AtVal, Reference, Wheel, WheelRow, parse_at_val
@@ -159,6 +161,7 @@ class _Sync:
         self.new_untyped: set[tuple[str, str]] = set()  # (row, attribute) added as strings
         self._suffix_cache: dict[str, set[tuple[str, ...]]] = {}
         self._enum_users = self._used_enums()
+        self.candidates = self._candidate_names()
 
     @property
     def rows(self) -> dict[str, ir.ElementDef]:
@@ -172,7 +175,7 @@ class _Sync:
         for row in self._attribute_order():
             self._sync_attributes(row, self.matches[row.name])
         for row in self._alias_rows():
-            self._sync_documented_attributes(row)
+            self._sync_probed_attributes(row)
         self._apply_overrides()
         self._report_committed_untyped()
         self._check_enums()
@@ -327,18 +330,38 @@ class _Sync:
                 elif not (_recursive(wrow, child) or child.alias is not None):
                     self._remove_edge(row, edge)
 
-    def _sync_documented_attributes(self, row: ir.ElementDef) -> None:
-        """Alias rows are not listed by printSchema: add what the reference documents."""
-        prefix, documented = self._documented(row)
-        if prefix is None:
+    def _sync_probed_attributes(self, row: ir.ElementDef) -> None:
+        """Alias rows are not listed by printSchema: their attributes are the names the
+        wheel's parser reads there (codegen.probe), typed like any attribute sync adds."""
+        site = probe.site_for(self.schema, row.name)
+        if self.wheel.parser is None or site is None:
+            why = "the wheel has no parser" if site is not None else "no probe model for it"
+            self.report.notes.append(f"{row.name}: attributes not checked ({why})")
             return
-        for name in sorted(documented - {a.name for a in row.attributes},
-                           key=lambda n: self.ref.position(f"{prefix}-{n}")):
+        found = probe.discover(site, self.candidates, self.wheel.parser)
+        for attr in [a for a in row.attributes if a.name not in found.read]:
+            self._remove_attribute(row, attr)
+        missing = [n for n in found.read if all(a.name != n for a in row.attributes)]
+        for name in sorted(missing, key=lambda n: self.ref.position(self._anchor_of(row, n)
+                                                                     or "")):
             self._add_attribute(row, name)
-        for attr in row.attributes:
-            if attr.name not in documented:
-                self.report.notes.append(f"{row.name}@{attr.name} is not documented in "
-                                         f"XMLreference.rst ({prefix}-*); kept")
+        for message, names in found.refused.items():
+            self.report.notes.append(f"{row.name}: the reader refuses the element with any of "
+                                     f"{len(names)} attributes the schema check admits "
+                                     f"({message})")
+        prefix, documented = self._documented(row)
+        for name in sorted(documented - set(found.read)):
+            self.report.notes.append(f"{row.name}@{name} is documented ({prefix}-{name}) but "
+                                     "the parser does not read it")
+
+    def _candidate_names(self) -> tuple[str, ...]:
+        """Every attribute name the sources spell: printSchema, the IR as given (the grammar
+        file's, when building from it) and XMLreference.rst, so an alias row's new attribute
+        is found when it exists anywhere else."""
+        names = {a for wrow in self.wheel.schema.walk() for a in wrow.attributes}
+        names |= {a.name for r in self.rows.values() for a in r.attributes}
+        names |= set(self.ref.names) | {a.rsplit("-", 1)[-1] for a in self.ref.entries}
+        return tuple(sorted(names))
 
     def _documented(self, row: ir.ElementDef) -> tuple[str | None, set[str]]:
         """The longest anchor prefix of ``row`` that documents attributes, and their names."""

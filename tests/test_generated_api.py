@@ -11,6 +11,8 @@ import ast
 from collections.abc import Iterator
 from functools import cache
 
+import mujoco
+import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
@@ -157,3 +159,73 @@ def test_removed_in_4_0_0_is_absent_and_added_is_present() -> None:
     for name in ("Pid", "Dcmotor", "Flexcomp", "Replicate", "Attach", "DefaultTexture",
                  "EqualityJoint", "FixedJoint", "SpatialGeom", "DefaultGeom"):
         assert hasattr(mjcf, name), name
+
+
+@pytest.mark.parametrize("class_name", ["Frame", "Replicate"])
+def test_frame_and_replicate_take_the_class_the_parser_reads(class_name: str) -> None:
+    """MuJoCo's reader takes class= on every child of a body (codegen/probe.py finds it)."""
+    attribute = element_class(class_name)._SPEC.by_name["class"]  # pyright: ignore[reportPrivateUsage]
+    assert (attribute.py_name, attribute.kind, attribute.namespace) == ("class_", "ref",
+                                                                         "default")
+    assert "class_" in static_members()[class_name]
+
+
+CLASSED = """\
+<mujoco>
+  <default>
+    <default class="wide">
+      <geom size="0.3"/>
+    </default>
+  </default>
+  <worldbody>
+    <replicate count="2" offset="1 0 0" class="wide">
+      <body name="b">
+        <geom/>
+      </body>
+    </replicate>
+    <frame pos="0 2 0" class="wide">
+      <geom name="g"/>
+    </frame>
+  </worldbody>
+</mujoco>
+"""
+
+
+def first_column(compiled: object, field: str) -> list[float]:
+    """A numeric mjModel field by name (typings/ declares only what the library reads)."""
+    values = np.asarray(getattr(compiled, field), dtype=np.float64)
+    return [float(v) for v in values[:, 0]]
+
+
+def test_replicate_and_frame_class_parse_export_and_compile() -> None:
+    model = mjcf.from_xml_string(CLASSED)
+    replicate, frame = model.worldbody.replicate[0], model.worldbody.frame[0]
+    assert (replicate.class_, frame.class_) == ("wide", "wide")
+    text = model.to_xml_string()
+    assert '<replicate count="2" offset="1 0 0" class="wide">' in text
+    assert '<frame pos="0 2 0" class="wide">' in text
+    compiled = model.compile()
+    # both replicas and the framed geom take their size from the class MuJoCo applied
+    assert compiled.nbody == 3 and first_column(compiled, "geom_size") == [0.3, 0.3, 0.3]
+    assert mjcf.from_xml_string(text).to_xml_string() == text
+
+
+def test_replicate_and_frame_class_through_the_typed_api() -> None:
+    model = mjcf.RootElement()
+    wide = model.default.add_default(class_="wide")
+    wide.geom.size = (0.3,)
+    replicate = model.worldbody.add_replicate(count=2, offset=(1, 0, 0), class_=wide)
+    replicate.add_body(name="b").add_geom()
+    model.worldbody.add_frame(class_="wide").add_geom()
+    assert first_column(model.compile(), "geom_size") == [0.3, 0.3, 0.3]
+
+
+def test_replicate_prefix_is_refused_as_mujoco_ignores_it() -> None:
+    """MuJoCo 4.0.0 does not read <replicate prefix> (nor any unknown replicate attribute):
+    the replicas are named as without it. typed-mjcf refuses what the parser does not read."""
+    text = CLASSED.replace('class="wide">\n      <body', 'class="wide" prefix="r">\n      <body')
+    assert 'prefix="r"' in text
+    compiled = mujoco.MjModel.from_xml_string(text)
+    assert compiled.nbody == 3 and (compiled.body("b0").id, compiled.body("b1").id) == (1, 2)
+    with pytest.raises(mjcf.ParseError, match="<replicate> has no attribute 'prefix'"):
+        mjcf.from_xml_string(text)

@@ -13886,6 +13886,7 @@ class Frame(_Element):
         _A('scale', 'scale', 'real', dtype='double', arity=(1, 3), default='1', anchor='frame-scale'),
         _A('scaling', 'scaling', 'keyword', keywords=('similar', 'geometry'), default='similar', anchor='frame-scaling'),
         _A('massscale', 'massscale', 'real', dtype='double', default='0', anchor='frame-massscale'),
+        _A('class', 'class_', 'ref', namespace='default', text='Default class for the children that name none (childclass takes precedence).'),
     ), (
         _C('body', 'body', 'Body', False, 'R'),
         _C('frame', 'frame', 'Frame', False, 'R'),
@@ -14033,6 +14034,17 @@ class Frame(_Element):
 
         @massscale.setter
         def massscale(self, value: _builtins.float | None) -> None: ...
+
+        @property
+        def class_(self) -> _builtins.str | Default | None:
+            """``class``: reference to namespace ``default``.
+
+            Default class for the children that name none (childclass takes precedence).
+            """
+            ...
+
+        @class_.setter
+        def class_(self, value: _builtins.str | Default | None) -> None: ...
 
         @property
         def body(self) -> _builtins.list[Body]:
@@ -23593,6 +23605,7 @@ class Replicate(_Element):
         _A('euler', 'euler', 'real', dtype='double', arity=(3, 3), anchor='replicate-euler'),
         _A('sep', 'sep', 'string', anchor='replicate-sep'),
         _A('childclass', 'childclass', 'ref', namespace='default'),
+        _A('class', 'class_', 'ref', namespace='default', text='Default class for the replicated children that name none (childclass takes precedence).'),
     ), (
         _C('body', 'body', 'Body', False, '*'),
         _C('frame', 'frame', 'Frame', False, '*'),
@@ -23663,6 +23676,17 @@ class Replicate(_Element):
 
         @childclass.setter
         def childclass(self, value: _builtins.str | Default | None) -> None: ...
+
+        @property
+        def class_(self) -> _builtins.str | Default | None:
+            """``class``: reference to namespace ``default``.
+
+            Default class for the replicated children that name none (childclass takes precedence).
+            """
+            ...
+
+        @class_.setter
+        def class_(self, value: _builtins.str | Default | None) -> None: ...
 
         @property
         def body(self) -> _builtins.list[Body]:
@@ -31663,6 +31687,8 @@ if TYPE_CHECKING:
 
         massscale: _builtins.float | None
 
+        class_: _builtins.str | Default | None
+
     class FrameangaccAttributes(TypedDict, total=False):
         """The attributes of ``Frameangacc`` as keyword arguments."""
 
@@ -33155,6 +33181,8 @@ if TYPE_CHECKING:
         sep: _builtins.str | None
 
         childclass: _builtins.str | Default | None
+
+        class_: _builtins.str | Default | None
 
     class RgbaAttributes(TypedDict, total=False):
         """The attributes of ``Rgba`` as keyword arguments."""

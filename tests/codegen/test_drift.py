@@ -6,6 +6,7 @@ assertion prints what differs, one ``+`` (wheel has it, schema lacks it) or ``-`
 
 from __future__ import annotations
 
+import copy
 import math
 import re
 from collections.abc import Iterator
@@ -13,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from codegen import ir
+from codegen import ir, probe
 from codegen.facts import load_facts
 from codegen.pipeline import build_from_grammar, refresh
 from codegen.reconcile import sync
@@ -112,6 +113,69 @@ def test_frame_and_replicate_have_their_documented_attributes(schema: ir.Schema,
         have = {a.name for a in schema.elements[name].attributes}
         lines += [f"+ {name}@{a}" for a in sorted(documented - have)]
     assert not lines, diff(lines)
+
+
+# ------------------------------------------------------------- rows printSchema omits
+
+
+def parser_differences(schema: ir.Schema, wheel: Wheel) -> list[str]:
+    """``+``/``-`` lines: the attributes the installed parser reads on the rows printSchema
+    omits (worldbody, frame, replicate) against the schema's, over every attribute name the
+    schema, printSchema and XMLreference.rst spell."""
+    assert wheel.parser is not None
+    candidates = sorted({a.name for row in schema.elements.values() for a in row.attributes}
+                        | {a for row in wheel.schema.walk() for a in row.attributes}
+                        | wheel.reference.names)
+    lines: list[str] = []
+    for row in sorted((r for r in schema.elements.values() if r.alias is not None),
+                      key=lambda r: r.name):
+        site = probe.site_for(schema, row.name)
+        assert site is not None, f"no probe model for {row.name}"
+        read = set(probe.discover(site, candidates, wheel.parser).read)
+        have = {a.name for a in row.attributes}
+        lines += [f"+ {row.name}@{a}" for a in sorted(read - have)]
+        lines += [f"- {row.name}@{a}" for a in sorted(have - read)]
+    return lines
+
+
+def test_rows_print_schema_omits_have_what_the_parser_reads(schema: ir.Schema,
+                                                            wheel: Wheel) -> None:
+    assert {r.name for r in schema.elements.values() if r.alias is not None} == {
+        "worldbody", "frame", "replicate"}
+    lines = parser_differences(schema, wheel)
+    assert not lines, diff(lines)
+
+
+@pytest.mark.parametrize(("row", "name", "added"), [
+    # sep: spelt on no other row; found through XMLreference.rst
+    ("replicate", "sep", "replicate@sep: string  [replicate-sep]"),
+    # class: undocumented on replicate; typed by schema/facts.toml
+    ("replicate", "class", "replicate@class: ref<default>  [facts.toml]"),
+    ("frame", "scale", 'frame@scale: real double[1..3] = "1"  [frame-scale]'),
+])
+def test_an_attribute_the_parser_reads_and_the_schema_lacks_is_reported(
+        schema: ir.Schema, wheel: Wheel, row: str, name: str, added: str) -> None:
+    damaged = copy.deepcopy(schema)
+    damaged.elements[row].attributes = [a for a in damaged.elements[row].attributes
+                                        if a.name != name]
+    assert parser_differences(damaged, wheel) == [f"+ {row}@{name}"]
+    synced, report = sync(damaged, wheel, load_facts())
+    assert report.added_attributes == [added]
+    assert f"  + {added}" in report.format().splitlines()
+    # typed as committed (sync appends it: attribute order is the export order)
+    assert synced.elements[row].attribute(name) == schema.elements[row].attribute(name)
+
+
+def test_an_attribute_the_parser_does_not_read_is_reported(schema: ir.Schema,
+                                                           wheel: Wheel) -> None:
+    # MuJoCo 4.0.0 ignores <replicate prefix> (as any unknown attribute of a replicate)
+    damaged = copy.deepcopy(schema)
+    damaged.elements["replicate"].attributes.append(
+        ir.AttributeDef("prefix", "prefix", "string"))
+    assert parser_differences(damaged, wheel) == ["- replicate@prefix"]
+    synced, report = sync(damaged, wheel, load_facts())
+    assert report.removed_attributes == ["replicate@prefix: string"]
+    assert ir.dumps(synced) == ir.dumps(schema)
 
 
 def test_schema_describes_the_installed_version(schema: ir.Schema, wheel: Wheel) -> None:

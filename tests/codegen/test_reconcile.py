@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import re
 import textwrap
+from collections.abc import Mapping
 
 import pytest
 
 from codegen import ir, naming
 from codegen.facts import AttributeOverride, Facts
+from codegen.probe import PROBE_VALUE, Outcome, Parser
 from codegen.reconcile import Report, describe, sync
 from codegen.wheel import Wheel, parse_print_schema, parse_reference
 
@@ -161,9 +164,27 @@ ENUMS = {
 }
 
 
-def wheel(print_schema: str = PRINT_SCHEMA) -> Wheel:
+def parser(reads: Mapping[str, set[str]]) -> Parser:
+    """A parser that rejects the probe value on the names ``reads`` lists for the element
+    carrying it, and ignores every other name (as MuJoCo does on frames)."""
+
+    def parse(xml: str) -> Outcome:
+        probed = re.search(rf'<(\w+)[^<>]* (\w+)="{PROBE_VALUE}"', xml)
+        if probed is not None and probed[2] in reads.get(probed[1], set()):
+            return Outcome(error=f"XML Error: bad format in attribute '{probed[2]}'")
+        return Outcome(saved="<mujoco/>")
+
+    return parse
+
+
+# frame@scale is spelt by the reference alone: neither printSchema nor the IR has a "scale"
+FRAME_READS = {"frame": {"name", "scale"}}
+
+
+def wheel(print_schema: str = PRINT_SCHEMA,
+          reads: Mapping[str, set[str]] = FRAME_READS) -> Wheel:
     return Wheel("2.0", parse_print_schema(print_schema), ENUMS, parse_reference(REFERENCE),
-                 {"mjsJoint": {"springyield": "float"}})
+                 {"mjsJoint": {"springyield": "float"}}, parser(reads))
 
 
 SITE_NAME_UNTYPED = ("site@name: body-site-name says 'string, optional', but name is an "
@@ -307,11 +328,40 @@ def test_alias_rows_follow_what_the_body_row_gained_not_its_whole_grammar(
     assert names(s, "worldbody") == []
 
 
-def test_alias_row_attributes_come_from_the_reference(synced: tuple[ir.Schema, Report]) -> None:
-    s, _ = synced
+def test_alias_row_attributes_are_what_the_parser_reads_typed_from_the_reference(
+        synced: tuple[ir.Schema, Report]) -> None:
+    s, report = synced
     assert names(s, "frame") == ["name", "scale"]
     assert describe(s.elements["frame"].attribute("scale")) == 'real double[1..3] = "1"'
     assert s.elements["frame"].attribute("scale").anchor == "frame-scale"
+    assert 'frame@scale: real double[1..3] = "1"  [frame-scale]' in report.added_attributes
+
+
+def test_alias_row_attribute_the_parser_no_longer_reads_is_removed() -> None:
+    s, report = sync(schema(), wheel(reads={"frame": {"scale"}}), FACTS)
+    assert names(s, "frame") == ["scale"]
+    assert "frame@name: id<frame>" in report.removed_attributes
+    assert "frame@name is documented (frame-name) but the parser does not read it" in \
+        report.notes
+
+
+def test_alias_row_attribute_nothing_types_is_untyped_until_facts_do() -> None:
+    reads = {"frame": {"name", "scale", "pos"}}
+    s, report = sync(schema(), wheel(reads=reads), FACTS)
+    assert names(s, "frame") == ["name", "scale", "pos"]
+    assert "frame@pos: no XMLreference.rst anchor" in report.untyped
+    facts = Facts(single=FACTS.single, attributes=[AttributeOverride(
+        "frame", "pos", kind="real", dtype="double", arity=(3, 3), reason="r")])
+    s, report = sync(schema(), wheel(reads=reads), facts)
+    assert describe(s.elements["frame"].attribute("pos")) == "real double[3]"
+    assert "frame@pos: real double[3]  [facts.toml]" in report.added_attributes
+
+
+def test_alias_rows_are_left_alone_without_a_parser() -> None:
+    bare = Wheel("2.0", parse_print_schema(PRINT_SCHEMA), ENUMS, parse_reference(REFERENCE))
+    s, report = sync(schema(), bare, FACTS)
+    assert names(s, "frame") == ["name"]
+    assert "frame: attributes not checked (the wheel has no parser)" in report.notes
 
 
 def test_new_default_child_is_a_projection_of_its_primary(
