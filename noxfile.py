@@ -11,7 +11,8 @@ nox.options.reuse_existing_virtualenvs = True
 nox.options.sessions = ["tests"]
 
 PYTHON = "3.11"
-TYPED_PATHS = ["src", "generated", "codegen", "tests/typing", "examples"]
+# src holds the generated classes too (src/typed_mjcf/_generated links to generated/).
+TYPED_PATHS = ["src", "codegen", "tests/typing", "examples"]
 # Deliberately ill-typed code: tests/typing/test_typecheck.py checks that mypy and pyright
 # reject it as its markers say. The plain runs below skip it: mypy via [tool.mypy] exclude;
 # pyright by not being given it (a [tool.pyright] exclude would hide it from that test too).

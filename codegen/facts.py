@@ -25,7 +25,7 @@ _KINDS: dict[str, ir.AttrKind] = {k: k for k in ir.ATTR_KINDS}
 _T = TypeVar("_T")
 # The top-level tables of facts.toml, in the file's order.
 TABLES = ("root_children", "single", "attribute", "directories", "class_names", "compose",
-          "attachment_sites", "default_rows")
+          "attachment_sites", "default_rows", "language")
 
 
 class FactsError(ValueError):
@@ -77,6 +77,10 @@ class Facts:
     # default-class row -> the element rows taking their defaults from it
     default_rows: dict[str, list[str]] = dataclasses.field(
         default_factory=dict[str, list[str]])
+    # facts about the language as a whole, for the runtime
+    language: ir.LanguageDef = dataclasses.field(default_factory=ir.LanguageDef)
+    # reference attribute -> the attribute whose keyword names its namespace
+    typed_references: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
 
 
 def load_facts(path: Path = FACTS_PATH) -> Facts:
@@ -98,6 +102,7 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
     def read(table: str, parse: Callable[[object, str], _T], empty: _T) -> _T:
         return parse(raw[table], f"{path}: {_header(table)}") if table in raw else empty
 
+    language = read("language", _language, _LanguageTable())
     return Facts(
         root_children=read("root_children", _strings, {}),
         single=read("single", _string_lists, {}),
@@ -107,6 +112,8 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
         compose=read("compose", _compose, {}),
         attachment_sites=read("attachment_sites", _strings, {}),
         default_rows=read("default_rows", _string_lists, {}),
+        language=language.language,
+        typed_references=language.typed_references,
     )
 
 
@@ -150,6 +157,58 @@ def _overrides(value: object, where: str) -> list[AttributeOverride]:
                              f"{entry.element}@{entry.name}")
         entries.append(entry)
     return entries
+
+_LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "inertia",
+                     "sensor_section", "mocap", "childclass", "dclass", "model_name",
+                     "replicate_separator")
+_LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",
+                            "named_after_file", "named_from_contents", "typed_references",
+                            "type_namespaces", "keyframe", "attach"})
+_ATTACH_KEYS = ("tag", "model", "prefix", "references")
+
+
+@dataclasses.dataclass(frozen=True)
+class _LanguageTable:
+    """``[language]`` as read: the IR's facts and the two tables the passes apply."""
+
+    language: ir.LanguageDef = dataclasses.field(default_factory=ir.LanguageDef)
+    typed_references: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
+
+
+def _language(value: object, where: str) -> _LanguageTable:
+    """``[language]``: the IR's language facts and the typed references."""
+    table = _table(value, where)
+    unknown = sorted(set(table) - _LANGUAGE_KEYS)
+    if unknown:
+        raise FactsError(f"{where}: unknown key {unknown[0]!r}")
+    missing = sorted(_LANGUAGE_KEYS - set(table))
+    if missing:
+        raise FactsError(f"{where}: missing key {missing[0]!r}")
+    attach = _table(table["attach"], f"{where} attach")
+    extra = sorted(set(attach) ^ set(_ATTACH_KEYS))
+    if extra:
+        raise FactsError(f"{where} attach: unknown or missing key {extra[0]!r}")
+    language = ir.LanguageDef(
+        **{key: _str(table[key], f"{where} {key}") for key in _LANGUAGE_STRINGS},
+        joints=_str_list(table["joints"], f"{where} joints"),
+        class_for_children=_str_list(table["class_for_children"],
+                                     f"{where} class_for_children"),
+        named_after_file=_strings(table["named_after_file"], f"{where} named_after_file"),
+        named_from_contents=_str_list(table["named_from_contents"],
+                                      f"{where} named_from_contents"),
+        type_namespaces=_strings(table["type_namespaces"], f"{where} type_namespaces"),
+        keyframe=_strings(table["keyframe"], f"{where} keyframe"),
+        attach=ir.AttachDef(
+            tag=_str(attach["tag"], f"{where} attach tag"),
+            model=_str(attach["model"], f"{where} attach model"),
+            prefix=_str(attach["prefix"], f"{where} attach prefix"),
+            references=_str_list(attach["references"], f"{where} attach references")),
+    )
+    return _LanguageTable(
+        language=language,
+        typed_references=_strings(table["typed_references"], f"{where} typed_references"),
+    )
+
 
 # ------------------------------------------------------------------------------- values
 

@@ -7,12 +7,14 @@ grammar rules of its own.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal, cast
+from typing import Any, Literal, cast
 
-FORMAT_VERSION = 1
+FORMAT_VERSION = 2
+READABLE_FORMATS = (1, 2)  # 1 lacks the language facts: the next generate adds them
 
 AttrKind = Literal[
     "string",  # free text
@@ -57,6 +59,7 @@ class AttributeDef:
     arity: tuple[int, int | None] | None = None  # None: scalar; (n, n): fixed; (lo, hi|None)
     enum: str | None = None  # keyword / flags
     namespace: str | None = None  # id / ref
+    namespace_from: str | None = None  # a reference whose namespace this attribute's keyword names
     default: str | None = None  # MJCF text of the default value, e.g. "0 0 1"
     required: bool = False
     nodefault: bool = False  # not settable in <default> classes
@@ -105,11 +108,47 @@ class ElementDef:
 
 
 @dataclass
+class AttachDef:
+    """``<attach>``: its model, prefix and child-model reference attributes."""
+
+    tag: str
+    model: str
+    prefix: str
+    references: list[str]
+
+
+@dataclass
+class LanguageDef:
+    """Facts about MJCF as a whole that the runtime needs (from ``schema/facts.toml``)."""
+
+    main_class: str = "main"
+    world_body: str = "world"
+    body: str = "body"
+    frame: str = "frame"
+    replicate: str = "replicate"
+    joints: list[str] = field(default_factory=lambda: [])
+    class_for_children: list[str] = field(default_factory=lambda: [])
+    inertia: str = "inertial"
+    sensor_section: str = "sensor"
+    mocap: str = "mocap"
+    childclass: str = "childclass"
+    dclass: str = "class"
+    model_name: str = "model"
+    replicate_separator: str = "sep"
+    named_after_file: dict[str, str] = field(default_factory=lambda: {})
+    named_from_contents: list[str] = field(default_factory=lambda: [])
+    attach: AttachDef | None = None
+    type_namespaces: dict[str, str] = field(default_factory=lambda: {})
+    keyframe: dict[str, str] = field(default_factory=lambda: {})
+
+
+@dataclass
 class Schema:
     mujoco_version: str
     root: str
     enums: dict[str, EnumDef]
     elements: dict[str, ElementDef]
+    language: LanguageDef = field(default_factory=LanguageDef)
 
     def parents_of(self, name: str) -> list[str]:
         return sorted(e.name for e in self.elements.values()
@@ -131,8 +170,8 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
     if a.py_name != a.name:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
-    for key in ("dtype", "arity", "enum", "namespace", "default", "pattern", "field",
-                "directory", "anchor"):
+    for key in ("dtype", "arity", "enum", "namespace", "namespace_from", "default", "pattern",
+                "field", "directory", "anchor"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
@@ -152,6 +191,7 @@ def dumps(schema: Schema) -> str:
     lines.append(f'  "format": {FORMAT_VERSION},')
     lines.append(f'  "mujoco_version": {_compact(schema.mujoco_version)},')
     lines.append(f'  "root": {_compact(schema.root)},')
+    lines.append(f'  "language": {_compact(_language_to_json(schema.language))},')
     lines.append('  "enums": {')
     enum_items = sorted(schema.enums.items())
     for i, (name, e) in enumerate(enum_items):
@@ -200,6 +240,20 @@ def dumps(schema: Schema) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _language_to_json(language: LanguageDef) -> dict[str, object]:
+    d = dataclasses.asdict(language)
+    return {k: v for k, v in d.items() if v is not None}
+
+
+def _language_from_json(raw: object) -> LanguageDef:
+    d = dict(cast(dict[str, object], raw or {}))
+    attach = d.pop("attach", None)
+    language = LanguageDef(**cast(dict[str, Any], d))
+    if attach is not None:
+        language.attach = AttachDef(**cast(dict[str, Any], attach))
+    return language
+
+
 def _attr_from_json(d: dict[str, object]) -> AttributeDef:
     arity = d.get("arity")
     arity_t: tuple[int, int | None] | None = None
@@ -216,6 +270,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         arity=arity_t,
         enum=cast("str | None", d.get("enum")),
         namespace=cast("str | None", d.get("namespace")),
+        namespace_from=cast("str | None", d.get("namespace_from")),
         default=cast("str | None", d.get("default")),
         required=bool(d.get("required", False)),
         nodefault=bool(d.get("nodefault", False)),
@@ -229,7 +284,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
 
 def loads(text: str) -> Schema:
     raw = cast(dict[str, object], json.loads(text))
-    if raw.get("format") != FORMAT_VERSION:
+    if raw.get("format") not in READABLE_FORMATS:
         raise ValueError(f"schema format {raw.get('format')!r}, expected {FORMAT_VERSION}")
     enums: dict[str, EnumDef] = {}
     for name, body in cast(dict[str, dict[str, object]], raw["enums"]).items():
@@ -256,7 +311,8 @@ def loads(text: str) -> Schema:
             default_row=cast("str | None", body.get("default_row")),
             attachable=bool(body.get("attachable", False)),
         )
-    return Schema(cast(str, raw["mujoco_version"]), cast(str, raw["root"]), enums, elements)
+    return Schema(cast(str, raw["mujoco_version"]), cast(str, raw["root"]), enums, elements,
+                  _language_from_json(raw.get("language")))
 
 
 SCHEMA_DIR = Path(__file__).resolve().parent.parent / "schema"

@@ -4,12 +4,18 @@ from __future__ import annotations
 
 import keyword
 
-# Runtime base API names: an attribute or child tag with one of these names would shadow it.
+# The runtime's public names (typed_mjcf.Element, ModelRoot and Attachable; a test keeps this
+# equal to them): a child tag with one of these names takes a trailing underscore (the list
+# of <attach> children is ``body.attach_``), and an attribute may not have one.
 RESERVED = frozenset({
-    "add", "insert", "remove", "parent", "root", "tag", "get_children", "find", "find_all",
-    "get_attributes", "set_attributes", "to_xml", "to_xml_string", "compile", "to_spec",
-    "get_assets", "validate", "path", "spec", "namescope", "full_identifier", "paste",
-    "resolve", "attach_model", "detach", "iter_elements", "attached_model",
+    "add", "all_children", "attach", "attach_model", "attached_model", "attachment_frame",
+    "base_dir", "commit_defaults", "compile", "detach", "enter_scope", "find", "find_all",
+    "full_identifier", "get_assets", "get_attachment_frame", "get_attributes",
+    "get_children", "get_frame_freejoint", "get_frame_joints", "get_freejoint",
+    "include_copy", "insert", "is_removed", "is_same_as", "iter_elements", "iter_exported",
+    "namescope", "namespaces", "parent", "parent_model", "paste", "path", "remove", "resolve",
+    "resolve_references", "root", "root_model", "set_attributes", "spec", "tag", "to_spec",
+    "to_xml", "to_xml_string", "validate",
 })
 
 

@@ -118,6 +118,19 @@ def finish(schema: ir.Schema, facts: Facts) -> None:
     rename_classes(schema, facts.class_names)
     mark_default_rows(schema, facts.default_rows)
     mark_composition(schema, facts.compose, facts.attachment_sites)
+    schema.language = copy.deepcopy(facts.language)
+    mark_typed_references(schema, facts.typed_references)
+
+
+def mark_typed_references(schema: ir.Schema, table: Mapping[str, str]) -> None:
+    """References whose namespace another attribute's keyword names (a sensor's objname,
+    by its objtype): on every row that has both attributes."""
+    for row in schema.elements.values():
+        names = {a.name for a in row.attributes}
+        for attribute in row.attributes:
+            type_attribute = table.get(attribute.name)
+            if type_attribute is not None and type_attribute in names:
+                attribute.namespace_from = type_attribute
 
 
 def mark_default_rows(schema: ir.Schema, table: Mapping[str, Iterable[str]]) -> None:
@@ -309,8 +322,8 @@ def _element_problems(schema: ir.Schema, element: ir.ElementDef) -> list[str]:
             problems.append(f"{where}: attribute {attr.name!r} and child tag "
                             f"{child_names[attr.py_name]!r} share the Python name "
                             f"{attr.py_name!r}")
-    for what, py in [*(("attribute", a.py_name) for a in element.attributes),
-                     *(("child", c) for c in child_names)]:
-        if py in naming.RESERVED:
-            problems.append(f"{where}: {what} name {py!r} is reserved by the runtime API")
+    for attr in element.attributes:  # child tags that clash take a trailing underscore
+        if attr.py_name in naming.RESERVED:
+            problems.append(f"{where}: attribute name {attr.py_name!r} is reserved by the "
+                            f"runtime API")
     return problems

@@ -1,5 +1,9 @@
 """Render ``schema/`` into the ``generated/`` package with jinja2 (StrictUndefined).
 
+Two files per grammar: ``elements.py``, the run-time tables (one class per row, each with
+its row as keyword-argument specs, defaults omitted), and ``elements.pyi``, the typing surface
+checkers and editors read (properties, ``add_<tag>()`` with one keyword parameter per
+attribute, documented, overloads of ``add``/``insert``/``find``/``resolve``, TypedDicts).
 The templates stay thin: every name, type and docstring is computed here by small typed
 functions, and the templates only lay them out.
 """
@@ -13,10 +17,10 @@ from pathlib import Path
 import jinja2
 
 from codegen import ir
-from codegen.naming import py_name
-from codegen.typing_names import Typer
+from codegen.naming import RESERVED, py_name
+from codegen.typing_names import Alias, Typer
 
-GENERATOR_VERSION = "1"
+GENERATOR_VERSION = "2"
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 GENERATED_DIR = Path(__file__).resolve().parent.parent / "generated" / "typed_mjcf_generated"
 DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
@@ -31,53 +35,74 @@ class PropertyView:
 
 
 @dataclass(frozen=True)
-class ChildView:
-    tag: str
-    py_name: str
-    class_name: str
-    single: bool
-
-
-@dataclass(frozen=True)
 class ParamView:
     py_name: str
     annotation: str
 
 
 @dataclass(frozen=True)
+class ChildView:
+    tag: str
+    py_name: str
+    class_name: str
+    single: bool
+    params: list[ParamView]
+    doc: str
+
+
+@dataclass(frozen=True)
+class ResolveView:
+    name: str
+    type: str
+
+
+@dataclass(frozen=True)
 class ClassView:
     class_name: str
-    base: str
+    bases: str  # at run time
+    stub_bases: str  # for checkers
+    short_doc: str
     doc: str
-    spec: str
+    table: str
     properties: list[PropertyView]
     children: list[ChildView]
     params: list[ParamView]
+    resolves: list[ResolveView]
     is_root: bool
-    attachable: bool
-    attach_alias: bool  # also ``attach()``, dm_control's name, where no <attach> child takes it
+    init_params: list[ParamView]  # the root's keyword arguments besides its name
 
 
 @dataclass(frozen=True)
 class NamespaceView:
     name: str
-    classes: str
+    type: str
 
 
-def _quote(text: str | None) -> str:
-    return "None" if text is None else repr(text)
+def child_py_name(tag: str) -> str:
+    """The Python name of a child list or property: a runtime method's name gets a trailing
+    underscore (``body.attach_`` is the list of ``<attach>`` children), like ``class_``."""
+    name = py_name(tag)
+    return name + "_" if name in RESERVED else name
 
 
-def _attribute_spec(schema: ir.Schema, a: ir.AttributeDef) -> str:
-    args = [repr(a.name), repr(a.py_name), repr(a.kind)]
-    if a.dtype is not None:
+# ---------------------------------------------------------------------------- run-time tables
+
+
+def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
+                    a: ir.AttributeDef) -> str:
+    args = [repr(a.name), repr(a.kind)]
+    if a.py_name != a.name:
+        args.append(f"py_name={a.py_name!r}")
+    if a.dtype is not None and a.dtype != ("int" if a.kind == "int" else "double"):
         args.append(f"dtype={a.dtype!r}")
     if a.arity is not None:
         args.append(f"arity={a.arity!r}")
     if a.enum is not None:
-        args.append(f"keywords={tuple(schema.enums[a.enum].keywords)!r}")
+        args.append(f"keywords=get_args({typer.keyword_type(a)})")
     if a.namespace is not None:
         args.append(f"namespace={a.namespace!r}")
+    if a.namespace_from is not None:
+        args.append(f"namespace_from=({a.namespace_from!r}, {typed_map_name(typer, a)})")
     if a.default is not None:
         args.append(f"default={a.default!r}")
     if a.required:
@@ -86,54 +111,135 @@ def _attribute_spec(schema: ir.Schema, a: ir.AttributeDef) -> str:
         args.append(f"pattern={a.pattern!r}")
     if a.directory:
         args.append(f"directory={tuple(a.directory)!r}")
-    if a.anchor is not None:
+    expected_anchor = f"{el.anchor}-{a.name}" if el.anchor else None
+    if a.anchor is not None and a.anchor != expected_anchor:
         args.append(f"anchor={a.anchor!r}")
     if a.doc:
-        args.append(f"text={a.doc!r}")
-    return "_A(" + ", ".join(args) + ")"
+        args.append(f"doc={a.doc!r}")
+    if el.name == schema.root and a.name == schema.language.model_name:
+        args.append("scope=True")
+    return "A(" + ", ".join(args) + ")"
 
 
-def _element_spec(schema: ir.Schema, el: ir.ElementDef) -> str:
-    lines = [f"_S({el.tag!r}, {el.name!r}, ("]
-    lines += [f"    {_attribute_spec(schema, a)}," for a in el.attributes]
-    lines.append("), (")
-    for c in el.children:
-        child = schema.elements[c.element]
-        lines.append(f"    _C({child.tag!r}, {py_name(child.tag)!r}, {child.class_name!r}, "
-                     f"{c.single!r}, {c.card!r}),")
-    lines.append("),")
+def typed_map_name(typer: Typer, a: ir.AttributeDef) -> str:
+    """The module constant holding a typed reference's keyword -> namespace map."""
+    namespaces = typer.typed_reference_map(a)
+    return "_NAMESPACES_" + "_".join(sorted(set(namespaces))).upper()
+
+
+def _element_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> str:
+    lines = [f"{el.tag!r},"]
+    if el.name != el.tag:
+        lines.append(f"{el.name!r},")
+    if el.attributes:
+        lines.append("attributes=(")
+        lines += [f"    {_attribute_spec(schema, typer, el, a)}," for a in el.attributes]
+        lines.append("),")
+    if el.children:
+        lines.append("children=(")
+        for c in el.children:
+            child = schema.elements[c.element]
+            args = [repr(child.tag), repr(child.class_name)]
+            if c.single:
+                args.append("single=True")
+            if c.card != "*":
+                args.append(f"card={c.card!r}")
+            name = child_py_name(child.tag)
+            if name != child.tag:
+                args.append(f"py_name={name!r}")
+            lines.append(f"    C({', '.join(args)}),")
+        lines.append("),")
     constraints = tuple((k.kind, tuple(tuple(b) for b in k.bundles)) for k in el.constraints)
     if constraints:
         lines.append(f"constraints={constraints!r},")
-    extra = ""
+    if el.anchor is not None:
+        lines.append(f"anchor={el.anchor!r},")
+    if el.doc:
+        lines.append(f"doc={el.doc!r},")
     if el.compose is not None:
-        extra += f", compose={el.compose!r}"
+        lines.append(f"compose={el.compose!r},")
     if el.attachable:
-        extra += ", attachable=True"
+        lines.append("attachable=True,")
     if el.default_row is not None:
-        extra += f", defaults_tag={schema.elements[el.default_row].tag!r}"
-    lines.append(f"anchor={_quote(el.anchor)}, text={el.doc!r}{extra})")
-    return "\n".join(lines)
+        lines.append(f"defaults={schema.elements[el.default_row].tag!r},")
+    return textwrap.indent("\n".join(lines), " " * 8)
 
 
-def _property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
-    head = f"``{a.name}``: {typer.describe(a)}."
-    parts = [head]
-    facts: list[str] = []
+def _facts(schema: ir.Schema) -> str:
+    language = schema.language
+    attach = language.attach
+    fields: list[str] = [
+        f"root={schema.root!r}",
+        f"main_class={language.main_class!r}",
+        f"world_body={language.world_body!r}",
+        f"body={language.body!r}",
+        f"frame={language.frame!r}",
+        f"replicate={language.replicate!r}",
+        f"joints=frozenset({sorted(language.joints)!r})",
+        f"class_for_children=frozenset({sorted(language.class_for_children)!r})",
+        f"inertia={language.inertia!r}",
+        f"sensor_section={language.sensor_section!r}",
+        f"mocap={language.mocap!r}",
+        f"childclass={language.childclass!r}",
+        f"dclass={language.dclass!r}",
+        f"named_after_file={dict(sorted(language.named_after_file.items()))!r}",
+        f"named_from_contents=frozenset({sorted(language.named_from_contents)!r})",
+        f"replicate_separator={language.replicate_separator!r}",
+        f"keyframe=KeyframeFacts(**{dict(sorted(language.keyframe.items()))!r})",
+    ]
+    if attach is not None:
+        fields.append(f"attach=AttachFacts({attach.tag!r}, {attach.model!r}, "
+                      f"{attach.prefix!r}, {tuple(attach.references)!r})")
+    return "\n".join(f"    {field}," for field in fields)
+
+
+# ---------------------------------------------------------------------------- typing surface
+
+
+def _attribute_doc(typer: Typer, a: ir.AttributeDef) -> list[str]:
+    """What a property's or parameter's documentation says: type, default, allowed values,
+    the description and the link."""
+    facts = [f"{typer.describe(a)}."]
     if a.default is not None:
         facts.append(f'Default: "{a.default}".')
     if a.required:
         facts.append("Required.")
     if a.pattern is not None:
         facts.append(f"Must match ``{a.pattern}``.")
-    if facts:
-        parts.append(" ".join(facts))
+    lines = [" ".join(facts)]
     if a.doc:
-        parts.append(a.doc[:1].upper() + a.doc[1:] + ("" if a.doc.endswith(".") else "."))
+        lines.append(a.doc[:1].upper() + a.doc[1:] + ("" if a.doc.endswith(".") else "."))
     if a.anchor is not None:
-        parts.append(f"Reference: {DOCS_URL}#{a.anchor}")
-    text = "\n\n".join(parts).replace("\\", "\\\\").replace('"""', "'''")
-    return textwrap.indent(text, " " * 12).strip()  # laid out inside a property body
+        lines.append(f"{DOCS_URL}#{a.anchor}")
+    return lines
+
+
+def _escape(text: str) -> str:
+    return text.replace("\\", "\\\\").replace('"""', "'''")
+
+
+def _property_doc(typer: Typer, a: ir.AttributeDef) -> str:
+    lines = [f"``{a.name}``: " + "\n\n".join(_attribute_doc(typer, a))]
+    return textwrap.indent(_escape("\n".join(lines)), " " * 8).strip() + "\n        "
+
+
+def _adder_doc(typer: Typer, el: ir.ElementDef) -> str:
+    """``add_<tag>()``'s docstring: the element, its link, and each attribute (``Args:``,
+    which editors show for the keyword being typed)."""
+    head = f"Add a ``<{el.tag}>`` child and return it."
+    parts = [head]
+    if el.anchor is not None:
+        parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
+    if el.attributes:
+        args = ["Args:"]
+        for a in el.attributes:
+            text = " ".join(_attribute_doc(typer, a))
+            args.append(textwrap.fill(f"{a.py_name}: {text}", width=88, initial_indent="    ",
+                                      subsequent_indent="        ", break_long_words=False,
+                                      break_on_hyphens=False))
+        parts.append("\n".join(args))
+    text = _escape("\n\n".join(parts))
+    return textwrap.indent(text, " " * 8).strip() + "\n        "
 
 
 def _class_doc(el: ir.ElementDef) -> str:
@@ -145,25 +251,47 @@ def _class_doc(el: ir.ElementDef) -> str:
     parts = [head + "."]
     if el.anchor is not None:
         parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
-    return textwrap.indent("\n\n".join(parts) + "\n", " " * 4).strip() + "\n    "
+    return textwrap.indent(_escape("\n\n".join(parts)) + "\n", " " * 4).strip() + "\n    "
+
+
+def _resolve_type(typer: Typer, a: ir.AttributeDef) -> str:
+    """What ``resolve(name)`` returns: never None where the grammar has a default."""
+    getter = typer.getter(a)
+    return getter if a.default is not None else f"{getter} | None"
 
 
 def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
-                               _property_doc(typer, el, a)) for a in el.attributes]
-    children = [ChildView(schema.elements[c.element].tag, py_name(schema.elements[c.element].tag),
-                          schema.elements[c.element].class_name, c.single)
-                for c in el.children]
+                               _property_doc(typer, a)) for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
+    if any(a.name == schema.language.dclass for a in el.attributes):
+        dclass = next(a for a in el.attributes if a.name == schema.language.dclass)
+        properties.append(PropertyView("dclass", typer.getter(dclass), typer.setter(dclass),
+                                       "dm_control's name for ``class_``.\n        "))
+        params.append(ParamView("dclass", typer.setter(dclass)))
+    children: list[ChildView] = []
+    for c in el.children:
+        child = schema.elements[c.element]
+        child_params = [ParamView(a.py_name, typer.setter(a)) for a in child.attributes]
+        children.append(ChildView(child.tag, child_py_name(child.tag), child.class_name,
+                                  c.single, child_params, _adder_doc(typer, child)))
     is_root = el.name == schema.root
-    return ClassView(el.class_name, "_ModelRoot" if is_root else "_Element", _class_doc(el),
-                     textwrap.indent(_element_spec(schema, el), " " * 4).strip(), properties,
-                     children, params, is_root, el.attachable,
-                     el.attachable and all(ch.tag != "attach" for ch in children))
+    bases = "ModelRoot" if is_root else "Element"
+    stub_bases = "_Typed, _ModelRoot" if is_root else "_Typed"
+    if el.attachable:
+        bases += ", Attachable"
+        stub_bases += ", _Attachable"
+    resolves = [ResolveView(a.py_name, _resolve_type(typer, a)) for a in el.attributes]
+    return ClassView(
+        class_name=el.class_name, bases=bases, stub_bases=stub_bases,
+        short_doc=_escape(f"``<{el.tag}>``."), doc=_class_doc(el),
+        table=_element_spec(schema, typer, el), properties=properties, children=children,
+        params=params, resolves=resolves, is_root=is_root,
+        init_params=[p for p in params if p.py_name != schema.language.model_name])
 
 
 def _environment() -> jinja2.Environment:
-    env = jinja2.Environment(
+    return jinja2.Environment(
         loader=jinja2.FileSystemLoader(TEMPLATES),
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,
@@ -171,7 +299,6 @@ def _environment() -> jinja2.Environment:
         lstrip_blocks=True,
         autoescape=False,
     )
-    return env
 
 
 def _ordered(schema: ir.Schema) -> list[ir.ElementDef]:
@@ -181,21 +308,42 @@ def _ordered(schema: ir.Schema) -> list[ir.ElementDef]:
     return [schema.elements[schema.root], *rest]
 
 
+def _typed_maps(schema: ir.Schema, typer: Typer) -> list[Alias]:
+    maps: dict[str, str] = {}
+    for el in schema.elements.values():
+        for a in el.attributes:
+            if a.namespace_from is not None:
+                maps[typed_map_name(typer, a)] = repr(typer.typed_reference_map(a))
+    return [Alias(name, value, "") for name, value in sorted(maps.items())]
+
+
 def render(schema: ir.Schema) -> dict[str, str]:
     """The generated package: file name -> text."""
     typer = Typer(schema)
     env = _environment()
     classes = [class_view(schema, typer, el) for el in _ordered(schema)]
-    namespaces = [NamespaceView(ns, " | ".join(cls)) for ns, cls in typer.namespaces().items()]
+    keyword_sets = typer.keyword_aliases()
+    aliases = [*typer.array_aliases(), *typer.namespace_aliases()]
+    namespaces = [NamespaceView(ns, typer.namespace_type(ns)) for ns in typer.namespaces()]
+    class_names = sorted(c.class_name for c in classes)
     context: dict[str, object] = {
         "mujoco_version": schema.mujoco_version,
         "generator_version": GENERATOR_VERSION,
         "classes": classes,
+        "class_names": class_names,
+        "keyword_sets": keyword_sets,
+        "typed_maps": _typed_maps(schema, typer),
+        "facts": _facts(schema),
+        "aliases": aliases,
+        "exported": sorted([*class_names, *(a.name for a in [*keyword_sets, *aliases]),
+                            "Namespace",
+                            *(f"{c.class_name}Attributes" for c in classes)]),
         "namespaces": namespaces,
-        "class_names": sorted(c.class_name for c in classes),
+        "namespace_literals": ", ".join(f'"{ns.name}"' for ns in namespaces),
     }
     return {
         "elements.py": env.get_template("elements.py.jinja2").render(context),
+        "elements.pyi": env.get_template("elements.pyi.jinja2").render(context),
         "__init__.py": env.get_template("__init__.py.jinja2").render(context),
     }
 
@@ -209,11 +357,12 @@ def write(files: dict[str, str], directory: Path = GENERATED_DIR) -> list[str]:
         if not path.exists() or path.read_text(encoding="utf-8") != text:
             path.write_text(text, encoding="utf-8")
             changed.append(name)
-    for stale in sorted(directory.glob("*.py")):
+    for stale in sorted([*directory.glob("*.py"), *directory.glob("*.pyi")]):
         if stale.name not in files:
             stale.unlink()
             changed.append(stale.name)
     py_typed = directory / "py.typed"
-    if not py_typed.exists():
-        py_typed.write_text("", encoding="utf-8")
+    if py_typed.exists():
+        py_typed.unlink()  # the package is part of typed_mjcf, which is marked typed
+        changed.append("py.typed")
     return changed

@@ -18,10 +18,10 @@ import pytest
 import typed_mjcf as mjcf
 from codegen import ir, render
 from codegen.wheel import WheelRow, read_print_schema, read_reference
-from typed_mjcf._element import Element, element_class
-from typed_mjcf._spec import AttributeSpec
+from typed_mjcf import Element
+from typed_mjcf._tree import Attribute, element_class
 
-ELEMENTS_PY = render.GENERATED_DIR / "elements.py"
+ELEMENTS_PYI = render.GENERATED_DIR / "elements.pyi"
 
 
 def test_generated_equals_a_fresh_render() -> None:
@@ -29,13 +29,14 @@ def test_generated_equals_a_fresh_render() -> None:
     for name, text in files.items():
         on_disk = (render.GENERATED_DIR / name).read_text(encoding="utf-8")
         assert on_disk == text, f"generated/{name} is stale: run `nox -s generate`"
-    assert sorted(p.name for p in render.GENERATED_DIR.glob("*.py")) == sorted(files)
+    on_disk = [p.name for p in render.GENERATED_DIR.iterdir() if p.suffix in (".py", ".pyi")]
+    assert sorted(on_disk) == sorted(files)
 
 
 @cache
 def static_members() -> dict[str, set[str]]:
     """Per generated class: the names declared for type checkers (properties and methods)."""
-    tree = ast.parse(ELEMENTS_PY.read_text(encoding="utf-8"))
+    tree = ast.parse(ELEMENTS_PYI.read_text(encoding="utf-8"))
     members: dict[str, set[str]] = {}
     for node in tree.body:
         if isinstance(node, ast.ClassDef):
@@ -43,6 +44,9 @@ def static_members() -> dict[str, set[str]]:
             for statement in ast.walk(node):
                 if isinstance(statement, ast.FunctionDef):
                     names.add(statement.name)
+            for base in node.bases:  # what every class inherits (find, find_all)
+                if isinstance(base, ast.Name) and base.id in members:
+                    names |= members[base.id]
             members[node.name] = names
     return members
 
@@ -53,14 +57,14 @@ def child_class(cls: type[Element], row: WheelRow) -> tuple[str, type[Element] |
     ``(world)body`` under the root is the <worldbody> section, and its attributes and children
     are those of the <body> rows inside it: the class returned is then ``Body``.
     """
-    children = cls._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    children = cls.spec.children
     tag = next((t for t in row.spellings if t in children), row.spellings[-1])
     if tag not in children:
         return tag, None
     found = element_class(children[tag].class_name)
     last = row.spellings[-1]
-    if last != tag and last in found._SPEC.children:  # pyright: ignore[reportPrivateUsage]
-        found = element_class(found._SPEC.children[last].class_name)  # pyright: ignore[reportPrivateUsage]
+    if last != tag and last in found.spec.children:
+        found = element_class(found.spec.children[last].class_name)
     return tag, found
 
 
@@ -84,11 +88,11 @@ def test_every_attribute_mujoco_lists_is_a_typed_property() -> None:
     members = static_members()
     missing: list[str] = []
     for path, cls, name in wheel_pairs():
-        attribute = cls._SPEC.by_name.get(name)  # pyright: ignore[reportPrivateUsage]
+        attribute = cls.spec.by_name.get(name)
         if attribute is None:
             missing.append(f"{path}@{name}: not in {cls.__name__}'s grammar row")
             continue
-        if not isinstance(cls.__dict__.get(attribute.py_name), AttributeSpec):
+        if not isinstance(cls.__dict__.get(attribute.py_name), Attribute):
             missing.append(f"{path}@{name}: no run-time descriptor {cls.__name__}.{attribute.py_name}")
         if attribute.py_name not in members[cls.__name__]:
             missing.append(f"{path}@{name}: no typed property {cls.__name__}.{attribute.py_name}")
@@ -125,14 +129,14 @@ def test_frame_and_replicate_attributes_from_the_reference(class_name: str, pref
     cls = element_class(class_name)
     members = static_members()[class_name]
     for name in sorted(documented):
-        attribute = cls._SPEC.by_name.get(name)  # pyright: ignore[reportPrivateUsage]
+        attribute = cls.spec.by_name.get(name)
         assert attribute is not None, f"{class_name} lacks {name}"
         assert attribute.py_name in members
 
 
 def test_worldbody_children_are_a_subset_of_body_children() -> None:
-    worldbody = element_class("Worldbody")._SPEC  # pyright: ignore[reportPrivateUsage]
-    body = element_class("Body")._SPEC  # pyright: ignore[reportPrivateUsage]
+    worldbody = element_class("Worldbody").spec
+    body = element_class("Body").spec
     assert set(worldbody.children) <= set(body.children)
     assert not worldbody.attributes
 
@@ -150,12 +154,12 @@ def test_default_rows_are_projections_without_names_or_nodefault_attributes() ->
 
 
 def test_removed_in_4_0_0_is_absent_and_added_is_present() -> None:
-    assert "composite" not in mjcf.Body._SPEC.children  # pyright: ignore[reportPrivateUsage]
-    assert "flexvert" not in mjcf.Equality._SPEC.children  # pyright: ignore[reportPrivateUsage]
+    assert "composite" not in mjcf.Body.spec.children
+    assert "flexvert" not in mjcf.Equality.spec.children
     for cls, name in [(mjcf.Frame, "scale"), (mjcf.Frame, "massscale"), (mjcf.Joint, "springyield"),
                       (mjcf.Geom, "castshadow"), (mjcf.Texture, "embed"), (mjcf.Key, "plastic")]:
-        assert name in cls._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
-    assert "texture" in mjcf.Default._SPEC.children  # pyright: ignore[reportPrivateUsage]
+        assert name in cls.spec.by_name
+    assert "texture" in mjcf.Default.spec.children
     for name in ("Pid", "Dcmotor", "Flexcomp", "Replicate", "Attach", "DefaultTexture",
                  "EqualityJoint", "FixedJoint", "SpatialGeom", "DefaultGeom"):
         assert hasattr(mjcf, name), name
@@ -164,7 +168,7 @@ def test_removed_in_4_0_0_is_absent_and_added_is_present() -> None:
 @pytest.mark.parametrize("class_name", ["Frame", "Replicate"])
 def test_frame_and_replicate_take_the_class_the_parser_reads(class_name: str) -> None:
     """MuJoCo's reader takes class= on every child of a body (codegen/probe.py finds it)."""
-    attribute = element_class(class_name)._SPEC.by_name["class"]  # pyright: ignore[reportPrivateUsage]
+    attribute = element_class(class_name).spec.by_name["class"]
     assert (attribute.py_name, attribute.kind, attribute.namespace) == ("class_", "ref",
                                                                          "default")
     assert "class_" in static_members()[class_name]
@@ -200,7 +204,8 @@ def first_column(compiled: object, field: str) -> list[float]:
 def test_replicate_and_frame_class_parse_export_and_compile() -> None:
     model = mjcf.from_xml_string(CLASSED)
     replicate, frame = model.worldbody.replicate[0], model.worldbody.frame[0]
-    assert (replicate.class_, frame.class_) == ("wide", "wide")
+    wide = model.find("default", "wide")
+    assert replicate.class_ is wide and frame.class_ is wide  # references link to the class
     text = model.to_xml_string()
     assert '<replicate count="2" offset="1 0 0" class="wide">' in text
     assert '<frame pos="0 2 0" class="wide">' in text

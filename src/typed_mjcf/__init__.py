@@ -8,13 +8,13 @@
     print(model.to_xml_string())
 """
 
-__version__ = "0.1.0"  # first: the generated package reads it while this module initialises
+__version__ = "0.1.0"
 
-from typed_mjcf_generated import elements as _elements
-from typed_mjcf_generated.elements import *
-
-from typed_mjcf._element import Element
-from typed_mjcf._root import ModelRoot
+from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._generated import elements as _elements
+from typed_mjcf._generated.elements import *
+from typed_mjcf._names import NameScope
+from typed_mjcf._tree import ElementList
 from typed_mjcf._validate import Finding, ValidationError
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import (
@@ -22,6 +22,8 @@ from typed_mjcf.errors import (
     CompileError,
     DuplicateIdentifierError,
     ExportError,
+    IllegalChildError,
+    InvalidReferenceError,
     InvalidTypeError,
     InvalidValueError,
     MjcfError,
@@ -43,12 +45,16 @@ __all__ = [
     "CompileError",
     "DuplicateIdentifierError",
     "Element",
+    "ElementList",
     "ExportError",
     "Finding",
+    "IllegalChildError",
+    "InvalidReferenceError",
     "InvalidTypeError",
     "InvalidValueError",
     "MjcfError",
     "ModelRoot",
+    "NameScope",
     "ParseError",
     "ParseLimits",
     "UnknownAttributeError",

@@ -9,115 +9,78 @@ scope, and its sections join the parent's (see ``ElementSpec.compose``).
 
 from __future__ import annotations
 
-import functools
-from typing import TYPE_CHECKING
-
-from typed_mjcf.errors import ChildError, InvalidTypeError, InvalidValueError
-
-if TYPE_CHECKING:
-    from typed_mjcf._element import Element
-    from typed_mjcf._root import ModelRoot
-
-MAIN_CLASS = "main"  # MuJoCo's name for a model's root default class
+from typed_mjcf import _tree
+from typed_mjcf._export import folder_attributes
+from typed_mjcf._tree import Element, ModelBase, grammar_facts, same_value
+from typed_mjcf.errors import ChildError, IllegalChildError, InvalidTypeError, InvalidValueError
 
 
-def scope_name(model: ModelRoot) -> str:
-    name = model.get_attributes().get("model")
-    if not isinstance(name, str):
+def scope_name(model: ModelBase) -> str:
+    """The model's name, which scopes its names where it is attached."""
+    name = _tree.scope_of(model).name
+    if name is None:
         raise InvalidValueError(
             "a model needs a name to be attached: its names are scoped '<model>/...'; "
             "set RootElement(model='...') or model.model = '...'")
-    if "/" in name:
-        raise InvalidValueError(f"model name {name!r}: '/' separates scopes")
     return name
 
 
-def top_model(model: ModelRoot) -> ModelRoot:
+def top_model(model: ModelBase) -> ModelBase:
     """The outermost model ``model`` is attached into (itself when not attached)."""
-    while model._frame is not None:  # pyright: ignore[reportPrivateUsage]
-        model = model._frame.root  # pyright: ignore[reportPrivateUsage]
-    return model
+    return _tree.scope_model(_tree.scope_of(model).outermost())
 
 
 def _host(site: Element) -> tuple[Element, dict[str, object]]:
     """Where the attachment frame goes, and the pose it takes."""
-    if "body" in site.spec.children:
+    if site.spec.holds_bodies:
         return site, {}
-    if site._SPEC.tag == site.root._SPEC.tag:  # pyright: ignore[reportPrivateUsage]
-        return site.root._single_or_new(_body_holder_tag(site.root)), {}  # pyright: ignore[reportPrivateUsage]
+    root = _tree.model_of(site)
+    if isinstance(site, ModelBase) and root is site:
+        holder = next(tag for tag, child in site.spec.children.items()
+                      if _tree.element_class(child.class_name).spec.holds_bodies)
+        return getattr(site, site.spec.children[holder].py_name), {}
     parent = site.parent
-    if parent is None or "body" not in parent.spec.children:
+    if parent is None or not parent.spec.holds_bodies:
         raise ChildError(f"{site.path}: a model can only be attached where bodies can go")
-    body_spec = parent.spec.children["body"]
-    from typed_mjcf._element import element_class
-
-    body_attributes = element_class(body_spec.class_name)._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
-    pose = {name: value for name, value in site._attrs.items()  # pyright: ignore[reportPrivateUsage]
+    body_spec = parent.spec.children[grammar_facts().body]
+    body_attributes = _tree.element_class(body_spec.class_name).spec.by_name
+    pose = {name: _tree.read_value(site, site.spec.by_name[name])
+            for name in _tree.values(site)
             if name in body_attributes and body_attributes[name].kind == "real"}
     return parent, pose
 
 
-def _body_holder_tag(root: ModelRoot) -> str:
-    for tag, child in root.spec.children.items():
-        from typed_mjcf._element import element_class
-
-        if "body" in element_class(child.class_name)._SPEC.children:  # pyright: ignore[reportPrivateUsage]
-            return tag
-    raise ChildError("the grammar has no section that holds bodies")  # pragma: no cover
-
-
-def attach(site: Element, model: ModelRoot) -> Element:
+def attach(site: Element, model: ModelBase) -> Element:
     """Attach ``model`` at ``site``; return the attachment frame."""
-    from typed_mjcf._root import ModelRoot
-
+    if not isinstance(model, ModelBase):  # pyright: ignore[reportUnnecessaryIsInstance]
+        raise InvalidTypeError(f"{site.path}: attach() expected a mjcf.RootElement (a model), "
+                               f"got {model!r}")
     if not site.spec.attachable:
-        raise ChildError(f"{site.path}: a model cannot be attached to a <{site.tag}>")
-    if not isinstance(model, ModelRoot):  # pyright: ignore[reportUnnecessaryIsInstance]
-        raise InvalidTypeError(f"{site.path}: attach() takes a model (RootElement), got {model!r}")
-    root = site.root
-    if model._frame is not None:  # pyright: ignore[reportPrivateUsage]
-        raise ChildError(f"model {scope_name(model)!r} is already attached at "
-                         f"{model._frame.path}; detach() it first or attach a copy")  # pyright: ignore[reportPrivateUsage]
-    outer: ModelRoot | None = root
-    while outer is not None:
-        if outer is model:
-            raise ChildError(f"cannot attach model {model.get_attributes().get('model')!r} "
-                             f"into itself")
-        frame = outer._frame  # pyright: ignore[reportPrivateUsage]
-        outer = None if frame is None else frame.root
-    name = scope_name(model)
-    if name in root._scopes:  # pyright: ignore[reportPrivateUsage]
-        raise ChildError(
-            f"another model named {name!r} is already attached to this model; names are "
-            f"scoped by model name, so give each attached model its own (model.model = ...)")
-    check_compatible(top_model(root), model)
+        raise IllegalChildError(f"{site.path}: a model cannot be attached to a <{site.tag}>")
+    root = _tree.model_of(site)
+    if root is None:
+        raise ChildError(f"{site.path}: the element was removed from its model")
+    frame = _tree.frame_of(model)
+    if frame is not None:
+        raise ChildError(f"model {scope_name(model)!r} is already attached elsewhere, at "
+                         f"{frame.path}; detach() it first or attach a copy")
+    if _tree.scope_of(root).is_within(_tree.scope_of(model)):
+        raise ChildError(f"cannot attach model {scope_name(model)!r} into itself")
     host, pose = _host(site)
-    frame = host._add_child("body", None, pose)  # pyright: ignore[reportPrivateUsage]
-    object.__setattr__(frame, "_attached", model)
-    object.__setattr__(model, "_frame", frame)
-    root._scopes[name] = model  # pyright: ignore[reportPrivateUsage]
+    _tree.child_scope(host).check_free(scope_name(model))
+    check_compatible(top_model(root), model)
+    frame = host.add(grammar_facts().body, **pose)
+    _tree.attach_at(frame, model)
     return frame
 
 
-def detach(model: ModelRoot) -> None:
+def detach(model: ModelBase) -> None:
     """Undo ``attach``: remove the attachment frame (with anything added to it)."""
-    frame = model._frame  # pyright: ignore[reportPrivateUsage]
+    frame = _tree.frame_of(model)
     if frame is None:
-        raise ChildError(f"model {model.get_attributes().get('model')!r} is not attached")
-    parent_root = frame.root
-    object.__setattr__(frame, "_attached", None)
-    frame.remove()
-    del parent_root._scopes[scope_name(model)]  # pyright: ignore[reportPrivateUsage]
-    object.__setattr__(model, "_frame", None)
-
-
-def attachments(model: ModelRoot) -> list[tuple[Element, ModelRoot]]:
-    """The attachment frames of ``model`` and their models, in document order."""
-    scopes = model._scopes  # pyright: ignore[reportPrivateUsage]
-    if not scopes:
-        return []
-    frames = {id(child._frame): child for child in scopes.values()}  # pyright: ignore[reportPrivateUsage]
-    return [(e, frames[id(e)]) for e in model.iter_elements() if id(e) in frames]
+        raise ChildError(f"model {_tree.scope_of(model).name!r} is not attached")
+    _tree.detach_model(model)
+    _tree.remove_subtree(frame)
 
 
 # ----------------------------------------------------------------------------- global sections
@@ -125,59 +88,40 @@ def attachments(model: ModelRoot) -> list[tuple[Element, ModelRoot]]:
 
 def _effective(section: Element | None, child: Element, name: str) -> object:
     """The value ``section`` has for ``name`` (its grammar default when unset or absent)."""
-    value = None if section is None else section._attrs.get(name)  # pyright: ignore[reportPrivateUsage]
+    attribute = child.spec.by_name[name]
+    value = None if section is None else _tree.read_value(section, attribute)
     if value is None:
-        attribute = child.spec.by_name[name]
-        return None if attribute.default is None else attribute.convert(attribute.default)
+        return None if attribute.default is None else attribute.codec.read(
+            attribute.codec.parse(attribute.default))
     return value
-
-
-def _same(a: object, b: object) -> bool:
-    import numpy as np
-
-    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        return bool(np.array_equal(np.asarray(a), np.asarray(b)))
-    return a == b
 
 
 def conflicts(parent: Element | None, child: Element, where: str) -> list[str]:
     """Attributes set in ``child``'s section whose value differs from the parent's."""
     found: list[str] = []
-    for name in child._attrs:  # pyright: ignore[reportPrivateUsage]
+    for name in _tree.values(child):
         if name in folder_attributes():
             continue  # folders resolve the attached model's own files
         mine, theirs = _effective(parent, child, name), _effective(child, child, name)
-        if not _same(mine, theirs):
+        if not same_value(mine, theirs):
             found.append(f"<{where}> {name}: {theirs!r} in the attached model, "
                          f"{mine!r} in the model it is attached to")
-    for grandchild in child.get_children():
-        if child.spec.children[grandchild.tag].single:
-            existing = None if parent is None else parent._single_child(grandchild.tag)  # pyright: ignore[reportPrivateUsage]
-            found += conflicts(existing, grandchild, f"{where}/{grandchild.tag}")
+    for grandchild in _tree.children(child):
+        if child.spec.children[grandchild.spec.tag].single:
+            existing = None if parent is None else _tree.single_child(parent, grandchild.spec.tag)
+            found += conflicts(existing, grandchild, f"{where}/{grandchild.spec.tag}")
     return found
 
 
-@functools.cache
-def folder_attributes() -> frozenset[str]:
-    """The <compiler> attributes that name folders of files: each model keeps its own."""
-    from typed_mjcf._element import _REGISTRY  # pyright: ignore[reportPrivateUsage]
-
-    folders: set[str] = set()
-    for cls in _REGISTRY.values():
-        for attribute in cls._SPEC.attributes:  # pyright: ignore[reportPrivateUsage]
-            folders.update(attribute.directory)
-    return frozenset(folders)
-
-
-def check_compatible(parent: ModelRoot, model: ModelRoot) -> None:
+def check_compatible(parent: ModelBase, model: ModelBase) -> None:
     """Refuse to attach a model whose global settings contradict the parent's."""
     problems: list[str] = []
-    for section in model.get_children():
+    for section in _tree.children(model):
         if section.spec.compose != "attributes":
             continue
-        mine = parent._single_child(section.tag)  # pyright: ignore[reportPrivateUsage]
-        problems += conflicts(mine, section, section.tag)
+        mine = _tree.single_child(parent, section.spec.tag)
+        problems += conflicts(mine, section, section.spec.tag)
     if problems:
         raise InvalidValueError(
-            f"cannot attach model {model.get_attributes().get('model')!r}: its global settings "
+            f"cannot attach model {scope_name(model)!r}: its global settings "
             "differ from the model it is attached to:\n  " + "\n  ".join(problems))

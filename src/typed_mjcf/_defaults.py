@@ -7,37 +7,48 @@ defaults row for the element's kind, else from the class it is nested in, up to 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
-from typed_mjcf._compose import MAIN_CLASS
+from typed_mjcf import _tree
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.errors import InvalidValueError, UnknownAttributeError, did_you_mean
 
-if TYPE_CHECKING:
-    from typed_mjcf._element import Element
-    from typed_mjcf._root import ModelRoot
+
+def main_class(model: ModelBase) -> Element | None:
+    """The model's top-level ``<default>`` (its class ``main``), if it has one."""
+    for section in _tree.children(model):
+        if section.spec.compose == "nest":
+            return section
+    return None
 
 
-def class_of(element: Element) -> str:
-    """The default class that applies to ``element``."""
-    value = element._attrs.get("class")  # pyright: ignore[reportPrivateUsage]
-    if isinstance(value, str):
-        return value
+def _named_class(element: Element, attribute: str, value: object) -> Element | None:
+    """The default class a ``class``/``childclass`` value names (a link, or a name)."""
+    if isinstance(value, Element):
+        return None if value.is_removed else value
+    assert isinstance(value, str)
+    root = _tree.model_of(element)
+    if value == grammar_facts().main_class:
+        return None if root is None else main_class(root)
+    namespace = element.spec.by_name[attribute].namespace or ""
+    found = _tree.scope_of(element).find(namespace, value)
+    if not isinstance(found, Element):
+        raise InvalidValueError(f"{element.path}: default class {value!r} is not defined")
+    return found
+
+
+def class_of(element: Element) -> Element | None:
+    """The default class that applies to ``element`` (``None``: no class says anything)."""
+    facts = grammar_facts()
+    value = _tree.values(element).get(facts.dclass)
+    if value is not None:
+        return _named_class(element, facts.dclass, value)
     ancestor = element.parent
     while ancestor is not None:
-        childclass = ancestor._attrs.get("childclass")  # pyright: ignore[reportPrivateUsage]
-        if isinstance(childclass, str):
-            return childclass
+        childclass = _tree.values(ancestor).get(facts.childclass)
+        if childclass is not None:
+            return _named_class(ancestor, facts.childclass, childclass)
         ancestor = ancestor.parent
-    return MAIN_CLASS
-
-
-def _class_element(model: ModelRoot, name: str) -> Element | None:
-    if name == MAIN_CLASS:
-        for section in model.get_children():
-            if section.spec.compose == "nest":
-                return section
-        return None
-    return model.find("default", name)
+    root = _tree.model_of(element)
+    return None if root is None else main_class(root)
 
 
 def resolve(element: Element, name: str) -> object:
@@ -48,22 +59,21 @@ def resolve(element: Element, name: str) -> object:
         known = [a.py_name for a in spec.attributes]
         raise UnknownAttributeError(f"{element.path}: <{spec.tag}> has no attribute {name!r}"
                                     f"{did_you_mean(name, known)}")
-    own = element._attrs.get(attribute.name)  # pyright: ignore[reportPrivateUsage]
+    own = _tree.read_value(element, attribute)
     if own is not None:
         return own
-    if spec.defaults_tag is not None:
-        cls = class_of(element)
-        default = _class_element(element.root, cls)
-        if default is None and cls != MAIN_CLASS:
-            raise InvalidValueError(f"{element.path}: default class {cls!r} is not defined")
+    defaults_tag = spec.defaults_tag
+    if defaults_tag is not None:
+        default = class_of(element)
         while default is not None:
-            row = default._single_child(spec.defaults_tag)  # pyright: ignore[reportPrivateUsage]
+            row = _tree.single_child(default, defaults_tag)
             if row is not None:
-                value = row._attrs.get(attribute.name)  # pyright: ignore[reportPrivateUsage]
+                value = _tree.read_value(row, row.spec.by_name[attribute.name]) if (
+                    attribute.name in row.spec.by_name) else None
                 if value is not None:
                     return value
             parent = default.parent  # nested classes inherit from the class around them
             default = parent if parent is not None and parent.spec is default.spec else None
     if attribute.default is None:
         return None
-    return attribute.convert(attribute.default)
+    return attribute.codec.read(attribute.codec.parse(attribute.default))

@@ -1,140 +1,62 @@
 """Writing elements as MJCF text, iteratively (depth is unlimited).
 
-A model with nothing attached is written straight to text in one pass. A composed model
-is built as light nodes where composition joins the attached models' sections and bodies
-to the parent's (the sections, the attachment frames and their ancestors), with every other
-subtree a chunk of text written in place when the nodes are serialised. ``to_xml()`` parses
-the text into lxml.
+Every value is written by its attribute's codec with the export's :class:`Format`; names
+and references are written as seen from the model being exported: an element's name takes
+the prefix of its scope (``arm/`` for what an attached model ``arm`` holds), a reference the
+scoped name its target has now.
+
+A model with nothing attached is written straight to text in one pass. A composed model is
+built as light nodes where composition joins the attached models' sections and bodies to
+the parent's (the sections, the attachment frames and their ancestors), with every other
+subtree a chunk of text written in place when the nodes are serialised. The keyframes of a
+composed model are combined elsewhere (:mod:`typed_mjcf._keyframes`): the writer leaves them
+out and reports their sections, and which model each joint, actuator and mocap body came
+from.
 """
 
 from __future__ import annotations
 
+import functools
 from collections import deque
 from collections.abc import Callable, Iterator
-from typing import TypeAlias, cast
+from typing import cast
 
-import numpy as np
-from lxml import etree
-
-from typed_mjcf._compose import MAIN_CLASS, scope_name
-from typed_mjcf._element import Element
-from typed_mjcf._gc import collector_paused
-from typed_mjcf._root import ModelRoot
-from typed_mjcf._spec import AttributeSpec
-from typed_mjcf._xmltext import Chunk, Node, escape, serialize
+from typed_mjcf import _tree
+from typed_mjcf._codecs import DEFAULT_FORMAT, Format
+from typed_mjcf._files import absolute_file
+from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._names import NameScope
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
+from typed_mjcf._xmltext import Chunk, Node, escape, indent
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
-XmlNode: TypeAlias = etree._Element  # pyright: ignore[reportPrivateUsage]  # lxml's element type
-FileNamer = Callable[[Element, AttributeSpec, object], str]
+# The text of a file attribute when the files are renamed (for a virtual file system).
+FileNamer = Callable[[Element, AttributeSpec], str]
 
 
-def _shortest_double(x: float) -> str:
-    text = repr(x)
-    return text.removesuffix(".0")
-
-
-def _shortest_doubles(values: list[float]) -> str:
-    """Space-separated shortest forms: one C-level join, then drop each trailing ".0"."""
-    text = " ".join(map(repr, values)).replace(".0 ", " ")
-    return text.removesuffix(".0")
-
-
-def _shortest_float32(x: np.float32) -> str:
-    text = str(x)
-    return text.removesuffix(".0")
-
-
-class Formatter:
-    """Turns stored attribute values into MJCF text."""
-
-    def __init__(self, precision: int | None = None, zero_threshold: float = 0.0,
-                 file_namer: FileNamer | None = None,
-                 skip_attributes: frozenset[str] = frozenset()) -> None:
-        self.precision = precision
-        self.zero_threshold = zero_threshold
-        self.file_namer = file_namer  # renames every file (paths and in-memory assets)
-        self.skip_attributes = skip_attributes
-
-    def number(self, x: float) -> str:
-        if self.zero_threshold and abs(x) < self.zero_threshold:
-            return "0"
-        if self.precision is not None:
-            return format(x, f".{self.precision}g")
-        return _shortest_double(x)
-
-    def array(self, attribute: AttributeSpec, value: np.ndarray[tuple[int, ...], np.dtype[np.generic]]) -> str:
-        if attribute.kind == "int":
-            return " ".join(map(str, value.tolist()))
-        if self.precision is None and not self.zero_threshold:
-            if attribute.dtype == "float":
-                return " ".join(_shortest_float32(x) for x in value)  # pyright: ignore[reportArgumentType]
-            return _shortest_doubles(value.tolist())
-        return " ".join(map(self.number, value.tolist()))
-
-    def value(self, element: Element, attribute: AttributeSpec, value: object) -> str:
-        kind = attribute.kind
-        if kind == "file" and self.file_namer is not None:
-            return self.file_namer(element, attribute, value)
-        if type(value) is str:
-            return value
-        if type(value) is np.ndarray:
-            return self.array(attribute, value)  # pyright: ignore[reportUnknownArgumentType]
-        if kind == "real":
-            assert isinstance(value, float)
-            return self.number(value)
-        if kind == "bool":
-            return "true" if value else "false"
-        if kind == "int":
-            return str(value)
-        if kind == "flags":
-            assert isinstance(value, tuple)
-            return " ".join(value)  # pyright: ignore[reportUnknownArgumentType]
-        if isinstance(value, Element):
-            return reference_name(element, attribute, value)
-        if isinstance(value, Asset):
-            raise ExportError(
-                f"{element.path}: {attribute.py_name} holds an in-memory asset; write the "
-                f"model with export_with_assets() or compile() so the file gets a name"
-            )
-        raise ExportError(f"{element.path}: cannot write {attribute.py_name}={value!r}")
-
-
-def reference_name(element: Element, attribute: AttributeSpec, target: Element,
-                   same_model: bool = True) -> str:
-    """The name a reference to ``target`` is written with (unscoped)."""
-    id_attribute = target.spec.id_attribute
-    name = None if id_attribute is None else target._attrs.get(id_attribute.name)  # pyright: ignore[reportPrivateUsage]
-    if not isinstance(name, str):
-        raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
-                          f"which has no name")
-    if same_model and target._root is not element._root:  # pyright: ignore[reportPrivateUsage]
-        raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
-                          f"which is not part of this model")
-    return name
-
-
-def _is_empty_single(parent: Element, child: Element) -> bool:
+def is_empty_single(parent: Element, child: Element) -> bool:
     """A once-only child with nothing to say: no attributes, no attached model, and only
     children like itself. Such sections are not written (reading them gives nothing back)."""
-    if child._attrs or child._attached is not None:  # pyright: ignore[reportPrivateUsage]
+    if _tree.values(child) or _tree.attached_at(child) is not None:
         return False
-    child_spec = parent._SPEC.children.get(child._SPEC.tag)  # pyright: ignore[reportPrivateUsage]
+    child_spec = parent.spec.children.get(child.spec.tag)
     if child_spec is None or not child_spec.single:
         return False
-    return all(_is_empty_single(child, grandchild) for grandchild in child._children)  # pyright: ignore[reportPrivateUsage]
+    return all(is_empty_single(child, grandchild) for grandchild in _tree.children(child))
 
 
 def written_children(element: Element) -> list[Element]:
     """The children an export writes: all but once-only sections with nothing to say."""
-    child_specs = element._SPEC.children  # pyright: ignore[reportPrivateUsage]
-    return [child for child in element._children  # pyright: ignore[reportPrivateUsage]
-            if child._attrs or not child_specs[child._SPEC.tag].single  # pyright: ignore[reportPrivateUsage]
-            or not _is_empty_single(element, child)]
+    child_specs = element.spec.children
+    return [child for child in _tree.children(element)
+            if _tree.values(child) or not child_specs[child.spec.tag].single
+            or not is_empty_single(element, child)]
 
 
 def iter_written(element: Element) -> Iterator[Element]:
-    """The elements :func:`build` writes for ``element``'s subtree, in document order."""
+    """The elements the writer writes for ``element``'s subtree, in document order
+    (attached models not included)."""
     stack: list[Element] = [element]
     while stack:
         current = stack.pop()
@@ -142,108 +64,182 @@ def iter_written(element: Element) -> Iterator[Element]:
         stack.extend(reversed(written_children(current)))
 
 
+def has_defaults(model: ModelBase) -> bool:
+    """Whether the model's default classes say anything (its classes nest when attached)."""
+    for section in _tree.children(model):
+        if section.spec.compose == "nest":
+            return bool(_tree.children(section) or _tree.values(section))
+    return False
+
+
+# (element, parent node, inside a section whose attributes merge)
+_Task = tuple[Element, Node | None, bool]
+
+
 class Writer:
     """Writes an element and its subtree, attached models inline under their scope."""
 
-    def __init__(self, formatter: Formatter, top: Element, keyframes: bool = True) -> None:
-        self.formatter = formatter
+    def __init__(self, top: Element, fmt: Format = DEFAULT_FORMAT,
+                 file_namer: FileNamer | None = None,
+                 skip_attributes: frozenset[str] = frozenset()) -> None:
+        self.fmt = fmt
         self.top = top
-        self.keyframes = keyframes  # False: leave keyframes out (to learn the composed layout)
-        self.skip = formatter.skip_attributes
-        # plain output: no precision, threshold or renamed files, so values format inline
-        self.plain = (formatter.precision is None and not formatter.zero_threshold
-                      and formatter.file_namer is None)
-        root = top._root  # pyright: ignore[reportPrivateUsage]
-        # which model each joint/actuator/mocap body came from: only composed models need it
-        self.tracking = root is not None and bool(root._scopes)  # pyright: ignore[reportPrivateUsage]
+        self.file_namer = file_namer  # renames every file (paths and in-memory assets)
+        self.skip = skip_attributes
+        root = _tree.model_of(top)
+        scope = _tree.scope_of(root) if root is not None else _tree.scope_of(top)
+        self.top_scope = scope
+        self.prefixes: dict[int, str] = {id(scope): ""}
+        self.composed = root is not None and bool(scope.attached)
+        # plain output: nothing renamed or reformatted, so common values format inline
+        self.plain = fmt.plain and file_namer is None
         # elements with an attachment frame in their subtree: written as nodes, so attached
         # models' bodies can join them; everything else is written as chunks of text
-        self.hosts: set[int] = _hosts(root) if self.tracking and root is not None else set()
-        self.pending: deque[tuple[ModelRoot, str]] = deque()  # attached models whose sections follow
-        self.joint_owners: list[ModelRoot] = []  # the model of each joint, in document order
-        self.actuator_owners: list[ModelRoot] = []
-        self.mocap_owners: list[ModelRoot] = []
+        self.hosts: set[int] = _hosts(root) if self.composed and root is not None else set()
+        self.pending: deque[ModelBase] = deque()  # attached models whose sections follow
+        # the model of each joint, actuator and mocap body, in document order (composed)
+        self.joint_owners: list[ModelBase] = []
+        self.actuator_owners: list[ModelBase] = []
+        self.mocap_owners: list[ModelBase] = []
+        # composed models: each model's keyframe section, for combining (left out here)
+        self.keyframe_sections: list[tuple[ModelBase, Element]] = []
+        # names this export gives unnamed elements that references link to
+        self.given_names: dict[int, str] = _names_to_give(top, scope)
 
-    # --------------------------------------------------------------- attributes
+    # --------------------------------------------------------------- names
 
-    def attributes(self, element: Element, prefix: str, model: ModelRoot | None) -> dict[str, str]:
-        """The attributes to write, as unescaped text, in grammar order."""
-        by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
-        attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-        return {name: self.general(element, by_name[name], attrs[name], prefix, model)
-                for name in self.names(element)}
-
-    def names(self, element: Element) -> list[str]:
-        """The names of the attributes to write, in grammar order."""
-        attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-        skip = self.skip
-        names = [name for name in attrs if name not in skip] if skip else list(attrs)
-        # sort the few attributes set rather than scan every attribute the grammar has
-        if len(names) > 1:
-            names.sort(key=element._SPEC.order.__getitem__)  # pyright: ignore[reportPrivateUsage]
-        return names
-
-    def attribute_text(self, element: Element, prefix: str = "",
-                       model: ModelRoot | None = None) -> str:
-        """`` name="value"`` for each attribute, escaped where text can need it. The common
-        values are formatted inline (this loop is most of an export's time); the rest, and
-        names and files a scope changes, as :meth:`general` formats them."""
-        attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
-        by_name = element._SPEC.by_name  # pyright: ignore[reportPrivateUsage]
-        plain = self.plain
+    def prefix(self, scope: NameScope) -> str:
+        """The prefix of names in ``scope`` as seen from the model being written."""
+        found = self.prefixes.get(id(scope))
+        if found is not None:
+            return found
         parts: list[str] = []
-        for name in self.names(element):
-            value = attrs[name]
-            attribute = by_name[name]
-            if plain and (not prefix or attribute.kind not in _SCOPED_KINDS):
-                kind = type(value)
-                if kind is str:
-                    parts.append(f' {name}="{escape(cast(str, value))}"')
-                    continue
-                if kind is np.ndarray and attribute.dtype == "double":
-                    doubles = cast("np.ndarray[tuple[int, ...], np.dtype[np.float64]]", value)
-                    parts.append(f' {name}="{_shortest_doubles(doubles.tolist())}"')
-                    continue
-                if kind is float:
-                    parts.append(f' {name}="{_shortest_double(cast(float, value))}"')
-                    continue
-            text = self.general(element, attribute, value, prefix, model)
-            parts.append(f' {name}="{escape(text)}"')
-        return "".join(parts)
-
-    def general(self, element: Element, attribute: AttributeSpec, value: object, prefix: str,
-                model: ModelRoot | None) -> str:
-        if isinstance(value, Element):
-            return self.reference(element, attribute, value)
-        if prefix and isinstance(value, str) and attribute.kind in ("id", "ref"):
-            if value == MAIN_CLASS and attribute.namespace == "default":
-                return prefix
-            return prefix + value
-        if prefix and model is not None and attribute.kind == "file" and isinstance(
-                value, str) and self.formatter.file_namer is None:
-            return _absolute_file(model, attribute, value)
-        return self.formatter.value(element, attribute, value)
+        current: NameScope | None = scope
+        while current is not None and current is not self.top_scope:
+            parts.append(current.name or "")
+            current = current.parent
+        if current is None:
+            raise ExportError(f"names of model {scope.name!r} cannot be written as part of "
+                              f"this model: it is not attached into it")
+        text = "".join(part + "/" for part in reversed(parts))
+        self.prefixes[id(scope)] = text
+        return text
 
     def reference(self, element: Element, attribute: AttributeSpec, target: Element) -> str:
         """A reference to ``target``, scoped as seen from the model being written."""
-        name = reference_name(element, attribute, target, same_model=False)
-        target_root = target._root  # pyright: ignore[reportPrivateUsage]
-        top_root = self.top._root  # pyright: ignore[reportPrivateUsage]
-        scopes: list[str] = []
-        model = target_root
-        while model is not top_root:
-            frame = None if model is None else model._frame  # pyright: ignore[reportPrivateUsage]
-            if model is None or frame is None:
-                raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
-                                  f"which is not part of this model")
-            scopes.append(scope_name(model))
-            model = frame._root  # pyright: ignore[reportPrivateUsage]
-        return "".join(s + "/" for s in reversed(scopes)) + name
+        name = _tree.element_name(target)
+        if _tree.model_of(target) is None:
+            raise ExportError(f"{element.path}: {attribute.py_name} refers to a "
+                              f"<{target.spec.tag}> that was removed from its model")
+        scope = _tree.scope_of(target)
+        if name is None:
+            if _is_main_class(target):
+                return self.main_class(scope)
+            name = self.given_names.get(id(target))
+            if name is None:
+                raise ExportError(f"{element.path}: {attribute.py_name} refers to "
+                                  f"{target.path}, which has no name and is not written here")
+        try:
+            return self.prefix(scope) + name
+        except ExportError:
+            raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
+                              f"which is not part of this model") from None
+
+    def main_class(self, scope: NameScope) -> str:
+        """The name of a model's top-level default class: ``main``, or the scope of an
+        attached model (its classes nest in a class named after it)."""
+        prefix = self.prefix(scope)
+        return prefix or grammar_facts().main_class
+
+    # --------------------------------------------------------------- attributes
+
+    def names(self, element: Element) -> list[str]:
+        """The names of the attributes to write, in grammar order."""
+        stored = _tree.values(element)
+        skip = self.skip
+        names = [name for name in stored if name not in skip] if skip else list(stored)
+        # sort the few attributes set rather than scan every attribute the grammar has
+        if len(names) > 1:
+            names.sort(key=element.spec.order.__getitem__)
+        return names
+
+    def given_name(self, element: Element) -> str:
+        """`` name="..."`` for an unnamed element this export names."""
+        id_attribute = element.spec.id_attribute
+        assert id_attribute is not None
+        name = self.prefix(_tree.scope_of(element)) + self.given_names[id(element)]
+        return f'{id_attribute.name}="{escape(name)}"'
+
+    def attributes(self, element: Element) -> dict[str, str]:
+        """The attributes to write, as unescaped text, in grammar order."""
+        by_name = element.spec.by_name
+        stored = _tree.values(element)
+        texts: dict[str, str] = {}
+        if self.given_names and id(element) in self.given_names:
+            id_attribute = element.spec.id_attribute
+            assert id_attribute is not None
+            texts[id_attribute.name] = (self.prefix(_tree.scope_of(element))
+                                        + self.given_names[id(element)])
+        for name in self.names(element):
+            text = self.value(element, by_name[name], stored[name])
+            if text is not None:
+                texts[name] = text
+        return texts
+
+    def attribute_text(self, element: Element) -> str:
+        """`` name="value"`` for each attribute, escaped where text can need it. Text kept as
+        read and plain strings are written inline (this loop is most of an export's time)."""
+        stored = _tree.values(element)
+        by_name = element.spec.by_name
+        plain = self.plain and _tree.scope_of(element) is self.top_scope
+        parts: list[str] = []
+        if self.given_names and id(element) in self.given_names:
+            parts.append(f' {self.given_name(element)}')
+        for name in self.names(element):
+            value = stored[name]
+            attribute = by_name[name]
+            if plain and type(value) is str and attribute.kind != "ref" and (
+                    attribute.namespace_from is None):
+                parts.append(f' {name}="{escape(value)}"')
+                continue
+            text = self.value(element, attribute, value)
+            if text is not None:
+                parts.append(f' {name}="{escape(text)}"')
+        return "".join(parts)
+
+    def value(self, element: Element, attribute: AttributeSpec, value: object) -> str | None:
+        """One attribute's text (``None``: nothing to write, e.g. a link to a removed
+        element, which ``validate()`` reports)."""
+        kind = attribute.kind
+        if isinstance(value, Element):
+            if _tree.model_of(value) is None:
+                return None
+            return self.reference(element, attribute, value)
+        if kind == "file":
+            if self.file_namer is not None:
+                return self.file_namer(element, attribute)
+            if isinstance(value, Asset):
+                raise ExportError(
+                    f"{element.path}: {attribute.py_name} holds an in-memory asset; write the "
+                    f"model with export_with_assets() or compile() so the file gets a name")
+            scope = _tree.scope_of(element)
+            if scope is not self.top_scope:
+                return absolute_file(_tree.scope_model(scope), attribute, cast(str, value))
+            return cast(str, value)
+        if kind == "id" or attribute.is_reference:
+            text = cast(str, value)
+            scope = _tree.scope_of(element)
+            if scope is self.top_scope:
+                return text
+            if kind == "ref" and attribute.namespace == "default" and (
+                    text == grammar_facts().main_class):
+                return self.main_class(scope)
+            return self.prefix(scope) + text
+        return attribute.codec.write(value, self.fmt)
 
     # --------------------------------------------------------------- elements
 
-    def element(self, element: Element, parent: Node | None, prefix: str,
-                model: ModelRoot | None) -> Node:
+    def element(self, element: Element, parent: Node | None) -> Node:
         """Write ``element``'s subtree under ``parent``; iterative, so depth is unlimited.
 
         Composition still adds to, or looks into, the model's sections, the attachment
@@ -251,34 +247,35 @@ class Writer:
         those are nodes. Everything below them is written as chunks of text.
         """
         first: Node | None = None
-        # (element, parent node, scope, model it belongs to, inside a merging section)
-        stack: list[tuple[Element, Node | None, str, ModelRoot | None, bool]] = [
-            (element, parent, prefix, model, False)]
+        stack: list[_Task] = [(element, parent, False)]
         pop, push = stack.pop, stack.append
-        tracking, keyframes = self.tracking, self.keyframes
         while stack:
-            current, parent_node, scope, owner, merging = pop()
+            current, parent_node, merging = pop()
             if parent_node is not None and first is not None and not self.needs_node(
                     current, merging):
-                parent_node.children.append(self.chunk(current, scope, owner))
+                parent_node.children.append(self.chunk(current))
                 continue
-            spec = current._SPEC  # pyright: ignore[reportPrivateUsage]
-            attrib = self.attributes(current, scope, owner) if current._attrs else {}  # pyright: ignore[reportPrivateUsage]
+            spec = current.spec
+            attrib = self.attributes(current) if _tree.values(current) else {}
             node = Node(spec.tag, attrib)
             if first is None:
                 first = node
             if parent_node is not None:
                 parent_node.children.append(node)
-            if tracking and spec.namespace in _TRACKED:
-                self._track(spec.namespace, current, owner)
+            if self.composed:
+                self.track(current)
             inner = merging or (spec.compose == "attributes" and isinstance(
-                current._parent, ModelRoot))  # pyright: ignore[reportPrivateUsage]
-            pending: list[tuple[Element, Node | None, str, ModelRoot | None, bool]] = [
-                (child, node, scope, owner, inner) for child in written_children(current)
-                if keyframes or child._SPEC.compose != "keyframes"]  # pyright: ignore[reportPrivateUsage]
-            attached = current._attached  # pyright: ignore[reportPrivateUsage]
+                current.parent, ModelBase))
+            pending: list[_Task] = []
+            for child in written_children(current):
+                if self.composed and child.spec.compose == "keyframes" and isinstance(
+                        current, ModelBase):
+                    self.keyframe_sections.append((current, child))
+                    continue
+                pending.append((child, node, inner))
+            attached = _tree.attached_at(current)
             if attached is not None:
-                pending += self.attachment(node, attached, scope + scope_name(attached) + "/")
+                pending += self.attachment(node, attached)
             for task in reversed(pending):
                 push(task)
         assert first is not None
@@ -288,33 +285,28 @@ class Writer:
         """Whether composition may add to or look into ``element``: a model's section, an
         attachment frame or one of its ancestors, or part of a section whose attributes
         merge with the attached models'."""
-        return (merging or id(element) in self.hosts
-                or isinstance(element._parent, ModelRoot))  # pyright: ignore[reportPrivateUsage]
+        return merging or id(element) in self.hosts or isinstance(element.parent, ModelBase)
 
-    def chunk(self, element: Element, prefix: str, model: ModelRoot | None,
-              extra: dict[str, str] | None = None) -> Chunk:
+    def chunk(self, element: Element, extra: dict[str, str] | None = None) -> Chunk:
         """``element``'s subtree, to be written as text where it lands (it holds no
         attachment frame); ``extra`` attributes follow the element's own."""
-        if self.tracking:
+        if self.composed:
             for written in iter_written(element):
-                namespace = written._SPEC.namespace  # pyright: ignore[reportPrivateUsage]
-                if namespace in _TRACKED:
-                    self._track(namespace, written, model)
-        return Chunk(lambda depth, pretty_print: self.write(
-            element, prefix, model, depth, pretty_print, extra))
+                self.track(written)
+        return Chunk(lambda depth, pretty_print: self.write(element, depth, pretty_print, extra))
 
     def text(self, element: Element, pretty_print: bool) -> str:
         """``element``'s subtree as XML text, written in one pass without building nodes
         (for models with nothing attached: composition needs :meth:`element`'s nodes)."""
-        return self.write(element, "", None, 0, pretty_print)
+        return self.write(element, 0, pretty_print)
 
-    def write(self, element: Element, prefix: str, model: ModelRoot | None, depth: int,
-              pretty_print: bool, extra: dict[str, str] | None = None) -> str:
+    def write(self, element: Element, depth: int, pretty_print: bool,
+              extra: dict[str, str] | None = None) -> str:
         """The text of ``element``'s subtree, indented from ``depth``."""
         parts: list[str] = []
         append = parts.append
         newline = "\n" if pretty_print else ""
-        step = "  " if pretty_print else ""
+        indent_of = indent if pretty_print else _no_indent
         # an element to open, or the text that closes one
         stack: list[tuple[Element | str, int]] = [(element, depth)]
         pop, push = stack.pop, stack.append
@@ -324,63 +316,57 @@ class Writer:
             if isinstance(current, str):
                 append(current)
                 continue
-            tag = current._SPEC.tag  # pyright: ignore[reportPrivateUsage]
-            attrs = attribute_text(current, prefix, model) if current._attrs else ""  # pyright: ignore[reportPrivateUsage]
+            tag = current.spec.tag
+            attrs = attribute_text(current) if _tree.values(current) else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
-            indent = step * level
-            children = written_children(current) if current._children else None  # pyright: ignore[reportPrivateUsage]
+            spaces = indent_of(level)
+            children = written_children(current) if _tree.children(current) else None
             if children:
-                append(f"{indent}<{tag}{attrs}>{newline}")
-                push((f"{indent}</{tag}>{newline}", level))
+                append(f"{spaces}<{tag}{attrs}>{newline}")
+                push((f"{spaces}</{tag}>{newline}", level))
                 level += 1
                 for child in reversed(children):
                     push((child, level))
             else:
-                append(f"{indent}<{tag}{attrs}/>{newline}")
+                append(f"{spaces}<{tag}{attrs}/>{newline}")
         return "".join(parts)
 
-    def _track(self, namespace: str | None, element: Element, model: ModelRoot | None) -> None:
-        if model is None:
+    def track(self, element: Element) -> None:
+        """Note which model a joint, actuator or mocap body of a composed model came from."""
+        namespace = element.spec.namespace
+        model = _tree.model_of(element)  # the tree it is in: what the model's keys describe
+        if namespace is None or model is None:
             return
-        if namespace == "joint":
+        facts = grammar_facts()
+        if element.spec.tag in facts.joints:
             self.joint_owners.append(model)
         elif namespace == "actuator":
             self.actuator_owners.append(model)
-        elif element._attrs.get("mocap") is True:  # pyright: ignore[reportPrivateUsage]
+        elif element.spec.tag == facts.body and _tree.values(element).get(facts.mocap) is True:
             self.mocap_owners.append(model)
 
-    def attachment(self, frame: Node, model: ModelRoot, scope: str
-                   ) -> list[tuple[Element, Node | None, str, ModelRoot | None, bool]]:
+    def attachment(self, frame: Node, model: ModelBase) -> list[_Task]:
         """The attached model's bodies, to be written inside its frame; its other sections
         join the parent's later."""
-        if _has_defaults(model) and frame.get("childclass") is None:
-            frame.set("childclass", scope)
-        self.pending.append((model, scope))
-        return [(child, frame, scope, model, False)
-                for section in model._children  # pyright: ignore[reportPrivateUsage]
-                if "body" in section._SPEC.children  # pyright: ignore[reportPrivateUsage]
-                for child in section._children]  # pyright: ignore[reportPrivateUsage]
+        if has_defaults(model) and frame.get(grammar_facts().childclass) is None:
+            frame.set(grammar_facts().childclass, self.main_class(_tree.scope_of(model)))
+        self.pending.append(model)
+        return [(child, frame, False)
+                for section in _tree.children(model) if section.spec.holds_bodies
+                for child in _tree.children(section)]
 
     # --------------------------------------------------------------- models
 
-    def model(self, root: ModelRoot) -> Node:
-        node = self.element(root, None, "", root)
-        if not root._scopes:  # pyright: ignore[reportPrivateUsage]
-            return node
-        keyframes: list[tuple[ModelRoot, Element]] = [
-            (root, s) for s in root._children if s.spec.compose == "keyframes"]  # pyright: ignore[reportPrivateUsage]
+    def model(self, root: ModelBase) -> Node:
+        node = self.element(root, None)
         while self.pending:
-            model, scope = self.pending.popleft()
-            for section in model._children:  # pyright: ignore[reportPrivateUsage]
+            model = self.pending.popleft()
+            for section in _tree.children(model):
                 if section.spec.compose == "keyframes":
-                    keyframes.append((model, section))
-                elif "body" not in section.spec.children and not _is_empty_single(model, section):
-                    self.section(node, section, model, scope)
-        if self.keyframes and any(section._children for _, section in keyframes):  # pyright: ignore[reportPrivateUsage]
-            from typed_mjcf._keyframes import combine_keyframes
-
-            combine_keyframes(self, node, root, keyframes)
+                    self.keyframe_sections.append((model, section))
+                elif not section.spec.holds_bodies and not is_empty_single(model, section):
+                    self.section(node, section, model)
         return node
 
     def section_node(self, root: Node, tag: str) -> Node:
@@ -397,106 +383,112 @@ class Writer:
         root.insert(index, node)
         return node
 
-    def section(self, root: Node, section: Element, model: ModelRoot, scope: str) -> None:
+    def section(self, root: Node, section: Element, model: ModelBase) -> None:
         """Join an attached model's section to the root's, as its grammar row says."""
         compose = section.spec.compose
-        target = self.section_node(root, section.tag)
+        target = self.section_node(root, section.spec.tag)
         if compose == "attributes":
-            self.merge_attributes(target, section, model, scope)
+            self.merge_attributes(target, section)
         elif compose == "nest":
-            nested = target.sub(section.tag, {"class": scope})
-            nested.children += [self.chunk(child, scope, model)
-                                for child in written_children(section)]
+            scope_class = self.main_class(_tree.scope_of(model))
+            nested = target.sub(section.spec.tag, {grammar_facts().dclass: scope_class})
+            nested.children += [self.chunk(child) for child in written_children(section)]
         else:
-            classed = _has_defaults(model)
+            classed = has_defaults(model)
+            dclass = grammar_facts().dclass
+            scope_class = self.main_class(_tree.scope_of(model)) if classed else ""
             for child in written_children(section):
-                unclassed = "class" in child.spec.by_name and "class" not in child._attrs  # pyright: ignore[reportPrivateUsage]
-                extra = {"class": scope} if classed and unclassed else None
-                target.children.append(self.chunk(child, scope, model, extra))
+                unclassed = dclass in child.spec.by_name and dclass not in _tree.values(child)
+                extra = {dclass: scope_class} if classed and unclassed else None
+                target.children.append(self.chunk(child, extra))
 
-    def merge_attributes(self, target: Node, section: Element, model: ModelRoot,
-                         scope: str) -> None:
-        for name, text in self.attributes(section, scope, model).items():
-            if name in _folders():
+    def merge_attributes(self, target: Node, section: Element) -> None:
+        for name, text in self.attributes(section).items():
+            if name in folder_attributes():
                 continue  # each model's files resolve in its own folders
             mine = target.get(name)
             if mine is None:
                 target.set(name, text)
             elif mine != text:
+                scope = self.prefix(_tree.scope_of(section)).rstrip("/")
                 raise ExportError(
-                    f"<{section.tag}> {name}: {text!r} in attached model "
-                    f"{scope.rstrip('/')!r} differs from {mine!r} in the model it is attached to")
-        for child in section._children:  # pyright: ignore[reportPrivateUsage]
-            sub = next((c for c in target if c.tag == child.tag), None)
+                    f"<{section.spec.tag}> {name}: {text!r} in attached model {scope!r} "
+                    f"differs from {mine!r} in the model it is attached to")
+        for child in _tree.children(section):
+            sub = next((c for c in target if c.tag == child.spec.tag), None)
             if sub is None:
-                sub = target.sub(child.tag)
-            self.merge_attributes(sub, child, model, scope)
+                sub = target.sub(child.spec.tag)
+            self.merge_attributes(sub, child)
 
 
-_TRACKED = frozenset({"joint", "actuator", "body"})
-_SCOPED_KINDS = frozenset({"id", "ref", "file"})  # values an attached model's scope changes
+def _no_indent(level: int) -> str:
+    return ""
 
 
-def _hosts(root: ModelRoot) -> set[int]:
+@functools.cache
+def folder_attributes() -> frozenset[str]:
+    """The <compiler> attributes that name folders of files: each model keeps its own."""
+    names: set[str] = set()
+    for cls in _tree.element_classes().values():
+        for attribute in cls.spec.attributes:
+            names.update(attribute.directory)
+    return frozenset(names)
+
+
+def _is_main_class(element: Element) -> bool:
+    """Whether ``element`` is a model's top-level default class (named by its model)."""
+    return element.spec.compose == "nest" and isinstance(element.parent, ModelBase)
+
+
+def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
+    """Names for the unnamed elements that references link to (MJCF refers by name): an
+    attachment frame is named after its model (``arm/``), anything else ``unnamed_<kind>_<n>``
+    with the first number free in its scope. Nothing is stored on the elements."""
+    candidates: dict[int, Element] = {}
+    for scope in top_scope.scopes():
+        for target in scope.unnamed_targets:
+            assert isinstance(target, Element)
+            if _tree.element_name(target) is None and not target.is_removed:
+                candidates[id(target)] = target
+    if not candidates:
+        return {}
+    linked: set[int] = set()
+    for element in _tree.iter_composed(top, True):
+        stored = _tree.values(element)
+        for attribute in element.spec.references:
+            value = stored.get(attribute.name)
+            if isinstance(value, Element) and id(value) in candidates:
+                linked.add(id(value))
+    given: dict[int, str] = {}
+    taken: set[tuple[int, str, str]] = set()
+    for key in sorted(linked, key=list(candidates).index):
+        target = candidates[key]
+        attached = _tree.attached_at(target)
+        scope = _tree.scope_of(target)
+        namespace = target.spec.namespace or target.spec.tag
+        if attached is not None and _tree.scope_of(attached).name is not None:
+            name = f"{_tree.scope_of(attached).name}/"
+        else:
+            n = 0
+            while (scope.lookup(namespace, f"unnamed_{namespace}_{n}") is not None
+                   or (id(scope), namespace, f"unnamed_{namespace}_{n}") in taken):
+                n += 1
+            name = f"unnamed_{namespace}_{n}"
+        taken.add((id(scope), namespace, name))
+        given[key] = name
+    return given
+
+
+def _hosts(root: ModelBase) -> set[int]:
     """The ids of the attachment frames of ``root`` and of the models attached to it,
     nested ones included, and of all their ancestors."""
     hosts: set[int] = set()
     models = [root]
     while models:
-        for attached in models.pop()._scopes.values():  # pyright: ignore[reportPrivateUsage]
+        for attached in _tree.attached_models(models.pop()):
             models.append(attached)
-            element = attached._frame  # pyright: ignore[reportPrivateUsage]
+            element = _tree.frame_of(attached)
             while element is not None and id(element) not in hosts:
                 hosts.add(id(element))
-                element = element._parent  # pyright: ignore[reportPrivateUsage]
+                element = element.parent
     return hosts
-
-
-def _has_defaults(model: ModelRoot) -> bool:
-    for section in model._children:  # pyright: ignore[reportPrivateUsage]
-        if section.spec.compose == "nest":
-            return bool(section._children or section._attrs)  # pyright: ignore[reportPrivateUsage]
-    return False
-
-
-def _folders() -> frozenset[str]:
-    from typed_mjcf._compose import folder_attributes
-
-    return folder_attributes()
-
-
-def _absolute_file(model: ModelRoot, attribute: AttributeSpec, file: str) -> str:
-    """An attached model's file, as a path that does not depend on the parent's folders."""
-    from typed_mjcf._assets_io import compiler_folders, resolve_path
-
-    return resolve_path(model, attribute, file, compiler_folders(model))
-
-
-def build(element: Element, formatter: Formatter, parent: Node | None = None) -> Node:
-    """The nodes of ``element`` and its subtree (attached models included)."""
-    writer = Writer(formatter, element)
-    root = element._root  # pyright: ignore[reportPrivateUsage]
-    if parent is None and root is not None and root is element:
-        return writer.model(root)
-    return writer.element(element, parent, "", root)
-
-
-def to_xml(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,
-           file_namer: FileNamer | None = None) -> XmlNode:
-    text = to_xml_string(element, precision=precision, zero_threshold=zero_threshold,
-                         pretty_print=False, file_namer=file_namer)
-    return etree.fromstring(text)
-
-
-def write_text(element: Element, formatter: Formatter, pretty_print: bool = True) -> str:
-    """The XML text of ``element`` and its subtree (attached models included)."""
-    root = element._root  # pyright: ignore[reportPrivateUsage]
-    with collector_paused():  # an export makes no reference cycles, only short-lived text
-        if root is not None and not root._scopes:  # pyright: ignore[reportPrivateUsage]
-            return Writer(formatter, element).text(element, pretty_print)
-        return serialize(build(element, formatter), pretty_print)
-
-
-def to_xml_string(element: Element, *, precision: int | None = None, zero_threshold: float = 0.0,
-                  pretty_print: bool = True, file_namer: FileNamer | None = None) -> str:
-    return write_text(element, Formatter(precision, zero_threshold, file_namer), pretty_print)

@@ -15,15 +15,14 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from typed_mjcf._xmltext import Node, serialize
+from typed_mjcf import _tree
+from typed_mjcf._export import Writer
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
+from typed_mjcf._xmltext import Node
 from typed_mjcf.errors import ExportError
 
 if TYPE_CHECKING:
     import mujoco
-
-    from typed_mjcf._element import Element
-    from typed_mjcf._export import Writer
-    from typed_mjcf._root import ModelRoot
 
 Vector = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
 # MuJoCo's joint types: free, ball, slide, hinge (mjtJoint); their qpos and dof sizes.
@@ -31,27 +30,20 @@ QPOS_SIZE = (7, 4, 1, 1)
 DOF_SIZE = (6, 3, 1, 1)
 
 
-def _layout(root: ModelRoot) -> mujoco.MjModel:
-    import mujoco
+def has_keyframes(writer: Writer) -> bool:
+    """Whether any part of the model the writer wrote has a keyframe to combine."""
+    return any(_tree.children(section) for _, section in writer.keyframe_sections)
 
-    from typed_mjcf._assets_io import collect_assets
-    from typed_mjcf._export import Formatter, Writer
 
-    collected = collect_assets(root)
-    formatter = Formatter(file_namer=collected.name_of,
-                          skip_attributes=collected.directory_attributes)
-    writer = Writer(formatter, root, keyframes=False)
-    xml = serialize(writer.model(root), pretty_print=False)
+def compile_layout(xml: str, files: dict[str, bytes]) -> mujoco.MjModel:
+    """The composed model compiled without keyframes: where each part's values go."""
+    import mujoco  # heavy, and only composed models with keyframes need it here
+
     try:
-        return mujoco.MjModel.from_xml_string(xml, collected.files)
+        return mujoco.MjModel.from_xml_string(xml, files)
     except ValueError as error:
         raise ExportError(f"combining the keyframes of the attached models needs the composed "
                           f"model to compile, and MuJoCo refused it: {error}") from None
-
-
-def _key_name(key: Element, index: int) -> str:
-    name = key._attrs.get("name")  # pyright: ignore[reportPrivateUsage]
-    return name if isinstance(name, str) else f"#{index}"
 
 
 class _Key:
@@ -60,35 +52,39 @@ class _Key:
         self.values: dict[str, Vector] = {}
         self.time: float | None = None
 
-    def vector(self, name: str) -> Vector:
-        if name not in self.values:
+    def vector(self, kind: str) -> Vector:
+        if kind not in self.values:
             m = self.m
+            keys = grammar_facts().keyframe
             defaults: dict[str, Callable[[], Vector]] = {
-                "qpos": lambda: np.array(m.qpos0, dtype=np.float64),
-                "qvel": lambda: np.zeros(m.nv),
-                "act": lambda: np.zeros(m.na),
-                "ctrl": lambda: np.zeros(m.nu),
-                "mpos": lambda: np.array(m.body_pos[m.body_mocapid >= 0], dtype=np.float64).ravel(),
-                "mquat": lambda: np.array(m.body_quat[m.body_mocapid >= 0], dtype=np.float64).ravel(),
+                keys.qpos: lambda: np.array(m.qpos0, dtype=np.float64),
+                keys.qvel: lambda: np.zeros(m.nv),
+                keys.act: lambda: np.zeros(m.na),
+                keys.ctrl: lambda: np.zeros(m.nu),
+                keys.mpos: lambda: np.array(m.body_pos[m.body_mocapid >= 0],
+                                            dtype=np.float64).ravel(),
+                keys.mquat: lambda: np.array(m.body_quat[m.body_mocapid >= 0],
+                                             dtype=np.float64).ravel(),
             }
-            self.values[name] = defaults[name]()
-        return self.values[name]
+            self.values[kind] = defaults[kind]()
+        return self.values[kind]
 
 
-def _slots(m: mujoco.MjModel, owners: list[ModelRoot], part: ModelRoot,
+def _slots(m: mujoco.MjModel, owners: list[ModelBase], part: ModelBase,
            kind: str) -> list[tuple[int, int]]:
     """(address, size) in the composed vector ``kind`` of each of ``part``'s entries."""
+    keys = grammar_facts().keyframe
     mine = [i for i, owner in enumerate(owners) if owner is part]
-    if kind == "qpos":
+    if kind == keys.qpos:
         return [(int(m.jnt_qposadr[j]), QPOS_SIZE[int(m.jnt_type[j])]) for j in mine]
-    if kind == "qvel":
+    if kind == keys.qvel:
         return [(int(m.jnt_dofadr[j]), DOF_SIZE[int(m.jnt_type[j])]) for j in mine]
-    if kind == "ctrl":
+    if kind == keys.ctrl:
         return [(a, 1) for a in mine]
-    if kind == "act":
+    if kind == keys.act:
         return [(int(m.actuator_actadr[a]), int(m.actuator_actnum[a])) for a in mine
                 if m.actuator_actnum[a] > 0]
-    size = 3 if kind == "mpos" else 4
+    size = 3 if kind == keys.mpos else 4
     mocap_bodies = [int(b) for b in np.flatnonzero(m.body_mocapid >= 0)]
     order = sorted(mocap_bodies, key=lambda b: int(m.body_mocapid[b]))
     return [(int(m.body_mocapid[order[i]]) * size, size) for i in mine]
@@ -107,41 +103,48 @@ def _place(key: _Key, kind: str, slots: list[tuple[int, int]], values: Vector,
         offset += size
 
 
-def combine_keyframes(writer: Writer, node: Node, root: ModelRoot,
-                      parts: list[tuple[ModelRoot, Element]]) -> None:
-    """Replace the keyframe section of ``node`` with whole-model keys."""
-    m = _layout(root)
-    owners = {"qpos": writer.joint_owners, "qvel": writer.joint_owners,
-              "ctrl": writer.actuator_owners, "act": writer.actuator_owners,
-              "mpos": writer.mocap_owners, "mquat": writer.mocap_owners}
+def combine_keyframes(writer: Writer, node: Node, m: mujoco.MjModel) -> None:
+    """Add the whole-model keys to ``node``, the root the writer wrote (without keys)."""
+    keys_facts = grammar_facts().keyframe
+    owners = {keys_facts.qpos: writer.joint_owners, keys_facts.qvel: writer.joint_owners,
+              keys_facts.ctrl: writer.actuator_owners, keys_facts.act: writer.actuator_owners,
+              keys_facts.mpos: writer.mocap_owners, keys_facts.mquat: writer.mocap_owners}
     if len(writer.joint_owners) != m.njnt or len(writer.actuator_owners) != m.nu:
         raise ExportError("cannot combine the keyframes of attached models whose joints or "
                           "actuators MuJoCo expands (e.g. inside <replicate>)")
     keys: dict[str, _Key] = {}
-    tag = parts[0][1].tag
-    for part, section in parts:
-        for index, key in enumerate(section._children):  # pyright: ignore[reportPrivateUsage]
-            combined = keys.setdefault(_key_name(key, index), _Key(m))
-            for kind, value in key._attrs.items():  # pyright: ignore[reportPrivateUsage]
-                if kind == "time":
-                    assert isinstance(value, float)
-                    if combined.time is not None and combined.time != value:
-                        raise ExportError(f"{key.path}: time {value} differs from {combined.time} "
-                                          f"in a keyframe of the same name")
-                    combined.time = value
-                elif kind in owners:
-                    assert isinstance(value, np.ndarray)
-                    _place(combined, kind, _slots(m, owners[kind], part, kind),
-                           np.asarray(value, dtype=np.float64), key.path)
-    for old in [child for child in node if child.tag == tag]:
-        node.remove(old)
-    section_node = writer.section_node(node, tag)
-    number = writer.formatter.number
-    key_tag = next(iter(parts[0][1].spec.children))
+    sections = writer.keyframe_sections
+    for part, section in sections:
+        for index, key in enumerate(_tree.children(section)):
+            name = _tree.element_name(key)
+            combined = keys.setdefault(f"#{index}" if name is None else name, _Key(m))
+            _combine(key, part, combined, owners, m)
+    section_node = writer.section_node(node, sections[0][1].spec.tag)
+    key_tag = next(iter(sections[0][1].spec.children))
+    number = writer.fmt.number
     for name, combined in keys.items():
         attrib: dict[str, str] = {} if name.startswith("#") else {"name": name}
         if combined.time is not None:
-            attrib["time"] = number(combined.time)
+            attrib[keys_facts.time] = number(combined.time)
         for kind, vector in combined.values.items():
             attrib[kind] = " ".join(number(float(x)) for x in vector)
         section_node.sub(key_tag, attrib)
+
+
+def _combine(key: Element, part: ModelBase, combined: _Key,
+             owners: dict[str, list[ModelBase]], m: mujoco.MjModel) -> None:
+    time_name = grammar_facts().keyframe.time
+    for name, attribute in key.spec.by_name.items():
+        value = _tree.read_value(key, attribute)
+        if value is None:
+            continue
+        if name == time_name:
+            assert isinstance(value, float)
+            if combined.time is not None and combined.time != value:
+                raise ExportError(f"{key.path}: time {value} differs from {combined.time} "
+                                  f"in a keyframe of the same name")
+            combined.time = value
+        elif name in owners:
+            assert isinstance(value, np.ndarray)
+            _place(combined, name, _slots(m, owners[name], part, name),
+                   np.asarray(value, dtype=np.float64), key.path)

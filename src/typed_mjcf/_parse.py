@@ -21,25 +21,18 @@ from __future__ import annotations
 
 import os
 import stat
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from types import MappingProxyType
-from typing import Final, cast
+from typing import Final, TypeAlias, cast
 
 import numpy as np
 from lxml import etree
 
-from typed_mjcf._convert import Rejected
-from typed_mjcf._element import (
-    _REGISTRY,  # pyright: ignore[reportPrivateUsage]
-    Element,
-    append_child,
-    child_class,
-    claim_first_name,
-)
-from typed_mjcf._export import XmlNode
+from typed_mjcf import _tree
+from typed_mjcf._codecs import Rejected
 from typed_mjcf._gc import collector_paused
-from typed_mjcf._root import ModelRoot
+from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
     InvalidTypeError,
     InvalidValueError,
@@ -47,8 +40,11 @@ from typed_mjcf.errors import (
     ParseError,
     did_you_mean,
 )
+from typed_mjcf.types import XmlElement
 
 INCLUDE = "include"
+
+XmlNode: TypeAlias = XmlElement
 
 _Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
 
@@ -97,9 +93,10 @@ def source_line(node: XmlNode) -> int | None:
     return line if isinstance(line, int) else None
 
 
-def root_class() -> type[ModelRoot]:
-    for cls in _REGISTRY.values():
-        if issubclass(cls, ModelRoot):
+def root_class() -> type[ModelBase]:
+    """The generated class of the root row (``<mujoco>``)."""
+    for cls in _tree.element_classes().values():
+        if issubclass(cls, ModelBase):
             return cls
     raise RuntimeError("no generated root class is registered")  # pragma: no cover
 
@@ -318,20 +315,20 @@ def is_model_text(data: bytes) -> bool:
         node = _read_xml(data, None, _Context(None))
     except ParseError:
         return False
-    return node.tag == root_class()._SPEC.tag  # pyright: ignore[reportPrivateUsage]
+    return node.tag == root_class().spec.tag
 
 
 # ----------------------------------------------------------------------------- entry points
 
 
 def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
-               limits: ParseLimits | None = None) -> ModelRoot:
+               limits: ParseLimits | None = None) -> ModelBase:
     """Parse MJCF text into a model."""
     context = _Context(base_dir, limits or DEFAULT_LIMITS)
     return _guarded(lambda: _parse_text(data, source, context), source)
 
 
-def _parse_text(data: object, source: str | None, context: _Context) -> ModelRoot:
+def _parse_text(data: object, source: str | None, context: _Context) -> ModelBase:
     if isinstance(data, str):
         node = _read_xml(_encode(data, source, context), source, context, encoding="utf-8")
     elif isinstance(data, bytes):
@@ -343,21 +340,21 @@ def _parse_text(data: object, source: str | None, context: _Context) -> ModelRoo
     return _build_model(node, context, source)
 
 
-def parse_path(path: str, *, limits: ParseLimits | None = None) -> ModelRoot:
+def parse_path(path: str, *, limits: ParseLimits | None = None) -> ModelBase:
     """Parse an MJCF file; its folder is the base of relative paths."""
     path = os.path.abspath(path)
     context = _Context(os.path.dirname(path), limits or DEFAULT_LIMITS, main=path)
     return _guarded(lambda: _parse_path(path, context), path)
 
 
-def _parse_path(path: str, context: _Context) -> ModelRoot:
+def _parse_path(path: str, context: _Context) -> ModelBase:
     data = _read_file(path, context, "the file", path, None)
     context.included[path] = _Include(path, None, None)
     node = _read_xml(data, path, context)
     return _build_model(node, context, path)
 
 
-def _guarded(parse: Callable[[], ModelRoot], source: str | None) -> ModelRoot:
+def _guarded(parse: Callable[[], ModelBase], source: str | None) -> ModelBase:
     """Run ``parse``; a failure that is not the library's own error becomes a ParseError.
 
     Such a failure is a bug in typed-mjcf; the original exception is kept as the cause.
@@ -377,50 +374,50 @@ def _guarded(parse: Callable[[], ModelRoot], source: str | None) -> ModelRoot:
 # ----------------------------------------------------------------------------- building
 
 
-def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelRoot:
+def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelBase:
     cls = root_class()
-    if node.tag != cls._SPEC.tag:  # pyright: ignore[reportPrivateUsage]
-        raise context.error(
-            f"the root element is <{_name(node.tag)}>, expected <{cls._SPEC.tag}>",  # pyright: ignore[reportPrivateUsage]
-            source, source_line(node))
-    model = cls()
-    object.__setattr__(model, "_base_dir", context.base_dir)
-    _set_attributes(model, node, source, context)
+    if node.tag != cls.spec.tag:
+        raise context.error(f"the root element is <{_name(node.tag)}>, expected <{cls.spec.tag}>",
+                            source, source_line(node))
+    model = _tree.new_model(cls)
+    _tree.set_base_dir(model, context.base_dir)
     with collector_paused():  # a parse creates only objects that live on
+        _set_attributes(model, node, source, context)
         _Builder(context).run(model, node, source)
     return model
 
 
 def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
-    """Read ``node``'s attributes into ``element`` (as ``Element._set_attribute`` would,
-    inlined: text is never ``None`` and a reference read from text is a name)."""
-    spec = element._SPEC  # pyright: ignore[reportPrivateUsage]
-    by_name = spec.by_name
-    attrs = element._attrs  # pyright: ignore[reportPrivateUsage]
+    """Read ``node``'s attributes into ``element``; references whose namespace another
+    attribute names (``objname`` by ``objtype``) are read last."""
+    by_name = element.spec.by_name
+    later: list[tuple[AttributeSpec, str]] = []
     for key, text in node.attrib.items():
         attribute = by_name.get(key)  # pyright: ignore[reportArgumentType]
         if attribute is None:
             known = list(by_name)
             raise context.error(
-                f"<{spec.tag}> has no attribute {_name(key)!r}{did_you_mean(_name(key), known)}",
-                source, source_line(node))
-        try:
-            value = attribute.convert(text)
-            if attribute.kind == "id":
-                if attribute.name in attrs:  # a repeated section renames: drop the old name
-                    element._claim_identifier(attribute, value)  # pyright: ignore[reportPrivateUsage]
-                else:
-                    claim_first_name(element, attribute, value)
-        except Rejected as rejected:
-            error = element._reject(attribute, str(text), rejected)  # pyright: ignore[reportPrivateUsage]
-            raise context.error(str(error), source, source_line(node)) from None
-        except MjcfError as error:
-            raise context.error(str(error), source, source_line(node)) from None
-        attrs[attribute.name] = value
+                f"<{element.spec.tag}> has no attribute {_name(key)!r}"
+                f"{did_you_mean(_name(key), known)}", source, source_line(node))
+        if attribute.namespace_from is not None:
+            later.append((attribute, str(text)))
+            continue
+        _set_text(element, attribute, str(text), node, source, context)
+    for attribute, text in later:
+        _set_text(element, attribute, text, node, source, context)
 
 
-_NO_ATTRIBUTES: Final[Mapping[str, object]] = MappingProxyType({})
+def _set_text(element: Element, attribute: AttributeSpec, text: str, node: XmlNode,
+              source: str | None, context: _Context) -> None:
+    try:
+        _tree.assign_text(element, attribute, text)
+    except Rejected as rejected:
+        error = _tree.rejection(element, attribute, text, rejected)
+        raise context.error(str(error), source, source_line(node)) from None
+    except MjcfError as error:
+        raise context.error(str(error), source, source_line(node)) from None
+
 
 # Children still to read into an element: (element, its remaining XML children, the file
 # they are in, the element's depth in the assembled model (the root is 1), where the chain of
@@ -460,36 +457,29 @@ class _Builder:
             if tag == INCLUDE:
                 self.include(frame, child_node)
                 continue
-            child_spec = parent._SPEC.children.get(tag)  # pyright: ignore[reportPrivateUsage]
+            child_spec = parent.spec.children.get(tag)
             if child_spec is None:
                 legal = list(parent.spec.children)
                 raise context.error(
-                    f"<{_name(tag)}> is not a legal child of <{parent.tag}> ({parent.path})"
+                    f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
                     f"{did_you_mean(_name(tag), legal)}", source, source_line(child_node))
             if depth >= max_depth:
                 raise context.error(_limit_message(
                     f"<{tag}> is nested {depth + 1} deep", max_depth, "max_depth"),
                     source, source_line(child_node))
-            existing = parent._single_child(tag) if child_spec.single else None  # pyright: ignore[reportPrivateUsage]
+            existing = _tree.single_child(parent, tag) if child_spec.single else None
             if existing is not None:
                 # A repeated section: merge into the first.
                 check = self.merge(existing, child_node, source)
                 stack.append((existing, iter(child_node), source, depth + 1, existing, check))
                 continue
-            if child_spec.single:
-                try:
-                    child = parent._add_child(tag, None, _NO_ATTRIBUTES)  # pyright: ignore[reportPrivateUsage]
-                except MjcfError as error:
-                    raise context.error(str(error), source, source_line(child_node)) from None
-            else:
-                cls = child_spec.cls or child_class(child_spec)
-                child = append_child(parent, cls, None, _NO_ATTRIBUTES)
+            child = _tree.new_child(parent, child_spec)
             _set_attributes(child, child_node, source, context)
             child_top = child
-            if tag == parent.tag:
+            if tag == parent.spec.tag:
                 child_top = top
                 above = top.parent
-                if above is not None and above.spec.children[top.tag].single:
+                if above is not None and above.spec.children[top.spec.tag].single:
                     self.nested.append((child, top))  # a class of a section that may repeat
             if len(child_node):
                 stack.append((child, iter(child_node), source, depth + 1, child_top, None))
@@ -508,7 +498,7 @@ class _Builder:
         """Merge a repeated once-only section's attributes into the first one; return the
         check to run once its children are read too (see :class:`_Hierarchy`)."""
         context = self.context
-        if section.tag not in section.spec.children:
+        if section.spec.tag not in section.spec.children:
             _set_attributes(section, node, source, context)
             return None
         hierarchy = self.hierarchies.get(id(section))
@@ -536,10 +526,8 @@ class _Builder:
                 if hierarchy_class is None:
                     continue
                 element_tag, attribute = key
-                id_attribute = hierarchy_class.spec.id_attribute
-                name = (None if id_attribute is None
-                        else hierarchy_class._attrs.get(id_attribute.name))  # pyright: ignore[reportPrivateUsage]
-                label = repr(name) if isinstance(name, str) else hierarchy_class.path
+                name = _tree.element_name(hierarchy_class)
+                label = repr(name) if name is not None else hierarchy_class.path
                 saved, context.nesting = context.nesting, nesting
                 error = context.error(
                     f"this repeated <{section.tag}> section sets <{element_tag} {attribute}> "
@@ -639,22 +627,17 @@ class _Hierarchy:
 
 def _section_defaults(section: Element) -> dict[_Key, object]:
     """The attributes a section sets on its element children (not on nested classes)."""
-    spec = section.spec
-    if all(child.single for tag, child in spec.children.items() if tag != spec.tag):
-        singles = section._singles or {}  # pyright: ignore[reportPrivateUsage]
-        return {(tag, name): value for tag, child in singles.items() if tag != spec.tag
-                for name, value in child._attrs.items()}  # pyright: ignore[reportPrivateUsage]
     return _element_defaults(section)
 
 
 def _element_defaults(level: Element) -> dict[_Key, object]:
     """The attributes a hierarchy level sets on its element children, by (tag, attribute)."""
-    values: dict[_Key, object] = {}
-    for child in level._children:  # pyright: ignore[reportPrivateUsage]
-        if child.tag != level.tag:
-            for name, value in child._attrs.items():  # pyright: ignore[reportPrivateUsage]
-                values[(child.tag, name)] = value
-    return values
+    found: dict[_Key, object] = {}
+    for child in _tree.children(level):
+        if child.spec.tag != level.spec.tag:
+            for name, value in _tree.values(child).items():
+                found[(child.spec.tag, name)] = value
+    return found
 
 
 def _same_value(a: object, b: object) -> bool:

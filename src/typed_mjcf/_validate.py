@@ -19,10 +19,11 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal
 
-from typed_mjcf._element import _REGISTRY, Element  # pyright: ignore[reportPrivateUsage]
-from typed_mjcf._export import _is_empty_single  # pyright: ignore[reportPrivateUsage]
-from typed_mjcf._root import ModelRoot
-from typed_mjcf._spec import AttributeSpec, ElementSpec
+from typed_mjcf import _tree
+from typed_mjcf._export import is_empty_single
+from typed_mjcf._grammar import AttributeSpec, ElementSpec
+from typed_mjcf._names import NameScope
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidValueError, did_you_mean
 
@@ -50,40 +51,8 @@ RULES: Final[dict[Rule, str]] = {
     "unused-default": "a default class is used by some class= or childclass= (warning)",
 }
 
-# The class of the top-level <default>, and the world body: names MuJoCo defines itself.
-MAIN_CLASS: Final = "main"
-_BUILTIN_NAMES: Final[frozenset[tuple[str, str]]] = frozenset(
-    {("default", MAIN_CLASS), ("body", "world")})
+# The namespace of default classes: a reference there in a <default> class is only a warning.
 DEFAULT_NAMESPACE: Final = "default"
-
-# Hand-kept facts (neither the grammar nor the wheel states them):
-# - Assets named after their file: "If omitted, the mesh name equals the file name without the
-#   path and extension" (XMLreference.rst: mesh, hfield, texture; MuJoCo 4.0.0 does the same
-#   for skin, measured with MjSpec.from_string).
-_NAMED_AFTER_FILE: Final = frozenset({"mesh", "hfield", "texture", "skin"})
-# - An unnamed <model> asset takes the name of the model in its file, which is not read here.
-_NAMED_FROM_CONTENTS: Final = frozenset({"model"})
-# - <attach model="m" body="b"/> names a body (or frame) of the child model m, not of this one.
-_REFERS_INTO_CHILD_MODEL: Final = {"attach": ("model", frozenset({"body", "frame"}))}
-# - The element kind of objname/refname is given by objtype/reftype (sensors, tuple elements).
-_NAME_BY_TYPE: Final = (("objtype", "objname"), ("reftype", "refname"))
-_TYPE_NAMESPACES: Final = {"xbody": "body"}  # other words are their namespace's name
-# - The kinematic tree: <frame> is transparent (its children belong to the enclosing body or
-#   replicate). MuJoCo's parser refuses joints and inertia of the world body ("World body
-#   cannot have joints"), and joints whose enclosing element is a <replicate> ("joint cannot
-#   be a direct child of replicate"); measured with MuJoCo 4.0.0.
-_TREE: Final = frozenset({"worldbody", "body", "frame", "replicate"})
-_TRANSPARENT: Final = "frame"
-_JOINTS: Final = frozenset({"joint", "freejoint"})
-_INERTIA: Final = "inertial"
-# - <attach> without model= attaches part of this model: it needs body= or frame= ("either
-#   'body' or 'frame' attribute must be specified for self-attach").
-_SELF_ATTACH: Final = ("attach", "model", ("body", "frame"))
-# - MuJoCo 4.0.0 copies a sensor that refers to no object (clock, e_kinetic, user without
-#   objname, ...) once per <replicate> in the model, suffixing its name the same way each
-#   time: with two or more replicates a named one fails ("repeated name 'c0' in sensor").
-_REPLICATE: Final = "replicate"
-_SENSOR_SECTION: Final = "sensor"
 
 # Suggestions ("did you mean") compare a name with every name of its namespace: only the first
 # unresolved references get one, so that a broken model still validates in linear time.
@@ -131,7 +100,7 @@ def errors(findings: Iterable[Finding]) -> list[Finding]:
     return [f for f in findings if f.severity == "error"]
 
 
-def ensure_valid(model: ModelRoot) -> list[Finding]:
+def ensure_valid(model: ModelBase) -> list[Finding]:
     """Raise :class:`ValidationError` if the model has errors; else return its warnings."""
     findings = validate(model)
     if any(f.severity == "error" for f in findings):
@@ -150,12 +119,17 @@ class _Plan:
     required: tuple[AttributeSpec, ...]
     required_children: tuple[str, ...]
     references: tuple[AttributeSpec, ...]
-    typed_names: tuple[tuple[str, str], ...]
 
 
 @functools.cache
 def _rows_by_name() -> dict[str, ElementSpec]:
-    return {cls._SPEC.name: cls._SPEC for cls in _REGISTRY.values()}  # pyright: ignore[reportPrivateUsage]
+    return {cls.spec.name: cls.spec for cls in _tree.element_classes().values()}
+
+
+@functools.cache
+def _namespaces() -> frozenset[str]:
+    return frozenset(cls.spec.namespace for cls in _tree.element_classes().values()
+                     if cls.spec.namespace is not None)
 
 
 def _projection_constraints(spec: ElementSpec) -> list[tuple[str, tuple[tuple[str, ...], ...]]]:
@@ -176,13 +150,11 @@ def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
         # Attributes of default classes are optional by design: only exclusions apply.
         constraints = [c for c in constraints if c[0] == "exclusive"]
         constraints += [c for c in _projection_constraints(spec) if c not in constraints]
-    by_name = spec.by_name
     return _Plan(
         constraints=tuple(constraints),
         required=() if projection else tuple(a for a in spec.attributes if a.required),
         required_children=tuple(c.tag for c in spec.children.values() if c.card == "!"),
-        references=tuple(a for a in spec.attributes if a.kind == "ref" and a.namespace),
-        typed_names=tuple((t, n) for t, n in _NAME_BY_TYPE if t in by_name and n in by_name),
+        references=spec.references,
     )
 
 
@@ -203,7 +175,7 @@ class _Pending:
 
 @dataclass(slots=True)
 class _Pass:
-    model: ModelRoot
+    model: ModelBase
     namespaces: frozenset[str]
     found: list[tuple[int, int, Element, Rule, str, Severity]] = field(
         default_factory=list[tuple[int, int, Element, Rule, str, Severity]])
@@ -237,52 +209,46 @@ class _Pass:
                 for _, _, element, rule, message, severity in self.found]
 
 
-def _attributes(element: Element) -> dict[str, object]:
-    return element._attrs  # pyright: ignore[reportPrivateUsage]
-
-
-def _children(element: Element) -> Sequence[Element]:
-    return element._children  # pyright: ignore[reportPrivateUsage]
-
-
-def _root_of(element: Element) -> ModelRoot | None:
-    return element._root  # pyright: ignore[reportPrivateUsage]
-
-
 def _is_written(parent: Element, child: Element) -> bool:
     """Whether the exporter writes ``child`` (an empty once-only section is left out): only
     what MuJoCo reads is checked."""
-    return not _is_empty_single(parent, child)
+    return not is_empty_single(parent, child)
 
 
-def _name_of(element: Element) -> str | None:
-    id_attribute = element.spec.id_attribute
-    if id_attribute is None:
+Owner = Literal["world", "body", "replicate"]
+
+
+def _owner(element: Element, parent: Element | None, owner: Owner | None,
+           model: ModelBase) -> Owner | None:
+    """What encloses ``element``'s children in the kinematic tree: the world body, a body or
+    a replicate (frames are transparent); ``None`` outside the tree."""
+    facts = grammar_facts()
+    if not element.spec.holds_bodies or (owner is None and parent is not model):
         return None
-    name = _attributes(element).get(id_attribute.name)
-    return name if isinstance(name, str) else None
+    tag = element.spec.tag
+    if owner is None:
+        return "world"
+    if tag == facts.frame:
+        return owner
+    return "replicate" if tag == facts.replicate else "body"
 
 
-def validate(model: ModelRoot) -> list[Finding]:
+def validate(model: ModelBase) -> list[Finding]:
     """Every finding in ``model``, in document order; empty when MuJoCo's rules hold."""
-    state = _Pass(model, model.namespaces)
+    state = _Pass(model, _namespaces())
     order = 0
-    # (element, parent, the tag of the enclosing worldbody/body/replicate if in the tree)
-    stack: list[tuple[Element, Element | None, str | None]] = [(model, None, None)]
+    # (element, parent, what encloses it in the kinematic tree)
+    stack: list[tuple[Element, Element | None, Owner | None]] = [(model, None, None)]
     while stack:
         element, parent, owner = stack.pop()
         order += 1
-        tag = element.spec.tag
         projection = (parent is not None and parent.spec.namespace == DEFAULT_NAMESPACE
                       and element.spec.namespace != DEFAULT_NAMESPACE)
         _check_element(state, order, element, parent, projection)
         if owner is not None:
             _check_tree(state, order, element, owner)
-        if tag in _TREE and (owner is not None or parent is model):
-            owner = owner if tag == _TRANSPARENT else tag
-        else:
-            owner = None
-        for child in reversed(_children(element)):
+        owner = _owner(element, parent, owner, model)
+        for child in reversed(_tree.children(element)):
             if _is_written(element, child):
                 stack.append((child, element, owner))
     _resolve_pending(state)
@@ -294,9 +260,10 @@ def validate(model: ModelRoot) -> list[Finding]:
 def _check_element(state: _Pass, order: int, element: Element, parent: Element | None,
                    projection: bool) -> None:
     spec = element.spec
-    attrs = _attributes(element)
+    attrs = _tree.values(element)
     plan = state.plan(spec, projection)
     tag = spec.tag
+    facts = grammar_facts()
     for kind, bundles in plan.constraints:
         _check_constraint(state, order, element, attrs, kind, bundles)
     for attribute in plan.required:
@@ -304,7 +271,8 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
             state.add(order, element, "required-attribute",
                       f"<{tag}> requires the attribute {attribute.name!r}, which is not set")
     if plan.required_children:
-        present = {child.tag for child in _children(element) if _is_written(element, child)}
+        present = {child.spec.tag for child in _tree.children(element)
+                   if _is_written(element, child)}
         for child_tag in plan.required_children:
             if child_tag not in present:
                 state.add(order, element, "required-child",
@@ -312,8 +280,8 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
                           f"(an empty one is not written)")
     if spec.namespace is not None:
         _declare(state, order, element, parent, spec, attrs)
-    elif tag in _REFERS_INTO_CHILD_MODEL:
-        prefix = attrs.get("prefix")
+    elif facts.attach is not None and tag == facts.attach.tag:
+        prefix = attrs.get(facts.attach.prefix)
         if isinstance(prefix, str):
             state.prefixes.append(prefix)
     if plan.references:
@@ -322,44 +290,40 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
             value = attrs.get(attribute.name)
             if value is None or attribute.name in skipped:
                 continue
-            assert attribute.namespace is not None
-            _check_reference(state, order, element, attribute.name, attribute.namespace, value)
-    if tag == _REPLICATE:
+            namespace = _tree.reference_namespace(element, attribute)
+            if namespace is not None and namespace in state.namespaces:
+                _check_reference(state, order, element, attribute.name, namespace, value)
+    if tag == facts.replicate:
         state.replicates += 1
-        sep = attrs.get("sep")
+        sep = attrs.get(facts.replicate_separator)
         state.replicate_seps.add(sep if isinstance(sep, str) else "")
-    elif (parent is not None and parent.spec.tag == _SENSOR_SECTION and spec.namespace
-          and _name_of(element) is not None
-          and not any(a.name in attrs for a in plan.references)
-          and not any(name in attrs for _, name in plan.typed_names)):
+    elif (parent is not None and parent.spec.tag == facts.sensor_section and spec.namespace
+          and _tree.element_name(element) is not None
+          and not any(a.name in attrs for a in plan.references)):
         state.objectless_sensors.append((order, element))
-    for type_name, object_name in plan.typed_names:
-        word, name = attrs.get(type_name), attrs.get(object_name)
-        if isinstance(word, str) and isinstance(name, str):
-            namespace = _TYPE_NAMESPACES.get(word.lower(), word.lower())
-            if namespace in state.namespaces:
-                _check_reference(state, order, element, object_name, namespace, name)
 
 
-def _check_tree(state: _Pass, order: int, element: Element, owner: str) -> None:
+def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> None:
     """Rules of the kinematic tree: what the world body and replicates may hold."""
+    facts = grammar_facts()
     tag = element.spec.tag
-    if tag in _JOINTS and owner == "worldbody":
+    if tag in facts.joints and owner == "world":
         state.add(order, element, "world-body",
                   f"the world body cannot have joints: move the <{tag}> into a <body>")
-    elif tag in _JOINTS and owner == "replicate":
+    elif tag in facts.joints and owner == "replicate":
         state.add(order, element, "replicate-joint",
                   f"a <{tag}> cannot be a direct child of <replicate> (frames do not count): "
                   f"wrap it in a <body>")
-    elif tag == _INERTIA and owner == "worldbody":
+    elif tag == facts.inertia and owner == "world":
         state.add(order, element, "world-body",
                   "the world body cannot have inertia: move the <inertial> into a <body>")
-    elif tag == _SELF_ATTACH[0]:
-        attrs = _attributes(element)
-        if _SELF_ATTACH[1] not in attrs and not any(a in attrs for a in _SELF_ATTACH[2]):
+    elif facts.attach is not None and tag == facts.attach.tag:
+        attach = facts.attach
+        attrs = _tree.values(element)
+        if attach.model not in attrs and not any(a in attrs for a in attach.references):
             state.add(order, element, "self-attach",
-                      f"an <attach> without {_SELF_ATTACH[1]}= attaches from this model and "
-                      f"needs {' or '.join(a + '=' for a in _SELF_ATTACH[2])}")
+                      f"an <attach> without {attach.model}= attaches from this model and "
+                      f"needs {' or '.join(a + '=' for a in attach.references)}")
 
 
 def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[str, object],
@@ -400,13 +364,14 @@ def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
     """Record what the element defines: default classes, names MuJoCo derives."""
     namespace = spec.namespace
     assert namespace is not None
-    name = _name_of(element)
+    facts = grammar_facts()
+    name = _tree.element_name(element)
     if namespace == DEFAULT_NAMESPACE:
         top_level = parent is None or parent.spec.namespace != DEFAULT_NAMESPACE
         if top_level:
-            if name is not None and name != MAIN_CLASS:
+            if name is not None and name != facts.main_class:
                 state.add(order, element, "default-class",
-                          f"the top-level <default> is class {MAIN_CLASS!r}; it cannot be "
+                          f"the top-level <default> is class {facts.main_class!r}; it cannot be "
                           f"renamed {name!r} (nest a <default class={name!r}> in it)")
         elif name is None:
             state.add(order, element, "default-class",
@@ -416,8 +381,9 @@ def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
         return
     if name is not None:
         return
-    if namespace in _NAMED_AFTER_FILE:
-        file = attrs.get("file")
+    file_attribute = facts.named_after_file.get(namespace)
+    if file_attribute is not None:
+        file = attrs.get(file_attribute)
         stem: str | None = None
         if isinstance(file, str):
             base = file.replace("\\", "/").rsplit("/", 1)[-1]
@@ -426,26 +392,26 @@ def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
             stem = file.name or spec.tag  # as the asset writer names in-memory files
         if stem:
             state.implicit_names.setdefault(namespace, set()).add(stem)
-    elif namespace in _NAMED_FROM_CONTENTS:
+    elif namespace in facts.named_from_contents:
         state.unverifiable.add(namespace)
 
 
 def _child_model_references(spec: ElementSpec, attrs: dict[str, object]) -> frozenset[str]:
-    fact = _REFERS_INTO_CHILD_MODEL.get(spec.tag)
-    if fact is None or attrs.get(fact[0]) is None:
+    attach = grammar_facts().attach
+    if attach is None or spec.tag != attach.tag or attrs.get(attach.model) is None:
         return frozenset()
-    return fact[1]
+    return frozenset(attach.references)
 
 
 def _check_reference(state: _Pass, order: int, element: Element, attribute: str,
                      namespace: str, value: object) -> None:
-    model = state.model
     if isinstance(value, Element):
         _check_element_reference(state, order, element, attribute, value)
-        name = _name_of(value)
+        name = _tree.element_name(value)
     elif isinstance(value, str):
         name = value
-        if (namespace, name) not in _BUILTIN_NAMES and model.find(namespace, name) is None:
+        scope = _tree.scope_of(element)
+        if not _builtin(namespace, name) and scope.find(namespace, name) is None:
             in_default = (namespace != DEFAULT_NAMESPACE and element.parent is not None
                           and element.parent.spec.namespace == DEFAULT_NAMESPACE)
             state.pending.append(_Pending(order, element, attribute, namespace, name,
@@ -456,31 +422,38 @@ def _check_reference(state: _Pass, order: int, element: Element, attribute: str,
         state.used_classes.add(name)
 
 
+def _builtin(namespace: str, name: str) -> bool:
+    """Names MuJoCo defines itself: the class ``main`` and the world body."""
+    facts = grammar_facts()
+    return ((namespace == DEFAULT_NAMESPACE and name == facts.main_class)
+            or (namespace == facts.body and name == facts.world_body))
+
+
 def _check_element_reference(state: _Pass, order: int, element: Element, attribute: str,
                              target: Element) -> None:
-    if not element_in_model(state.model, target):
-        where = ("was removed from its model" if _root_of(target) is None
-                 else f"is {target.path} of another model")
+    if target.is_removed:
         state.add(order, element, "unresolved-reference",
-                  f"{attribute} refers to a <{target.tag}> that {where}")
-    elif _name_of(target) is None:
+                  f"{attribute} referred to a <{target.spec.tag}> that was removed from its "
+                  f"model (it lost its target)")
+    elif not element_in_model(state.model, target):
+        state.add(order, element, "unresolved-reference",
+                  f"{attribute} refers to {target.path}, of another model")
+    elif _tree.element_name(target) is None and not _is_main(target):
         state.add(order, element, "unresolved-reference",
                   f"{attribute} refers to {target.path}, which has no name")
 
 
-def element_in_model(model: ModelRoot, target: Element) -> bool:
-    """Whether an element-valued reference to ``target`` can be written for ``model``.
-
-    Extension point for attachments: an element of a model attached to ``model`` belongs
-    to it too (its reference is written with the scoped name)."""
-    root = _root_of(target)
-    while root is not None and root is not model:
-        frame = root.attachment_frame
-        root = None if frame is None else _root_of(frame)
-    return root is model
+def _is_main(element: Element) -> bool:
+    return element.spec.compose == "nest" and isinstance(element.parent, ModelBase)
 
 
-def _replicated_name(model: ModelRoot, namespace: str, name: str, seps: set[str]) -> bool:
+def element_in_model(model: ModelBase, target: Element) -> bool:
+    """Whether a reference to ``target`` can be written for ``model``: the target is in
+    ``model`` or in a model attached into it."""
+    return _tree.scope_of(target).is_within(_tree.scope_of(model))
+
+
+def _replicated_name(scope: NameScope, namespace: str, name: str, seps: set[str]) -> bool:
     """Whether ``name`` is a copy's name that <replicate> derives: ``base<sep><index>``, once
     per level of nested replicates."""
     for sep in seps:
@@ -488,24 +461,14 @@ def _replicated_name(model: ModelRoot, namespace: str, name: str, seps: set[str]
         base = name
         while (match := suffix.search(base)) is not None and match.start() > 0:
             base = base[: match.start()]
-            if model.find(namespace, base) is not None:
+            if scope.find(namespace, base) is not None:
                 return True
     return False
-
-
-def resolve_scoped(model: ModelRoot, namespace: str, name: str) -> bool:
-    """Whether a scoped name ``child/...`` names an element of a model attached to ``model``.
-
-    Extension point for attachments: ``model.find`` resolves scoped names once attached
-    models are part of the namespaces; until then there is nothing else to look in.
-    """
-    return model.find(namespace, name) is not None
 
 
 def _resolve_pending(state: _Pass) -> None:
     """Resolve the references the namespaces did not: names MuJoCo derives (asset files),
     names only MuJoCo can see (attached MJCF files), scoped names of attached models."""
-    model = state.model
     hints = _MAX_HINTS
     for ref in state.pending:
         namespace, name = ref.namespace, ref.name
@@ -513,9 +476,8 @@ def _resolve_pending(state: _Pass) -> None:
             continue
         if any(name.startswith(prefix) for prefix in state.prefixes):
             continue  # named by an <attach prefix=...> from a model only MuJoCo reads
-        if "/" in name and resolve_scoped(model, namespace, name):
-            continue
-        if _replicated_name(model, namespace, name, state.replicate_seps):
+        scope = _tree.scope_of(ref.element)
+        if _replicated_name(scope, namespace, name, state.replicate_seps):
             continue
         # In a default class the reference matters only to elements that use the class, and
         # MuJoCo accepts a class nobody uses it from: a warning there, an error elsewhere.
@@ -529,7 +491,7 @@ def _unresolved_message(state: _Pass, ref: _Pending, *, hint: bool) -> str:
     namespace, name = ref.namespace, ref.name
     suggestion = ""
     if hint:
-        identifiers = state.model._identifiers.get(namespace, {})  # pyright: ignore[reportPrivateUsage]
+        identifiers = _tree.scope_of(ref.element).names(namespace)
         suggestion = did_you_mean(name, [*identifiers, *state.implicit_names.get(namespace, ())])
     if namespace == DEFAULT_NAMESPACE:
         return (f"{ref.attribute}={name!r} names no default class (no <default "
@@ -545,7 +507,7 @@ def _check_replicated_sensors(state: _Pass) -> None:
         state.add(order, element, "replicate-names",
                   f"MuJoCo copies a <{element.tag}> that refers to no object once per "
                   f"<replicate>, with the same name each time: with {state.replicates} "
-                  f"replicates in the model, {_name_of(element)!r} would repeat; leave it "
+                  f"replicates in the model, {_tree.element_name(element)!r} would repeat; leave it "
                   f"unnamed")
 
 
@@ -557,7 +519,7 @@ def _check_unused_classes(state: _Pass) -> None:
         entry = state.classes.get(name)
         element: Element | None = None if entry is None else entry[1]
         while element is not None and element.spec.namespace == DEFAULT_NAMESPACE:
-            class_name = _name_of(element)
+            class_name = _tree.element_name(element)
             if class_name is None or class_name in used:
                 break
             used.add(class_name)

@@ -63,8 +63,17 @@ def escape(value: str) -> str:
     return value.translate(_ESCAPES) if _SPECIAL.search(value) else value
 
 
+MAX_INDENT = 60  # characters: deeper levels are indented no further, as libxml2 does
+
+
+def indent(level: int) -> str:
+    """Two spaces per level, up to :data:`MAX_INDENT` characters."""
+    return "  " * level if 2 * level <= MAX_INDENT else " " * MAX_INDENT
+
+
 def serialize(root: Node, pretty_print: bool = True) -> str:
-    """The XML text, indented by two spaces per level like lxml's pretty printing."""
+    """The XML text, indented by two spaces per level like lxml's pretty printing (and,
+    like libxml2, no deeper than :data:`MAX_INDENT` characters)."""
     parts: list[str] = []
     append = parts.append
     newline = "\n" if pretty_print else ""
@@ -74,15 +83,15 @@ def serialize(root: Node, pretty_print: bool = True) -> str:
         if isinstance(node, Chunk):
             append(node.render(depth, pretty_print))
             continue
-        indent = "  " * depth if pretty_print else ""
+        spaces = indent(depth) if pretty_print else ""
         if closing:
-            append(f"{indent}</{node.tag}>{newline}")
+            append(f"{spaces}</{node.tag}>{newline}")
             continue
         attributes = "".join([f' {k}="{escape(v)}"' for k, v in node.attrib.items()])
         if node.children:
-            append(f"{indent}<{node.tag}{attributes}>{newline}")
+            append(f"{spaces}<{node.tag}{attributes}>{newline}")
             stack.append((node, depth, True))
             stack.extend([(child, depth + 1, False) for child in reversed(node.children)])
         else:
-            append(f"{indent}<{node.tag}{attributes}/>{newline}")
+            append(f"{spaces}<{node.tag}{attributes}/>{newline}")
     return "".join(parts)

@@ -1,5 +1,6 @@
 """The library's errors. Every one derives from :class:`MjcfError` and from the builtin
-exception a Python user would expect (``ValueError``, ``TypeError`` or ``AttributeError``)."""
+exception a Python user would expect (``ValueError``, ``TypeError``, ``AttributeError`` or
+``OSError``), so code written for dm_control.mjcf catches them as it did."""
 
 from __future__ import annotations
 
@@ -19,12 +20,23 @@ class InvalidTypeError(MjcfError, TypeError):
     """A value of a Python type the attribute cannot take."""
 
 
+class InvalidReferenceError(InvalidValueError, InvalidTypeError):
+    """An element given where an element of another namespace is expected (a ``ValueError``
+    as in dm_control, and a ``TypeError``: it is of the wrong kind)."""
+
+
 class UnknownAttributeError(MjcfError, AttributeError):
     """An attribute the element's grammar does not have."""
 
 
 class ChildError(MjcfError, ValueError):
-    """A child that is illegal under its parent, or a second one of a kind allowed once."""
+    """A change to the tree the model cannot take: a second child of a kind allowed once,
+    an attachment that would clash, removing what cannot be removed."""
+
+
+class IllegalChildError(ChildError, AttributeError):
+    """A child the grammar does not allow under its parent (also an ``AttributeError``,
+    as in dm_control), or an assignment to a child property."""
 
 
 class DuplicateIdentifierError(InvalidValueError):

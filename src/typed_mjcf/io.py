@@ -9,21 +9,20 @@ from __future__ import annotations
 import os
 from typing import IO, TYPE_CHECKING, cast
 
-from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits
+from typed_mjcf._assets_io import export_with_assets as export
+from typed_mjcf._bridge import spec_to_xml
+from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, parse_path, parse_text
+from typed_mjcf._tree import ModelBase
 from typed_mjcf.errors import InvalidTypeError, ParseError
 
 if TYPE_CHECKING:
     import mujoco
-    from typed_mjcf_generated.elements import RootElement
 
-    from typed_mjcf._root import ModelRoot
+    from typed_mjcf._generated.elements import RootElement
 
 
-def _typed(model: ModelRoot) -> RootElement:
-    from typed_mjcf_generated.elements import RootElement
-
-    assert isinstance(model, RootElement)
-    return model
+def _typed(model: ModelBase) -> RootElement:
+    return cast("RootElement", model)
 
 
 def _folder(base_dir: object, what: str) -> str | None:
@@ -43,16 +42,12 @@ def from_xml_string(xml: str | bytes, *, base_dir: str | os.PathLike[str] | None
     current directory if not given); ``source`` names the text in error messages; ``limits``
     raises (or lowers) the bounds on size, depth and element count (see :class:`ParseLimits`).
     """
-    from typed_mjcf._parse import parse_text
-
     folder = _folder(base_dir, "base_dir")
     return _typed(parse_text(xml, base_dir=folder, source=source, limits=_limits(limits)))
 
 
 def from_path(path: str | os.PathLike[str], *, limits: ParseLimits | None = None) -> RootElement:
     """Parse an MJCF file; relative files and includes resolve against its folder."""
-    from typed_mjcf._parse import parse_path
-
     file = _folder(path, "path")
     if file is None:
         raise InvalidTypeError("path must be a path (str or os.PathLike), got None")
@@ -114,17 +109,13 @@ def _limits(limits: object) -> ParseLimits:
 
 def from_spec(spec: mujoco.MjSpec) -> RootElement:
     """Read a ``mujoco.MjSpec`` back into typed elements."""
-    from typed_mjcf._bridge import spec_to_xml
-
-    xml, assets = spec_to_xml(spec)
+    xml = spec_to_xml(spec)
     # The spec's files are relative to the folder of the file it was read from (if any).
     folder: object = getattr(spec, "modelfiledir", None)
-    model = from_xml_string(xml, base_dir=folder if isinstance(folder, str) and folder else None)
-    del assets
-    return model
+    return from_xml_string(xml, base_dir=folder if isinstance(folder, str) and folder else None)
 
 
-def export_with_assets(model: ModelRoot, directory: str | os.PathLike[str],
+def export_with_assets(model: ModelBase, directory: str | os.PathLike[str],
                        model_filename: str | None = None, *, overwrite: bool = False) -> str:
     """Write the model's XML and every file it uses into ``directory``; return the XML's path.
 
@@ -134,8 +125,6 @@ def export_with_assets(model: ModelRoot, directory: str | os.PathLike[str],
     as it is; one with different contents is an :class:`~typed_mjcf.ExportError` unless
     ``overwrite=True``, and then nothing is written.
     """
-    from typed_mjcf._assets_io import export_with_assets as export
-
     folder = _folder(directory, "directory")
     if folder is None:
         raise InvalidTypeError("directory must be a path (str or os.PathLike), got None")

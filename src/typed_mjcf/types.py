@@ -3,36 +3,73 @@
 from __future__ import annotations
 
 import os
-from typing import TypeAlias
+from collections.abc import Iterator
+from typing import Protocol, TypeAlias, TypeVar
 
 import numpy as np
+from lxml import etree
 
 from typed_mjcf.assets import Asset
 
 Float64Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
-"""What a ``double`` array attribute reads as."""
+"""What a ``double`` array attribute reads as (read-only: assign to change it)."""
 Float32Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.float32]]
-"""What a ``float`` array attribute reads as."""
+"""What a ``float`` array attribute reads as (read-only: assign to change it)."""
 Int32Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
-"""What an ``int`` array attribute reads as."""
+"""What an ``int`` array attribute reads as (read-only: assign to change it)."""
 
-FloatArrayLike: TypeAlias = (
-    np.ndarray[tuple[int, ...], np.dtype[np.float64]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.float32]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.int64]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.int32]]
-)
-"""numpy arrays a real-valued array attribute accepts (checked for length at assignment)."""
 IntArrayLike: TypeAlias = (
     np.ndarray[tuple[int, ...], np.dtype[np.int64]]
     | np.ndarray[tuple[int, ...], np.dtype[np.int32]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.int16]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.int8]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.uint64]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.uint32]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.uint16]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.uint8]]
 )
-"""numpy arrays an integer array attribute accepts."""
+"""numpy arrays an integer array attribute accepts: any integer dtype."""
+FloatArrayLike: TypeAlias = (
+    np.ndarray[tuple[int, ...], np.dtype[np.float64]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.float32]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.float16]]
+    | np.ndarray[tuple[int, ...], np.dtype[np.longdouble]]
+    | IntArrayLike
+)
+"""numpy arrays a real-valued array attribute accepts: any real dtype (the length is
+checked at assignment)."""
+
+Integer: TypeAlias = (
+    int | np.int64 | np.int32 | np.int16 | np.int8 | np.uint64 | np.uint32 | np.uint16
+    | np.uint8
+)
+"""An integer: an int or a numpy integer scalar (a float is refused: it would be truncated)."""
+Real: TypeAlias = float | np.float64 | np.float32 | np.float16 | np.longdouble | Integer
+"""A real number: a float, an int, or a numpy scalar (``np.float32(1.5)``, ``np.int64(3)``)."""
+
+_T_co = TypeVar("_T_co", covariant=True)
+
+
+class NumberList(Protocol[_T_co]):
+    """A list (or deque) of numbers, of any length (the length is checked when it is
+    assigned). Tuples are typed by their length instead (``pos=(1, 2)`` is a type error where
+    three numbers are expected), and numpy arrays by their dtype."""
+
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int, /) -> _T_co: ...
+    def __reversed__(self) -> Iterator[_T_co]: ...  # what numpy arrays lack: typed by dtype
+    def copy(self) -> object: ...  # what tuples lack: they are checked by their length
+
 
 FileLike: TypeAlias = str | os.PathLike[str] | Asset
 """A file attribute: a path, or contents held in memory."""
 
+# lxml names its element class only with a leading underscore; this is the one place that
+# names it.
+XmlElement: TypeAlias = etree._Element  # pyright: ignore[reportPrivateUsage]
+"""An lxml element (what ``to_xml()`` returns)."""
+
 __all__ = [
     "Asset", "FileLike", "Float32Array", "Float64Array", "FloatArrayLike", "Int32Array",
-    "IntArrayLike",
+    "IntArrayLike", "Integer", "NumberList", "Real", "XmlElement",
 ]

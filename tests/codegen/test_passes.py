@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from codegen import ir, passes
+from codegen import ir, passes, render
 from codegen.facts import AttributeOverride, Facts, FactsError, load_facts, parse_facts
 from codegen.grammar import parse_grammar
 from codegen.passes import normalize
@@ -154,7 +154,7 @@ ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
     ("[root_children\n", "f.toml: Expected ']' at the end of a table declaration"),
     ("[root_childern]\nbody = \"worldbody\"\n",
      ("f.toml: unknown table 'root_childern' (known tables: root_children, single, attribute, "
-      "directories, class_names, compose, attachment_sites, default_rows)")),
+      "directories, class_names, compose, attachment_sites, default_rows, language)")),
     ("[[attribute_type]]\nelement = \"a\"\n", "f.toml: unknown table 'attribute_type'"),
     ("root_children = 3\n", "f.toml: [root_children]: expected a table"),
     ("[root_children]\nbody = 1\n", "f.toml: [root_children] body: expected a string, got 1"),
@@ -389,13 +389,17 @@ def test_check_attribute_and_child_python_names() -> None:
 
 
 def test_check_reserved_names() -> None:
+    """An attribute may not take a runtime name; a child tag that has one takes a trailing
+    underscore instead (the rule the renderer applies)."""
     schema = normalized()
     schema.elements["body"].attributes.append(ir.AttributeDef("path", "path", "string"))
     schema.elements["model"].tag = "find"
     assert check_message(schema) == (
-        "2 schema problem(s):\n"
-        "  row 'asset': child name 'find' is reserved by the runtime API\n"
+        "1 schema problem(s):\n"
         "  row 'body': attribute name 'path' is reserved by the runtime API")
+    assert render.child_py_name("find") == "find_"
+    assert render.child_py_name("attach") == "attach_"
+    assert render.child_py_name("geom") == "geom"
 
 
 def test_check_dangling_references() -> None:

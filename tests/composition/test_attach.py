@@ -163,7 +163,8 @@ def test_nested_attachments_scope_twice() -> None:
     assert m.njnt == 5 and m.nkey == 1
     assert world.find("joint", "arm/gripper/joint1") is gripper.find("joint", "joint1")
     assert m.key_qpos.tolist() == [home(3) + home(2)]
-    assert gripper.namescope == "arm/gripper/"
+    assert gripper.full_identifier == "arm/gripper/"
+    assert gripper.namescope.full_prefix() == "arm/gripper/"
 
 
 def test_references_from_the_parent_to_attached_elements_are_scoped() -> None:

@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 
 import typed_mjcf as mjcf
 from typed_mjcf import Element
-from typed_mjcf._element import _REGISTRY  # pyright: ignore[reportPrivateUsage]
-from typed_mjcf._spec import AttributeSpec, ElementSpec
+from typed_mjcf._grammar import AttributeSpec, ElementSpec
+from typed_mjcf._tree import element_classes
 
 T = TypeVar("T")
 
@@ -136,7 +136,7 @@ def value_of(attribute: AttributeSpec, row: str = "") -> st.SearchStrategy[objec
 
 
 def _rows_by_name() -> dict[str, ElementSpec]:
-    return {cls._SPEC.name: cls._SPEC for cls in _REGISTRY.values()}  # pyright: ignore[reportPrivateUsage]
+    return {cls.spec.name: cls.spec for cls in element_classes().values()}
 
 
 ROWS = _rows_by_name()
@@ -211,7 +211,7 @@ class Builder:
             most: int = 4, unnamed: bool = False) -> Element:
         """Add a child with random attributes, the ``fixed`` ones, maybe a name and class."""
         child_spec = parent.spec.children[tag]
-        spec = _REGISTRY[child_spec.class_name]._SPEC  # pyright: ignore[reportPrivateUsage]
+        spec = element_classes()[child_spec.class_name].spec
         fixed = fixed or {}
         values = self.attributes(spec, skip=[*skip, *fixed], most=most)
         if (namespace is not None and spec.id_attribute is not None and self.chance(70)
@@ -280,7 +280,7 @@ class Builder:
                 continue
             spec = self.model.spec
             for tag in path:
-                spec = _REGISTRY[spec.children[tag].class_name]._SPEC  # pyright: ignore[reportPrivateUsage]
+                spec = element_classes()[spec.children[tag].class_name].spec
             values = self.attributes(spec)
             if not values:
                 # an empty section inside another is written as an empty tag that does not
@@ -398,7 +398,7 @@ class Builder:
                 transmissions = [("body", "body")]
             attribute, namespace = self.draw(st.sampled_from(transmissions))
             target = self.target(namespace)
-            spec = _REGISTRY[actuator.spec.children[tag].class_name]._SPEC  # pyright: ignore[reportPrivateUsage]
+            spec = element_classes()[actuator.spec.children[tag].class_name].spec
             fixed = None if target is None or attribute not in spec.by_name else {
                 attribute: target}
             self.add(actuator, tag, "actuator", fixed)

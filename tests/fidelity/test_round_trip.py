@@ -74,7 +74,10 @@ def _float_bits(values: object) -> list[bytes]:
 
 
 def _same_value(a: object, b: object) -> bool:
-    """Equal, and bit for bit for floats (so -0.0 != 0.0)."""
+    """Equal, and bit for bit for floats (so -0.0 != 0.0); a reference by its target's name."""
+    if isinstance(a, Element) or isinstance(b, Element):
+        a = a.get_attributes().get("name") if isinstance(a, Element) else a
+        b = b.get_attributes().get("name") if isinstance(b, Element) else b
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         a_array, b_array = np.asarray(a), np.asarray(b)
         return a_array.dtype == b_array.dtype and a_array.tobytes() == b_array.tobytes()

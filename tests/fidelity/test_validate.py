@@ -140,7 +140,7 @@ def test_together() -> None:
 
 def test_requires(monkeypatch: pytest.MonkeyPatch) -> None:
     # no row of MuJoCo 4.0.0's grammar has a requires constraint: give one to <site>
-    spec = mjcf.Site._SPEC  # pyright: ignore[reportPrivateUsage]
+    spec = mjcf.Site.spec
     monkeypatch.setattr(spec, "constraints", (("requires", (("fromto",), ("size",))),))
     model = mjcf.RootElement()
     model.worldbody.add_site(name="s", fromto=(0, 0, 0, 0, 0, 1))
@@ -178,8 +178,8 @@ def test_required_attribute() -> None:
 def test_required_attributes_are_not_required_in_default_classes(
         monkeypatch: pytest.MonkeyPatch) -> None:
     # no projection row keeps a required attribute in 4.0.0: make joint@type required
-    monkeypatch.setattr(mjcf.Joint._SPEC.by_name["type"], "required", True)  # pyright: ignore[reportPrivateUsage]
-    monkeypatch.setattr(mjcf.DefaultJoint._SPEC.by_name["type"], "required", True)  # pyright: ignore[reportPrivateUsage]
+    monkeypatch.setattr(mjcf.Joint.spec.by_name["type"], "required", True)
+    monkeypatch.setattr(mjcf.DefaultJoint.spec.by_name["type"], "required", True)
     model = mjcf.RootElement()
     model.default.joint.damping = (1.0,)
     model.worldbody.add_body(name="b").add_joint(name="j")
@@ -188,7 +188,7 @@ def test_required_attributes_are_not_required_in_default_classes(
 
 def test_required_child(monkeypatch: pytest.MonkeyPatch) -> None:
     # no row of MuJoCo 4.0.0's grammar has a required child: require <inertial> in <body>
-    monkeypatch.setattr(mjcf.Body._SPEC.children["inertial"], "card", "!")  # pyright: ignore[reportPrivateUsage]
+    monkeypatch.setattr(mjcf.Body.spec.children["inertial"], "card", "!")
     model = mjcf.RootElement()
     model.worldbody.add_body(name="with").add_inertial(pos=(0, 0, 0), mass=1)
     bare = model.worldbody.add_body(name="without")

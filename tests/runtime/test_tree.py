@@ -42,7 +42,7 @@ def test_insert_places_the_child_at_a_position(model: mjcf.RootElement) -> None:
 
 
 def test_illegal_child_is_refused_with_a_suggestion(model: mjcf.RootElement) -> None:
-    with pytest.raises(mjcf.ChildError, match=r"<motor> is not a legal child of <worldbody>"):
+    with pytest.raises(mjcf.ChildError, match=r"<motor> is not a valid child of <worldbody>"):
         model.worldbody.add("motor")
     with pytest.raises(mjcf.ChildError, match="did you mean 'geom'"):
         model.worldbody.add("goem")
@@ -52,7 +52,7 @@ def test_illegal_child_is_refused_with_a_suggestion(model: mjcf.RootElement) -> 
 
 def test_second_once_only_child_raises_value_error(model: mjcf.RootElement) -> None:
     model.compiler.angle = "radian"
-    with pytest.raises(ValueError, match="already has a <compiler>"):
+    with pytest.raises(ValueError, match="a <compiler> child already exists"):
         model.add("compiler")
     body = model.worldbody.body[0]
     body.add_inertial(pos=(0, 0, 0), mass=1.0)
@@ -185,8 +185,13 @@ def test_reference_by_element_is_written_as_its_name(model: mjcf.RootElement) ->
     elbow.name = "knee"  # the reference follows the element
     assert '<motor joint="knee"/>' in model.to_xml_string()
     unnamed = model.worldbody.body[0].body[0].geom[0]
-    with pytest.raises(mjcf.InvalidValueError, match="named element"):
-        model.contact.add_pair(geom1=unnamed, geom2="upper")
+    pair = model.contact.add_pair(geom1=unnamed, geom2="upper")  # named when written
+    assert pair.geom1 is unnamed and unnamed.name is None
+    text = model.to_xml_string()
+    assert '<pair geom1="unnamed_geom_0" geom2="upper"/>' in text
+    assert text.count('name="unnamed_geom_0"') == 1
+    reread = mjcf.from_xml_string(text)
+    assert reread.find("geom", "unnamed_geom_0") is not None
 
 
 def test_deepcopy_is_independent(model: mjcf.RootElement) -> None:
@@ -195,11 +200,21 @@ def test_deepcopy_is_independent(model: mjcf.RootElement) -> None:
     clone_motor = clone.actuator.motor[0]
     clone.find("joint", "shoulder").name = "hip"  # type: ignore[union-attr]
     assert model.find("joint", "shoulder") is not None
-    clone.worldbody.body[0].pos[2] = 5.0  # type: ignore[index]
+    clone.worldbody.body[0].pos = (0, 0, 5.0)
     assert model.worldbody.body[0].pos is not None and model.worldbody.body[0].pos[2] == 1.0
     assert clone_motor.root is clone
     shallow = copy.copy(model)
     assert shallow.to_xml_string() == model.to_xml_string()
+
+
+def test_arrays_read_back_cannot_change_the_model(model: mjcf.RootElement) -> None:
+    """What a property returns is read-only: changes go through assignment, and its checks."""
+    body = model.worldbody.body[0]
+    assert body.pos is not None
+    with pytest.raises(ValueError, match="read-only"):
+        body.pos[0] = 99
+    body.pos = (99, 0, 1)
+    assert body.pos.tolist() == [99, 0, 1]
 
 
 def test_deepcopy_remaps_element_references(model: mjcf.RootElement) -> None:

@@ -14,7 +14,9 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._export import Formatter, Writer, build, write_text
+from typed_mjcf._codecs import Format
+from typed_mjcf._export import Writer
+from typed_mjcf._write import element_text
 from typed_mjcf._xmltext import serialize
 from typed_mjcf.errors import ExportError, ParseError
 
@@ -32,16 +34,16 @@ def test_text_writer_and_node_writer_agree(path: Path) -> None:
     except ParseError:
         pytest.skip("typed-mjcf does not read it (tested in test_corpus)")
     for pretty in (True, False):
-        for formatter in (Formatter(), Formatter(precision=4, zero_threshold=1e-6)):
-            text = Writer(formatter, model).text(model, pretty)
-            assert text == serialize(build(model, formatter), pretty)
+        for fmt in (Format(), Format(precision=4, zero_threshold=1e-6), Format(canonical=True)):
+            text = Writer(model, fmt).text(model, pretty)
+            assert text == serialize(Writer(model, fmt).element(model, None), pretty)
 
 
 def test_text_writer_escapes_what_needs_escaping() -> None:
     model = mjcf.RootElement(model='a "quoted" <name> & more\tand a tab')
     model.worldbody.add_body(name="b&c")
-    text = write_text(model, Formatter(), pretty_print=False)
-    assert text == serialize(build(model, Formatter()), pretty_print=False)
+    text = element_text(model, Format(), pretty_print=False)
+    assert text == serialize(Writer(model).element(model, None), pretty_print=False)
     assert 'model="a &quot;quoted&quot; &lt;name&gt; &amp; more&#9;and a tab"' in text
     assert mjcf.from_xml_string(text).model == model.model
 

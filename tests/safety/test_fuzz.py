@@ -30,7 +30,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import typed_mjcf
-from typed_mjcf._element import _REGISTRY  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._tree import element_classes
 from typed_mjcf.errors import MjcfError
 
 from ..runtime.test_corpus import corpus
@@ -38,8 +38,8 @@ from ..runtime.test_corpus import corpus
 EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "500"))
 
 SEEDS: list[tuple[str, Path, bytes]] = [(ident, path, path.read_bytes()) for ident, path in corpus()]
-TAGS = sorted({cls._SPEC.tag for cls in _REGISTRY.values()} | {"include"})  # pyright: ignore[reportPrivateUsage]
-ATTRIBUTES = sorted({a.name for cls in _REGISTRY.values() for a in cls._SPEC.attributes})  # pyright: ignore[reportPrivateUsage]
+TAGS = sorted({cls.spec.tag for cls in element_classes().values()} | {"include"})
+ATTRIBUTES = sorted({a.name for cls in element_classes().values() for a in cls.spec.attributes})
 VALUES = [
     "", " ", "nan", "NaN", "inf", "-inf", "1e400", "-1e400", "1e-400", "0x10", "1_000",
     "\u0661\u0662", "1,2", "true", "false", "TRUE", "2147483648", "-2147483649",
@@ -51,7 +51,7 @@ Mutation = Callable[[bytes, random.Random], bytes]
 _CLOSING = re.compile(rb"</[A-Za-z_][\w.-]*\s*>")
 
 
-def _elements(root: etree._Element) -> list[etree._Element]:  # pyright: ignore[reportPrivateUsage]
+def _elements(root: etree._Element) -> list[etree._Element]:
     return [e for e in root.iter() if isinstance(e.tag, str)]
 
 

@@ -12,9 +12,9 @@ from tests.typing.any_audit import Audit
 # whatever is typed as a mujoco class is Any to them.
 MUJOCO_BOUNDARY = {
     "typed_mjcf.from_spec", "typed_mjcf.io.from_spec",
-    "typed_mjcf._root.ModelRoot.compile", "typed_mjcf._root.ModelRoot.to_spec",
-    "typed_mjcf_generated.elements.RootElement.compile (from ModelRoot)",
-    "typed_mjcf_generated.elements.RootElement.to_spec (from ModelRoot)",
+    "typed_mjcf._base.ModelRoot.compile", "typed_mjcf._base.ModelRoot.to_spec",
+    "typed_mjcf._generated.elements.RootElement.compile (from ModelRoot)",
+    "typed_mjcf._generated.elements.RootElement.to_spec (from ModelRoot)",
 }
 
 

@@ -27,7 +27,7 @@ from typing import IO, cast
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._element import Element
+from typed_mjcf import Element
 
 ROOT = Path(__file__).resolve().parents[2]
 TIMEOUT = 60.0
@@ -205,17 +205,17 @@ def test_add_completion_lists_exactly_the_legal_children(
     name = expression.replace(".", "_")
     items = complete_at_end(server, name, f"{expression}.add_")
     offered = {str(item["label"]) for item in items if str(item["label"]).startswith("add_")}
-    legal = {"add_" + tag for tag in cls._SPEC.children}  # pyright: ignore[reportPrivateUsage]
+    legal = {"add_" + tag for tag in cls.spec.children}
     offered -= GENERIC_ADDERS
     assert offered == legal, (
-        f"completion after {expression}.add_ (<{cls._SPEC.tag}>):\n"  # pyright: ignore[reportPrivateUsage]
+        f"completion after {expression}.add_ (<{cls.spec.tag}>):\n"
         f"  missing: {sorted(legal - offered)}\n  not legal: {sorted(offered - legal)}")
 
 
 def test_generic_adders_do_not_shadow_tags() -> None:
     """``add_<tag>`` belongs to the grammar; a runtime method named ``add_...`` must not
     take a tag's name (it also shows up in every ``.add_`` completion)."""
-    tags = {cls._SPEC.tag for cls in ELEMENT_CLASSES}  # pyright: ignore[reportPrivateUsage]
+    tags = {cls.spec.tag for cls in ELEMENT_CLASSES}
     assert not {name.removeprefix("add_") for name in GENERIC_ADDERS} & tags
 
 
@@ -223,7 +223,7 @@ def test_keyword_completion_lists_the_attributes(server: LanguageServer) -> None
     items = complete_at_end(server, "kwargs", "body.add_geom(")
     offered = {str(item["label"]).removesuffix("=") for item in items
                if str(item["label"]).endswith("=")}
-    attributes = {a.py_name for a in mjcf.Geom._SPEC.attributes}  # pyright: ignore[reportPrivateUsage]
+    attributes = {a.py_name for a in mjcf.Geom.spec.attributes}
     assert offered == attributes, (f"missing: {sorted(attributes - offered)}; "
                                    f"extra: {sorted(offered - attributes)}")
 
@@ -237,7 +237,7 @@ def hover_on(server: LanguageServer, name: str, expression: str) -> str:
 
 def test_hover_on_a_property_shows_type_and_docs(server: LanguageServer) -> None:
     text = hover_on(server, "joint_type", "joint.type")
-    assert "type: Literal['free', 'ball', 'slide', 'hinge'] | None" in text, text
+    assert "type: JointType | None" in text, text  # the keyword set by its public name
     assert "one of: free, ball, slide, hinge" in text, text
     assert 'Default: "hinge"' in text, text
     assert "https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type" in text

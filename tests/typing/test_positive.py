@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import copy
 import io
-from collections.abc import Sequence
 from pathlib import Path
 from typing import Literal, assert_type
 
@@ -69,12 +68,14 @@ def build() -> mjcf.RootElement:
     # a tag only known at run time falls back to the untyped base class
     assert_type(fore.add(known_at_run_time("site")), mjcf.Element)
 
-    # child lists by tag
-    assert_type(arm.geom, list[mjcf.Geom])
-    assert_type(arm.body, list[mjcf.Body])
-    assert_type(arm.joint, list[mjcf.Joint])
-    assert_type(model.worldbody.body, list[mjcf.Body])
-    assert_type(model.actuator.motor, list[mjcf.Motor])
+    # child lists by tag: live views, indexed by position or name
+    assert_type(arm.geom, mjcf.ElementList[mjcf.Geom])
+    assert_type(arm.body, mjcf.ElementList[mjcf.Body])
+    assert_type(arm.joint, mjcf.ElementList[mjcf.Joint])
+    assert_type(model.worldbody.body, mjcf.ElementList[mjcf.Body])
+    assert_type(model.actuator.motor, mjcf.ElementList[mjcf.Motor])
+    assert_type(model.worldbody.body["upper_arm"], mjcf.Body)
+    assert_type(arm.geom[0:1], list[mjcf.Geom])
     fore.geom[0].rgba = (1, 0, 0, 1)
 
     # property getters
@@ -127,12 +128,13 @@ def test_build_compile_and_query(tmp_path: Path) -> None:
     assert_type(model.find("body", "upper_arm"), mjcf.Body | None)
     assert_type(model.find("geom", "g"), mjcf.Geom | None)
     assert_type(model.find("tendon", "t"), mjcf.Fixed | mjcf.Spatial | None)
-    assert_type(model.find_all("geom"), Sequence[mjcf.Geom])
-    assert_type(model.find_all("body"), Sequence[mjcf.Body])
-    assert_type(model.find_all("joint"), Sequence[mjcf.Freejoint | mjcf.Joint])
-    namespace = known_at_run_time("site")
-    assert_type(model.find(namespace, "tip"), mjcf.Element | None)
-    assert_type(model.find_all(namespace), Sequence[mjcf.Element])
+    assert_type(model.find_all("geom"), list[mjcf.Geom])
+    assert_type(model.find_all("body"), list[mjcf.Body])
+    assert_type(model.find_all("joint"), list[mjcf.Freejoint | mjcf.Joint])
+    namespace: mjcf.Namespace = "site" if known_at_run_time("site") else "geom"
+    found = model.find(namespace, "tip")  # a namespace known at run time: any element
+    assert found is None or isinstance(found, mjcf.Element)
+    assert all(isinstance(e, mjcf.Element) for e in model.find_all(namespace))
     joint = model.find("joint", "shoulder")
     assert joint is not None
     assert_type(joint.name, str | None)  # common to <joint> and <freejoint>
@@ -157,7 +159,7 @@ def test_build_compile_and_query(tmp_path: Path) -> None:
     parsed = mjcf.from_xml_string(xml)
     assert_type(parsed, mjcf.RootElement)
     assert isinstance(parsed, mjcf.RootElement)
-    assert_type(parsed.worldbody.body[0].geom, list[mjcf.Geom])
+    assert_type(parsed.worldbody.body[0].geom, mjcf.ElementList[mjcf.Geom])
     path = tmp_path / "arm.xml"
     path.write_text(xml, encoding="utf-8")
     assert_type(mjcf.from_path(path), mjcf.RootElement)

@@ -217,15 +217,15 @@ def compare(checker: Checker, path: Path, expected: Expected,
 
 
 def test_packages_are_marked_typed() -> None:
-    """Without ``py.typed`` mypy treats an installed package as untyped (everything Any)."""
-    import typed_mjcf_generated
-
+    """Without ``py.typed`` mypy treats an installed package as untyped (everything Any); the
+    generated classes are part of ``typed_mjcf`` (one package, one marker)."""
     import typed_mjcf
+    import typed_mjcf._generated
 
-    for package in (typed_mjcf, typed_mjcf_generated):
-        assert package.__file__ is not None
-        marker = Path(package.__file__).parent / "py.typed"
-        assert marker.is_file(), f"{marker} is missing: type checkers will ignore the package"
+    assert typed_mjcf.__file__ is not None and typed_mjcf._generated.__file__ is not None
+    marker = Path(typed_mjcf.__file__).parent / "py.typed"
+    assert marker.is_file(), f"{marker} is missing: type checkers will ignore the package"
+    assert Path(typed_mjcf._generated.__file__).parent.parent == marker.parent
 
 
 def test_there_are_cases() -> None:

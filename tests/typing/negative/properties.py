@@ -27,5 +27,5 @@ mass: float = fresh.mass  # E: mypy[assignment] pyright[reportAssignmentType]
 joint_type: str = body.add_joint().type  # E: mypy[assignment] pyright[reportAssignmentType]
 
 # child properties are read-only: add or remove children instead
-body.geom = []  # E: mypy[misc] pyright[reportAttributeAccessIssue]
+body.geom = body.geom  # E: mypy[misc] pyright[reportAttributeAccessIssue]
 model.compiler = model.compiler  # E: mypy[misc] pyright[reportAttributeAccessIssue]

@@ -1,0 +1,571 @@
+"""One codec per attribute kind: MJCF text in, a Python value in, text out.
+
+Every route that reads or writes a value goes through its attribute's codec: assignment and
+``add()`` (:meth:`Codec.accept`), parsing (:meth:`Codec.parse`), reading a property
+(:meth:`Codec.read`), and every export, keyframe composition included (:meth:`Codec.write`,
+with the export's :class:`Format`).
+
+Numbers read from a file are kept as the text they were read as, once a compiled pattern has
+checked it (a value that fails the pattern is converted at once, so every error is still
+raised at load): reading converts that text (each time; the array is read-only), and an export
+with default options writes it back as it was read. Values set from Python are stored
+converted and written canonically (floats in the shortest form that reads back exactly).
+
+A codec raises :class:`Rejected` saying what it expected; the element turns that into an
+error naming its path, the attribute and the value.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from collections.abc import Callable, Iterable, Sequence
+from fractions import Fraction
+from typing import Final, SupportsFloat, SupportsIndex, cast
+
+import numpy as np
+
+from typed_mjcf.assets import Asset
+from typed_mjcf.errors import InvalidTypeError, InvalidValueError, MjcfError, did_you_mean
+
+Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
+Float64Array = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
+Float32Array = np.ndarray[tuple[int, ...], np.dtype[np.float32]]
+
+INT32_MIN: Final = -(2**31)
+INT32_MAX: Final = 2**31 - 1
+DTYPES: Final[dict[str, type[np.generic]]] = {
+    "double": np.float64, "float": np.float32, "int": np.int32}
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"  # what MJCF files spell numbers as
+_INTEGER = r"[-+]?\d{1,9}"  # at most nine digits: always within 32 bits
+
+
+class Rejected(Exception):
+    """A value the attribute cannot take, with what it expected."""
+
+    def __init__(self, expected: str, error: type[MjcfError] = InvalidValueError) -> None:
+        super().__init__(expected)
+        self.expected = expected
+        self.error = error
+
+
+def _type_rejected(expected: str) -> Rejected:
+    return Rejected(expected, InvalidTypeError)
+
+
+class Format:
+    """Export options, applied by every codec the same way."""
+
+    __slots__ = ("canonical", "plain", "precision", "zero_threshold")
+
+    precision: int | None
+    zero_threshold: float
+    canonical: bool
+    plain: bool
+
+    def __init__(self, precision: int | None = None, zero_threshold: float = 0.0,
+                 canonical: bool = False) -> None:
+        _check_option("precision", precision, lambda x: isinstance(x, int) and x >= 1,
+                      "a positive int", allow_none=True)
+        _check_option("zero_threshold", zero_threshold,
+                      lambda x: isinstance(x, int | float) and x >= 0, "a non-negative number")
+        self.precision = precision
+        self.zero_threshold = float(zero_threshold)
+        self.canonical = canonical
+        # no option: numbers read from a file are written as they were read
+        self.plain = precision is None and not zero_threshold and not canonical
+
+    def number(self, x: float, single: bool = False) -> str:
+        """One number: shortest round-trip form (of a float32 when ``single``), unless the
+        options say otherwise."""
+        if self.zero_threshold and abs(x) < self.zero_threshold:
+            return "0"
+        if self.precision is not None:
+            return format(x, f".{self.precision}g")
+        if single:
+            return str(np.float32(x)).removesuffix(".0")
+        return repr(x).removesuffix(".0")
+
+    def numbers(self, values: Sequence[float], single: bool = False) -> str:
+        if not self.zero_threshold and self.precision is None and not single:
+            return shortest_doubles(values)
+        return " ".join([self.number(x, single) for x in values])
+
+
+def _check_option(name: str, value: object, valid: Callable[[object], bool], expected: str,
+                  allow_none: bool = False) -> None:
+    if (value is None and allow_none) or (not isinstance(value, bool) and valid(value)):
+        return
+    raise InvalidValueError(f"{name} must be {expected}, got {value!r}")
+
+
+DEFAULT_FORMAT: Final = Format()
+
+
+def shortest_doubles(values: Iterable[float]) -> str:
+    """Space-separated shortest forms: one C-level join, then drop each trailing ".0"."""
+    text = " ".join(map(repr, values)).replace(".0 ", " ")
+    return text.removesuffix(".0")
+
+
+# ---------------------------------------------------------------------------- the interface
+
+
+class Codec:
+    """Text in, Python value in, text out, for one kind of attribute."""
+
+    __slots__ = ()
+
+    lazy: bool = False  # stores checked text from files, converted when read
+
+    def accept(self, value: object) -> object:
+        """A value given in Python, as stored; raises :class:`Rejected`."""
+        raise NotImplementedError
+
+    def parse(self, text: str) -> object:
+        """Text read from a file, as stored (possibly that text, checked); raises
+        :class:`Rejected`."""
+        return self.accept(text)
+
+    def read(self, stored: object) -> object:
+        """What a property returns for a stored value."""
+        return stored
+
+    def write(self, stored: object, fmt: Format) -> str:
+        """The stored value as attribute text."""
+        return cast(str, stored)
+
+
+class StringCodec(Codec):
+    __slots__ = ("pattern",)
+
+    def __init__(self, pattern: str | None) -> None:
+        self.pattern = None if pattern is None else re.compile(pattern)
+
+    def accept(self, value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a string")
+        if not value:
+            raise Rejected("a non-empty string")
+        if self.pattern is not None and self.pattern.fullmatch(value) is None:
+            raise Rejected(f"text matching {self.pattern.pattern!r}")
+        return value
+
+
+class CharsCodec(StringCodec):
+    __slots__ = ("hi", "lo")
+
+    def __init__(self, pattern: str | None, lo: int, hi: int | None) -> None:
+        super().__init__(pattern)
+        self.lo, self.hi = lo, hi
+
+    def accept(self, value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a string")
+        if not (self.lo <= len(value) and (self.hi is None or len(value) <= self.hi)):
+            raise Rejected(f"{count_text(self.lo, self.hi)} characters")
+        if self.pattern is not None and self.pattern.fullmatch(value) is None:
+            raise Rejected(f"text matching {self.pattern.pattern!r}")
+        return value
+
+
+class IdentifierCodec(Codec):
+    """A name: from Python without ``/`` (it separates the scopes of attached models); from
+    files as written (MuJoCo accepts ``/`` in names and real models use it)."""
+
+    __slots__ = ()
+
+    def accept(self, value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a name (string)")
+        if not value:
+            raise Rejected("a non-empty name")
+        if "/" in value:
+            raise Rejected("a name without '/' (it separates the scopes of attached models; "
+                           "names read from files may have one)")
+        return value
+
+    def parse(self, text: str) -> object:
+        return text
+
+
+class ReferenceCodec(Codec):
+    """A name of another element, as text (the tree stores element links itself)."""
+
+    __slots__ = ()
+
+    def accept(self, value: object) -> object:
+        if not isinstance(value, str):
+            raise _type_rejected("a name or an element")
+        if not value:
+            raise Rejected("a non-empty name")
+        return value
+
+
+class FileCodec(Codec):
+    __slots__ = ()
+
+    def accept(self, value: object) -> object:
+        if isinstance(value, Asset):
+            return value
+        if isinstance(value, os.PathLike):
+            value = os.fspath(cast("os.PathLike[str]", value))
+        if not isinstance(value, str):
+            raise _type_rejected("a file path or a typed_mjcf.Asset")
+        if not value:
+            raise Rejected("a non-empty file path")
+        return value
+
+
+_TRUE_FALSE: Final = {"true": True, "false": False}
+
+
+class BoolCodec(Codec):
+    __slots__ = ()
+
+    def accept(self, value: object) -> object:
+        if value is True or value is False:
+            return value
+        if isinstance(value, np.bool_):
+            return bool(cast(object, value))
+        if isinstance(value, str):
+            found = _TRUE_FALSE.get(value.lower())
+            if found is None:
+                raise Rejected("true or false" + did_you_mean(value, _TRUE_FALSE))
+            return found
+        raise _type_rejected("a bool")
+
+    def write(self, stored: object, fmt: Format) -> str:
+        return "true" if stored else "false"
+
+
+def to_int(value: object) -> int:
+    """An integer attribute's value, refusing what would be truncated or overflow."""
+    if type(value) is int:
+        result = value
+    elif isinstance(value, bool | np.bool_):
+        raise _type_rejected("an integer")
+    elif isinstance(value, int | np.integer):
+        result = int(cast(SupportsIndex, value))
+    elif isinstance(value, float | np.floating):
+        f = float(cast(SupportsFloat, value))
+        if not f.is_integer():
+            raise Rejected("an integer (the value would be truncated)")
+        result = int(f)
+    elif isinstance(value, str):
+        try:
+            result = int(value)
+        except ValueError:
+            raise Rejected("an integer") from None
+    else:
+        raise _type_rejected("an integer")
+    if not INT32_MIN <= result <= INT32_MAX:
+        raise Rejected("an integer that fits in 32 bits")
+    return result
+
+
+def to_float(value: object) -> float:
+    """A real attribute's value."""
+    if type(value) is float:
+        return value
+    if isinstance(value, bool | np.bool_):
+        raise _type_rejected("a number")
+    if isinstance(value, int | float | np.integer | np.floating):
+        return float(cast(SupportsFloat, value))
+    if isinstance(value, str):
+        try:
+            return float(value)
+        except ValueError:
+            raise Rejected("a number") from None
+    raise _type_rejected("a number")
+
+
+class IntCodec(Codec):
+    __slots__ = ()
+
+    def accept(self, value: object) -> object:
+        return to_int(value)
+
+    def write(self, stored: object, fmt: Format) -> str:
+        return str(stored)
+
+
+class RealCodec(Codec):
+    """One number. Text from a file is checked by converting it, and kept."""
+
+    __slots__ = ("single",)
+    lazy = True
+
+    def __init__(self, single: bool) -> None:
+        self.single = single
+
+    def accept(self, value: object) -> object:
+        return to_float(value)
+
+    def parse(self, text: str) -> object:
+        to_float(text)
+        return text
+
+    def read(self, stored: object) -> object:
+        return to_float(stored) if type(stored) is str else stored
+
+    def write(self, stored: object, fmt: Format) -> str:
+        if type(stored) is str:
+            if fmt.plain:
+                return stored
+            stored = to_float(stored)
+        return fmt.number(cast(float, stored), self.single)
+
+
+# ---------------------------------------------------------------------------- arrays
+
+
+def count_text(lo: int, hi: int | None) -> str:
+    if hi is None:
+        return f"at least {lo}" if lo else "any number of"
+    return f"{lo}" if lo == hi else f"{lo} to {hi}"
+
+
+def _text_to_float32(text: str) -> np.float32:
+    """MJCF text read as MuJoCo reads a float: rounded once, to the nearest float32.
+
+    Going through a double rounds twice; that differs only when the double lands exactly
+    halfway between two float32 values, so only then is the text compared exactly.
+    """
+    double = to_float(text)
+    single = np.float32(double)
+    if float(single) == double or not math.isfinite(double):
+        return single
+    other = np.nextafter(single, np.float32(math.copysign(math.inf, double - float(single))))
+    if double - float(single) != float(other) - double:
+        return single
+    exact, midpoint = Fraction(text.strip()), (Fraction(float(single)) + Fraction(float(other))) / 2
+    if exact == midpoint:
+        return single  # a true tie: round half to even, as the cast did
+    closer = abs(exact - Fraction(float(other))) < abs(exact - Fraction(float(single)))
+    return other if closer else single
+
+
+def _doubles_to_float32(doubles: Float64Array, parts: list[str]) -> Float32Array:
+    """Round to float32 as MuJoCo does; only exact halfway doubles need the text again."""
+    singles = doubles.astype(np.float32)
+    back = singles.astype(np.float64)
+    toward = np.nextafter(singles, np.where(doubles > back, np.float32(np.inf),
+                                            np.float32(-np.inf)).astype(np.float32))
+    ties = np.flatnonzero((back != doubles) & np.isfinite(doubles)
+                          & (doubles - back == toward.astype(np.float64) - doubles))
+    for i in ties.tolist():
+        singles[i] = _text_to_float32(parts[i])
+    return singles
+
+
+def _frozen(array: Array) -> Array:
+    array.flags.writeable = False  # read back as it is stored: changes go through assignment
+    return array
+
+
+class ArrayCodec(Codec):
+    """A list of numbers of a fixed or bounded length, stored as a read-only numpy array."""
+
+    __slots__ = ("dtype", "expected", "hi", "is_int", "lo", "pattern", "plain_types", "single")
+    lazy = True
+
+    def __init__(self, kind: str, dtype: str, lo: int, hi: int | None) -> None:
+        self.lo, self.hi = lo, hi
+        self.is_int = kind == "int"
+        self.dtype = DTYPES[dtype]
+        self.single = dtype == "float"
+        self.plain_types = frozenset({int}) if self.is_int else frozenset({int, float})
+        self.expected = f"{count_text(lo, hi)} {'integers' if self.is_int else 'numbers'}"
+        number = _INTEGER if self.is_int else _NUMBER
+        low, high = max(lo - 1, 0), "" if hi is None else str(max(hi - 1, 0))
+        repeat = f"(?:\\s+{number}){{{low},{high}}}"
+        self.pattern = re.compile(f"\\s*{number}{repeat}\\s*" if hi != 0 else r"\s*")
+
+    def accept(self, value: object) -> object:
+        kind = type(value)
+        if kind is tuple or kind is list:  # the common case: a few plain Python numbers
+            items = cast("tuple[object, ...] | list[object]", value)
+            n = len(items)
+            hi = self.hi
+            if self.lo <= n and (hi is None or n <= hi) and self.plain_types.issuperset(
+                    map(type, items)):
+                try:
+                    return _frozen(np.array(items, self.dtype))
+                except OverflowError:
+                    raise Rejected(f"{self.expected} that fit in 32 bits") from None
+        try:
+            array = self.from_text(cast(str, value)) if kind is str else self._to_array(value)
+        except Rejected as rejected:
+            if rejected.expected.startswith(self.expected):
+                raise
+            raise Rejected(self.expected, rejected.error) from None
+        self._check_length(array.shape[0])
+        return _frozen(array)
+
+    def parse(self, text: str) -> object:
+        if self.pattern.fullmatch(text) is not None:
+            return text
+        array = self.from_text(text)
+        self._check_length(array.shape[0])
+        return _frozen(array)
+
+    def read(self, stored: object) -> object:
+        if type(stored) is str:
+            return _frozen(self.from_text(stored))
+        return stored
+
+    def write(self, stored: object, fmt: Format) -> str:
+        if type(stored) is str:
+            if fmt.plain:
+                return stored
+            stored = self.from_text(stored)
+        array = cast(Array, stored)
+        if self.is_int:
+            return " ".join(map(str, array.tolist()))
+        return fmt.numbers(cast(list[float], array.tolist()), self.single)
+
+    def _check_length(self, n: int) -> None:
+        if n < self.lo or (self.hi is not None and n > self.hi):
+            raise Rejected(f"{self.expected}, got {n}")
+
+    def from_text(self, text: str) -> Array:
+        parts = text.split()
+        if self.hi is not None and len(parts) > self.hi:  # refuse before converting millions
+            raise Rejected(f"{self.expected}, got {len(parts)}")
+        try:  # C-level conversion; on any trouble, the per-item path says what was wrong
+            if self.is_int:
+                return np.array(list(map(int, parts)), dtype=self.dtype)
+            doubles = np.fromiter(map(float, parts), np.float64, len(parts))
+        except (ValueError, OverflowError):
+            converter = to_int if self.is_int else to_float
+            return np.array([converter(p) for p in parts], dtype=self.dtype)
+        if self.single:
+            return _doubles_to_float32(doubles, parts)
+        return doubles
+
+    def _to_array(self, value: object) -> Array:
+        if isinstance(value, np.ndarray):
+            return self._from_numpy(cast(Array, value))
+        if isinstance(value, int | float | np.integer | np.floating) and not isinstance(
+                value, bool | np.bool_):
+            return self._from_items([value])
+        if isinstance(value, Iterable):
+            return self._from_items(list(cast(Iterable[object], value)))
+        raise _type_rejected(self.expected)
+
+    def _from_items(self, items: list[object]) -> Array:
+        if self.is_int:
+            return np.array([to_int(x) for x in items], dtype=self.dtype)
+        return np.array([to_float(x) for x in items], dtype=self.dtype)
+
+    def _from_numpy(self, value: Array) -> Array:
+        if value.ndim == 0:
+            return self._from_items([value.item()])
+        if value.ndim != 1:
+            raise Rejected(f"{self.expected} in a flat sequence")
+        kind = value.dtype.kind
+        if kind in "iu" or (kind == "f" and not self.is_int):
+            if self.is_int and value.size and (value.min() < INT32_MIN or value.max() > INT32_MAX):
+                raise Rejected(f"{self.expected} that fit in 32 bits")
+            return value.astype(self.dtype)
+        if kind == "f":  # floats for an integer attribute: only if none would be truncated
+            return self._from_items(cast(list[object], value.tolist()))
+        raise _type_rejected(f"{self.expected} (got an array of dtype {value.dtype})")
+
+
+# ---------------------------------------------------------------------------- keywords
+
+
+class KeywordCodec(Codec):
+    __slots__ = ("keywords", "listing", "lookup", "takes_bool")
+
+    def __init__(self, keywords: tuple[str, ...]) -> None:
+        self.keywords = keywords
+        self.lookup = {k.lower(): k for k in keywords}
+        self.takes_bool = "true" in self.lookup and "false" in self.lookup
+        self.listing = ", ".join(repr(k) for k in keywords)
+
+    def accept(self, value: object) -> object:
+        if self.takes_bool and (value is True or value is False):
+            return "true" if value else "false"
+        if not isinstance(value, str):
+            raise _type_rejected(f"one of {self.listing}")
+        found = self.lookup.get(value.lower())
+        if found is None:
+            raise Rejected(f"one of {self.listing}" + did_you_mean(value, self.keywords))
+        return found
+
+
+class FlagsCodec(Codec):
+    __slots__ = ("keywords", "listing", "lookup", "order")
+
+    def __init__(self, keywords: tuple[str, ...]) -> None:
+        self.keywords = keywords
+        self.lookup = {k.lower(): k for k in keywords}
+        self.order = {k: i for i, k in enumerate(keywords)}
+        self.listing = ", ".join(repr(k) for k in keywords)
+
+    def accept(self, value: object) -> object:
+        words: list[object]
+        if isinstance(value, str):
+            words = list(value.split())
+        elif isinstance(value, Iterable):
+            words = list(cast(Iterable[object], value))
+        else:
+            raise _type_rejected(f"keywords from {self.listing}")
+        found: set[str] = set()
+        for word in words:
+            if not isinstance(word, str):
+                raise _type_rejected(f"keywords from {self.listing}")
+            canonical = self.lookup.get(word.lower())
+            if canonical is None:
+                raise Rejected(f"keywords from {self.listing}" + did_you_mean(word, self.keywords))
+            found.add(canonical)
+        if not found:
+            raise Rejected(f"at least one keyword from {self.listing}")
+        # MuJoCo reads some flag sets only in their canonical order.
+        return tuple(sorted(found, key=self.order.__getitem__))
+
+    def write(self, stored: object, fmt: Format) -> str:
+        return " ".join(cast(tuple[str, ...], stored))
+
+
+_SHARED: dict[tuple[object, ...], Codec] = {}
+
+
+def make_codec(kind: str, *, dtype: str | None, is_array: bool, lo: int, hi: int | None,
+               keywords: tuple[str, ...], pattern: str | None) -> Codec:
+    """The codec of an attribute (one object per distinct signature)."""
+    key = (kind, dtype, is_array, lo, hi, keywords, pattern)
+    codec = _SHARED.get(key)
+    if codec is None:
+        codec = _SHARED[key] = _new_codec(kind, dtype, is_array, lo, hi, keywords, pattern)
+    return codec
+
+
+def _new_codec(kind: str, dtype: str | None, is_array: bool, lo: int, hi: int | None,
+               keywords: tuple[str, ...], pattern: str | None) -> Codec:
+    if is_array and kind in ("int", "real"):
+        return ArrayCodec(kind, dtype or "double", lo, hi)
+    if kind == "int":
+        return IntCodec()
+    if kind == "real":
+        return RealCodec(dtype == "float")
+    if kind == "bool":
+        return BoolCodec()
+    if kind == "keyword":
+        return KeywordCodec(keywords)
+    if kind == "flags":
+        return FlagsCodec(keywords)
+    if kind == "id":
+        return IdentifierCodec()
+    if kind == "ref":
+        return ReferenceCodec()
+    if kind == "file":
+        return FileCodec()
+    if kind == "chars":
+        return CharsCodec(pattern, lo, hi)
+    return StringCodec(pattern)

@@ -1,0 +1,209 @@
+"""The files a model uses: where they are, and a flat, safe, unique name for each.
+
+Every file attribute (a path, or an in-memory :class:`~typed_mjcf.Asset`) gets one flat,
+readable name: the file's own name, or the element's name for in-memory contents, with a
+numeric suffix only when two different files would collide (also when the names differ only
+in case, as they would collide on a case-insensitive file system). Names are made safe to
+write into a folder: no path separators, no leading dots, no characters or device names
+Windows refuses (see :func:`safe_file_name`).
+
+An MJCF file the model uses (an ``<asset><model file=...>``) is itself rewritten to find its
+own files under their flat names: :func:`collect_files` takes the function that does it.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import re
+import stat
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from typed_mjcf import _tree
+from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf.assets import Asset
+from typed_mjcf.errors import InvalidValueError
+
+
+@dataclass
+class CollectedFiles:
+    """Flat file names and contents of every file a model uses."""
+
+    files: dict[str, bytes] = field(default_factory=lambda: {})
+    names: dict[tuple[int, str], str] = field(default_factory=lambda: {})
+    folded: dict[str, str] = field(default_factory=lambda: {})  # casefolded name -> name
+    directory_attributes: frozenset[str] = frozenset()
+
+    def name_of(self, element: Element, attribute: AttributeSpec) -> str:
+        """The flat name of the file ``element``'s ``attribute`` holds."""
+        return self.names[(id(element), attribute.name)]
+
+
+# An MJCF file the model uses, rewritten to find its files among those collected: (path,
+# contents, files collected so far, the MJCF files being read) -> contents (as they were
+# when the file is not MJCF).
+ModelFileWriter = Callable[[str, bytes, CollectedFiles, tuple[str, ...]], bytes]
+
+
+def compiler_folders(model: ModelBase) -> dict[str, str]:
+    """Values of the root's folder attributes (meshdir, texturedir, assetdir, strippath),
+    as ``"compiler@meshdir"`` -> text."""
+    folders: dict[str, str] = {}
+    for section in _tree.children(model):
+        for name, value in _tree.values(section).items():
+            if isinstance(value, str | bool):
+                folders[f"{section.spec.tag}@{name}"] = str(value)
+    return folders
+
+
+def resolve_path(model: ModelBase, attribute: AttributeSpec, file: str,
+                 folders: dict[str, str]) -> str:
+    """Where MuJoCo finds ``file``: absolute as given, else under the compiler's folder
+    (absolute, or relative to the model's directory)."""
+    if folders.get("compiler@strippath") == "True":
+        file = os.path.basename(file)
+    if os.path.isabs(file):
+        return file
+    folder = ""
+    for name in attribute.directory:
+        value = folders.get(f"compiler@{name}")
+        if value:
+            folder = value
+            break
+    base = _tree.base_dir(model) or os.getcwd()
+    return os.path.normpath(os.path.join(base, folder, file))
+
+
+def absolute_file(model: ModelBase, attribute: AttributeSpec, file: str) -> str:
+    """An attached model's file, as a path that does not depend on the parent's folders."""
+    return resolve_path(model, attribute, file, compiler_folders(model))
+
+
+_UNSAFE = re.compile(r'[\x00-\x1f\x7f/\\:*?"<>|]')  # separators, controls, Windows' reserved
+_DEVICES = frozenset({"con", "prn", "aux", "nul", *(f"com{i}" for i in range(10)),
+                      *(f"lpt{i}" for i in range(10))})
+_MAX_NAME_BYTES = 200  # file systems allow 255; room for a "-n" suffix and temporary names
+
+
+def safe_file_name(stem: str, extension: str = "") -> str:
+    """``stem + extension`` as a plain file name that stays in the folder it is written to.
+
+    Path separators, control characters and the characters Windows refuses become ``_``;
+    leading dots and spaces go (no ``..``, no hidden files), and so do trailing ones of the
+    extension; Windows device names (``con``, ``nul``, ...) get a ``_`` prefix; long stems
+    are shortened. Ordinary names are unchanged.
+    """
+    stem = _UNSAFE.sub("_", stem).lstrip(". ").rstrip(" ")
+    extension = _UNSAFE.sub("_", extension).strip(". ")
+    extension = "." + extension if extension else ""
+    if not extension:
+        stem = stem.rstrip(". ")  # Windows drops trailing dots and spaces
+    if not stem:
+        stem = "file"
+    if stem.split(".")[0].lower() in _DEVICES:
+        stem = "_" + stem
+    room = _MAX_NAME_BYTES - len(extension.encode("utf-8"))
+    if len(stem.encode("utf-8")) > room:
+        stem = stem.encode("utf-8")[:max(room, 1)].decode("utf-8", "ignore").rstrip(". ") or "file"
+    return stem + extension
+
+
+def is_plain_file_name(name: str) -> bool:
+    """Whether ``name`` names a file directly inside a folder (what :func:`safe_file_name`
+    gives)."""
+    return bool(name) and safe_file_name(*split_name(name)) == name
+
+
+def split_name(name: str) -> tuple[str, str]:
+    """A file name's stem and extension (``".stl"`` is an extension, not a hidden stem)."""
+    dot = name.rfind(".")
+    if dot <= 0 or dot == len(name) - 1:
+        return name, ""
+    return name[:dot], name[dot:]
+
+
+def unique_name(name: str, contents: bytes, collected: CollectedFiles) -> str:
+    """``name``, or ``name`` with a numeric suffix when a different file (of that name, or of
+    a name differing in case only) is taken already."""
+    files, folded = collected.files, collected.folded
+    stem, extension = split_name(name)
+    candidate, n = name, 1
+    while True:
+        taken = folded.get(candidate.casefold())
+        if taken is None or (taken == candidate and files.get(candidate) == contents):
+            break
+        n += 1
+        candidate = f"{stem}-{n}{extension}"
+    folded[candidate.casefold()] = candidate
+    return candidate
+
+
+def collect_files(model: ModelBase, model_file: ModelFileWriter,
+                  collected: CollectedFiles | None = None,
+                  models: tuple[str, ...] = ()) -> CollectedFiles:
+    """Read every file the model (and the models attached to it) uses and give each a flat
+    name; ``models`` are the MJCF files being read (to refuse one that uses itself)."""
+    collected = CollectedFiles() if collected is None else collected
+    folders = compiler_folders(model)
+    memory = _tree.memory_files(model)
+    directories: set[str] = set()
+    for element in model.iter_elements():
+        stored = _tree.values(element)
+        if not stored:
+            continue
+        for attribute in element.spec.attributes:
+            if attribute.kind != "file":
+                continue
+            directories.update(attribute.directory)
+            value = stored.get(attribute.name)
+            if value is None:
+                continue
+            if isinstance(value, Asset):
+                stem = value.name or element_stem(element)
+                name, contents = safe_file_name(stem, value.extension), value.contents
+            else:
+                assert isinstance(value, str)
+                contents, path = _read(element, attribute, value, model, folders, memory)
+                name = safe_file_name(*split_name(os.path.basename(path)))
+                if is_model_file_name(name):
+                    if path in models:
+                        raise InvalidValueError(
+                            f"{element.path}: {attribute.py_name}: {path} uses itself "
+                            f"(through {' -> '.join(models)})")
+                    contents = model_file(path, contents, collected, (*models, path))
+            name = unique_name(name, contents, collected)
+            collected.files[name] = contents
+            collected.names[(id(element), attribute.name)] = name
+    collected.directory_attributes = collected.directory_attributes | frozenset(directories)
+    for attached in _tree.attached_models(model):  # each resolves files in its own folders
+        collect_files(attached, model_file, collected, models)
+    return collected
+
+
+def _read(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
+          folders: dict[str, str], memory: dict[str, bytes]) -> tuple[bytes, str]:
+    """A file's contents (given in memory, else read from disk) and its path."""
+    given = memory.get(value)
+    if given is not None:
+        return given, value
+    path = resolve_path(model, attribute, value, folders)
+    try:
+        if not stat.S_ISREG(os.stat(path).st_mode):  # a FIFO or /dev/zero: no end
+            raise OSError(errno.EINVAL, "not a regular file")
+        with open(path, "rb") as f:
+            return f.read(), path
+    except OSError as error:
+        raise InvalidValueError(
+            f"{element.path}: {attribute.py_name}={value!r}: cannot read {path}: "
+            f"{error.strerror}") from None
+
+
+def is_model_file_name(name: str) -> bool:
+    return name.lower().endswith(".xml")
+
+
+def element_stem(element: Element) -> str:
+    """The stem of an in-memory file's name: the element's name, else its tag."""
+    return _tree.element_name(element) or element.spec.tag

@@ -1,0 +1,315 @@
+"""The grammar tables: what the generated classes tell the runtime about each MJCF row.
+
+Everything the runtime knows about particular tags comes from here: the generated tables
+build an :class:`ElementSpec` per grammar row, with an :class:`AttributeSpec` per attribute
+and a :class:`ChildSpec` per legal child, plus one :class:`GrammarFacts` for the facts that
+concern the language as a whole (the name of the root default class, the world body, ...).
+The specs are plain data; :mod:`typed_mjcf._codecs` gives each attribute the codec of its
+kind.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Final, Literal
+
+from typed_mjcf._codecs import Codec, make_codec
+
+DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
+
+Kind = Literal["string", "file", "chars", "bool", "int", "real", "keyword", "flags", "id", "ref"]
+Compose = Literal["attributes", "nest", "keyframes"]
+
+
+class AttributeSpec:
+    """One attribute of one grammar row."""
+
+    __slots__ = (
+        "anchor",
+        "codec",
+        "default",
+        "directory",
+        "doc",
+        "dtype",
+        "hi",
+        "index",
+        "is_array",
+        "keywords",
+        "kind",
+        "lo",
+        "name",
+        "namespace",
+        "namespace_from",
+        "pattern",
+        "py_name",
+        "required",
+        "scope",
+    )
+
+    name: str
+    py_name: str
+    kind: Kind
+    dtype: str | None
+    lo: int
+    hi: int | None
+    is_array: bool
+    keywords: tuple[str, ...]
+    namespace: str | None
+    namespace_from: tuple[str, Mapping[str, str]] | None
+    default: str | None
+    required: bool
+    pattern: str | None
+    directory: tuple[str, ...]
+    anchor: str | None
+    doc: str
+    scope: bool
+    index: int
+    codec: Codec
+
+    def __init__(
+        self,
+        name: str,
+        kind: Kind,
+        *,
+        py_name: str | None = None,
+        dtype: str | None = None,
+        arity: tuple[int, int | None] | None = None,
+        keywords: Sequence[str] = (),
+        namespace: str | None = None,
+        namespace_from: tuple[str, Mapping[str, str]] | None = None,
+        default: str | None = None,
+        required: bool = False,
+        pattern: str | None = None,
+        directory: Sequence[str] = (),
+        anchor: str | None = None,
+        doc: str = "",
+        scope: bool = False,
+    ) -> None:
+        self.name = name
+        self.py_name = name if py_name is None else py_name
+        self.kind = kind
+        if dtype is None and kind in ("int", "real"):
+            dtype = "int" if kind == "int" else "double"
+        self.dtype = dtype
+        self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
+        self.lo, self.hi = arity if arity is not None else (1, 1)
+        self.keywords = tuple(keywords)
+        self.namespace = namespace
+        # objname-like references: the namespace is named by another attribute's keyword
+        self.namespace_from = namespace_from
+        self.default = default
+        self.required = required
+        self.pattern = pattern
+        self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
+        self.anchor = anchor
+        self.doc = doc
+        self.scope = scope  # the root's model name: the scope of the model when attached
+        self.index = 0  # position in the row, set by ElementSpec
+        self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
+                                hi=self.hi, keywords=self.keywords, pattern=pattern)
+
+    @property
+    def url(self) -> str | None:
+        """This attribute's entry in MuJoCo's XML reference."""
+        return f"{DOCS_URL}#{self.anchor}" if self.anchor else None
+
+    @property
+    def is_reference(self) -> bool:
+        """Whether the value names another element (a fixed or an attribute-given namespace)."""
+        return self.kind == "ref" or self.namespace_from is not None
+
+    def describe(self) -> str:
+        """The attribute's MJCF type in words, e.g. ``real[3]`` or ``keyword: hinge|slide``."""
+        if self.kind in ("keyword", "flags"):
+            return f"{self.kind}: {'|'.join(self.keywords)}"
+        if self.kind in ("id", "ref"):
+            return f"{self.kind}<{self.namespace}>"
+        if self.namespace_from is not None:
+            return f"ref<{self.namespace_from[0]}>"
+        base = self.dtype if self.kind == "real" and self.dtype else self.kind
+        if not self.is_array:
+            return base
+        if self.hi is None:
+            return f"{base}[]" if self.lo == 0 else f"{base}[{self.lo}..]"
+        return f"{base}[{self.lo}]" if self.lo == self.hi else f"{base}[{self.lo}..{self.hi}]"
+
+    def __repr__(self) -> str:
+        return f"<attribute {self.name!r}: {self.describe()}>"
+
+
+class ChildSpec:
+    """A legal child of a row: its tag, Python class name and whether it appears once."""
+
+    __slots__ = ("card", "class_name", "index", "py_name", "single", "tag")
+
+    tag: str
+    py_name: str
+    class_name: str
+    single: bool
+    card: str
+    index: int
+
+    def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
+                 py_name: str | None = None) -> None:
+        self.tag = tag
+        self.py_name = tag if py_name is None else py_name
+        self.class_name = class_name
+        self.single = single
+        self.card = card
+        self.index = 0
+
+
+Constraint = tuple[str, tuple[tuple[str, ...], ...]]
+
+
+class ElementSpec:
+    """One grammar row: tag, attributes in grammar order, legal children, constraints."""
+
+    __slots__ = (
+        "anchor",
+        "attachable",
+        "attributes",
+        "by_key",
+        "by_name",
+        "children",
+        "compose",
+        "constraints",
+        "defaults_tag",
+        "doc",
+        "holds_bodies",
+        "id_attribute",
+        "name",
+        "namespace",
+        "order",
+        "references",
+        "scope_attribute",
+        "tag",
+    )
+
+    tag: str
+    name: str
+    attributes: tuple[AttributeSpec, ...]
+    by_key: dict[str, AttributeSpec]
+    by_name: dict[str, AttributeSpec]
+    order: dict[str, int]  # XML attribute name -> grammar position
+    children: dict[str, ChildSpec]
+    id_attribute: AttributeSpec | None
+    scope_attribute: AttributeSpec | None
+    references: tuple[AttributeSpec, ...]
+    namespace: str | None
+    constraints: tuple[Constraint, ...]
+    anchor: str | None
+    doc: str
+    compose: Compose | None
+    attachable: bool
+    holds_bodies: bool
+    defaults_tag: str | None
+
+    def __init__(
+        self,
+        tag: str,
+        name: str | None = None,
+        *,
+        attributes: Sequence[AttributeSpec] = (),
+        children: Sequence[ChildSpec] = (),
+        constraints: Sequence[Constraint] = (),
+        anchor: str | None = None,
+        doc: str = "",
+        compose: Compose | None = None,
+        attachable: bool = False,
+        defaults: str | None = None,
+    ) -> None:
+        self.tag = tag
+        self.name = tag if name is None else name
+        self.compose = compose  # top-level sections: how an attached model's section joins
+        self.attachable = attachable  # a model can be attached here
+        self.defaults_tag = defaults  # the child of a <default> class holding our defaults
+        self.attributes = tuple(attributes)
+        self.by_key = {}
+        self.by_name = {}
+        self.order = {}
+        self.id_attribute = None
+        self.scope_attribute = None
+        for i, attribute in enumerate(self.attributes):
+            attribute.index = i
+            if attribute.anchor is None and anchor is not None:
+                attribute.anchor = f"{anchor}-{attribute.name}"
+            self.by_name[attribute.name] = attribute
+            self.order[attribute.name] = i
+            self.by_key[attribute.py_name] = attribute
+            if attribute.kind == "id":
+                self.id_attribute = attribute
+            if attribute.scope:
+                self.scope_attribute = attribute
+        for attribute in self.attributes:
+            self.by_key.setdefault(attribute.name, attribute)
+        if "class" in self.by_key:
+            self.by_key.setdefault("dclass", self.by_key["class"])  # dm_control's spelling
+        self.references = tuple(a for a in self.attributes if a.is_reference)
+        self.namespace = self.id_attribute.namespace if self.id_attribute else None
+        self.children = {}
+        for i, child in enumerate(children):
+            child.index = i
+            self.children[child.tag] = child
+        self.holds_bodies = False  # set by the grammar once every row is known
+        self.constraints = tuple(constraints)
+        self.anchor = anchor
+        self.doc = doc
+
+    @property
+    def url(self) -> str | None:
+        """This element's entry in MuJoCo's XML reference."""
+        return f"{DOCS_URL}#{self.anchor}" if self.anchor else None
+
+    def __repr__(self) -> str:
+        return f"<row {self.name!r}: <{self.tag}>>"
+
+
+@dataclass(frozen=True)
+class KeyframeFacts:
+    """How a keyframe's vectors map onto the compiled model (for combining keyframes)."""
+
+    qpos: str = "qpos"
+    qvel: str = "qvel"
+    act: str = "act"
+    ctrl: str = "ctrl"
+    mpos: str = "mpos"
+    mquat: str = "mquat"
+    time: str = "time"
+
+
+@dataclass(frozen=True)
+class AttachFacts:
+    """``<attach>``: the attribute naming the child model (a model asset), the prefix it
+    scopes the child's names with, and the attributes naming a body or frame of the child
+    (or, without a model, of this model: self-attachment needs one of them)."""
+
+    tag: str
+    model: str
+    prefix: str
+    references: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class GrammarFacts:
+    """Facts about the language as a whole, from ``schema/facts.toml``."""
+
+    root: str  # the declaration name of the root row
+    main_class: str  # the name of the top-level default class
+    world_body: str  # the name MuJoCo gives the world body
+    body: str  # the tag of bodies (attachment frames are bodies)
+    frame: str  # the tag of <frame>, transparent in the kinematic tree
+    replicate: str  # the tag of <replicate>
+    joints: frozenset[str]  # tags of joints
+    class_for_children: frozenset[str]  # tags whose class= applies to their children too
+    inertia: str  # the tag of a body's <inertial>
+    sensor_section: str  # the tag of the root's <sensor> section
+    mocap: str  # the body attribute that makes a body a mocap body
+    childclass: str  # the attribute naming the default class of a subtree
+    dclass: str  # the attribute naming an element's default class
+    named_after_file: Mapping[str, str] = field(default_factory=lambda: {})  # namespace -> attribute
+    named_from_contents: frozenset[str] = frozenset()  # namespaces named by the file they read
+    attach: AttachFacts | None = None
+    replicate_separator: str = "sep"  # <replicate>'s attribute suffixing copies' names
+    keyframe: KeyframeFacts = KeyframeFacts()

@@ -1,0 +1,1314 @@
+"""The element tree: elements, their attributes and children, names and links.
+
+This is the core every feature builds on. An element stores its attribute values by XML
+name (each as its codec stores it, or the element a reference links to), its children in
+document order, its parent, the model whose tree it is in (``root``) and the name scope its
+name lives in (its model's, or for what is added to an attachment frame, the attached
+model's). Every attribute is set by one path, :meth:`Element._assign` (Python values) and
+:func:`assign_text` (text read from a file), and every element is made by :func:`_create`.
+
+References are links: a reference attribute holds the element it names as soon as the name
+resolves (at assignment, or when an element of that name appears later), so renaming the
+target, renaming or attaching its model, or copying keeps the reference right; the text is
+derived when the model is written. A reference to a removed element reads as ``None`` and is
+reported by ``validate()``.
+
+Features (parsing, export, composition, validation, ...) use the functions at the end of this
+module (the internal API), not the elements' private slots.
+"""
+
+# The element's slots are private to the tree; this module's functions and descriptors are
+# the tree, so they read them (pyright would otherwise allow only Element's own methods).
+# pyright: reportPrivateUsage=false
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from typing import (
+    TYPE_CHECKING,
+    ClassVar,
+    Generic,
+    NoReturn,
+    Self,
+    TypeAlias,
+    TypeVar,
+    cast,
+    overload,
+)
+
+import numpy as np
+
+from typed_mjcf._codecs import Rejected
+from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
+from typed_mjcf._names import NameScope
+from typed_mjcf.errors import (
+    ChildError,
+    DuplicateIdentifierError,
+    IllegalChildError,
+    InvalidReferenceError,
+    InvalidTypeError,
+    InvalidValueError,
+    UnknownAttributeError,
+    did_you_mean,
+)
+
+E = TypeVar("E", bound="Element")
+E_co = TypeVar("E_co", bound="Element", covariant=True)
+
+_Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscriptable at run time
+
+_CLASSES: dict[str, type[Element]] = {}
+_FACTS: list[GrammarFacts] = []
+_NO_CHILDREN: tuple[()] = ()
+_new_object = object.__new__
+
+
+def element_class(class_name: str) -> type[Element]:
+    """The generated class of that name."""
+    return _CLASSES[class_name]
+
+
+def element_classes() -> Mapping[str, type[Element]]:
+    """Every generated class, by name."""
+    return _CLASSES
+
+
+def finish_grammar(facts: GrammarFacts) -> None:
+    """Called by the generated tables once every class exists: the language-wide facts,
+    which rows hold bodies, and the signature and docstring of every ``add_<tag>()``."""
+    _FACTS[:] = [facts]
+    for cls in _CLASSES.values():
+        cls.spec.holds_bodies = facts.body in cls.spec.children
+    document_adders()
+
+
+def grammar_facts() -> GrammarFacts:
+    return _FACTS[0]
+
+
+def _short(value: object, limit: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+class Element:
+    """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
+
+    __slots__ = (
+        "__weakref__",
+        "_attached",
+        "_children",
+        "_parent",
+        "_root",
+        "_scope",
+        "_singles",
+        "_values",
+    )
+    spec: ClassVar[ElementSpec]
+
+    _values: dict[str, object]
+    _children: list[Element] | tuple[()]  # () until the first child: fewer objects for the GC
+    _parent: Element | None
+    _root: ModelBase | None  # the model whose tree holds this element; None once removed
+    _scope: NameScope  # where this element's name lives and its references resolve
+    _singles: dict[str, Element] | None
+    _attached: ModelBase | None  # on attachment frames: the model attached there
+
+    # ------------------------------------------------------------------ class set-up
+
+    def __init_subclass__(cls, **kwargs: object) -> None:
+        super().__init_subclass__(**kwargs)
+        spec: ElementSpec | None = cls.__dict__.get("spec")
+        if spec is None:
+            return
+        _CLASSES[cls.__name__] = cls
+        for attribute in spec.attributes:
+            setattr(cls, attribute.py_name, Attribute(attribute))
+        if "class" in spec.by_name:
+            setattr(cls, "dclass", Attribute(spec.by_name["class"]))  # dm_control's spelling
+        for child in spec.children.values():
+            setattr(cls, child.py_name, SingleChild(child) if child.single else ChildList(child))
+            setattr(cls, "add_" + child.tag, _adder(child))
+
+    def __init__(self) -> None:
+        raise TypeError(
+            f"{type(self).__name__} elements are created by their parent, "
+            f"e.g. parent.add_{self.spec.tag}(...) or parent.add({self.spec.tag!r}, ...)"
+        )
+
+    # ------------------------------------------------------------------ identity
+
+    @property
+    def tag(self) -> str:
+        """The XML tag."""
+        return self.spec.tag
+
+    @property
+    def parent(self) -> Element | None:
+        """The parent element; ``None`` for a model's root or a removed element."""
+        return self._parent
+
+    @property
+    def is_removed(self) -> bool:
+        """Whether this element was removed from its model."""
+        return self._root is None
+
+    @property
+    def path(self) -> str:
+        """Where the element is in its model, e.g. ``worldbody/body[upper_arm]/geom[0]``."""
+        steps: list[str] = []
+        element: Element = self
+        while element._parent is not None:
+            steps.append(element._step())
+            element = element._parent
+        if not steps:
+            return "<root>" if isinstance(element, ModelBase) and element is self._root else (
+                f"<{self.spec.tag}>")
+        scope = element._scope.prefix() if isinstance(element, ModelBase) else ""
+        return scope + "/".join(reversed(steps))
+
+    def _step(self) -> str:
+        parent = self._parent
+        assert parent is not None
+        tag = self.spec.tag
+        child_spec = parent.spec.children.get(tag)
+        if child_spec is not None and child_spec.single:
+            return tag
+        id_attribute = self.spec.id_attribute
+        if id_attribute is not None:
+            name = self._values.get(id_attribute.name)
+            if isinstance(name, str):
+                return f"{tag}[{name}]"
+        index = 0
+        for sibling in parent._children:
+            if sibling is self:
+                return f"{tag}[{index}]"
+            if sibling.spec.tag == tag:
+                index += 1
+        return f"{tag}[new]"
+
+    def __repr__(self) -> str:
+        return f"<{type(self).__name__} {self.path}>"
+
+    # ------------------------------------------------------------------ attributes
+
+    if not TYPE_CHECKING:  # run time only: checkers should see unknown attributes as errors
+
+        def __getattr__(self, name: str) -> NoReturn:
+            # Only reached when normal lookup fails: an attribute the grammar doesn't have.
+            if name.startswith("__"):
+                raise AttributeError(name)
+            raise self._unknown_attribute(name)
+
+        def __setattr__(self, name: str, value: object) -> None:
+            try:
+                object.__setattr__(self, name, value)
+            except AttributeError:
+                raise self._unknown_attribute(name, "can't set attribute") from None
+
+        def __delattr__(self, name: str) -> None:
+            try:
+                object.__delattr__(self, name)
+            except AttributeError:
+                raise self._unknown_attribute(name) from None
+
+    def _unknown_attribute(self, name: str, action: str | None = None) -> UnknownAttributeError:
+        spec = self.spec
+        known = [a.py_name for a in spec.attributes]
+        hint = did_you_mean(name, known + [c.py_name for c in spec.children.values()])
+        what = f"{action} {name!r}" if action else (
+            f"{type(self).__name__!r} object has no attribute {name!r}")
+        return UnknownAttributeError(
+            f"{self.path}: {what}{hint}: <{spec.tag}> has no such attribute; "
+            f"its attributes are: {', '.join(known) or '(none)'}"
+        )
+
+    def _reject(self, attribute: AttributeSpec, value: object, rejected: Rejected) -> Exception:
+        return rejected.error(
+            f"{self.path}: invalid {attribute.py_name}={_short(value)} on <{self.spec.tag}>: "
+            f"expected {rejected.expected}"
+        )
+
+    def _assign(self, attribute: AttributeSpec, value: object) -> None:
+        """Set one attribute from a Python value (``None`` or ``""`` unsets it)."""
+        if value is None or (type(value) is str and not value):
+            self._unset(attribute)
+            return
+        stored = self._convert(attribute, value)
+        if attribute.lo == 0 and _is_empty_array(stored):
+            self._unset(attribute)  # as MuJoCo reads an empty list: absent
+            return
+        self._store(attribute, stored)
+
+    def _convert(self, attribute: AttributeSpec, value: object) -> object:
+        if attribute.is_reference and isinstance(value, Element):
+            return self._link(attribute, value)
+        try:
+            stored = attribute.codec.accept(value)
+        except Rejected as rejected:
+            raise self._reject(attribute, value, rejected) from None
+        if attribute.is_reference:
+            return _resolve(self, attribute, cast(str, stored))
+        return stored
+
+    def _store(self, attribute: AttributeSpec, stored: object) -> None:
+        values = self._values
+        if attribute.kind == "id":
+            old = values.get(attribute.name)
+            if old != stored:
+                _claim(self, attribute, cast(str, stored))
+                if isinstance(old, str):
+                    self._scope.release(cast(str, attribute.namespace), old, self)
+        elif attribute.scope:
+            _rename_model(self, cast(str, stored))
+        values[attribute.name] = stored
+        if type(stored) is str and attribute.is_reference:
+            _wait(self, attribute, stored)
+
+    def _unset(self, attribute: AttributeSpec) -> None:
+        old = self._values.pop(attribute.name, None)
+        if old is None:
+            return
+        if attribute.kind == "id":
+            self._scope.release(cast(str, attribute.namespace), cast(str, old), self)
+        elif attribute.scope:
+            try:
+                _rename_model(self, None)
+            except Exception:
+                self._values[attribute.name] = old
+                raise
+
+    def _link(self, attribute: AttributeSpec, target: Element) -> Element:
+        """Check that ``target`` may be what ``attribute`` refers to."""
+        namespace = target.spec.namespace
+        allowed = _reference_namespaces(self, attribute)
+        if namespace not in allowed:
+            raise InvalidReferenceError(
+                f"{self.path}: invalid {attribute.py_name}={target!r} on <{self.spec.tag}>: "
+                f"expected a name or an element of namespace "
+                f"{' or '.join(repr(n) for n in sorted(allowed))}, got a <{target.spec.tag}> "
+                f"(namespace {namespace!r})")
+        if element_name(target) is None:
+            target._scope.unnamed_targets.append(target)  # an export will name it
+        return target
+
+    def get_attributes(self) -> dict[str, object]:
+        """The attributes that are set, by Python name, in grammar order."""
+        spec = self.spec
+        by_name = spec.by_name
+        return {by_name[name].py_name: _read(self, by_name[name])
+                for name in sorted(self._values, key=spec.order.__getitem__)}
+
+    def set_attributes(self, **kwargs: object) -> None:
+        """Set several attributes at once; if any is refused, none is changed."""
+        attributes = [self._attribute(key) for key in kwargs]
+        snapshot = _Snapshot(self)
+        try:
+            for attribute, value in zip(attributes, kwargs.values(), strict=True):
+                self._assign(attribute, value)
+        except Exception:
+            snapshot.restore()
+            raise
+
+    def _attribute(self, key: str) -> AttributeSpec:
+        attribute = self.spec.by_key.get(key)
+        if attribute is None:
+            raise self._unknown_attribute(key)
+        return attribute
+
+    def _init_attributes(self, kwargs: Mapping[str, object]) -> None:
+        """Set the attributes of a new element (not yet in its parent): names are claimed
+        last, so a refused value leaves the model untouched."""
+        by_key = self.spec.by_key
+        values = self._values
+        identifier: tuple[AttributeSpec, object] | None = None
+        deferred: list[tuple[AttributeSpec, object]] = []
+        waits: list[AttributeSpec] = []
+        for key, value in kwargs.items():
+            attribute = by_key.get(key)
+            if attribute is None:
+                raise self._unknown_attribute(key)
+            if value is None or (type(value) is str and not value):
+                continue
+            if attribute.kind == "id":
+                identifier = (attribute, self._convert(attribute, value))
+            elif attribute.namespace_from is not None or attribute.scope:
+                deferred.append((attribute, value))  # after the attribute naming its namespace
+            elif attribute.kind == "ref":
+                stored = values[attribute.name] = self._convert(attribute, value)
+                if type(stored) is str:
+                    waits.append(attribute)
+            else:
+                try:
+                    stored = attribute.codec.accept(value)
+                except Rejected as rejected:
+                    raise self._reject(attribute, value, rejected) from None
+                if attribute.lo != 0 or not _is_empty_array(stored):
+                    values[attribute.name] = stored
+        for attribute, value in deferred:
+            stored = values[attribute.name] = self._convert(attribute, value)
+            if attribute.scope:
+                _rename_model(self, cast(str, stored))
+            elif type(stored) is str:
+                waits.append(attribute)
+        if identifier is not None:
+            attribute, name = identifier
+            _claim(self, attribute, cast(str, name))
+            values[attribute.name] = name
+        for attribute in waits:
+            _wait(self, attribute, cast(str, values[attribute.name]))
+
+    # ------------------------------------------------------------------ children
+
+    def add(self, tag: str, /, **kwargs: object) -> Element:
+        """Add a child ``<tag>`` with the given attributes and return it."""
+        return self._add_child(self._child_spec(tag), None, kwargs)
+
+    def insert(self, tag: str, /, position: int, **kwargs: object) -> Element:
+        """Add a child ``<tag>`` at ``position`` among this element's children."""
+        if isinstance(position, bool) or not isinstance(position, int):  # pyright: ignore[reportUnnecessaryIsInstance]
+            raise InvalidTypeError(f"{self.path}: insert() position must be an int, "
+                                   f"got {position!r}")
+        return self._add_child(self._child_spec(tag), position, kwargs)
+
+    def _child_spec(self, tag: str) -> ChildSpec:
+        child_spec = self.spec.children.get(tag)
+        if child_spec is None:
+            if not isinstance(tag, str):  # pyright: ignore[reportUnnecessaryIsInstance]
+                raise InvalidTypeError(f"{self.path}: a child tag must be a string, got {tag!r}")
+            legal = list(self.spec.children)
+            raise IllegalChildError(
+                f"{self.path}: <{tag}> is not a valid child of <{self.spec.tag}>"
+                f"{did_you_mean(tag, legal)}; legal children: {', '.join(legal) or '(none)'}"
+            )
+        return child_spec
+
+    def _add_child(self, child_spec: ChildSpec, position: int | None,
+                   kwargs: Mapping[str, object]) -> Element:
+        if child_spec.single and self._single(child_spec.tag) is not None:
+            raise ChildError(f"{self.path}: a <{child_spec.tag}> child already exists "
+                             f"(<{self.spec.tag}> has at most one)")
+        child = _create(element_class(child_spec.class_name), self)
+        if kwargs:
+            child._init_attributes(kwargs)
+        _place(self, child, child_spec, position)
+        return child
+
+    def _single(self, tag: str) -> Element | None:
+        singles = self._singles
+        return None if singles is None else singles.get(tag)
+
+    def iter_elements(self) -> Iterator[Element]:
+        """This element and all its descendants, in document order (attached models are
+        not included: see ``find_all``)."""
+        stack: list[Element] = [self]
+        while stack:
+            element = stack.pop()
+            yield element
+            stack.extend(reversed(element._children))
+
+    def remove(self) -> None:
+        """Remove this element (and its subtree) from its parent; references to the
+        removed elements read as ``None`` from now on."""
+        parent = self._parent
+        if parent is None:
+            raise ChildError(f"{self.path}: a model's root (or a removed element) has no parent")
+        if self._root is None:
+            raise ChildError(f"{self.path}: the element is already removed")
+        _unlink_child(parent, self)
+        for element in self.iter_elements():
+            _forget(element)
+            if element._attached is not None:
+                _detach_model(element._attached)
+            element._root = None
+        self._parent = None
+
+    # ------------------------------------------------------------------ copies
+
+    def __copy__(self) -> Self:
+        return self.__deepcopy__({})
+
+    def __deepcopy__(self, memo: dict[int, object]) -> Self:
+        """A detached copy of the subtree; references inside it point into the copy."""
+        clone = _clone_tree(self, None, None, self._scope, memo)
+        _remap_links(clone, memo)
+        return clone
+
+    def paste(self, element: E, position: int | None = None) -> E:
+        """Add a deep copy of ``element`` (from this model or another) as a child; return it.
+
+        References inside the copied subtree point into the copy; references to elements
+        outside it are kept by name, to resolve in this model. Names must be free here.
+        """
+        child_spec = self._child_spec(element.spec.tag)
+        if type(element).__name__ != child_spec.class_name:
+            raise IllegalChildError(
+                f"{self.path}: a {type(element).__name__} cannot be a child of "
+                f"<{self.spec.tag}> (its <{element.spec.tag}> children are "
+                f"{child_spec.class_name})")
+        if child_spec.single and self._single(element.spec.tag) is not None:
+            raise ChildError(f"{self.path}: a <{element.spec.tag}> child already exists")
+        memo: dict[int, object] = {}
+        clone = _clone_tree(element, self, self._root, _child_scope(self), memo)
+        _remap_links(clone, memo)
+        _adopt(self, clone, element)
+        _place(self, clone, child_spec, position)
+        return clone
+
+    # ------------------------------------------------------------------ comparison
+
+    def is_same_as(self, other: object) -> bool:
+        """Whether ``other`` is an element of the same kind with the same attributes and,
+        recursively, the same children (each kind of child in the same order)."""
+        if not isinstance(other, Element) or other.spec is not self.spec:
+            return False
+        pairs: list[tuple[Element, Element]] = [(self, other)]
+        while pairs:
+            a, b = pairs.pop()
+            if a.spec is not b.spec or not _same_values(a, b):
+                return False
+            groups_a = _children_by_tag(a)
+            groups_b = _children_by_tag(b)
+            if groups_a.keys() != groups_b.keys():
+                return False
+            for tag, children in groups_a.items():
+                others = groups_b[tag]
+                if len(children) != len(others):
+                    return False
+                pairs += zip(children, others, strict=True)
+        return True
+
+
+# ---------------------------------------------------------------------------- the model root
+
+
+class ModelBase(Element):
+    """The root of a model: its name scope, the folder its files are relative to, where it
+    is attached, and the file contents it was given in memory."""
+
+    __slots__ = ("_base_dir", "_files", "_frame")
+
+    _base_dir: str | None
+    _frame: Element | None  # the attachment frame, in the model this one is attached to
+    _files: dict[str, bytes]  # file contents given with the model (by path as written)
+
+    def __init__(self, **kwargs: object) -> None:
+        _init_model(self)
+        self._init_attributes(kwargs)
+
+    def __deepcopy__(self, memo: dict[int, object]) -> Self:
+        """An independent copy, with copies of the models attached to it."""
+        clone = cast(Self, _copy_model(self, memo))
+        _remap_links(clone, memo)
+        return clone
+
+
+def _init_model(model: ModelBase) -> None:
+    model._values = {}
+    model._children = []
+    model._parent = None
+    model._root = model
+    model._scope = NameScope(model)
+    model._singles = None
+    model._attached = None
+    model._base_dir = None
+    model._frame = None
+    model._files = {}
+
+
+def new_model(cls: type[ModelBase]) -> ModelBase:
+    """An empty model of the generated root class (no attributes set)."""
+    model = _new_object(cls)
+    _init_model(model)
+    return model
+
+
+# ---------------------------------------------------------------------------- descriptors
+
+
+class Attribute:
+    """Reads and writes one attribute on elements of a generated class."""
+
+    __slots__ = ("codec", "lazy", "name", "reference", "spec")
+
+    def __init__(self, spec: AttributeSpec) -> None:
+        self.spec = spec
+        self.name = spec.name
+        self.codec = spec.codec
+        self.lazy = spec.codec.lazy
+        self.reference = spec.is_reference
+
+    @overload
+    def __get__(self, obj: None, owner: type[object] | None = None) -> Attribute: ...
+    @overload
+    def __get__(self, obj: Element, owner: type[object] | None = None) -> object: ...
+    def __get__(self, obj: Element | None, owner: type[object] | None = None) -> object:
+        if obj is None:
+            return self
+        stored = obj._values.get(self.name)
+        if stored is None:
+            return None
+        if self.lazy and type(stored) is str:
+            return self.codec.read(stored)
+        if self.reference:
+            return _read_reference(obj, self.spec, stored)
+        return stored
+
+    def __set__(self, obj: Element, value: object) -> None:
+        obj._assign(self.spec, value)
+
+    def __delete__(self, obj: Element) -> None:
+        obj._assign(self.spec, None)
+
+    def __repr__(self) -> str:
+        return repr(self.spec)
+
+
+class SingleChild:
+    """A once-only child, created on first access; ``del`` removes it."""
+
+    __slots__ = ("child",)
+
+    def __init__(self, child: ChildSpec) -> None:
+        self.child = child
+
+    @overload
+    def __get__(self, obj: None, owner: type[object] | None = None) -> SingleChild: ...
+    @overload
+    def __get__(self, obj: Element, owner: type[object] | None = None) -> Element: ...
+    def __get__(self, obj: Element | None, owner: type[object] | None = None) -> object:
+        if obj is None:
+            return self
+        existing = obj._single(self.child.tag)
+        if existing is not None:
+            return existing
+        return obj._add_child(self.child, None, {})
+
+    def __set__(self, obj: Element, value: object) -> None:
+        raise IllegalChildError(f"{obj.path}: can't set attribute {self.child.py_name!r}: it "
+                                f"is the <{self.child.tag}> child; set its attributes instead")
+
+    def __delete__(self, obj: Element) -> None:
+        existing = obj._single(self.child.tag)
+        if existing is not None:
+            check_removable(existing)
+            existing.remove()
+
+
+class ChildList:
+    """The children with one tag, as a live :class:`ElementList`."""
+
+    __slots__ = ("child",)
+
+    def __init__(self, child: ChildSpec) -> None:
+        self.child = child
+
+    @overload
+    def __get__(self, obj: None, owner: type[object] | None = None) -> ChildList: ...
+    @overload
+    def __get__(self, obj: Element, owner: type[object] | None = None) -> ElementList[Element]: ...
+    def __get__(self, obj: Element | None, owner: type[object] | None = None) -> object:
+        if obj is None:
+            return self
+        return ElementList[Element](obj, self.child.tag)
+
+    def __set__(self, obj: Element, value: object) -> None:
+        raise IllegalChildError(
+            f"{obj.path}: can't set attribute {self.child.py_name!r}: it is the list of "
+            f"<{self.child.tag}> children; use add_{self.child.tag}() or remove()")
+
+
+class ElementList(Sequence[E_co], Generic[E_co]):
+    """The children of one element with one tag, in document order: a live view.
+
+    Index by position or by name (``worldbody.body["arm"]``); ``del view[i]`` removes that
+    child from the model.
+    """
+
+    __slots__ = ("_owner", "_tag")
+
+    def __init__(self, owner: Element, tag: str) -> None:
+        self._owner = owner
+        self._tag = tag
+
+    def _items(self) -> list[E_co]:
+        tag = self._tag
+        return [cast(E_co, c) for c in self._owner._children
+                if c.spec.tag == tag]
+
+    @overload
+    def __getitem__(self, index: int | str) -> E_co: ...
+    @overload
+    def __getitem__(self, index: _Slice) -> list[E_co]: ...
+    def __getitem__(self, index: int | str | _Slice) -> E_co | list[E_co]:
+        if isinstance(index, str):
+            for child in self._items():
+                id_attribute = child.spec.id_attribute
+                if id_attribute is not None and child._values.get(
+                        id_attribute.name) == index:
+                    return child
+            raise KeyError(f"{self._owner.path}: no <{self._tag}> child named {index!r}")
+        return self._items()[index]
+
+    def __delitem__(self, index: int | str | _Slice) -> None:
+        doomed = self[index]
+        for child in doomed if isinstance(doomed, list) else [doomed]:
+            child.remove()
+
+    def __len__(self) -> int:
+        tag = self._tag
+        return sum(1 for c in self._owner._children if c.spec.tag == tag)
+
+    def __iter__(self) -> Iterator[E_co]:
+        return iter(self._items())
+
+    def __bool__(self) -> bool:
+        return len(self) > 0
+
+    def __eq__(self, other: object) -> bool:
+        """Equal to a list, tuple or view of the same elements (hashing is off: it changes)."""
+        if isinstance(other, ElementList | list | tuple):
+            return self._items() == list(cast(Iterable[object], other))
+        return NotImplemented
+
+    def __repr__(self) -> str:
+        return repr(self._items())
+
+
+# ---------------------------------------------------------------------------- add_<tag>
+
+
+_ADDERS: dict[str, Callable[..., Element]] = {}
+
+
+def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
+    """``add_<tag>()``: one function per child class, with a real signature and docstring
+    (``help()``, ``inspect.signature``, Jupyter) made from the child's row."""
+    key = f"{child_spec.tag}:{child_spec.class_name}:{child_spec.single}"
+    found = _ADDERS.get(key)
+    if found is not None:
+        return found
+    if child_spec.single:
+        def add_child(self: Element, **kwargs: object) -> Element:
+            return self._add_child(child_spec, None, kwargs)
+    else:
+        def add_child(self: Element, **kwargs: object) -> Element:
+            child = _create(element_class(child_spec.class_name), self)
+            if kwargs:
+                child._init_attributes(kwargs)
+            _append(self, child)
+            return child
+    add_child.__name__ = add_child.__qualname__ = f"add_{child_spec.tag}"
+    _ADDERS[key] = add_child
+    _PENDING_DOCS.append((add_child, child_spec))
+    return add_child
+
+
+_PENDING_DOCS: list[tuple[Callable[..., Element], ChildSpec]] = []
+
+
+def document_adders() -> None:
+    """Give every ``add_<tag>()`` its signature and docstring (once all classes exist)."""
+    while _PENDING_DOCS:
+        function, child_spec = _PENDING_DOCS.pop()
+        spec = element_class(child_spec.class_name).spec
+        parameters = [inspect.Parameter("self", inspect.Parameter.POSITIONAL_OR_KEYWORD)]
+        parameters += [inspect.Parameter(a.py_name, inspect.Parameter.KEYWORD_ONLY,
+                                         default=None, annotation=_annotation(a))
+                       for a in spec.attributes]
+        setattr(function, "__signature__", inspect.Signature(
+            parameters, return_annotation=child_spec.class_name))
+        function.__doc__ = attribute_listing(spec, f"Add a <{spec.tag}> child and return it.")
+
+
+def _annotation(attribute: AttributeSpec) -> str:
+    return attribute.describe()
+
+
+def attribute_listing(spec: ElementSpec, head: str) -> str:
+    """A docstring listing the attributes of a row: type, default, allowed values, link."""
+    lines = [head, ""]
+    if spec.url:
+        lines += [f"MuJoCo reference: {spec.url}", ""]
+    lines.append("Keyword arguments (MJCF attributes; each None when not given):")
+    for a in spec.attributes:
+        facts = [a.describe()]
+        if a.default is not None:
+            facts.append(f"default {a.default!r}")
+        if a.required:
+            facts.append("required")
+        line = f"    {a.py_name}: {'; '.join(facts)}."
+        if a.doc:
+            line += f" {a.doc[:1].upper()}{a.doc[1:]}{'' if a.doc.endswith('.') else '.'}"
+        lines.append(line)
+        if a.url:
+            lines.append(f"        {a.url}")
+    return "\n".join(lines)
+
+
+# ---------------------------------------------------------------------------- creation
+
+
+def _create(cls: type[E], parent: Element) -> E:
+    """A new element of ``cls`` under ``parent`` (not yet among its children)."""
+    element = _new_object(cls)
+    element._values = {}
+    element._children = _NO_CHILDREN
+    element._parent = parent
+    element._root = parent._root
+    element._scope = _child_scope(parent)
+    element._singles = None
+    element._attached = None
+    return element
+
+
+def _child_scope(parent: Element) -> NameScope:
+    """The scope of what is added under ``parent``: an attachment frame's children belong to
+    the attached model's scope (two frames can each hold a joint ``root_x``)."""
+    attached = parent._attached
+    return parent._scope if attached is None else attached._scope
+
+
+def _append(parent: Element, child: Element) -> None:
+    children = parent._children
+    if type(children) is tuple:
+        parent._children = [child]
+    else:
+        cast(list[Element], children).append(child)
+
+
+def _mutable_children(parent: Element) -> list[Element]:
+    children = parent._children
+    if type(children) is tuple:
+        children = parent._children = []
+    return cast(list[Element], children)
+
+
+def _place(parent: Element, child: Element, child_spec: ChildSpec, position: int | None) -> None:
+    children = _mutable_children(parent)
+    if child_spec.single:
+        if parent._singles is None:
+            parent._singles = {}
+        parent._singles[child_spec.tag] = child
+        if position is None:
+            position = _grammar_position(parent, child_spec)
+    if position is None:
+        children.append(child)
+    else:
+        children.insert(position, child)
+
+
+def _grammar_position(parent: Element, child_spec: ChildSpec) -> int:
+    """Where a once-only child goes: before the first child the grammar lists after it."""
+    children_specs = parent.spec.children
+    for i, sibling in enumerate(parent._children):
+        sibling_spec = children_specs.get(sibling.spec.tag)
+        if sibling_spec is not None and sibling_spec.index > child_spec.index:
+            return i
+    return len(parent._children)
+
+
+def _unlink_child(parent: Element, child: Element) -> None:
+    _mutable_children(parent).remove(child)
+    singles = parent._singles
+    if singles is not None and singles.get(child.spec.tag) is child:
+        del singles[child.spec.tag]
+
+
+def check_removable(element: Element) -> None:
+    """Refuse to remove a section of a model that attached models merge their own section
+    into (dm_control's guard: ``remove(affect_attachments=True)`` says what is meant)."""
+    root = element._root
+    if root is not None and element._parent is root and root._scope.attached:
+        raise ChildError(f"{element.path}: the models attached to this one merge their "
+                         f"<{element.spec.tag}> into it; use remove(affect_attachments=True) "
+                         f"to clear it in every attached model too")
+
+
+def _detach_model(model: ModelBase) -> None:
+    """Undo an attachment whose frame leaves its model."""
+    frame = model._frame
+    if frame is not None:
+        frame._attached = None
+    model._frame = None
+    parent = model._scope.parent
+    if parent is not None:
+        parent.detach(model._scope)
+
+
+# ---------------------------------------------------------------------------- names
+
+
+def _claim(element: Element, attribute: AttributeSpec, name: str) -> None:
+    scope = element._scope
+    namespace = cast(str, attribute.namespace)
+    facts = grammar_facts()
+    if name == facts.world_body and element.spec.tag == facts.body:
+        raise InvalidValueError(
+            f"{element.path}: invalid {attribute.py_name}={name!r} on <{element.spec.tag}>: "
+            f"{name!r} is the name MuJoCo gives the world body")
+    if element._root is None:
+        return
+    scope.claim(namespace, name, element,
+                f"{element.path}: invalid {attribute.py_name}={name!r} on <{element.spec.tag}>")
+    _link_waiting(scope, namespace, name, element)
+
+
+def _forget(element: Element) -> None:
+    """Release the name of an element leaving its model."""
+    id_attribute = element.spec.id_attribute
+    if id_attribute is not None:
+        name = element._values.get(id_attribute.name)
+        if isinstance(name, str):
+            element._scope.release(cast(str, id_attribute.namespace), name, element)
+
+
+def _rename_model(element: Element, name: str | None) -> None:
+    if isinstance(element, ModelBase):
+        element._scope.rename(name)
+
+
+def element_name(element: Element) -> str | None:
+    """The element's own name (not scoped), if it has one."""
+    id_attribute = element.spec.id_attribute
+    if id_attribute is None:
+        return None
+    name = element._values.get(id_attribute.name)
+    return name if isinstance(name, str) else None
+
+
+# ---------------------------------------------------------------------------- links
+
+
+def _reference_namespaces(element: Element, attribute: AttributeSpec) -> frozenset[str]:
+    """The namespaces a reference may name: its own, or the one its type attribute says."""
+    if attribute.namespace is not None:
+        return frozenset({attribute.namespace})
+    assert attribute.namespace_from is not None
+    type_attribute, namespaces = attribute.namespace_from
+    word = element._values.get(type_attribute)
+    if isinstance(word, str):
+        found = namespaces.get(word.lower())
+        return frozenset() if found is None else frozenset({found})
+    return frozenset(namespaces.values())
+
+
+def reference_namespace(element: Element, attribute: AttributeSpec) -> str | None:
+    """The one namespace a reference names now, if it is known."""
+    namespaces = _reference_namespaces(element, attribute)
+    return next(iter(namespaces)) if len(namespaces) == 1 else None
+
+
+def _resolve(element: Element, attribute: AttributeSpec, name: str) -> object:
+    """The element ``name`` names for ``attribute``, or the name while it names nothing."""
+    namespace = reference_namespace(element, attribute)
+    if namespace is None:
+        return name
+    found = element._scope.find(namespace, name)
+    return found if isinstance(found, Element) else name
+
+
+def _wait(element: Element, attribute: AttributeSpec, name: str) -> None:
+    """Link ``attribute`` when an element named ``name`` appears in the element's scope."""
+    namespace = reference_namespace(element, attribute)
+    if namespace is not None:
+        element._scope.waiting.setdefault((namespace, name), []).append((element, attribute))
+
+
+def _link_waiting(scope: NameScope, namespace: str, name: str, target: Element) -> None:
+    waiting = scope.waiting
+    if not waiting:
+        return
+    entries = waiting.pop((namespace, name), None)
+    if entries is None:
+        return
+    for element, attribute in entries:
+        assert isinstance(element, Element) and isinstance(attribute, AttributeSpec)
+        values = element._values
+        if values.get(attribute.name) == name and element._root is not None:
+            values[attribute.name] = target
+
+
+def _read_reference(element: Element, attribute: AttributeSpec, stored: object) -> object:
+    if isinstance(stored, Element):
+        return None if stored._root is None else stored
+    found = _resolve(element, attribute, cast(str, stored))
+    if found is not stored:
+        element._values[attribute.name] = found
+    return found
+
+
+def _read(element: Element, attribute: AttributeSpec) -> object:
+    stored = element._values.get(attribute.name)
+    if stored is None:
+        return None
+    if attribute.codec.lazy and type(stored) is str:
+        return attribute.codec.read(stored)
+    if attribute.is_reference:
+        return _read_reference(element, attribute, stored)
+    return stored
+
+
+def resolve_references(model: Element) -> None:
+    """Link every reference by name that names an element now (after a parse, say)."""
+    for element in model.iter_elements():
+        values = element._values
+        for attribute in element.spec.references:
+            stored = values.get(attribute.name)
+            if type(stored) is str:
+                found = _resolve(element, attribute, stored)
+                if found is not stored:
+                    values[attribute.name] = found
+
+
+# ---------------------------------------------------------------------------- rollback
+
+
+class _Snapshot:
+    """An element's values and name, to put back when a group of assignments fails."""
+
+    __slots__ = ("element", "name", "values")
+
+    def __init__(self, element: Element) -> None:
+        self.element = element
+        self.values = dict(element._values)
+        self.name = element_name(element)
+
+    def restore(self) -> None:
+        element = self.element
+        id_attribute = element.spec.id_attribute
+        current = element_name(element)
+        if id_attribute is not None and current != self.name and element._root is not None:
+            namespace = cast(str, id_attribute.namespace)
+            scope = element._scope
+            if current is not None:
+                scope.release(namespace, current, element)
+            if self.name is not None:
+                scope.claim(namespace, self.name, element, element.path)
+        scope_attribute = element.spec.scope_attribute
+        if scope_attribute is not None:
+            before = self.values.get(scope_attribute.name)
+            if before != element._values.get(scope_attribute.name):
+                _rename_model(element, before if isinstance(before, str) else None)
+        element._values.clear()
+        element._values.update(self.values)
+
+
+# ---------------------------------------------------------------------------- copies
+
+
+def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: NameScope,
+                memo: dict[int, object]) -> E:
+    """A copy of ``top``'s subtree under ``parent`` (not added to its children); iterative.
+    Models attached inside it are copied too."""
+    first: Element | None = None
+    stack: list[tuple[Element, Element | None, NameScope]] = [(top, parent, scope)]
+    while stack:
+        original, clone_parent, clone_scope = stack.pop()
+        clone = _new_object(type(original))
+        clone._values = {key: value for key, value in original._values.items()}
+        clone._children = _NO_CHILDREN
+        clone._parent = clone_parent
+        clone._root = root
+        clone._scope = clone_scope
+        clone._singles = None
+        clone._attached = None
+        memo[id(original)] = clone
+        inner_scope = clone_scope
+        if original._attached is not None:
+            attached = _copy_model(original._attached, memo)
+            clone._attached = attached
+            attached._frame = clone
+            inner_scope = attached._scope
+        if first is None:
+            first = clone
+        elif clone_parent is not None:
+            _append(clone_parent, clone)
+            if clone_parent.spec.children[clone.spec.tag].single:
+                if clone_parent._singles is None:
+                    clone_parent._singles = {}
+                clone_parent._singles[clone.spec.tag] = clone
+        stack.extend((child, clone, inner_scope)
+                     for child in reversed(original._children))
+    assert first is not None
+    return cast(E, first)
+
+
+def _copy_model(model: ModelBase, memo: dict[int, object]) -> ModelBase:
+    """A copy of ``model`` and the models attached to it, names registered, links to the
+    originals not yet remapped (see :func:`_remap_links`)."""
+    scope = NameScope(None, model._scope.name)
+    clone = _clone_tree(model, None, None, scope, memo)
+    scope.model = clone
+    clone._base_dir = model._base_dir
+    clone._files = dict(model._files)
+    clone._frame = None
+    stack: list[Element] = [clone]
+    while stack:
+        element = stack.pop()
+        element._root = clone
+        name = element_name(element)
+        id_attribute = element.spec.id_attribute
+        if name is not None and id_attribute is not None:
+            element._scope.claim(cast(str, id_attribute.namespace), name, element, element.path)
+        attached = element._attached
+        if attached is not None:
+            scope.attach(attached._scope)
+        stack.extend(element._children)
+    return clone
+
+
+def _remap_links(top: Element, memo: Mapping[int, object]) -> None:
+    """Point links to elements that were copied at their copies (attached models' too)."""
+    stack: list[Element] = [top]
+    while stack:
+        element = stack.pop()
+        values = element._values
+        for attribute in element.spec.references:
+            value = values.get(attribute.name)
+            if isinstance(value, Element):
+                target = cast(Element, memo.get(id(value), value))
+                values[attribute.name] = target
+                if element_name(target) is None:
+                    target._scope.unnamed_targets.append(target)
+        stack.extend(element._children)
+        attached = element._attached
+        if attached is not None:
+            stack.append(attached)
+
+
+def _adopt(parent: Element, clone: Element, original: Element) -> None:
+    """Register a pasted copy's names and attached models in ``parent``'s model: links to
+    elements outside the copy that are not in this model become names again."""
+    root = parent._root
+    for copied in clone.iter_elements():
+        values = copied._values
+        for attribute in copied.spec.references:
+            value = values.get(attribute.name)
+            if isinstance(value, Element) and value._root is not root:
+                name = element_name(value)
+                if name is None:
+                    del values[attribute.name]
+                else:
+                    values[attribute.name] = _resolve(copied, attribute, name)
+        name = element_name(copied)
+        id_attribute = copied.spec.id_attribute
+        if root is not None and id_attribute is not None and name is not None:
+            holder = copied._scope.lookup(cast(str, id_attribute.namespace), name)
+            if holder is not None:
+                raise DuplicateIdentifierError(
+                    f"{parent.path}: cannot add a copy of {original.path}: its "
+                    f"{id_attribute.namespace} name {name!r} is taken by {holder.path}")
+    if root is None:
+        return
+    for copied in clone.iter_elements():
+        attached = copied._attached
+        if attached is not None:
+            copied._scope.attach(attached._scope)
+        name = element_name(copied)
+        id_attribute = copied.spec.id_attribute
+        if id_attribute is not None and name is not None:
+            copied._scope.claim(cast(str, id_attribute.namespace), name, copied, copied.path)
+
+
+# ---------------------------------------------------------------------------- comparison
+
+
+def _same_values(a: Element, b: Element) -> bool:
+    values_a, values_b = a._values, b._values
+    if values_a.keys() != values_b.keys():
+        return False
+    spec = a.spec
+    for name in values_a:
+        attribute = spec.by_name[name]
+        x, y = _read(a, attribute), _read(b, attribute)
+        if isinstance(x, Element) or isinstance(y, Element):
+            x = element_name(x) if isinstance(x, Element) else x
+            y = element_name(y) if isinstance(y, Element) else y
+        if not same_value(x, y):
+            return False
+    return True
+
+
+def _is_empty_array(stored: object) -> bool:
+    return type(stored) is np.ndarray and not cast(np.ndarray[tuple[int], np.dtype[np.generic]],
+                                                   stored).size
+
+
+def same_value(a: object, b: object) -> bool:
+    """Equality of attribute values, arrays included."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        try:
+            return bool(np.array_equal(np.asarray(a), np.asarray(b)))
+        except (TypeError, ValueError):
+            return False
+    return a == b
+
+
+def _children_by_tag(element: Element) -> dict[str, list[Element]]:
+    groups: dict[str, list[Element]] = {}
+    for child in element._children:
+        groups.setdefault(child.spec.tag, []).append(child)
+    return groups
+
+
+# ---------------------------------------------------------------------------- internal API
+# What the features (parse, export, composition, validation, ...) use of the tree.
+
+
+def values(element: Element) -> dict[str, object]:
+    """The stored values by XML name (read only: set through the element or the functions
+    below). Lazy text and links are as stored; :func:`read_value` gives what users read."""
+    return element._values
+
+
+def children(element: Element) -> Sequence[Element]:
+    """The children in document order (the tree's own list: do not modify)."""
+    return element._children
+
+
+def parent_of(element: Element) -> Element | None:
+    return element._parent
+
+
+def children_with_tag(element: Element, tag: str | None) -> list[Element]:
+    """The children (only those with ``tag`` if given; a tag the grammar does not allow
+    here is an error)."""
+    if tag is None:
+        return list(element._children)
+    element._child_spec(tag)
+    return [c for c in element._children if c.spec.tag == tag]
+
+
+def model_of(element: Element) -> ModelBase | None:
+    """The model whose tree holds ``element`` (``None`` once removed)."""
+    return element._root
+
+
+def scope_of(element: Element) -> NameScope:
+    """The name scope the element's name lives in."""
+    return element._scope
+
+
+def attached_at(element: Element) -> ModelBase | None:
+    """The model attached at ``element``, an attachment frame."""
+    return element._attached
+
+
+def scope_model(scope: NameScope) -> ModelBase:
+    """The model whose scope ``scope`` is."""
+    return cast(ModelBase, scope.model)
+
+
+def attached_models(model: ModelBase) -> list[ModelBase]:
+    """The models attached to ``model`` (not nested ones), in document order."""
+    if not model._scope.attached:
+        return []
+    return [e._attached for e in model.iter_elements() if e._attached is not None]
+
+
+def child_scope(parent: Element) -> NameScope:
+    """The scope of what is added under ``parent``."""
+    return _child_scope(parent)
+
+
+def frame_of(model: ModelBase) -> Element | None:
+    """Where ``model`` is attached, if it is."""
+    return model._frame
+
+
+def base_dir(model: ModelBase) -> str | None:
+    return model._base_dir
+
+
+def set_base_dir(model: ModelBase, folder: str | None) -> None:
+    model._base_dir = folder
+
+
+def memory_files(model: ModelBase) -> dict[str, bytes]:
+    """File contents the model was given in memory, by the path its attributes write."""
+    return model._files
+
+
+def single_child(element: Element, tag: str) -> Element | None:
+    return element._single(tag)
+
+
+def read_value(element: Element, attribute: AttributeSpec) -> object:
+    """The value users read for ``attribute`` (converted; a removed target reads None)."""
+    return _read(element, attribute)
+
+
+def new_child(parent: Element, child_spec: ChildSpec) -> Element:
+    """A new child of ``parent``, last among its children."""
+    child = _create(element_class(child_spec.class_name), parent)
+    _place(parent, child, child_spec, None)
+    return child
+
+
+def rejection(element: Element, attribute: AttributeSpec, value: object,
+              rejected: Rejected) -> Exception:
+    """The error for a value ``attribute`` refused on ``element``, naming both."""
+    return element._reject(attribute, value, rejected)
+
+
+def assign(element: Element, attribute: AttributeSpec, value: object) -> None:
+    """Set ``attribute`` from a Python value, as assignment does."""
+    element._assign(attribute, value)
+
+
+def assign_text(element: Element, attribute: AttributeSpec, text: str) -> None:
+    """Set ``attribute`` from text read from a file (numbers stay text once checked; names
+    may hold '/'; references link when their target exists); raises :class:`Rejected`."""
+    if not text:
+        element._unset(attribute)  # an empty value: MuJoCo reads it as absent
+        return
+    stored = attribute.codec.parse(text)
+    if attribute.is_reference:
+        stored = _resolve(element, attribute, text)
+    element._store(attribute, stored)
+
+
+def attach_at(frame: Element, model: ModelBase) -> None:
+    """Record that ``model`` is attached at ``frame`` (placement is composition's job)."""
+    frame._scope.attach(model._scope)
+    frame._attached = model
+    model._frame = frame
+
+
+def detach_model(model: ModelBase) -> None:
+    """Undo :func:`attach_at`; the frame stays where it is."""
+    _detach_model(model)
+
+
+def remove_subtree(element: Element) -> None:
+    """``element.remove()`` without the guard on merged sections."""
+    Element.remove(element)
+
+
+def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
+    """``top``'s subtree in the order the exported XML has it: attached models' bodies inside
+    their frames, their other sections after ours (when ``attachments``)."""
+    pending: list[ModelBase] = []
+
+    def walk(elements: list[Element]) -> Iterator[Element]:
+        stack = list(reversed(elements))
+        while stack:
+            element = stack.pop()
+            yield element
+            inside = list(children(element))
+            attached = attached_at(element)
+            if attached is not None and attachments:
+                for section in children(attached):
+                    if section.spec.holds_bodies:
+                        inside += children(section)
+                pending.append(attached)
+            stack.extend(reversed(inside))
+
+    yield from walk([top])
+    while pending:
+        model = pending.pop(0)
+        for section in children(model):
+            if not section.spec.holds_bodies:
+                yield from walk(list(children(section)))

@@ -1,0 +1,69 @@
+"""A whole model (or one element) as MJCF text: the writer, keyframes combined, and the
+files renamed when the text is for a virtual file system or a folder of its own."""
+
+from __future__ import annotations
+
+from typing import Final
+
+from typed_mjcf import _tree
+from typed_mjcf._codecs import DEFAULT_FORMAT, Format
+from typed_mjcf._export import FileNamer, Writer
+from typed_mjcf._files import CollectedFiles, collect_files, is_model_file_name
+from typed_mjcf._gc import collector_paused
+from typed_mjcf._keyframes import combine_keyframes, compile_layout, has_keyframes
+from typed_mjcf._parse import is_model_text, parse_path
+from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf._xmltext import serialize
+
+NO_ATTRIBUTES: Final[frozenset[str]] = frozenset()
+
+
+def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
+                 collected: CollectedFiles | None = None) -> str:
+    """The XML text of ``element`` and its subtree (attached models included); with
+    ``collected``, every file by its flat name and no folder attributes."""
+    file_namer: FileNamer | None = None if collected is None else collected.name_of
+    skip = NO_ATTRIBUTES if collected is None else collected.directory_attributes
+    with collector_paused():  # an export makes no reference cycles, only short-lived text
+        writer = Writer(element, fmt, file_namer, skip)
+        if not writer.composed:
+            return writer.text(element, pretty_print)
+        if not isinstance(element, ModelBase) or _tree.model_of(element) is not element:
+            return serialize(writer.element(element, None), pretty_print)
+        node = writer.model(element)
+        if has_keyframes(writer):
+            if collected is None:  # the layout is compiled from memory: files by flat names
+                collected = collect(element)
+                layout = Writer(element, DEFAULT_FORMAT, collected.name_of,
+                                collected.directory_attributes)
+                layout_xml = serialize(layout.model(element), pretty_print=False)
+            else:
+                layout_xml = serialize(node, pretty_print=False)
+            combine_keyframes(writer, node, compile_layout(layout_xml, collected.files))
+        return serialize(node, pretty_print)
+
+
+def collect(model: ModelBase) -> CollectedFiles:
+    """Every file the model uses, by a flat unique name."""
+    return collect_files(model, rewrite_model_file)
+
+
+def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT,
+             pretty_print: bool = True) -> tuple[str, CollectedFiles]:
+    """The model's XML with every file by its flat name (and no folder attributes), and the
+    files: what MuJoCo compiles from memory and what a folder export writes."""
+    collected = collect(model)
+    return element_text(model, fmt, pretty_print, collected), collected
+
+
+def rewrite_model_file(path: str, contents: bytes, collected: CollectedFiles,
+                       models: tuple[str, ...]) -> bytes:
+    """An MJCF file the model uses (an ``<asset><model>``), rewritten to find its own files
+    among ``collected``: MuJoCo resolves them against its own folder and ``<compiler>``, and
+    in a virtual file system they get flat names like the main model's."""
+    if not is_model_file_name(path) or not is_model_text(contents):
+        return contents
+    submodel = parse_path(path)
+    sub_collected = CollectedFiles(files=collected.files, folded=collected.folded)
+    collect_files(submodel, rewrite_model_file, sub_collected, models)
+    return element_text(submodel, DEFAULT_FORMAT, True, sub_collected).encode("utf-8")
