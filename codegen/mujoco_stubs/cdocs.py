@@ -84,3 +84,23 @@ def field_doc(class_name: str, field: str) -> str | None:
         return None
     found = every.get("mj" + class_name[2:], {}).get(field)
     return None if found is None or not found.doc else found.text()
+
+
+@cache
+def _struct_decls() -> dict[str, object]:
+    return dict(importlib.import_module("mujoco.introspect.structs").STRUCTS)
+
+
+def element_struct(class_name: str, field: str) -> str | None:
+    """The C struct an array or pointer field holds (``mjvScene.geoms`` -> ``mjvGeom``)."""
+    if not class_name.startswith("Mj"):
+        return None
+    decl = _struct_decls().get("mj" + class_name[2:])
+    for f in getattr(decl, "fields", ()):
+        if getattr(f, "name", None) != field:
+            continue
+        inner = getattr(getattr(f, "type", None), "inner_type", None)
+        name = getattr(inner, "name", None)
+        if isinstance(name, str) and name.startswith("mj") and not name.startswith("mjt"):
+            return name
+    return None

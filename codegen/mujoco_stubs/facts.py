@@ -73,6 +73,9 @@ PARAMS: dict[str, str] = {
     "mujoco._specs:MjSpec.copy_back(model)": f"{_MJ}.MjModel",
     "mujoco._specs:MjSpec.recompile(m)": f"{_MJ}.MjModel",
     "mujoco._specs:MjSpec.recompile(d)": f"{_MJ}.MjData",
+    # py::dict in the binding (a dict, not any mapping): file name -> contents
+    "mujoco._specs:MjSpec.from_string(assets)": "dict[str, bytes] | None",
+    "mujoco._specs:MjSpec.from_file(assets)": "dict[str, bytes] | None",
     # a site or frame of the parent spec to attach at, or its name
     "mujoco._specs:MjSpec.attach(site)": "mujoco._specs.MjsSite | str | None",
     "mujoco._specs:MjSpec.attach(frame)": "mujoco._specs.MjsFrame | str | None",
@@ -94,6 +97,8 @@ ATTRIBUTES: dict[str, str] = {
     "mujoco:PLUGIN_HANDLES": "list[ctypes.CDLL]",
     # float64 in every published wheel (MJTNUM_BYTES == 8); the array fields say so too
     "mujoco:MJTNUM_DTYPE": "type[numpy.float64]",
+    # py::dict in the binding: file name -> contents
+    "mujoco._specs:MjSpec.assets": "dict[str, bytes]",
     "mujoco.batch:SimulationError.ids": "numpy.typing.NDArray[typing.Any]",
     "mujoco.batch:Batch.model": f"{_MJ}.MjModel",
     "mujoco.batch:Batch.state": _ARRAY,

@@ -60,10 +60,12 @@ class _Transform(ast.NodeTransformer):
 class _Annotated(_Transform):
     """``Annotated[NDArray[float64], "[3, 1]", "flags.writeable"]``: the array parameters.
 
-    pybind11's Eigen and ``array_t`` casters convert any array-like input (a list, a float32
-    array) to a temporary float64 array, but an output must be an array of exactly that dtype
-    (flagged ``writeable``) or MuJoCo's result would land in the temporary: inputs become
-    ``ArrayLike``, outputs and return values keep ``NDArray[dtype]``.
+    pybind11's Eigen caster converts an input from any numpy array or (nested) sequence of
+    numbers of the right shape (a list, a float32 array), but not from a scalar; an output
+    must be an array of exactly that dtype (flagged ``writeable``) or MuJoCo's result would
+    land in a temporary copy. Inputs become ``NDArray[Any] | Sequence[float]`` (a sequence of
+    sequences for a matrix, ``int`` for integer arrays); outputs and return values keep
+    ``NDArray[dtype]``.
     """
 
     def __init__(self, parameter: bool) -> None:
@@ -77,7 +79,14 @@ class _Annotated(_Transform):
                         for m in meta)
         is_array = isinstance(inner, ast.Subscript) and dotted(inner.value) == NDARRAY
         if is_array and self.parameter and not writeable:
-            return parse_expr(ARRAY_LIKE)
+            assert isinstance(inner, ast.Subscript)
+            number = "int" if "int" in ast.unparse(inner.slice) else "float"
+            dims = next((m.value for m in meta if isinstance(m, ast.Constant)
+                         and isinstance(m.value, str) and m.value.startswith("[")), "")
+            matrix = bool(dims) and not dims.replace(" ", "").endswith(",1]")
+            items = (f"collections.abc.Sequence[collections.abc.Sequence[{number}]]" if matrix
+                     else f"collections.abc.Sequence[{number}]")
+            return parse_expr(f"numpy.typing.NDArray[typing.Any] | {items}")
         return self.expr(inner)
 
     def generic_visit_expr(self, node: ast.expr) -> ast.expr:
@@ -137,6 +146,40 @@ def none_defaults(tree: ast.Module, module: str) -> None:
             parts = members(arg.annotation)
             if not any(is_none(p) or dotted(p) in ("typing.Any", "Incomplete") for p in parts):
                 arg.annotation = union([*parts, ast.Constant(value=None)])
+
+
+# ------------------------------------------------------------------------------- sequences
+
+
+def _plural(word: str) -> str:
+    if word.endswith("y") and word[-2:-1] not in ("a", "e", "o", "u"):
+        return word[:-1] + "ies"
+    if word.endswith(("s", "x", "sh", "ch")):
+        return word + "es"
+    return word + "s"
+
+
+def element_sequences(tree: ast.Module, module: str) -> None:
+    """Bare ``list``/``tuple`` getters that hold one kind of element, typed with it.
+
+    ``spec.joints`` (py::list) holds ``MjsJoint``s: a property named the plural of a spec
+    element kind lists that kind. ``scene.geoms`` (a tuple) holds ``MjvGeom``s: the C field
+    (``mjvGeom* geoms`` in ``mjvScene``, from mujoco.introspect) names the struct.
+    """
+    defined = {c.name for c in tree.body if isinstance(c, ast.ClassDef)}
+    plurals = {_plural(name[3:].lower()): name for name in defined if name.startswith("Mjs")}
+    for cls in classes(tree):
+        for f in cls.body:
+            if not (isinstance(f, ast.FunctionDef) and is_getter(f) and f.returns is not None):
+                continue
+            kind = dotted(f.returns)
+            if kind == "list" and f.name in plurals:
+                f.returns = parse_expr(f"list[{plurals[f.name]}]")
+            elif kind == "tuple":
+                struct = cdocs.element_struct(cls.name, f.name)
+                name = None if struct is None else "M" + struct[1:]
+                if name in defined:
+                    f.returns = parse_expr(f"tuple[{name}, ...]")
 
 
 # ------------------------------------------------------------------------------- generics
@@ -292,6 +335,23 @@ def subsumed_overloads(tree: ast.Module, module: str) -> None:
                 continue
             kept.append(stmt)
         cls.body = kept
+
+
+def sequence_iteration(tree: ast.Module, module: str) -> None:
+    """``for contact in d.contact``: Python iterates a class with ``__getitem__(int)`` and no
+    ``__iter__`` by indexing until IndexError, which pyright models and mypy does not; an
+    ``__iter__`` yielding what the integer ``__getitem__`` returns says it to both."""
+    for cls in classes(tree):
+        names = {f.name for f in cls.body if isinstance(f, ast.FunctionDef)}
+        if "__iter__" in names or "__getitem__" not in names:
+            continue
+        item = next((f.returns for f in cls.body
+                     if isinstance(f, ast.FunctionDef) and f.name == "__getitem__"
+                     and len(f.args.args) == 2 and f.args.args[1].annotation is not None
+                     and dotted(f.args.args[1].annotation) == "typing.SupportsIndex"), None)
+        if item is not None:
+            cls.body += ast.parse("def __iter__(self) -> collections.abc.Iterator["
+                                  f"{ast.unparse(item)}]: ...").body
 
 
 # ------------------------------------------------------------------------------- enums
@@ -464,11 +524,13 @@ PYBIND_PASSES: tuple[Pass, ...] = (
     annotated_arrays,
     integers,
     none_defaults,
+    element_sequences,
     bare_generics,
     setters,
     private_fields,
     unhashable,
     subsumed_overloads,
+    sequence_iteration,
     field_docs,
     enums,
     bind_methods,

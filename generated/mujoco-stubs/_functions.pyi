@@ -7,6 +7,8 @@ import numpy
 import numpy.typing
 import typing
 import typing_extensions
+import collections
+import collections.abc
 import mujoco
 __all__: list[str] = ['mj_Euler', 'mj_RungeKutta', 'mj_actuatorInputName', 'mj_addContact', 'mj_addM', 'mj_angmomMat', 'mj_applyFT', 'mj_camlight', 'mj_checkAcc', 'mj_checkPos', 'mj_checkVel', 'mj_clearCache', 'mj_collision', 'mj_comPos', 'mj_comVel', 'mj_compareFwdInv', 'mj_constraintUpdate', 'mj_contactForce', 'mj_copyData', 'mj_copyState', 'mj_crb', 'mj_defaultLROpt', 'mj_defaultOption', 'mj_defaultSolRefImp', 'mj_defaultVisual', 'mj_differentiatePos', 'mj_embedAssets', 'mj_energyPos', 'mj_energyVel', 'mj_extractState', 'mj_factorM', 'mj_flex', 'mj_forward', 'mj_forwardSkip', 'mj_fullM', 'mj_fwdAcceleration', 'mj_fwdActuation', 'mj_fwdConstraint', 'mj_fwdKinematics', 'mj_fwdPosition', 'mj_fwdVelocity', 'mj_geomDistance', 'mj_getCache', 'mj_getCacheCapacity', 'mj_getCacheSize', 'mj_getState', 'mj_getTotalmass', 'mj_id2name', 'mj_implicit', 'mj_initCtrlHistory', 'mj_initSensorHistory', 'mj_insideSite', 'mj_integratePos', 'mj_invConstraint', 'mj_invPosition', 'mj_invVelocity', 'mj_inverse', 'mj_inverseSkip', 'mj_isDual', 'mj_isPyramidal', 'mj_isSparse', 'mj_island', 'mj_jac', 'mj_jacBody', 'mj_jacBodyCom', 'mj_jacDot', 'mj_jacGeom', 'mj_jacPointAxis', 'mj_jacSite', 'mj_jacSubtreeCom', 'mj_kinematics', 'mj_loadAllPluginLibraries', 'mj_loadPluginLibrary', 'mj_loadTexture', 'mj_local2Global', 'mj_makeConstraint', 'mj_makeM', 'mj_maxContact', 'mj_mulJacTVec', 'mj_mulJacVec', 'mj_mulM', 'mj_mulM2', 'mj_multiRay', 'mj_name2id', 'mj_normalizeQuat', 'mj_objectAcceleration', 'mj_objectVelocity', 'mj_passive', 'mj_printData', 'mj_printFormattedData', 'mj_printFormattedModel', 'mj_printFormattedScene', 'mj_printModel', 'mj_printScene', 'mj_printSchema', 'mj_projectConstraint', 'mj_ray', 'mj_rayFlex', 'mj_rayHfield', 'mj_rayMesh', 'mj_readCtrl', 'mj_readSensor', 'mj_referenceConstraint', 'mj_resetCallbacks', 'mj_resetCtrl', 'mj_resetData', 'mj_resetDataDebug', 'mj_resetDataKeyframe', 'mj_rne', 'mj_rnePostConstraint', 'mj_saveLastXML', 'mj_saveModel', 'mj_sensorAcc', 'mj_sensorPos', 'mj_sensorVel', 'mj_setCacheCapacity', 'mj_setConst', 'mj_setKeyframe', 'mj_setLengthRange', 'mj_setState', 'mj_setTotalmass', 'mj_sizeModel', 'mj_solveM', 'mj_solveM2', 'mj_stateSize', 'mj_step', 'mj_step1', 'mj_step2', 'mj_subtreeVel', 'mj_tendon', 'mj_transmission', 'mj_version', 'mj_versionString', 'mjd_inverseFD', 'mjd_quatIntegrate', 'mjd_subQuat', 'mjd_transitionFD', 'mju_Halton', 'mju_L1', 'mju_add', 'mju_add3', 'mju_addScl', 'mju_addScl3', 'mju_addTo', 'mju_addTo3', 'mju_addToScl', 'mju_addToScl3', 'mju_axisAngle2Quat', 'mju_band2Dense', 'mju_bandDiag', 'mju_bandMulMatVec', 'mju_boxQP', 'mju_cholFactor', 'mju_cholFactorBand', 'mju_cholSolve', 'mju_cholSolveBand', 'mju_cholUpdate', 'mju_clip', 'mju_copy', 'mju_copy3', 'mju_copy4', 'mju_cross', 'mju_d2n', 'mju_decodePyramid', 'mju_dense2Band', 'mju_dense2sparse', 'mju_derivQuat', 'mju_dist3', 'mju_dot', 'mju_dot3', 'mju_eig3', 'mju_encodePyramid', 'mju_euler2Quat', 'mju_eye', 'mju_f2n', 'mju_fill', 'mju_getXMLDependencies', 'mju_insertionSort', 'mju_insertionSortInt', 'mju_isBad', 'mju_isZero', 'mju_mat2Quat', 'mju_mat2Rot', 'mju_max', 'mju_min', 'mju_mulMatMat', 'mju_mulMatMatT', 'mju_mulMatTMat', 'mju_mulMatTVec', 'mju_mulMatTVec3', 'mju_mulMatVec', 'mju_mulMatVec3', 'mju_mulPose', 'mju_mulQuat', 'mju_mulQuatAxis', 'mju_mulVecMatVec', 'mju_muscleBias', 'mju_muscleDynamics', 'mju_muscleGain', 'mju_n2d', 'mju_n2f', 'mju_negPose', 'mju_negQuat', 'mju_norm', 'mju_norm3', 'mju_normalize', 'mju_normalize3', 'mju_normalize4', 'mju_printMat', 'mju_printMatSparse', 'mju_quat2Mat', 'mju_quat2Vel', 'mju_quatIntegrate', 'mju_quatZ2Vec', 'mju_rayGeom', 'mju_raySkin', 'mju_rotVecQuat', 'mju_round', 'mju_scl', 'mju_scl3', 'mju_sigmoid', 'mju_sign', 'mju_sparse2dense', 'mju_springDamper', 'mju_sqrMatTD', 'mju_standardNormal', 'mju_str2Type', 'mju_sub', 'mju_sub3', 'mju_subFrom', 'mju_subFrom3', 'mju_subQuat', 'mju_sum', 'mju_sym2dense', 'mju_symmetrize', 'mju_threadpool', 'mju_transformSpatial', 'mju_transpose', 'mju_trnVecPose', 'mju_type2Str', 'mju_unit4', 'mju_warningText', 'mju_writeLog', 'mju_writeNumBytes', 'mju_zero', 'mju_zero3', 'mju_zero4', 'mjv_addGeoms', 'mjv_alignToCamera', 'mjv_applyPerturbForce', 'mjv_applyPerturbPose', 'mjv_cameraFrame', 'mjv_cameraFrustum', 'mjv_cameraInModel', 'mjv_cameraInRoom', 'mjv_connector', 'mjv_defaultCamera', 'mjv_defaultFigure', 'mjv_defaultFreeCamera', 'mjv_defaultOption', 'mjv_defaultPerturb', 'mjv_frustumHeight', 'mjv_initGeom', 'mjv_initPerturb', 'mjv_makeLights', 'mjv_model2room', 'mjv_moveCamera', 'mjv_moveModel', 'mjv_movePerturb', 'mjv_room2model', 'mjv_select', 'mjv_updateCamera', 'mjv_updateScene', 'mjv_updateSkin']
 
@@ -46,7 +48,7 @@ def mj_angmomMat(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, mat: num
     Compute subtree angular momentum matrix.
     """
 
-def mj_applyFT(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, force: numpy.typing.ArrayLike, torque: numpy.typing.ArrayLike, point: numpy.typing.ArrayLike, body: typing.SupportsIndex, qfrc_target: numpy.typing.NDArray[numpy.float64]) -> None:
+def mj_applyFT(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, force: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], torque: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], point: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], body: typing.SupportsIndex, qfrc_target: numpy.typing.NDArray[numpy.float64]) -> None:
     """
     Apply Cartesian force and torque (outside xfrc_applied mechanism).
     """
@@ -96,7 +98,7 @@ def mj_compareFwdInv(m: mujoco._structs.MjModel, d: mujoco._structs.MjData) -> N
     Compare forward and inverse dynamics, save results in fwdinv.
     """
 
-def mj_constraintUpdate(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jar: numpy.typing.ArrayLike, cost: numpy.typing.NDArray[numpy.float64] | None, flg_coneHessian: typing.SupportsIndex) -> None:
+def mj_constraintUpdate(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jar: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], cost: numpy.typing.NDArray[numpy.float64] | None, flg_coneHessian: typing.SupportsIndex) -> None:
     """
     Compute efc_state, efc_force, qfrc_constraint, and (optionally) cone Hessians. If cost is not NULL, set *cost = s(jar) where jar = Jac*qacc-aref.
     """
@@ -141,7 +143,7 @@ def mj_defaultVisual(vis: mujoco._structs.MjVisual) -> None:
     Set visual options to default values.
     """
 
-def mj_differentiatePos(m: mujoco._structs.MjModel, qvel: numpy.typing.NDArray[numpy.float64], dt: typing.SupportsFloat | typing.SupportsIndex, qpos1: numpy.typing.ArrayLike, qpos2: numpy.typing.ArrayLike) -> None:
+def mj_differentiatePos(m: mujoco._structs.MjModel, qvel: numpy.typing.NDArray[numpy.float64], dt: typing.SupportsFloat | typing.SupportsIndex, qpos1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], qpos2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Compute velocity by finite-differencing two positions.
     """
@@ -161,7 +163,7 @@ def mj_energyVel(m: mujoco._structs.MjModel, d: mujoco._structs.MjData) -> None:
     Evaluate velocity-dependent energy (kinetic).
     """
 
-def mj_extractState(m: mujoco._structs.MjModel, src: numpy.typing.ArrayLike, srcsig: typing.SupportsIndex, dst: numpy.typing.NDArray[numpy.float64], dstsig: typing.SupportsIndex) -> None:
+def mj_extractState(m: mujoco._structs.MjModel, src: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], srcsig: typing.SupportsIndex, dst: numpy.typing.NDArray[numpy.float64], dstsig: typing.SupportsIndex) -> None:
     """
     Extract a subset of components from a state previously obtained via mj_getState.
     """
@@ -261,22 +263,22 @@ def mj_implicit(m: mujoco._structs.MjModel, d: mujoco._structs.MjData) -> None:
     Implicit-in-velocity integrators.
     """
 
-def mj_initCtrlHistory(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, id: typing.SupportsIndex, times: numpy.typing.ArrayLike | None, values: numpy.typing.ArrayLike) -> None:
+def mj_initCtrlHistory(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, id: typing.SupportsIndex, times: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float] | None, values: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Initialize history buffer for actuator; if times is NULL, uses existing buffer timestamps.
     """
 
-def mj_initSensorHistory(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, id: typing.SupportsIndex, times: numpy.typing.ArrayLike | None, values: numpy.typing.ArrayLike, phase: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mj_initSensorHistory(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, id: typing.SupportsIndex, times: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float] | None, values: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], phase: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Initialize history buffer for sensor; if times is NULL, uses existing buffer timestamps. phase sets the user slot (last computation time for interval sensors).
     """
 
-def mj_insideSite(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, siteid: typing.SupportsIndex, point: numpy.typing.ArrayLike) -> int:
+def mj_insideSite(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, siteid: typing.SupportsIndex, point: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> int:
     """
     Return 1 if point is inside a site (convex hull for meshes), 0 otherwise.
     """
 
-def mj_integratePos(m: mujoco._structs.MjModel, qpos: numpy.typing.NDArray[numpy.float64], qvel: numpy.typing.ArrayLike, dt: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mj_integratePos(m: mujoco._structs.MjModel, qpos: numpy.typing.NDArray[numpy.float64], qvel: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], dt: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Integrate position with given velocity.
     """
@@ -326,7 +328,7 @@ def mj_island(m: mujoco._structs.MjModel, d: mujoco._structs.MjData) -> None:
     Find constraint islands.
     """
 
-def mj_jac(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacp: numpy.typing.NDArray[numpy.float64] | None, jacr: numpy.typing.NDArray[numpy.float64] | None, point: numpy.typing.ArrayLike, body: typing.SupportsIndex) -> None:
+def mj_jac(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacp: numpy.typing.NDArray[numpy.float64] | None, jacr: numpy.typing.NDArray[numpy.float64] | None, point: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], body: typing.SupportsIndex) -> None:
     """
     Compute 3/6-by-nv end-effector Jacobian of global point attached to given body.
     """
@@ -341,7 +343,7 @@ def mj_jacBodyCom(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacp: n
     Compute body center-of-mass end-effector Jacobian.
     """
 
-def mj_jacDot(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacp: numpy.typing.NDArray[numpy.float64] | None, jacr: numpy.typing.NDArray[numpy.float64] | None, point: numpy.typing.ArrayLike, body: typing.SupportsIndex) -> None:
+def mj_jacDot(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacp: numpy.typing.NDArray[numpy.float64] | None, jacr: numpy.typing.NDArray[numpy.float64] | None, point: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], body: typing.SupportsIndex) -> None:
     """
     Compute 3/6-by-nv Jacobian time derivative of global point attached to given body.
     """
@@ -351,7 +353,7 @@ def mj_jacGeom(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacp: nump
     Compute geom end-effector Jacobian.
     """
 
-def mj_jacPointAxis(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacPoint: numpy.typing.NDArray[numpy.float64] | None, jacAxis: numpy.typing.NDArray[numpy.float64] | None, point: numpy.typing.ArrayLike, axis: numpy.typing.ArrayLike, body: typing.SupportsIndex) -> None:
+def mj_jacPointAxis(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, jacPoint: numpy.typing.NDArray[numpy.float64] | None, jacAxis: numpy.typing.NDArray[numpy.float64] | None, point: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], axis: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], body: typing.SupportsIndex) -> None:
     """
     Compute translation end-effector Jacobian of point, and rotation Jacobian of axis.
     """
@@ -386,7 +388,7 @@ def mj_loadTexture(m: mujoco._structs.MjModel, id: typing.SupportsIndex) -> tupl
     Decode texture id to raw bytes, exactly what compilation would store in tex_data, with tex_nchannel channels; embedded textures are copied from the model. The buffer is allocated with mju_malloc and freed by the caller; colorspace receives the resolved colorspace (mjtColorSpace). Return 0 on success. Returns (pixels, colorspace), pixels an array of shape (height, width, nchannel).
     """
 
-def mj_local2Global(d: mujoco._structs.MjData, xpos: numpy.typing.NDArray[numpy.float64], xmat: numpy.typing.NDArray[numpy.float64], pos: numpy.typing.ArrayLike, quat: numpy.typing.ArrayLike, body: typing.SupportsIndex, sameframe: typing.SupportsIndex) -> None:
+def mj_local2Global(d: mujoco._structs.MjData, xpos: numpy.typing.NDArray[numpy.float64], xmat: numpy.typing.NDArray[numpy.float64], pos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], body: typing.SupportsIndex, sameframe: typing.SupportsIndex) -> None:
     """
     Map from body local to global Cartesian coordinates, sameframe takes values from mjtSameFrame.
     """
@@ -406,27 +408,27 @@ def mj_maxContact(m: mujoco._structs.MjModel, g1: typing.SupportsIndex, g2: typi
     Return the maximum number of contacts that can be generated between two geoms. If has_margin is -1, then the margin is pulled from the model, otherwise if has_margin > 0 indicates that the geoms have a positive margin.
     """
 
-def mj_mulJacTVec(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mj_mulJacTVec(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply dense or sparse constraint Jacobian transpose by vector.
     """
 
-def mj_mulJacVec(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mj_mulJacVec(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply dense or sparse constraint Jacobian by vector.
     """
 
-def mj_mulM(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mj_mulM(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply vector by inertia matrix.
     """
 
-def mj_mulM2(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mj_mulM2(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply vector by (inertia matrix)^(1/2).
     """
 
-def mj_multiRay(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, geomgroup: numpy.typing.ArrayLike | None, flg_static: bool, bodyexclude: typing.SupportsIndex, geomid: numpy.typing.NDArray[numpy.int32], dist: numpy.typing.NDArray[numpy.float64], normal: numpy.typing.NDArray[numpy.float64] | None, nray: typing.SupportsIndex, cutoff: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mj_multiRay(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], geomgroup: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int] | None, flg_static: bool, bodyexclude: typing.SupportsIndex, geomid: numpy.typing.NDArray[numpy.int32], dist: numpy.typing.NDArray[numpy.float64], normal: numpy.typing.NDArray[numpy.float64] | None, nray: typing.SupportsIndex, cutoff: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Intersect multiple rays emanating from a single point, compute normals if given. Similar semantics to mj_ray, but vec, normal and dist are arrays. Geoms further than cutoff are ignored.
     """
@@ -496,22 +498,22 @@ def mj_projectConstraint(m: mujoco._structs.MjModel, d: mujoco._structs.MjData) 
     Compute inverse constraint inertia efc_AR.
     """
 
-def mj_ray(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, geomgroup: numpy.typing.ArrayLike | None, flg_static: bool, bodyexclude: typing.SupportsIndex, geomid: numpy.typing.NDArray[numpy.int32] | None, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
+def mj_ray(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], geomgroup: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int] | None, flg_static: bool, bodyexclude: typing.SupportsIndex, geomid: numpy.typing.NDArray[numpy.int32] | None, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
     """
     Intersect ray (pnt+x*vec, x>=0) with visible geoms, except geoms in bodyexclude. Return distance (x) to nearest surface, or -1 if no intersection. geomgroup, flg_static are as in mjvOption; geomgroup==NULL skips group exclusion.
     """
 
-def mj_rayFlex(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, flex_layer: typing.SupportsIndex, flg_vert: bool, flg_edge: bool, flg_face: bool, flg_skin: bool, flexid: typing.SupportsIndex, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, vertid: numpy.typing.NDArray[numpy.int32] | None=None, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
+def mj_rayFlex(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, flex_layer: typing.SupportsIndex, flg_vert: bool, flg_edge: bool, flg_face: bool, flg_skin: bool, flexid: typing.SupportsIndex, pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vertid: numpy.typing.NDArray[numpy.int32] | None=None, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
     """
     Intersect ray with flex; return nearest distance or -1 if no intersection, and also output nearest vertex id and surface normal.
     """
 
-def mj_rayHfield(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, geomid: typing.SupportsIndex, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
+def mj_rayHfield(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, geomid: typing.SupportsIndex, pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
     """
     Intersect ray with hfield; return nearest distance or -1 if no intersection.
     """
 
-def mj_rayMesh(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, geomid: typing.SupportsIndex, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
+def mj_rayMesh(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, geomid: typing.SupportsIndex, pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
     """
     Intersect ray with mesh; return nearest distance or -1 if no intersection.
     """
@@ -611,7 +613,7 @@ def mj_setLengthRange(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, ind
     Set actuator_lengthrange for specified actuator; return 1 if ok, 0 if error.
     """
 
-def mj_setState(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, state: numpy.typing.ArrayLike, sig: typing.SupportsIndex) -> None:
+def mj_setState(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, state: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], sig: typing.SupportsIndex) -> None:
     """
     Set state.
     """
@@ -626,12 +628,12 @@ def mj_sizeModel(m: mujoco._structs.MjModel) -> int:
     Return size of buffer needed to hold model.
     """
 
-def mj_solveM(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, x: numpy.typing.NDArray[numpy.float64], y: numpy.typing.ArrayLike) -> None:
+def mj_solveM(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, x: numpy.typing.NDArray[numpy.float64], y: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Solve linear system M * x = y using factorization:  x = inv(L'*D*L)*y
     """
 
-def mj_solveM2(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, x: numpy.typing.NDArray[numpy.float64], y: numpy.typing.ArrayLike, sqrtInvD: numpy.typing.ArrayLike) -> None:
+def mj_solveM2(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, x: numpy.typing.NDArray[numpy.float64], y: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], sqrtInvD: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Half of linear solve:  x = sqrt(inv(D))*inv(L')*y
     """
@@ -686,12 +688,12 @@ def mjd_inverseFD(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, eps: ty
     Finite differenced Jacobians of (force, sensors) = mj_inverse(state, acceleration)   All outputs are optional. Output dimensions (transposed w.r.t Control Theory convention):     DfDq: (nv x nv)     DfDv: (nv x nv)     DfDa: (nv x nv)     DsDq: (nv x nsensordata)     DsDv: (nv x nsensordata)     DsDa: (nv x nsensordata)     DmDq: (nv x nC)   single-letter shortcuts:     inputs: q=qpos, v=qvel, a=qacc     outputs: f=qfrc_inverse, s=sensordata, m=M   notes:     optionally computes mass matrix Jacobian DmDq     flg_actuation specifies whether to subtract qfrc_actuator from qfrc_inverse
     """
 
-def mjd_quatIntegrate(vel: numpy.typing.ArrayLike, scale: typing.SupportsFloat | typing.SupportsIndex, Dquat: numpy.typing.NDArray[numpy.float64], Dvel: numpy.typing.NDArray[numpy.float64], Dscale: numpy.typing.NDArray[numpy.float64]) -> None:
+def mjd_quatIntegrate(vel: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scale: typing.SupportsFloat | typing.SupportsIndex, Dquat: numpy.typing.NDArray[numpy.float64], Dvel: numpy.typing.NDArray[numpy.float64], Dscale: numpy.typing.NDArray[numpy.float64]) -> None:
     """
     Derivatives of mju_quatIntegrate.
     """
 
-def mjd_subQuat(qa: numpy.typing.ArrayLike, qb: numpy.typing.ArrayLike, Da: numpy.typing.NDArray[numpy.float64] | None, Db: numpy.typing.NDArray[numpy.float64] | None) -> None:
+def mjd_subQuat(qa: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], qb: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], Da: numpy.typing.NDArray[numpy.float64] | None, Db: numpy.typing.NDArray[numpy.float64] | None) -> None:
     """
     Derivatives of mju_subQuat.
     """
@@ -711,52 +713,52 @@ def mju_L1(vec: numpy.typing.NDArray[numpy.float64]) -> float:
     Return L1 norm: sum(abs(vec)).
     """
 
-def mju_add(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> None:
+def mju_add(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec1 + vec2.
     """
 
-def mju_add3(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> None:
+def mju_add3(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec1 + vec2.
     """
 
-def mju_addScl(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike, scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_addScl(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Set res = vec1 + vec2*scl.
     """
 
-def mju_addScl3(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike, scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_addScl3(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Set res = vec1 + vec2*scl.
     """
 
-def mju_addTo(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_addTo(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = res + vec.
     """
 
-def mju_addTo3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_addTo3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = res + vec.
     """
 
-def mju_addToScl(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_addToScl(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Set res = res + vec*scl.
     """
 
-def mju_addToScl3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_addToScl3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Set res = res + vec*scl.
     """
 
-def mju_axisAngle2Quat(res: numpy.typing.NDArray[numpy.float64], axis: numpy.typing.ArrayLike, angle: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_axisAngle2Quat(res: numpy.typing.NDArray[numpy.float64], axis: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], angle: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Convert axisAngle to quaternion.
     """
 
-def mju_band2Dense(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex, flg_sym: bool) -> None:
+def mju_band2Dense(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex, flg_sym: bool) -> None:
     """
     Convert banded matrix to dense matrix, fill upper triangle if flg_sym>0.
     """
@@ -766,12 +768,12 @@ def mju_bandDiag(i: typing.SupportsIndex, ntotal: typing.SupportsIndex, nband: t
     Address of diagonal element i in band-dense matrix representation.
     """
 
-def mju_bandMulMatVec(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex, nvec: typing.SupportsIndex, flg_sym: bool) -> None:
+def mju_bandMulMatVec(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex, nvec: typing.SupportsIndex, flg_sym: bool) -> None:
     """
     Multiply band-diagonal matrix with nvec vectors, include upper triangle if flg_sym>0.
     """
 
-def mju_boxQP(res: numpy.typing.NDArray[numpy.float64], R: numpy.typing.NDArray[numpy.float64], index: numpy.typing.NDArray[numpy.int32] | None, H: numpy.typing.ArrayLike, g: numpy.typing.ArrayLike, lower: numpy.typing.ArrayLike | None, upper: numpy.typing.ArrayLike | None) -> int:
+def mju_boxQP(res: numpy.typing.NDArray[numpy.float64], R: numpy.typing.NDArray[numpy.float64], index: numpy.typing.NDArray[numpy.int32] | None, H: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], g: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], lower: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float] | None, upper: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float] | None) -> int:
     """
     minimize 0.5*x'*H*x + x'*g  s.t. lower <= x <= upper; return rank or -1 if failed   inputs:     n           - problem dimension     H           - SPD matrix                n*n     g           - bias vector               n     lower       - lower bounds              n     upper       - upper bounds              n     res         - solution warmstart        n   return value:     nfree <= n  - rank of unconstrained subspace, -1 if failure   outputs (required):     res         - solution                  n     R           - subspace Cholesky factor  nfree*nfree    allocated: n*(n+7)   outputs (optional):     index       - set of free dimensions    nfree          allocated: n   notes:     the initial value of res is used to warmstart the solver     R must have allocatd size n*(n+7), but only nfree*nfree values are used in output     index (if given) must have allocated size n, but only nfree values are used in output     only the lower triangles of H and R and are read from and written to, respectively     the convenience function mju_boxQPmalloc allocates the required data structures
     """
@@ -786,12 +788,12 @@ def mju_cholFactorBand(mat: numpy.typing.NDArray[numpy.float64], ntotal: typing.
     Band-dense Cholesky decomposition.  Return minimum value in the factorized diagonal, or 0 if rank-deficient.  mat has (ntotal-ndense) x nband + ndense x ntotal elements.  The first (ntotal-ndense) x nband store the band part, left of diagonal, inclusive.  The second ndense x ntotal store the band part as entire dense rows.  Add diagadd+diagmul*mat_ii to diagonal before factorization.
     """
 
-def mju_cholSolve(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike) -> None:
+def mju_cholSolve(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Solve (mat*mat') * res = vec, where mat is a Cholesky factor.
     """
 
-def mju_cholSolveBand(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex) -> None:
+def mju_cholSolveBand(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex) -> None:
     """
     Solve (mat*mat')*res = vec where mat is a band-dense Cholesky factor.
     """
@@ -806,77 +808,77 @@ def mju_clip(x: typing.SupportsFloat | typing.SupportsIndex, min: typing.Support
     Clip x to the range [min, max].
     """
 
-def mju_copy(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_copy(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec.
     """
 
-def mju_copy3(res: numpy.typing.NDArray[numpy.float64], data: numpy.typing.ArrayLike) -> None:
+def mju_copy3(res: numpy.typing.NDArray[numpy.float64], data: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec.
     """
 
-def mju_copy4(res: numpy.typing.NDArray[numpy.float64], data: numpy.typing.ArrayLike) -> None:
+def mju_copy4(res: numpy.typing.NDArray[numpy.float64], data: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec.
     """
 
-def mju_cross(res: numpy.typing.NDArray[numpy.float64], a: numpy.typing.ArrayLike, b: numpy.typing.ArrayLike) -> None:
+def mju_cross(res: numpy.typing.NDArray[numpy.float64], a: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], b: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Compute cross-product: res = cross(a, b).
     """
 
-def mju_d2n(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_d2n(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert from double to mjtNum.
     """
 
-def mju_decodePyramid(force: numpy.typing.NDArray[numpy.float64], pyramid: numpy.typing.ArrayLike, mu: numpy.typing.ArrayLike) -> None:
+def mju_decodePyramid(force: numpy.typing.NDArray[numpy.float64], pyramid: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], mu: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert pyramid representation to contact force.
     """
 
-def mju_dense2Band(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex) -> None:
+def mju_dense2Band(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], ntotal: typing.SupportsIndex, nband: typing.SupportsIndex, ndense: typing.SupportsIndex) -> None:
     """
     Convert dense matrix to banded matrix.
     """
 
-def mju_dense2sparse(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, rownnz: numpy.typing.NDArray[numpy.int32], rowadr: numpy.typing.NDArray[numpy.int32], colind: numpy.typing.NDArray[numpy.int32]) -> int:
+def mju_dense2sparse(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], rownnz: numpy.typing.NDArray[numpy.int32], rowadr: numpy.typing.NDArray[numpy.int32], colind: numpy.typing.NDArray[numpy.int32]) -> int:
     """
     Convert matrix from dense to sparse.  nnz is size of res and colind; return 1 if too small, 0 otherwise.
     """
 
-def mju_derivQuat(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.ArrayLike, vel: numpy.typing.ArrayLike) -> None:
+def mju_derivQuat(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vel: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Compute time-derivative of quaternion, given 3D rotational velocity.
     """
 
-def mju_dist3(pos1: numpy.typing.ArrayLike, pos2: numpy.typing.ArrayLike) -> float:
+def mju_dist3(pos1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], pos2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Return Cartesian distance between 3D vectors pos1 and pos2.
     """
 
-def mju_dot(vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> float:
+def mju_dot(vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Return dot-product of vec1 and vec2.
     """
 
-def mju_dot3(vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> float:
+def mju_dot3(vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Return dot-product of vec1 and vec2.
     """
 
-def mju_eig3(eigval: numpy.typing.NDArray[numpy.float64], eigvec: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike) -> int:
+def mju_eig3(eigval: numpy.typing.NDArray[numpy.float64], eigvec: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> int:
     """
     Eigenvalue decomposition of symmetric 3x3 matrix, mat = eigvec * diag(eigval) * eigvec'.
     """
 
-def mju_encodePyramid(pyramid: numpy.typing.NDArray[numpy.float64], force: numpy.typing.ArrayLike, mu: numpy.typing.ArrayLike) -> None:
+def mju_encodePyramid(pyramid: numpy.typing.NDArray[numpy.float64], force: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], mu: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert contact force to pyramid representation.
     """
 
-def mju_euler2Quat(quat: numpy.typing.NDArray[numpy.float64], euler: numpy.typing.ArrayLike, seq: str) -> None:
+def mju_euler2Quat(quat: numpy.typing.NDArray[numpy.float64], euler: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], seq: str) -> None:
     """
     Convert sequence of Euler angles (radians) to quaternion. seq[0,1,2] must be in 'xyzXYZ', lower/upper-case mean intrinsic/extrinsic rotations.
     """
@@ -886,7 +888,7 @@ def mju_eye(mat: numpy.typing.NDArray[numpy.float64]) -> None:
     Set mat to the identity matrix.
     """
 
-def mju_f2n(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_f2n(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert from float to mjtNum.
     """
@@ -921,12 +923,12 @@ def mju_isZero(vec: numpy.typing.NDArray[numpy.float64]) -> int:
     Return 1 if all elements are 0.
     """
 
-def mju_mat2Quat(quat: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike) -> None:
+def mju_mat2Quat(quat: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert 3D rotation matrix to quaternion.
     """
 
-def mju_mat2Rot(quat: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike) -> int:
+def mju_mat2Rot(quat: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> int:
     """
     Extract 3D rotation from an arbitrary 3x3 matrix by refining the input quaternion. Return the number of iterations required to converge.
     """
@@ -941,102 +943,102 @@ def mju_min(a: typing.SupportsFloat | typing.SupportsIndex, b: typing.SupportsFl
     Return min(a,b) with single evaluation of a and b.
     """
 
-def mju_mulMatMat(res: numpy.typing.NDArray[numpy.float64], mat1: numpy.typing.ArrayLike, mat2: numpy.typing.ArrayLike) -> None:
+def mju_mulMatMat(res: numpy.typing.NDArray[numpy.float64], mat1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], mat2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Multiply matrices: res = mat1 * mat2.
     """
 
-def mju_mulMatMatT(res: numpy.typing.NDArray[numpy.float64], mat1: numpy.typing.ArrayLike, mat2: numpy.typing.ArrayLike) -> None:
+def mju_mulMatMatT(res: numpy.typing.NDArray[numpy.float64], mat1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], mat2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Multiply matrices, second argument transposed: res = mat1 * mat2'.
     """
 
-def mju_mulMatTMat(res: numpy.typing.NDArray[numpy.float64], mat1: numpy.typing.ArrayLike, mat2: numpy.typing.ArrayLike) -> None:
+def mju_mulMatTMat(res: numpy.typing.NDArray[numpy.float64], mat1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], mat2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Multiply matrices, first argument transposed: res = mat1' * mat2.
     """
 
-def mju_mulMatTVec(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike) -> None:
+def mju_mulMatTVec(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply transposed matrix and vector: res = mat' * vec.
     """
 
-def mju_mulMatTVec3(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike) -> None:
+def mju_mulMatTVec3(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply transposed 3-by-3 matrix by vector: res = mat' * vec.
     """
 
-def mju_mulMatVec(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike) -> None:
+def mju_mulMatVec(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply matrix and vector: res = mat * vec.
     """
 
-def mju_mulMatVec3(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike) -> None:
+def mju_mulMatVec3(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply 3-by-3 matrix by vector: res = mat * vec.
     """
 
-def mju_mulPose(posres: numpy.typing.NDArray[numpy.float64], quatres: numpy.typing.NDArray[numpy.float64], pos1: numpy.typing.ArrayLike, quat1: numpy.typing.ArrayLike, pos2: numpy.typing.ArrayLike, quat2: numpy.typing.ArrayLike) -> None:
+def mju_mulPose(posres: numpy.typing.NDArray[numpy.float64], quatres: numpy.typing.NDArray[numpy.float64], pos1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], pos2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply two poses.
     """
 
-def mju_mulQuat(res: numpy.typing.NDArray[numpy.float64], quat1: numpy.typing.ArrayLike, quat2: numpy.typing.ArrayLike) -> None:
+def mju_mulQuat(res: numpy.typing.NDArray[numpy.float64], quat1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply quaternions.
     """
 
-def mju_mulQuatAxis(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.ArrayLike, axis: numpy.typing.ArrayLike) -> None:
+def mju_mulQuatAxis(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], axis: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Multiply quaternion and axis.
     """
 
-def mju_mulVecMatVec(vec1: numpy.typing.ArrayLike, mat: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> float:
+def mju_mulVecMatVec(vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Multiply square matrix with vectors on both sides: return vec1' * mat * vec2.
     """
 
-def mju_muscleBias(len: typing.SupportsFloat | typing.SupportsIndex, lengthrange: numpy.typing.ArrayLike, acc0: typing.SupportsFloat | typing.SupportsIndex, prm: numpy.typing.ArrayLike) -> float:
+def mju_muscleBias(len: typing.SupportsFloat | typing.SupportsIndex, lengthrange: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], acc0: typing.SupportsFloat | typing.SupportsIndex, prm: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Muscle passive force, prm = (range[2], force, scale, lmin, lmax, vmax, fpmax, fvmax).
     """
 
-def mju_muscleDynamics(ctrl: typing.SupportsFloat | typing.SupportsIndex, act: typing.SupportsFloat | typing.SupportsIndex, prm: numpy.typing.ArrayLike) -> float:
+def mju_muscleDynamics(ctrl: typing.SupportsFloat | typing.SupportsIndex, act: typing.SupportsFloat | typing.SupportsIndex, prm: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Muscle activation dynamics, prm = (tau_act, tau_deact, smoothing_width).
     """
 
-def mju_muscleGain(len: typing.SupportsFloat | typing.SupportsIndex, vel: typing.SupportsFloat | typing.SupportsIndex, lengthrange: numpy.typing.ArrayLike, acc0: typing.SupportsFloat | typing.SupportsIndex, prm: numpy.typing.ArrayLike) -> float:
+def mju_muscleGain(len: typing.SupportsFloat | typing.SupportsIndex, vel: typing.SupportsFloat | typing.SupportsIndex, lengthrange: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], acc0: typing.SupportsFloat | typing.SupportsIndex, prm: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Muscle active force, prm = (range[2], force, scale, lmin, lmax, vmax, fpmax, fvmax).
     """
 
-def mju_n2d(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_n2d(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert from mjtNum to double.
     """
 
-def mju_n2f(res: numpy.typing.NDArray[numpy.float32], vec: numpy.typing.ArrayLike) -> None:
+def mju_n2f(res: numpy.typing.NDArray[numpy.float32], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert from mjtNum to float.
     """
 
-def mju_negPose(posres: numpy.typing.NDArray[numpy.float64], quatres: numpy.typing.NDArray[numpy.float64], pos: numpy.typing.ArrayLike, quat: numpy.typing.ArrayLike) -> None:
+def mju_negPose(posres: numpy.typing.NDArray[numpy.float64], quatres: numpy.typing.NDArray[numpy.float64], pos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Conjugate pose, corresponding to the opposite spatial transformation.
     """
 
-def mju_negQuat(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.ArrayLike) -> None:
+def mju_negQuat(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Conjugate quaternion, corresponding to opposite rotation.
     """
 
-def mju_norm(res: numpy.typing.ArrayLike) -> float:
+def mju_norm(res: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Return vector length (without normalizing vector).
     """
 
-def mju_norm3(vec: numpy.typing.ArrayLike) -> float:
+def mju_norm3(vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> float:
     """
     Return vector length (without normalizing the vector).
     """
@@ -1056,47 +1058,47 @@ def mju_normalize4(vec: numpy.typing.NDArray[numpy.float64]) -> float:
     Normalize vector; return length before normalization.
     """
 
-def mju_printMat(mat: numpy.typing.ArrayLike) -> None:
+def mju_printMat(mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Print matrix to screen.
     """
 
-def mju_printMatSparse(mat: numpy.typing.ArrayLike, rownnz: numpy.typing.ArrayLike, rowadr: numpy.typing.ArrayLike, colind: numpy.typing.ArrayLike) -> None:
+def mju_printMatSparse(mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], rownnz: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int], rowadr: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int], colind: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
     """
     Print sparse matrix to screen.
     """
 
-def mju_quat2Mat(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.ArrayLike) -> None:
+def mju_quat2Mat(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Convert quaternion to 3D rotation matrix.
     """
 
-def mju_quat2Vel(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.ArrayLike, dt: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_quat2Vel(res: numpy.typing.NDArray[numpy.float64], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], dt: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Convert quaternion (corresponding to orientation difference) to 3D velocity.
     """
 
-def mju_quatIntegrate(quat: numpy.typing.NDArray[numpy.float64], vel: numpy.typing.ArrayLike, scale: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_quatIntegrate(quat: numpy.typing.NDArray[numpy.float64], vel: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scale: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Integrate quaternion given 3D angular velocity.
     """
 
-def mju_quatZ2Vec(quat: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_quatZ2Vec(quat: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Construct quaternion performing rotation from z-axis to given vector.
     """
 
-def mju_rayGeom(pos: numpy.typing.ArrayLike, mat: numpy.typing.ArrayLike, size: numpy.typing.ArrayLike, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, geomtype: typing.SupportsIndex, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
+def mju_rayGeom(pos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], size: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], geomtype: typing.SupportsIndex, normal: numpy.typing.NDArray[numpy.float64] | None=None) -> float:
     """
     Intersect ray with pure geom; return nearest distance or -1 if no intersection.
     """
 
-def mju_raySkin(nface: typing.SupportsIndex, nvert: typing.SupportsIndex, face: numpy.typing.ArrayLike, vert: numpy.typing.ArrayLike, pnt: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike, vertid: numpy.typing.NDArray[numpy.int32] | None) -> float:
+def mju_raySkin(nface: typing.SupportsIndex, nvert: typing.SupportsIndex, face: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[int]], vert: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], pnt: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vertid: numpy.typing.NDArray[numpy.int32] | None) -> float:
     """
     Intersect ray with skin; return nearest distance or -1 if no intersection, and also output nearest vertex id.
     """
 
-def mju_rotVecQuat(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, quat: numpy.typing.ArrayLike) -> None:
+def mju_rotVecQuat(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Rotate vector by quaternion.
     """
@@ -1106,12 +1108,12 @@ def mju_round(x: typing.SupportsFloat | typing.SupportsIndex) -> int:
     Round x to nearest integer.
     """
 
-def mju_scl(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_scl(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Set res = vec*scl.
     """
 
-def mju_scl3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
+def mju_scl3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scl: typing.SupportsFloat | typing.SupportsIndex) -> None:
     """
     Set res = vec*scl.
     """
@@ -1126,7 +1128,7 @@ def mju_sign(x: typing.SupportsFloat | typing.SupportsIndex) -> float:
     Return sign of x: +1, -1 or 0.
     """
 
-def mju_sparse2dense(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, rownnz: numpy.typing.ArrayLike, rowadr: numpy.typing.ArrayLike, colind: numpy.typing.ArrayLike) -> None:
+def mju_sparse2dense(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], rownnz: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int], rowadr: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int], colind: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
     """
     Convert matrix from sparse to dense.
     """
@@ -1136,7 +1138,7 @@ def mju_springDamper(pos0: typing.SupportsFloat | typing.SupportsIndex, vel0: ty
     Integrate spring-damper analytically; return pos(dt).
     """
 
-def mju_sqrMatTD(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, diag: numpy.typing.NDArray[numpy.float64] | None) -> None:
+def mju_sqrMatTD(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]], diag: numpy.typing.NDArray[numpy.float64] | None) -> None:
     """
     Set res = mat' * diag * mat if diag is not NULL, and res = mat' * mat otherwise.
     """
@@ -1151,27 +1153,27 @@ def mju_str2Type(str: str) -> int:
     Convert type name to type id (mjtObj).
     """
 
-def mju_sub(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> None:
+def mju_sub(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec1 - vec2.
     """
 
-def mju_sub3(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.ArrayLike, vec2: numpy.typing.ArrayLike) -> None:
+def mju_sub3(res: numpy.typing.NDArray[numpy.float64], vec1: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec2: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = vec1 - vec2.
     """
 
-def mju_subFrom(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_subFrom(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = res - vec.
     """
 
-def mju_subFrom3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike) -> None:
+def mju_subFrom3(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set res = res - vec.
     """
 
-def mju_subQuat(res: numpy.typing.NDArray[numpy.float64], qa: numpy.typing.ArrayLike, qb: numpy.typing.ArrayLike) -> None:
+def mju_subQuat(res: numpy.typing.NDArray[numpy.float64], qa: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], qb: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Subtract quaternions, express as 3D velocity: qb*quat(res) = qa.
     """
@@ -1181,12 +1183,12 @@ def mju_sum(vec: numpy.typing.NDArray[numpy.float64]) -> float:
     Return sum(vec).
     """
 
-def mju_sym2dense(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike, rownnz: numpy.typing.ArrayLike, rowadr: numpy.typing.ArrayLike, colind: numpy.typing.ArrayLike) -> None:
+def mju_sym2dense(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], rownnz: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int], rowadr: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int], colind: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
     """
     Convert lower-triangular symmetric CSR matrix to full dense matrix.
     """
 
-def mju_symmetrize(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike) -> None:
+def mju_symmetrize(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Symmetrize square matrix res = (mat + mat')/2.
     """
@@ -1196,17 +1198,17 @@ def mju_threadpool(d: mujoco._structs.MjData, nthread: typing.SupportsIndex) -> 
     Create a thread pool with nthread worker threads.
     """
 
-def mju_transformSpatial(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, flg_force: typing.SupportsIndex, newpos: numpy.typing.ArrayLike, oldpos: numpy.typing.ArrayLike, rotnew2old: numpy.typing.ArrayLike) -> None:
+def mju_transformSpatial(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], flg_force: typing.SupportsIndex, newpos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], oldpos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], rotnew2old: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Coordinate transform of 6D motion or force vector in rotation:translation format. rotnew2old is 3-by-3, NULL means no rotation; flg_force specifies force or motion type.
     """
 
-def mju_transpose(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.ArrayLike) -> None:
+def mju_transpose(res: numpy.typing.NDArray[numpy.float64], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[collections.abc.Sequence[float]]) -> None:
     """
     Transpose matrix: res = mat'.
     """
 
-def mju_trnVecPose(res: numpy.typing.NDArray[numpy.float64], pos: numpy.typing.ArrayLike, quat: numpy.typing.ArrayLike, vec: numpy.typing.ArrayLike) -> None:
+def mju_trnVecPose(res: numpy.typing.NDArray[numpy.float64], pos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], quat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Transform vector by pose.
     """
@@ -1256,7 +1258,7 @@ def mjv_addGeoms(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, opt: muj
     Add geoms from selected categories.
     """
 
-def mjv_alignToCamera(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.ArrayLike, forward: numpy.typing.ArrayLike) -> None:
+def mjv_alignToCamera(res: numpy.typing.NDArray[numpy.float64], vec: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], forward: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Rotate 3D vec in horizontal plane by angle between (0,1) and (forward_x,forward_y).
     """
@@ -1291,7 +1293,7 @@ def mjv_cameraInRoom(headpos: numpy.typing.NDArray[numpy.float64], forward: nump
     Get camera info in room space; average left and right OpenGL cameras.
     """
 
-def mjv_connector(geom: mujoco._structs.MjvGeom, type: typing.SupportsIndex, width: typing.SupportsFloat | typing.SupportsIndex, from_: numpy.typing.ArrayLike, to: numpy.typing.ArrayLike) -> None:
+def mjv_connector(geom: mujoco._structs.MjvGeom, type: typing.SupportsIndex, width: typing.SupportsFloat | typing.SupportsIndex, from_: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], to: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Set (type, size, pos, mat) for connector-type geom between given points. Assume that mjv_initGeom was already called to set all other properties. Width of mjGEOM_LINE is denominated in pixels.
     """
@@ -1326,7 +1328,7 @@ def mjv_frustumHeight(scn: mujoco._structs.MjvScene) -> float:
     Get frustum height at unit distance from camera; average left and right OpenGL cameras.
     """
 
-def mjv_initGeom(geom: mujoco._structs.MjvGeom, type: typing.SupportsIndex, size: numpy.typing.ArrayLike, pos: numpy.typing.ArrayLike, mat: numpy.typing.ArrayLike, rgba: numpy.typing.ArrayLike) -> None:
+def mjv_initGeom(geom: mujoco._structs.MjvGeom, type: typing.SupportsIndex, size: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], pos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], mat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], rgba: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
     """
     Initialize given geom fields when not NULL, set the rest to their default values.
     """
@@ -1341,7 +1343,7 @@ def mjv_makeLights(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, scn: m
     Make list of lights.
     """
 
-def mjv_model2room(roompos: numpy.typing.NDArray[numpy.float64], roomquat: numpy.typing.NDArray[numpy.float64], modelpos: numpy.typing.ArrayLike, modelquat: numpy.typing.ArrayLike, scn: mujoco._structs.MjvScene) -> None:
+def mjv_model2room(roompos: numpy.typing.NDArray[numpy.float64], roomquat: numpy.typing.NDArray[numpy.float64], modelpos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], modelquat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scn: mujoco._structs.MjvScene) -> None:
     """
     Transform pose from model to room space.
     """
@@ -1351,7 +1353,7 @@ def mjv_moveCamera(m: mujoco._structs.MjModel, action: typing.SupportsIndex, rel
     Move camera with mouse; action is mjtMouse.
     """
 
-def mjv_moveModel(m: mujoco._structs.MjModel, action: typing.SupportsIndex, reldx: typing.SupportsFloat | typing.SupportsIndex, reldy: typing.SupportsFloat | typing.SupportsIndex, roomup: numpy.typing.ArrayLike, scn: mujoco._structs.MjvScene) -> None:
+def mjv_moveModel(m: mujoco._structs.MjModel, action: typing.SupportsIndex, reldx: typing.SupportsFloat | typing.SupportsIndex, reldy: typing.SupportsFloat | typing.SupportsIndex, roomup: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scn: mujoco._structs.MjvScene) -> None:
     """
     Move model with mouse; action is mjtMouse.
     """
@@ -1361,7 +1363,7 @@ def mjv_movePerturb(m: mujoco._structs.MjModel, d: mujoco._structs.MjData, actio
     Move perturb object with mouse; action is mjtMouse.
     """
 
-def mjv_room2model(modelpos: numpy.typing.NDArray[numpy.float64], modelquat: numpy.typing.NDArray[numpy.float64], roompos: numpy.typing.ArrayLike, roomquat: numpy.typing.ArrayLike, scn: mujoco._structs.MjvScene) -> None:
+def mjv_room2model(modelpos: numpy.typing.NDArray[numpy.float64], modelquat: numpy.typing.NDArray[numpy.float64], roompos: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], roomquat: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float], scn: mujoco._structs.MjvScene) -> None:
     """
     Transform pose from room to model space.
     """

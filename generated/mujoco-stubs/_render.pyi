@@ -6,6 +6,8 @@ import mujoco._structs
 import numpy
 import numpy.typing
 import typing
+import collections
+import collections.abc
 import mujoco
 __all__: list[str] = ['MjrContext', 'MjrRendererInfo', 'mjr_addAux', 'mjr_blitAux', 'mjr_blitBuffer', 'mjr_changeFont', 'mjr_defaultRendererInfo', 'mjr_drawPixels', 'mjr_figure', 'mjr_findRect', 'mjr_finish', 'mjr_getError', 'mjr_getRendererInfo', 'mjr_label', 'mjr_maxViewport', 'mjr_overlay', 'mjr_readPixels', 'mjr_rectangle', 'mjr_render', 'mjr_resizeOffscreen', 'mjr_restoreBuffer', 'mjr_setAux', 'mjr_setBuffer', 'mjr_text', 'mjr_uploadHField', 'mjr_uploadMesh', 'mjr_uploadTexture']
 
@@ -542,7 +544,7 @@ def mjr_defaultRendererInfo(info: MjrRendererInfo) -> None:
     Set default mjrRendererInfo.
     """
 
-def mjr_drawPixels(rgb: numpy.typing.ArrayLike | None, depth: numpy.typing.ArrayLike | None, viewport: mujoco._structs.MjrRect, con: MjrContext) -> None:
+def mjr_drawPixels(rgb: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int] | None, depth: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float] | None, viewport: mujoco._structs.MjrRect, con: MjrContext) -> None:
     """
     Draw pixels from client buffer to current OpenGL framebuffer. Viewport is in OpenGL framebuffer; client buffer starts at (0,0).
     """

@@ -13,7 +13,7 @@ import mujoco
 __all__: list[str] = ['MjByteVec', 'MjCharVec', 'MjDoubleVec', 'MjFloatVec', 'MjIntVec', 'MjSpec', 'MjStringVec', 'MjVfs', 'MjVisualHeadlight', 'MjVisualRgba', 'MjsActuator', 'MjsAuthored', 'MjsBody', 'MjsCamera', 'MjsCompiler', 'MjsDefault', 'MjsElement', 'MjsEquality', 'MjsExclude', 'MjsFlex', 'MjsFrame', 'MjsGeom', 'MjsHField', 'MjsJoint', 'MjsKey', 'MjsLight', 'MjsMaterial', 'MjsMesh', 'MjsNumeric', 'MjsOrientation', 'MjsPair', 'MjsPlugin', 'MjsSensor', 'MjsSite', 'MjsSkin', 'MjsTendon', 'MjsTendonPath', 'MjsText', 'MjsTexture', 'MjsTuple', 'MjsWrap']
 
 class MjSpec:
-    assets: dict[typing.Any, typing.Any]
+    assets: dict[str, bytes]
     authored: MjsAuthored
     'authored tracking bitmasks for mjModel structs'
     comment: str
@@ -39,7 +39,7 @@ class MjSpec:
     'visual options'
 
     @staticmethod
-    def from_file(filename: str, include: collections.abc.Mapping[str, bytes] | None=None, assets: dict[typing.Any, typing.Any] | None=None, vfs: MjVfs | None=None) -> MjSpec:
+    def from_file(filename: str, include: collections.abc.Mapping[str, bytes] | None=None, assets: dict[str, bytes] | None=None, vfs: MjVfs | None=None) -> MjSpec:
         """
             Creates a spec from an XML file.
         
@@ -59,7 +59,7 @@ class MjSpec:
         """
 
     @staticmethod
-    def from_string(xml: str, include: collections.abc.Mapping[str, bytes] | None=None, assets: dict[typing.Any, typing.Any] | None=None, vfs: MjVfs | None=None) -> MjSpec:
+    def from_string(xml: str, include: collections.abc.Mapping[str, bytes] | None=None, assets: dict[str, bytes] | None=None, vfs: MjVfs | None=None) -> MjSpec:
         """
             Creates a spec from an XML string.
         
@@ -759,15 +759,15 @@ class MjSpec:
         ...
 
     @property
-    def actuators(self) -> list[typing.Any]:
+    def actuators(self) -> list[MjsActuator]:
         ...
 
     @property
-    def bodies(self) -> list[typing.Any]:
+    def bodies(self) -> list[MjsBody]:
         ...
 
     @property
-    def cameras(self) -> list[typing.Any]:
+    def cameras(self) -> list[MjsCamera]:
         ...
 
     @property
@@ -783,43 +783,43 @@ class MjSpec:
         ...
 
     @property
-    def equalities(self) -> list[typing.Any]:
+    def equalities(self) -> list[MjsEquality]:
         ...
 
     @property
-    def excludes(self) -> list[typing.Any]:
+    def excludes(self) -> list[MjsExclude]:
         ...
 
     @property
-    def flexes(self) -> list[typing.Any]:
+    def flexes(self) -> list[MjsFlex]:
         ...
 
     @property
-    def frames(self) -> list[typing.Any]:
+    def frames(self) -> list[MjsFrame]:
         ...
 
     @property
-    def geoms(self) -> list[typing.Any]:
+    def geoms(self) -> list[MjsGeom]:
         ...
 
     @property
-    def hfields(self) -> list[typing.Any]:
+    def hfields(self) -> list[MjsHField]:
         ...
 
     @property
-    def joints(self) -> list[typing.Any]:
+    def joints(self) -> list[MjsJoint]:
         ...
 
     @property
-    def keys(self) -> list[typing.Any]:
+    def keys(self) -> list[MjsKey]:
         ...
 
     @property
-    def lights(self) -> list[typing.Any]:
+    def lights(self) -> list[MjsLight]:
         ...
 
     @property
-    def materials(self) -> list[typing.Any]:
+    def materials(self) -> list[MjsMaterial]:
         ...
 
     @property
@@ -831,7 +831,7 @@ class MjSpec:
         ...
 
     @property
-    def meshes(self) -> list[typing.Any]:
+    def meshes(self) -> list[MjsMesh]:
         ...
 
     @property
@@ -875,7 +875,7 @@ class MjSpec:
         ...
 
     @property
-    def numerics(self) -> list[typing.Any]:
+    def numerics(self) -> list[MjsNumeric]:
         ...
 
     @property
@@ -951,7 +951,7 @@ class MjSpec:
         ...
 
     @property
-    def pairs(self) -> list[typing.Any]:
+    def pairs(self) -> list[MjsPair]:
         ...
 
     @property
@@ -959,31 +959,31 @@ class MjSpec:
         ...
 
     @property
-    def plugins(self) -> list[typing.Any]:
+    def plugins(self) -> list[MjsPlugin]:
         ...
 
     @property
-    def sensors(self) -> list[typing.Any]:
+    def sensors(self) -> list[MjsSensor]:
         ...
 
     @property
-    def sites(self) -> list[typing.Any]:
+    def sites(self) -> list[MjsSite]:
         ...
 
     @property
-    def skins(self) -> list[typing.Any]:
+    def skins(self) -> list[MjsSkin]:
         ...
 
     @property
-    def tendons(self) -> list[typing.Any]:
+    def tendons(self) -> list[MjsTendon]:
         ...
 
     @property
-    def texts(self) -> list[typing.Any]:
+    def texts(self) -> list[MjsText]:
         ...
 
     @property
-    def textures(self) -> list[typing.Any]:
+    def textures(self) -> list[MjsTexture]:
         ...
 
     @property
@@ -991,7 +991,7 @@ class MjSpec:
         ...
 
     @property
-    def tuples(self) -> list[typing.Any]:
+    def tuples(self) -> list[MjsTuple]:
         ...
 
     @property
@@ -1325,11 +1325,11 @@ class MjsBody:
         ...
 
     @property
-    def bodies(self) -> list[typing.Any]:
+    def bodies(self) -> list[MjsBody]:
         ...
 
     @property
-    def cameras(self) -> list[typing.Any]:
+    def cameras(self) -> list[MjsCamera]:
         ...
 
     @property
@@ -1341,7 +1341,7 @@ class MjsBody:
         ...
 
     @property
-    def frames(self) -> list[typing.Any]:
+    def frames(self) -> list[MjsFrame]:
         ...
 
     @property
@@ -1349,7 +1349,7 @@ class MjsBody:
         """non-axis-aligned inertia matrix"""
 
     @fullinertia.setter
-    def fullinertia(self, value: numpy.typing.ArrayLike) -> None:
+    def fullinertia(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1361,7 +1361,7 @@ class MjsBody:
         ...
 
     @property
-    def geoms(self) -> list[typing.Any]:
+    def geoms(self) -> list[MjsGeom]:
         ...
 
     @property
@@ -1381,7 +1381,7 @@ class MjsBody:
         """diagonal inertia (in i-frame)"""
 
     @inertia.setter
-    def inertia(self, value: numpy.typing.ArrayLike) -> None:
+    def inertia(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1389,7 +1389,7 @@ class MjsBody:
         """inertial frame position"""
 
     @ipos.setter
-    def ipos(self, value: numpy.typing.ArrayLike) -> None:
+    def ipos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1397,15 +1397,15 @@ class MjsBody:
         """inertial frame orientation"""
 
     @iquat.setter
-    def iquat(self, value: numpy.typing.ArrayLike) -> None:
+    def iquat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
-    def joints(self) -> list[typing.Any]:
+    def joints(self) -> list[MjsJoint]:
         ...
 
     @property
-    def lights(self) -> list[typing.Any]:
+    def lights(self) -> list[MjsLight]:
         ...
 
     @property
@@ -1425,7 +1425,7 @@ class MjsBody:
         """frame position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1433,7 +1433,7 @@ class MjsBody:
         """frame orientation"""
 
     @quat.setter
-    def quat(self, value: numpy.typing.ArrayLike) -> None:
+    def quat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1449,7 +1449,7 @@ class MjsBody:
         ...
 
     @property
-    def sites(self) -> list[typing.Any]:
+    def sites(self) -> list[MjsSite]:
         ...
 
     @property
@@ -1720,7 +1720,7 @@ class MjsFrame:
         """position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1728,7 +1728,7 @@ class MjsFrame:
         """orientation"""
 
     @quat.setter
-    def quat(self, value: numpy.typing.ArrayLike) -> None:
+    def quat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1829,7 +1829,7 @@ class MjsGeom:
         """ellipsoid-fluid interaction coefs"""
 
     @fluid_coefs.setter
-    def fluid_coefs(self, value: numpy.typing.ArrayLike) -> None:
+    def fluid_coefs(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1849,7 +1849,7 @@ class MjsGeom:
         """one-sided friction coefficients: slide, roll, spin"""
 
     @friction.setter
-    def friction(self, value: numpy.typing.ArrayLike) -> None:
+    def friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1857,7 +1857,7 @@ class MjsGeom:
         """alternative for capsule, cylinder, box, ellipsoid"""
 
     @fromto.setter
-    def fromto(self, value: numpy.typing.ArrayLike) -> None:
+    def fromto(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1905,7 +1905,7 @@ class MjsGeom:
         """position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1921,7 +1921,7 @@ class MjsGeom:
         """orientation"""
 
     @quat.setter
-    def quat(self, value: numpy.typing.ArrayLike) -> None:
+    def quat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1929,7 +1929,7 @@ class MjsGeom:
         """rgba when material is omitted"""
 
     @rgba.setter
-    def rgba(self, value: numpy.typing.ArrayLike) -> None:
+    def rgba(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1941,7 +1941,7 @@ class MjsGeom:
         """type-specific size"""
 
     @size.setter
-    def size(self, value: numpy.typing.ArrayLike) -> None:
+    def size(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1949,7 +1949,7 @@ class MjsGeom:
         """solver impedance"""
 
     @solimp.setter
-    def solimp(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1965,7 +1965,7 @@ class MjsGeom:
         """solver reference"""
 
     @solref.setter
-    def solref(self, value: numpy.typing.ArrayLike) -> None:
+    def solref(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -1973,7 +1973,7 @@ class MjsGeom:
         """surface velocity in local frame: linear, angular"""
 
     @surfacevel.setter
-    def surfacevel(self, value: numpy.typing.ArrayLike) -> None:
+    def surfacevel(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2024,7 +2024,7 @@ class MjsJoint:
         """actuator force limits"""
 
     @actfrcrange.setter
-    def actfrcrange(self, value: numpy.typing.ArrayLike) -> None:
+    def actfrcrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2048,7 +2048,7 @@ class MjsJoint:
         """joint axis"""
 
     @axis.setter
-    def axis(self, value: numpy.typing.ArrayLike) -> None:
+    def axis(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2060,7 +2060,7 @@ class MjsJoint:
         """damping coefficients"""
 
     @damping.setter
-    def damping(self, value: numpy.typing.ArrayLike) -> None:
+    def damping(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2112,7 +2112,7 @@ class MjsJoint:
         """anchor position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2120,7 +2120,7 @@ class MjsJoint:
         """joint limits"""
 
     @range.setter
-    def range(self, value: numpy.typing.ArrayLike) -> None:
+    def range(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2140,7 +2140,7 @@ class MjsJoint:
         """solver impedance: dof friction"""
 
     @solimp_friction.setter
-    def solimp_friction(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp_friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2148,7 +2148,7 @@ class MjsJoint:
         """solver impedance: joint limits"""
 
     @solimp_limit.setter
-    def solimp_limit(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp_limit(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2156,7 +2156,7 @@ class MjsJoint:
         """solver reference: dof friction"""
 
     @solref_friction.setter
-    def solref_friction(self, value: numpy.typing.ArrayLike) -> None:
+    def solref_friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2164,7 +2164,7 @@ class MjsJoint:
         """solver reference: joint limits"""
 
     @solref_limit.setter
-    def solref_limit(self, value: numpy.typing.ArrayLike) -> None:
+    def solref_limit(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2172,7 +2172,7 @@ class MjsJoint:
         """timeconst, dampratio"""
 
     @springdamper.setter
-    def springdamper(self, value: numpy.typing.ArrayLike) -> None:
+    def springdamper(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2196,7 +2196,7 @@ class MjsJoint:
         """stiffness coefficients"""
 
     @stiffness.setter
-    def stiffness(self, value: numpy.typing.ArrayLike) -> None:
+    def stiffness(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2237,7 +2237,7 @@ class MjsLight:
         """ambient color"""
 
     @ambient.setter
-    def ambient(self, value: numpy.typing.ArrayLike) -> None:
+    def ambient(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2245,7 +2245,7 @@ class MjsLight:
         """OpenGL attenuation (quadratic model)"""
 
     @attenuation.setter
-    def attenuation(self, value: numpy.typing.ArrayLike) -> None:
+    def attenuation(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2273,7 +2273,7 @@ class MjsLight:
         """diffuse color"""
 
     @diffuse.setter
-    def diffuse(self, value: numpy.typing.ArrayLike) -> None:
+    def diffuse(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2281,7 +2281,7 @@ class MjsLight:
         """direction"""
 
     @dir.setter
-    def dir(self, value: numpy.typing.ArrayLike) -> None:
+    def dir(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2325,7 +2325,7 @@ class MjsLight:
         """position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2353,7 +2353,7 @@ class MjsLight:
         """specular color"""
 
     @specular.setter
-    def specular(self, value: numpy.typing.ArrayLike) -> None:
+    def specular(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2409,7 +2409,7 @@ class MjsMaterial:
         """rgba"""
 
     @rgba.setter
-    def rgba(self, value: numpy.typing.ArrayLike) -> None:
+    def rgba(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2445,7 +2445,7 @@ class MjsMaterial:
         """texture repetition for 2D mapping"""
 
     @texrepeat.setter
-    def texrepeat(self, value: numpy.typing.ArrayLike) -> None:
+    def texrepeat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2487,7 +2487,7 @@ class MjsSite:
         """alternative for capsule, cylinder, box, ellipsoid"""
 
     @fromto.setter
-    def fromto(self, value: numpy.typing.ArrayLike) -> None:
+    def fromto(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2511,7 +2511,7 @@ class MjsSite:
         """position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2519,7 +2519,7 @@ class MjsSite:
         """orientation"""
 
     @quat.setter
-    def quat(self, value: numpy.typing.ArrayLike) -> None:
+    def quat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2527,7 +2527,7 @@ class MjsSite:
         """rgba when material is omitted"""
 
     @rgba.setter
-    def rgba(self, value: numpy.typing.ArrayLike) -> None:
+    def rgba(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2539,7 +2539,7 @@ class MjsSite:
         """geom size"""
 
     @size.setter
-    def size(self, value: numpy.typing.ArrayLike) -> None:
+    def size(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2652,7 +2652,7 @@ class MjsMesh:
         """reference position"""
 
     @refpos.setter
-    def refpos(self, value: numpy.typing.ArrayLike) -> None:
+    def refpos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2660,7 +2660,7 @@ class MjsMesh:
         """reference orientation"""
 
     @refquat.setter
-    def refquat(self, value: numpy.typing.ArrayLike) -> None:
+    def refquat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2668,7 +2668,7 @@ class MjsMesh:
         """rescale mesh"""
 
     @scale.setter
-    def scale(self, value: numpy.typing.ArrayLike) -> None:
+    def scale(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2809,7 +2809,7 @@ class MjsSkin:
         """rgba when material is omitted"""
 
     @rgba.setter
-    def rgba(self, value: numpy.typing.ArrayLike) -> None:
+    def rgba(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2913,7 +2913,7 @@ class MjsTexture:
         """size of grid for composite file; (1,1)-repeat"""
 
     @gridsize.setter
-    def gridsize(self, value: numpy.typing.ArrayLike) -> None:
+    def gridsize(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
         ...
 
     @property
@@ -2941,7 +2941,7 @@ class MjsTexture:
         """mark color"""
 
     @markrgb.setter
-    def markrgb(self, value: numpy.typing.ArrayLike) -> None:
+    def markrgb(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2965,7 +2965,7 @@ class MjsTexture:
         """first color for builtin"""
 
     @rgb1.setter
-    def rgb1(self, value: numpy.typing.ArrayLike) -> None:
+    def rgb1(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -2973,7 +2973,7 @@ class MjsTexture:
         """second color for builtin"""
 
     @rgb2.setter
-    def rgb2(self, value: numpy.typing.ArrayLike) -> None:
+    def rgb2(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3078,7 +3078,7 @@ class MjsCamera:
         """focal length (length)"""
 
     @focal_length.setter
-    def focal_length(self, value: numpy.typing.ArrayLike) -> None:
+    def focal_length(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3086,7 +3086,7 @@ class MjsCamera:
         """focal length (pixel)"""
 
     @focal_pixel.setter
-    def focal_pixel(self, value: numpy.typing.ArrayLike) -> None:
+    def focal_pixel(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3110,7 +3110,7 @@ class MjsCamera:
         """camera intrinsics (length)"""
 
     @intrinsic.setter
-    def intrinsic(self, value: numpy.typing.ArrayLike) -> None:
+    def intrinsic(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3146,7 +3146,7 @@ class MjsCamera:
         """position"""
 
     @pos.setter
-    def pos(self, value: numpy.typing.ArrayLike) -> None:
+    def pos(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3154,7 +3154,7 @@ class MjsCamera:
         """principal point (length)"""
 
     @principal_length.setter
-    def principal_length(self, value: numpy.typing.ArrayLike) -> None:
+    def principal_length(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3162,7 +3162,7 @@ class MjsCamera:
         """principal point (pixel)"""
 
     @principal_pixel.setter
-    def principal_pixel(self, value: numpy.typing.ArrayLike) -> None:
+    def principal_pixel(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3178,7 +3178,7 @@ class MjsCamera:
         """orientation"""
 
     @quat.setter
-    def quat(self, value: numpy.typing.ArrayLike) -> None:
+    def quat(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3186,7 +3186,7 @@ class MjsCamera:
         """resolution (pixel)"""
 
     @resolution.setter
-    def resolution(self, value: numpy.typing.ArrayLike) -> None:
+    def resolution(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
         ...
 
     @property
@@ -3194,7 +3194,7 @@ class MjsCamera:
         """sensor size (length)"""
 
     @sensor_size.setter
-    def sensor_size(self, value: numpy.typing.ArrayLike) -> None:
+    def sensor_size(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3229,7 +3229,7 @@ class MjsFlex:
         """grid cell count for finite cell method"""
 
     @cellcount.setter
-    def cellcount(self, value: numpy.typing.ArrayLike) -> None:
+    def cellcount(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
         ...
 
     @property
@@ -3329,7 +3329,7 @@ class MjsFlex:
         """one-sided friction coefficients: slide, roll, spin"""
 
     @friction.setter
-    def friction(self, value: numpy.typing.ArrayLike) -> None:
+    def friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3429,7 +3429,7 @@ class MjsFlex:
         """rgba when material is omitted"""
 
     @rgba.setter
-    def rgba(self, value: numpy.typing.ArrayLike) -> None:
+    def rgba(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3445,7 +3445,7 @@ class MjsFlex:
         """1D box cross-section half-sizes"""
 
     @sectionsize.setter
-    def sectionsize(self, value: numpy.typing.ArrayLike) -> None:
+    def sectionsize(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3473,7 +3473,7 @@ class MjsFlex:
         """vertex bounding box half sizes in qpos0"""
 
     @size.setter
-    def size(self, value: numpy.typing.ArrayLike) -> None:
+    def size(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3481,7 +3481,7 @@ class MjsFlex:
         """solver impedance"""
 
     @solimp.setter
-    def solimp(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3497,7 +3497,7 @@ class MjsFlex:
         """solver reference"""
 
     @solref.setter
-    def solref(self, value: numpy.typing.ArrayLike) -> None:
+    def solref(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3505,7 +3505,7 @@ class MjsFlex:
         """yield strain thresholds (stretch, bend); 0: elastic"""
 
     @stressyield.setter
-    def stressyield(self, value: numpy.typing.ArrayLike) -> None:
+    def stressyield(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3590,7 +3590,7 @@ class MjsHField:
         """hfield size (ignore referencing geom size)"""
 
     @size.setter
-    def size(self, value: numpy.typing.ArrayLike) -> None:
+    def size(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3750,7 +3750,7 @@ class MjsPair:
         """full contact friction"""
 
     @friction.setter
-    def friction(self, value: numpy.typing.ArrayLike) -> None:
+    def friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3782,7 +3782,7 @@ class MjsPair:
         """solver impedance"""
 
     @solimp.setter
-    def solimp(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3790,7 +3790,7 @@ class MjsPair:
         """solver reference, normal direction"""
 
     @solref.setter
-    def solref(self, value: numpy.typing.ArrayLike) -> None:
+    def solref(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3798,7 +3798,7 @@ class MjsPair:
         """solver reference, frictional directions"""
 
     @solreffriction.setter
-    def solreffriction(self, value: numpy.typing.ArrayLike) -> None:
+    def solreffriction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
 class MjsExclude:
@@ -3843,7 +3843,7 @@ class MjsEquality:
         """type-dependent data"""
 
     @data.setter
-    def data(self, value: numpy.typing.ArrayLike) -> None:
+    def data(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3867,7 +3867,7 @@ class MjsEquality:
         """solver impedance"""
 
     @solimp.setter
-    def solimp(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3875,7 +3875,7 @@ class MjsEquality:
         """solver reference"""
 
     @solref.setter
-    def solref(self, value: numpy.typing.ArrayLike) -> None:
+    def solref(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3921,7 +3921,7 @@ class MjsTendon:
         """actuator force limits"""
 
     @actfrcrange.setter
-    def actfrcrange(self, value: numpy.typing.ArrayLike) -> None:
+    def actfrcrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3941,7 +3941,7 @@ class MjsTendon:
         """damping coefficients"""
 
     @damping.setter
-    def damping(self, value: numpy.typing.ArrayLike) -> None:
+    def damping(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3989,7 +3989,7 @@ class MjsTendon:
         """length limits"""
 
     @range.setter
-    def range(self, value: numpy.typing.ArrayLike) -> None:
+    def range(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -3997,7 +3997,7 @@ class MjsTendon:
         """rgba when material is omitted"""
 
     @rgba.setter
-    def rgba(self, value: numpy.typing.ArrayLike) -> None:
+    def rgba(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4009,7 +4009,7 @@ class MjsTendon:
         """solver impedance: tendon friction"""
 
     @solimp_friction.setter
-    def solimp_friction(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp_friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4017,7 +4017,7 @@ class MjsTendon:
         """solver impedance: tendon limits"""
 
     @solimp_limit.setter
-    def solimp_limit(self, value: numpy.typing.ArrayLike) -> None:
+    def solimp_limit(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4025,7 +4025,7 @@ class MjsTendon:
         """solver reference: tendon friction"""
 
     @solref_friction.setter
-    def solref_friction(self, value: numpy.typing.ArrayLike) -> None:
+    def solref_friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4033,7 +4033,7 @@ class MjsTendon:
         """solver reference: tendon limits"""
 
     @solref_limit.setter
-    def solref_limit(self, value: numpy.typing.ArrayLike) -> None:
+    def solref_limit(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4041,7 +4041,7 @@ class MjsTendon:
         """spring resting length; {-1, -1}: use qpos_spring"""
 
     @springlength.setter
-    def springlength(self, value: numpy.typing.ArrayLike) -> None:
+    def springlength(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4057,7 +4057,7 @@ class MjsTendon:
         """stiffness coefficients"""
 
     @stiffness.setter
-    def stiffness(self, value: numpy.typing.ArrayLike) -> None:
+    def stiffness(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4143,7 +4143,7 @@ class MjsSensor:
         """[period, time_prev] in seconds"""
 
     @interval.setter
-    def interval(self, value: numpy.typing.ArrayLike) -> None:
+    def interval(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4151,7 +4151,7 @@ class MjsSensor:
         """integer parameters"""
 
     @intprm.setter
-    def intprm(self, value: numpy.typing.ArrayLike) -> None:
+    def intprm(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
         ...
 
     @property
@@ -4284,7 +4284,7 @@ class MjsActuator:
         """activation range"""
 
     @actrange.setter
-    def actrange(self, value: numpy.typing.ArrayLike) -> None:
+    def actrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4300,7 +4300,7 @@ class MjsActuator:
         """bias parameters"""
 
     @biasprm.setter
-    def biasprm(self, value: numpy.typing.ArrayLike) -> None:
+    def biasprm(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4336,7 +4336,7 @@ class MjsActuator:
         """control range"""
 
     @ctrlrange.setter
-    def ctrlrange(self, value: numpy.typing.ArrayLike) -> None:
+    def ctrlrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4352,7 +4352,7 @@ class MjsActuator:
         """damping coefficients"""
 
     @damping.setter
-    def damping(self, value: numpy.typing.ArrayLike) -> None:
+    def damping(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4368,7 +4368,7 @@ class MjsActuator:
         """dynamics parameters"""
 
     @dynprm.setter
-    def dynprm(self, value: numpy.typing.ArrayLike) -> None:
+    def dynprm(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4384,7 +4384,7 @@ class MjsActuator:
         """range of the feedforward input (pid)"""
 
     @ffrange.setter
-    def ffrange(self, value: numpy.typing.ArrayLike) -> None:
+    def ffrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4400,7 +4400,7 @@ class MjsActuator:
         """force range"""
 
     @forcerange.setter
-    def forcerange(self, value: numpy.typing.ArrayLike) -> None:
+    def forcerange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4408,7 +4408,7 @@ class MjsActuator:
         """gain parameters"""
 
     @gainprm.setter
-    def gainprm(self, value: numpy.typing.ArrayLike) -> None:
+    def gainprm(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4424,7 +4424,7 @@ class MjsActuator:
         """length and transmitted force scaling"""
 
     @gear.setter
-    def gear(self, value: numpy.typing.ArrayLike) -> None:
+    def gear(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4460,7 +4460,7 @@ class MjsActuator:
         """transmission length range"""
 
     @lengthrange.setter
-    def lengthrange(self, value: numpy.typing.ArrayLike) -> None:
+    def lengthrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4504,7 +4504,7 @@ class MjsActuator:
         """range of the velocity-setpoint input (pid)"""
 
     @velrange.setter
-    def velrange(self, value: numpy.typing.ArrayLike) -> None:
+    def velrange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
 class MjsPlugin:
@@ -4541,7 +4541,7 @@ class MjsOrientation:
         """axis and angle"""
 
     @axisangle.setter
-    def axisangle(self, value: numpy.typing.ArrayLike) -> None:
+    def axisangle(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4549,7 +4549,7 @@ class MjsOrientation:
         """Euler angles"""
 
     @euler.setter
-    def euler(self, value: numpy.typing.ArrayLike) -> None:
+    def euler(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4565,7 +4565,7 @@ class MjsOrientation:
         """x and y axes"""
 
     @xyaxes.setter
-    def xyaxes(self, value: numpy.typing.ArrayLike) -> None:
+    def xyaxes(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4573,7 +4573,7 @@ class MjsOrientation:
         """z axis (minimal rotation)"""
 
     @zaxis.setter
-    def zaxis(self, value: numpy.typing.ArrayLike) -> None:
+    def zaxis(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
 class MjsWrap:
@@ -4667,7 +4667,7 @@ class MjOption:
         """gravitational acceleration"""
 
     @gravity.setter
-    def gravity(self, value: numpy.typing.ArrayLike) -> None:
+    def gravity(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4723,7 +4723,7 @@ class MjOption:
         """global magnetic flux"""
 
     @magnetic.setter
-    def magnetic(self, value: numpy.typing.ArrayLike) -> None:
+    def magnetic(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4747,7 +4747,7 @@ class MjOption:
         """friction"""
 
     @o_friction.setter
-    def o_friction(self, value: numpy.typing.ArrayLike) -> None:
+    def o_friction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4763,7 +4763,7 @@ class MjOption:
         """solimp"""
 
     @o_solimp.setter
-    def o_solimp(self, value: numpy.typing.ArrayLike) -> None:
+    def o_solimp(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4771,7 +4771,7 @@ class MjOption:
         """solref"""
 
     @o_solref.setter
-    def o_solref(self, value: numpy.typing.ArrayLike) -> None:
+    def o_solref(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4835,7 +4835,7 @@ class MjOption:
         """wind (for lift, drag and viscosity)"""
 
     @wind.setter
-    def wind(self, value: numpy.typing.ArrayLike) -> None:
+    def wind(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
 class MjStatistic:
@@ -4845,7 +4845,7 @@ class MjStatistic:
         """center of model"""
 
     @center.setter
-    def center(self, value: numpy.typing.ArrayLike) -> None:
+    def center(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4903,7 +4903,7 @@ class MjVisualHeadlight:
         ...
 
     @ambient.setter
-    def ambient(self, value: numpy.typing.ArrayLike) -> None:
+    def ambient(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4911,7 +4911,7 @@ class MjVisualHeadlight:
         ...
 
     @diffuse.setter
-    def diffuse(self, value: numpy.typing.ArrayLike) -> None:
+    def diffuse(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4919,7 +4919,7 @@ class MjVisualHeadlight:
         ...
 
     @specular.setter
-    def specular(self, value: numpy.typing.ArrayLike) -> None:
+    def specular(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
 class MjVisualRgba:
@@ -4929,7 +4929,7 @@ class MjVisualRgba:
         ...
 
     @actuator.setter
-    def actuator(self, value: numpy.typing.ArrayLike) -> None:
+    def actuator(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4937,7 +4937,7 @@ class MjVisualRgba:
         ...
 
     @actuatornegative.setter
-    def actuatornegative(self, value: numpy.typing.ArrayLike) -> None:
+    def actuatornegative(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4945,7 +4945,7 @@ class MjVisualRgba:
         ...
 
     @actuatorpositive.setter
-    def actuatorpositive(self, value: numpy.typing.ArrayLike) -> None:
+    def actuatorpositive(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4953,7 +4953,7 @@ class MjVisualRgba:
         ...
 
     @bv.setter
-    def bv(self, value: numpy.typing.ArrayLike) -> None:
+    def bv(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4961,7 +4961,7 @@ class MjVisualRgba:
         ...
 
     @bvactive.setter
-    def bvactive(self, value: numpy.typing.ArrayLike) -> None:
+    def bvactive(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4969,7 +4969,7 @@ class MjVisualRgba:
         ...
 
     @camera.setter
-    def camera(self, value: numpy.typing.ArrayLike) -> None:
+    def camera(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4977,7 +4977,7 @@ class MjVisualRgba:
         ...
 
     @com.setter
-    def com(self, value: numpy.typing.ArrayLike) -> None:
+    def com(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4985,7 +4985,7 @@ class MjVisualRgba:
         ...
 
     @connect.setter
-    def connect(self, value: numpy.typing.ArrayLike) -> None:
+    def connect(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -4993,7 +4993,7 @@ class MjVisualRgba:
         ...
 
     @constraint.setter
-    def constraint(self, value: numpy.typing.ArrayLike) -> None:
+    def constraint(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5001,7 +5001,7 @@ class MjVisualRgba:
         ...
 
     @contactforce.setter
-    def contactforce(self, value: numpy.typing.ArrayLike) -> None:
+    def contactforce(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5009,7 +5009,7 @@ class MjVisualRgba:
         ...
 
     @contactfriction.setter
-    def contactfriction(self, value: numpy.typing.ArrayLike) -> None:
+    def contactfriction(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5017,7 +5017,7 @@ class MjVisualRgba:
         ...
 
     @contactgap.setter
-    def contactgap(self, value: numpy.typing.ArrayLike) -> None:
+    def contactgap(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5025,7 +5025,7 @@ class MjVisualRgba:
         ...
 
     @contactpoint.setter
-    def contactpoint(self, value: numpy.typing.ArrayLike) -> None:
+    def contactpoint(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5033,7 +5033,7 @@ class MjVisualRgba:
         ...
 
     @contacttorque.setter
-    def contacttorque(self, value: numpy.typing.ArrayLike) -> None:
+    def contacttorque(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5041,7 +5041,7 @@ class MjVisualRgba:
         ...
 
     @crankbroken.setter
-    def crankbroken(self, value: numpy.typing.ArrayLike) -> None:
+    def crankbroken(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5049,7 +5049,7 @@ class MjVisualRgba:
         ...
 
     @fog.setter
-    def fog(self, value: numpy.typing.ArrayLike) -> None:
+    def fog(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5057,7 +5057,7 @@ class MjVisualRgba:
         ...
 
     @force.setter
-    def force(self, value: numpy.typing.ArrayLike) -> None:
+    def force(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5065,7 +5065,7 @@ class MjVisualRgba:
         ...
 
     @frustum.setter
-    def frustum(self, value: numpy.typing.ArrayLike) -> None:
+    def frustum(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5073,7 +5073,7 @@ class MjVisualRgba:
         ...
 
     @haze.setter
-    def haze(self, value: numpy.typing.ArrayLike) -> None:
+    def haze(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5081,7 +5081,7 @@ class MjVisualRgba:
         ...
 
     @inertia.setter
-    def inertia(self, value: numpy.typing.ArrayLike) -> None:
+    def inertia(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5089,7 +5089,7 @@ class MjVisualRgba:
         ...
 
     @joint.setter
-    def joint(self, value: numpy.typing.ArrayLike) -> None:
+    def joint(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5097,7 +5097,7 @@ class MjVisualRgba:
         ...
 
     @light.setter
-    def light(self, value: numpy.typing.ArrayLike) -> None:
+    def light(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5105,7 +5105,7 @@ class MjVisualRgba:
         ...
 
     @rangefinder.setter
-    def rangefinder(self, value: numpy.typing.ArrayLike) -> None:
+    def rangefinder(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5113,7 +5113,7 @@ class MjVisualRgba:
         ...
 
     @selectpoint.setter
-    def selectpoint(self, value: numpy.typing.ArrayLike) -> None:
+    def selectpoint(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
     @property
@@ -5121,7 +5121,7 @@ class MjVisualRgba:
         ...
 
     @slidercrank.setter
-    def slidercrank(self, value: numpy.typing.ArrayLike) -> None:
+    def slidercrank(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[float]) -> None:
         ...
 
 class MjsCompiler:
@@ -5207,7 +5207,7 @@ class MjsCompiler:
         """range of geom groups used to compute inertia"""
 
     @inertiagrouprange.setter
-    def inertiagrouprange(self, value: numpy.typing.ArrayLike) -> None:
+    def inertiagrouprange(self, value: numpy.typing.NDArray[typing.Any] | collections.abc.Sequence[int]) -> None:
         ...
 
     @property
@@ -5439,4 +5439,7 @@ class MjsTendonPath:
         ...
 
     def __len__(self) -> int:
+        ...
+
+    def __iter__(self) -> collections.abc.Iterator[MjsWrap]:
         ...

@@ -8012,6 +8012,9 @@ class _MjWarningStatList:
     def number(self) -> numpy.typing.NDArray[numpy.int32]:
         ...
 
+    def __iter__(self) -> collections.abc.Iterator[MjWarningStat]:
+        ...
+
 class MjLogConfig:
     logfile: str
     'log file path (default: "MUJOCO_LOG.TXT")'
@@ -8167,6 +8170,9 @@ class _MjTimerStatList:
     def number(self) -> numpy.typing.NDArray[numpy.int32]:
         ...
 
+    def __iter__(self) -> collections.abc.Iterator[MjTimerStat]:
+        ...
+
 class MjSolverStat:
 
     def __copy__(self) -> MjSolverStat:
@@ -8285,6 +8291,9 @@ class _MjSolverStatList:
 
     @property
     def nupdate(self) -> numpy.typing.NDArray[numpy.int32]:
+        ...
+
+    def __iter__(self) -> collections.abc.Iterator[MjSolverStat]:
         ...
 
 class MjPreContact:
@@ -8622,6 +8631,9 @@ class _MjContactList:
 
     @property
     def vert(self) -> numpy.typing.NDArray[numpy.int32]:
+        ...
+
+    def __iter__(self) -> collections.abc.Iterator[MjContact]:
         ...
 
 class MjData:
@@ -11811,7 +11823,7 @@ class MjvScene:
         ...
 
     @property
-    def camera(self) -> tuple[typing.Any, ...]:
+    def camera(self) -> tuple[MjvGLCamera, ...]:
         """left and right camera"""
 
     @property
@@ -11983,11 +11995,11 @@ class MjvScene:
         ...
 
     @property
-    def geoms(self) -> tuple[typing.Any, ...]:
+    def geoms(self) -> tuple[MjvGeom, ...]:
         """buffer for geoms (ngeom)"""
 
     @property
-    def lights(self) -> tuple[typing.Any, ...]:
+    def lights(self) -> tuple[MjvLight, ...]:
         """buffer for lights (nlight)"""
 
     @property
