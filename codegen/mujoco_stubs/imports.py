@@ -56,9 +56,10 @@ def ensure_imports(tree: ast.Module, module: str) -> None:
     _Local(module).visit(tree)
     other, modules = _bound_names(tree)
     needed: set[str] = set()
+    inner = {id(n.value) for n in ast.walk(tree) if isinstance(n, ast.Attribute)}
     for node in ast.walk(tree):
-        if not isinstance(node, ast.Attribute):
-            continue
+        if not isinstance(node, ast.Attribute) or id(node) in inner:
+            continue  # only whole chains: mujoco._structs.MjModel, not mujoco._structs
         name = dotted(node)
         if name is None:
             continue

@@ -7,8 +7,6 @@ import mujoco._structs
 import numpy
 import numpy.typing
 import typing
-import collections
-import mujoco
 __all__: list[str] = ['Batch']
 
 class Batch:

@@ -6,8 +6,6 @@ import collections.abc
 import mujoco._structs
 import numpy
 import typing
-import collections
-import mujoco
 import numpy.typing
 __all__: list[str] = ['Mutex', 'Simulate', 'set_glfw_dlhandle']
 

@@ -6,7 +6,6 @@ import dataclasses
 import enum
 import numpy as np
 from typing import Callable, Sequence, TextIO
-import numpy
 import numpy.typing
 import typing
 

@@ -8,12 +8,10 @@ import queue
 import types
 from _typeshed import Incomplete
 from typing import Callable
-import collections
 import collections.abc
 import contextlib
 import mujoco._simulate
 import mujoco._structs
-import numpy
 import numpy.typing
 import typing
 PERCENT_REALTIME: tuple[float, ...]

@@ -7,7 +7,6 @@ import types
 from _typeshed import Incomplete
 from mujoco.rendering.classic import gl_context as gl_context
 import mujoco._structs
-import numpy
 import numpy.typing
 import typing
 
