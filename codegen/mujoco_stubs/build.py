@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import ast
-import importlib
 import importlib.metadata
+import importlib.util
 import re
 
 from codegen.mujoco_stubs import facts, sources, spelling
@@ -26,7 +26,8 @@ def _version(distribution: str) -> str:
 def stub_path(module: str) -> str:
     """``mujoco._structs`` -> ``_structs.pyi``; a package -> ``.../__init__.pyi``."""
     parts = module.split(".")[1:]
-    if hasattr(importlib.import_module(module), "__path__"):
+    spec = importlib.util.find_spec(module)  # not imported: viewer.py needs glfw to import
+    if spec is not None and spec.submodule_search_locations is not None:
         return "/".join([*parts, "__init__.pyi"])
     return "/".join(parts[:-1] + [parts[-1] + ".pyi"])
 

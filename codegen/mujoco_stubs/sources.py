@@ -14,6 +14,7 @@ Both run in a subprocess of the current interpreter with a fixed environment: th
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import subprocess
 import sys
@@ -76,6 +77,14 @@ def _run(tool: list[str], args: list[str], cwd: Path) -> None:
                            f"{result.stdout}\n{result.stderr}")
 
 
+def _site_packages() -> str:
+    """The directory holding the installed ``mujoco`` package."""
+    spec = importlib.util.find_spec("mujoco")
+    if spec is None or spec.origin is None:
+        raise RuntimeError("mujoco is not installed")
+    return str(Path(spec.origin).parents[1])
+
+
 def _stub_file(root: Path, module: str) -> Path:
     """Where a tool wrote ``module``: ``a/b.pyi``, or ``a/b/__init__.pyi`` for a package."""
     parts = module.split(".")
@@ -94,7 +103,10 @@ def draft_stubs() -> dict[str, str]:
         # (``mujoco::python::MjModelBodyViews``) so spelling.py can map them, instead of ``...``.
         _run(_PYBIND11_STUBGEN, ["--print-invalid-expressions-as-is", "--output-dir",
               str(root / "pybind"), *PYBIND_MODULES], root)
-        _run(_MYPY_STUBGEN, ["--include-docstrings", "--output", str(root / "mypy"),
+        # --no-import: read the source without importing it, so the drafts do not depend on
+        # the optional packages viewer.py and the GL modules import (glfw, PyOpenGL)
+        _run(_MYPY_STUBGEN, ["--include-docstrings", "--no-import", "--search-path",
+                             _site_packages(), "--output", str(root / "mypy"),
               *(arg for module in PYTHON_MODULES for arg in ("-m", module))], root)
         drafts: dict[str, str] = {}
         for sub, modules in (("pybind", PYBIND_MODULES), ("mypy", PYTHON_MODULES)):
