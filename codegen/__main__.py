@@ -2,6 +2,7 @@
 
     python -m codegen generate [--grammar PATH/TO/mjcf.schema] [--allow-untyped]
     python -m codegen render      # schema/ -> generated/ only
+    python -m codegen stubs       # the installed mujoco -> generated/mujoco-stubs/
     python -m codegen check       # exit 1 if generated/ differs from a fresh render
 """
 
@@ -11,7 +12,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from codegen import ir, render
+from codegen import ir, mujoco_stubs, render
 
 
 def _generate(grammar: Path | None, allow_untyped: bool) -> int:
@@ -29,6 +30,13 @@ def _generate(grammar: Path | None, allow_untyped: bool) -> int:
     print(f"schema/mjcf.json: MuJoCo {schema.mujoco_version}, {len(schema.elements)} rows, "
           f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    return _stubs()
+
+
+def _stubs() -> int:
+    changed = mujoco_stubs.write(mujoco_stubs.render())
+    print("generated/mujoco-stubs/: "
+          + (", ".join(changed) + " rewritten" if changed else "unchanged"))
     return 0
 
 
@@ -47,6 +55,12 @@ def _check() -> int:
         print(f"generated/ is out of date: {', '.join(stale)}; run `nox -s generate`")
         return 1
     print("generated/ matches schema/")
+    stubs = mujoco_stubs.stale(mujoco_stubs.render())
+    if stubs:
+        print(f"generated/mujoco-stubs/ is out of date: {', '.join(stubs)}; "
+              "run `python -m codegen stubs`")
+        return 1
+    print("generated/mujoco-stubs/ matches the installed mujoco")
     return 0
 
 
@@ -59,12 +73,15 @@ def main(argv: list[str] | None = None) -> int:
     gen.add_argument("--allow-untyped", action="store_true",
                      help="write attributes that cannot be typed precisely as strings")
     sub.add_parser("render", help="render generated/ from schema/")
+    sub.add_parser("stubs", help="write generated/mujoco-stubs/ from the installed mujoco")
     sub.add_parser("check", help="fail if generated/ differs from a fresh render")
     args = parser.parse_args(argv)
     if args.command == "generate":
         return _generate(args.grammar, args.allow_untyped)
     if args.command == "render":
         return _render()
+    if args.command == "stubs":
+        return _stubs()
     return _check()
 
 

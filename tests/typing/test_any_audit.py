@@ -8,8 +8,8 @@ from mypy.modulefinder import BuildSource
 from tests.typing import any_audit
 from tests.typing.any_audit import Audit
 
-# What a user's mypy sees without this repository's typings/: mujoco ships no types, so
-# whatever is typed as a mujoco class is Any to them.
+# Where the API meets mujoco: Any to a user's mypy if mujoco were untyped (it is typed by the
+# shipped generated/mujoco-stubs, so the audit finds nothing there either).
 MUJOCO_BOUNDARY = {
     "typed_mjcf.from_spec", "typed_mjcf.io.from_spec",
     "typed_mjcf._base.ModelRoot.compile", "typed_mjcf._base.ModelRoot.to_spec",
