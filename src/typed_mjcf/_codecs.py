@@ -390,12 +390,16 @@ class ArrayCodec(Codec):
             items = cast("tuple[object, ...] | list[object]", value)
             n = len(items)
             hi = self.hi
-            if self.lo <= n and (hi is None or n <= hi) and self.plain_types.issuperset(
-                    map(type, items)):
-                try:
-                    return _frozen(np.array(items, self.dtype))
-                except OverflowError:
-                    raise Rejected(f"{self.expected} that fit in 32 bits") from None
+            if self.lo <= n and (hi is None or n <= hi):
+                plain = self.plain_types
+                for item in items:
+                    if type(item) not in plain:
+                        break
+                else:
+                    try:
+                        return np.array(items, self.dtype)
+                    except OverflowError:
+                        raise Rejected(f"{self.expected} that fit in 32 bits") from None
         try:
             array = self.from_text(cast(str, value)) if kind is str else self._to_array(value)
         except Rejected as rejected:
@@ -403,19 +407,20 @@ class ArrayCodec(Codec):
                 raise
             raise Rejected(self.expected, rejected.error) from None
         self._check_length(array.shape[0])
-        return _frozen(array)
+        return array
 
     def parse(self, text: str) -> object:
         if self.pattern.fullmatch(text) is not None:
             return text
         array = self.from_text(text)
         self._check_length(array.shape[0])
-        return _frozen(array)
+        return array
 
     def read(self, stored: object) -> object:
+        """A read-only array: changes go through assignment (and its checks)."""
         if type(stored) is str:
             return _frozen(self.from_text(stored))
-        return stored
+        return _frozen(cast(Array, stored).view())
 
     def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
@@ -425,6 +430,8 @@ class ArrayCodec(Codec):
         array = cast(Array, stored)
         if self.is_int:
             return " ".join(map(str, array.tolist()))
+        if fmt.plain and not self.single:
+            return shortest_doubles(cast(list[float], array.tolist()))
         return fmt.numbers(cast(list[float], array.tolist()), self.single)
 
     def _check_length(self, n: int) -> None:

@@ -186,25 +186,38 @@ class Writer:
                 texts[name] = text
         return texts
 
-    def attribute_text(self, element: Element) -> str:
-        """`` name="value"`` for each attribute, escaped where text can need it. Text kept as
-        read and plain strings are written inline (this loop is most of an export's time)."""
-        stored = _tree.values(element)
+    def attribute_text(self, element: Element, stored: dict[str, object]) -> str:
+        """`` name="value"`` for each of ``element``'s ``stored`` values (this loop is most
+        of an export's time). Text kept as read and plain strings need no formatting, and
+        what a number codec writes no escaping."""
         by_name = element.spec.by_name
         plain = self.plain and _tree.scope_of(element) is self.top_scope
         parts: list[str] = []
         if self.given_names and id(element) in self.given_names:
             parts.append(f' {self.given_name(element)}')
-        for name in self.names(element):
+        names = list(stored)
+        skip = self.skip
+        if skip:
+            names = [name for name in names if name not in skip]
+        if len(names) > 1:  # sort the few set rather than scan every attribute of the row
+            names.sort(key=element.spec.order.__getitem__)
+        fmt = self.fmt
+        for name in names:
             value = stored[name]
             attribute = by_name[name]
-            if plain and type(value) is str and attribute.kind != "ref" and (
-                    attribute.namespace_from is None):
+            if attribute.direct and attribute.kind != "file":
+                if type(value) is str:  # text (or numbers as read: they may hold tabs)
+                    text = value if plain else attribute.codec.write(value, fmt)
+                    parts.append(f' {name}="{escape(text)}"')
+                else:  # numbers set in Python: nothing to escape
+                    parts.append(f' {name}="{attribute.codec.write(value, fmt)}"')
+                continue
+            if plain and type(value) is str and attribute.kind == "id":
                 parts.append(f' {name}="{escape(value)}"')
                 continue
-            text = self.value(element, attribute, value)
-            if text is not None:
-                parts.append(f' {name}="{escape(text)}"')
+            written = self.value(element, attribute, value)
+            if written is not None:
+                parts.append(f' {name}="{escape(written)}"')
         return "".join(parts)
 
     def value(self, element: Element, attribute: AttributeSpec, value: object) -> str | None:
@@ -317,7 +330,8 @@ class Writer:
                 append(current)
                 continue
             tag = current.spec.tag
-            attrs = attribute_text(current) if _tree.values(current) else ""
+            stored = _tree.values(current)
+            attrs = attribute_text(current, stored) if stored else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
             spaces = indent_of(level)

@@ -29,12 +29,14 @@ class AttributeSpec:
         "anchor",
         "codec",
         "default",
+        "direct",
         "directory",
         "doc",
         "dtype",
         "hi",
         "index",
         "is_array",
+        "is_reference",
         "keywords",
         "kind",
         "lo",
@@ -66,6 +68,8 @@ class AttributeSpec:
     scope: bool
     index: int
     codec: Codec
+    is_reference: bool  # names another element (a fixed or an attribute-given namespace)
+    direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
 
     def __init__(
         self,
@@ -106,6 +110,8 @@ class AttributeSpec:
         self.doc = doc
         self.scope = scope  # the root's model name: the scope of the model when attached
         self.index = 0  # position in the row, set by ElementSpec
+        self.is_reference = kind == "ref" or namespace_from is not None
+        self.direct = not self.is_reference and kind != "id" and not scope
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern)
 
@@ -113,11 +119,6 @@ class AttributeSpec:
     def url(self) -> str | None:
         """This attribute's entry in MuJoCo's XML reference."""
         return f"{DOCS_URL}#{self.anchor}" if self.anchor else None
-
-    @property
-    def is_reference(self) -> bool:
-        """Whether the value names another element (a fixed or an attribute-given namespace)."""
-        return self.kind == "ref" or self.namespace_from is not None
 
     def describe(self) -> str:
         """The attribute's MJCF type in words, e.g. ``real[3]`` or ``keyword: hinge|slide``."""
@@ -141,7 +142,7 @@ class AttributeSpec:
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once."""
 
-    __slots__ = ("card", "class_name", "index", "py_name", "single", "tag")
+    __slots__ = ("card", "class_name", "cls", "index", "py_name", "single", "tag")
 
     tag: str
     py_name: str
@@ -149,6 +150,7 @@ class ChildSpec:
     single: bool
     card: str
     index: int
+    cls: type | None  # the generated class, once every class exists
 
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
                  py_name: str | None = None) -> None:
@@ -158,6 +160,7 @@ class ChildSpec:
         self.single = single
         self.card = card
         self.index = 0
+        self.cls = None
 
 
 Constraint = tuple[str, tuple[tuple[str, ...], ...]]

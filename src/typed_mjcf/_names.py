@@ -73,21 +73,21 @@ class NameScope:
     def has_identifier(self, namespace: str, name: str) -> bool:
         return self.lookup(namespace, name) is not None
 
-    def claim(self, namespace: str, name: str, element: Named, what: str) -> None:
-        """Give ``name`` to ``element``; ``what`` says which assignment (for the message)."""
+    def claim(self, namespace: str, name: str, element: Named) -> None:
+        """Give ``name`` to ``element``; refused with :class:`NameTaken`, whose message
+        starts with the element's path (callers may say more: see ``detail``)."""
         table = self.tables.get(namespace)
         if table is None:
             table = self.tables[namespace] = {}
         holder = table.get(name)
         if holder is not None and holder is not element:
-            raise DuplicateIdentifierError(
-                f"{what}: expected a name unique in namespace {namespace!r}, but "
-                f"{holder.path} has it")
+            raise NameTaken(element, f"expected a name unique in namespace {namespace!r}, "
+                                     f"but {holder.path} has it")
         if holder is None and SEPARATOR in name:
             head = name.split(SEPARATOR, 1)[0]
             if head in self.attached:
-                raise DuplicateIdentifierError(
-                    f"{what}: the name {name!r} would collide with the names of the model "
+                raise NameTaken(
+                    element, f"the name {name!r} would collide with the names of the model "
                     f"attached as {head!r} (its names are written {head}/...)")
             self.slash_heads[head] = self.slash_heads.get(head, 0) + 1
         table[name] = element
@@ -212,3 +212,11 @@ class NameScope:
 
     def __repr__(self) -> str:
         return f"<NameScope {self.name!r}>"
+
+
+class NameTaken(DuplicateIdentifierError):
+    """A name its scope refuses; ``detail`` is the reason without the element's path."""
+
+    def __init__(self, element: Named, detail: str) -> None:
+        super().__init__(f"{element.path}: {detail}")
+        self.detail = detail

@@ -392,7 +392,8 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
     """Read ``node``'s attributes into ``element``; references whose namespace another
     attribute names (``objname`` by ``objtype``) are read last."""
     by_name = element.spec.by_name
-    later: list[tuple[AttributeSpec, str]] = []
+    values = _tree.values(element)
+    later: list[tuple[AttributeSpec, str]] | None = None
     for key, text in node.attrib.items():
         attribute = by_name.get(key)  # pyright: ignore[reportArgumentType]
         if attribute is None:
@@ -400,11 +401,25 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
             raise context.error(
                 f"<{element.spec.tag}> has no attribute {_name(key)!r}"
                 f"{did_you_mean(_name(key), known)}", source, source_line(node))
+        if attribute.direct and text:
+            try:  # the common case, as _tree.assign_text does it
+                values[attribute.name] = attribute.codec.parse(str(text))
+            except Rejected as rejected:
+                error = _tree.rejection(element, attribute, text, rejected)
+                raise context.error(str(error), source, source_line(node)) from None
+            continue
+        if attribute.kind == "id":
+            try:
+                _tree.assign_name_text(element, attribute, str(text))
+            except MjcfError as error:
+                raise context.error(str(error), source, source_line(node)) from None
+            continue
         if attribute.namespace_from is not None:
+            later = [] if later is None else later
             later.append((attribute, str(text)))
             continue
         _set_text(element, attribute, str(text), node, source, context)
-    for attribute, text in later:
+    for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
 
 

@@ -35,13 +35,14 @@ from typing import (
     TypeVar,
     cast,
     overload,
+    Protocol,
 )
 
 import numpy as np
 
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
-from typed_mjcf._names import NameScope
+from typed_mjcf._names import NameScope, NameTaken
 from typed_mjcf.errors import (
     ChildError,
     DuplicateIdentifierError,
@@ -60,6 +61,7 @@ _Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscript
 
 _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
+_RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 
@@ -78,8 +80,12 @@ def finish_grammar(facts: GrammarFacts) -> None:
     """Called by the generated tables once every class exists: the language-wide facts,
     which rows hold bodies, and the signature and docstring of every ``add_<tag>()``."""
     _FACTS[:] = [facts]
+    _RESERVED_NAMES.clear()
+    _RESERVED_NAMES.add(facts.world_body)
     for cls in _CLASSES.values():
         cls.spec.holds_bodies = facts.body in cls.spec.children
+        for child in cls.spec.children.values():
+            child.cls = _CLASSES[child.class_name]
     document_adders()
 
 
@@ -202,6 +208,8 @@ class Element:
             raise self._unknown_attribute(name)
 
         def __setattr__(self, name: str, value: object) -> None:
+            # Properties and slots are found by the normal route; anything else is a name
+            # the grammar does not have. The tree writes its slots with _SLOTS' setters.
             try:
                 object.__setattr__(self, name, value)
             except AttributeError:
@@ -254,6 +262,9 @@ class Element:
 
     def _store(self, attribute: AttributeSpec, stored: object) -> None:
         values = self._values
+        if attribute.direct:
+            values[attribute.name] = stored
+            return
         if attribute.kind == "id":
             old = values.get(attribute.name)
             if old != stored:
@@ -281,15 +292,17 @@ class Element:
 
     def _link(self, attribute: AttributeSpec, target: Element) -> Element:
         """Check that ``target`` may be what ``attribute`` refers to."""
-        namespace = target.spec.namespace
-        allowed = _reference_namespaces(self, attribute)
-        if namespace not in allowed:
+        spec = target.spec
+        namespace = spec.namespace
+        if namespace != attribute.namespace and namespace not in (
+                allowed := _reference_namespaces(self, attribute)):
             raise InvalidReferenceError(
                 f"{self.path}: invalid {attribute.py_name}={target!r} on <{self.spec.tag}>: "
                 f"expected a name or an element of namespace "
                 f"{' or '.join(repr(n) for n in sorted(allowed))}, got a <{target.spec.tag}> "
                 f"(namespace {namespace!r})")
-        if element_name(target) is None:
+        id_attribute = spec.id_attribute
+        if id_attribute is None or id_attribute.name not in target._values:
             target._scope.unnamed_targets.append(target)  # an export will name it
         return target
 
@@ -322,40 +335,50 @@ class Element:
         last, so a refused value leaves the model untouched."""
         by_key = self.spec.by_key
         values = self._values
+        others: list[tuple[AttributeSpec, object]] | None = None
         identifier: tuple[AttributeSpec, object] | None = None
-        deferred: list[tuple[AttributeSpec, object]] = []
-        waits: list[AttributeSpec] = []
         for key, value in kwargs.items():
             attribute = by_key.get(key)
             if attribute is None:
                 raise self._unknown_attribute(key)
             if value is None or (type(value) is str and not value):
                 continue
-            if attribute.kind == "id":
-                identifier = (attribute, self._convert(attribute, value))
-            elif attribute.namespace_from is not None or attribute.scope:
-                deferred.append((attribute, value))  # after the attribute naming its namespace
-            elif attribute.kind == "ref":
-                stored = values[attribute.name] = self._convert(attribute, value)
-                if type(stored) is str:
-                    waits.append(attribute)
-            else:
+            if attribute.direct:
                 try:
                     stored = attribute.codec.accept(value)
                 except Rejected as rejected:
                     raise self._reject(attribute, value, rejected) from None
                 if attribute.lo != 0 or not _is_empty_array(stored):
                     values[attribute.name] = stored
-        for attribute, value in deferred:
-            stored = values[attribute.name] = self._convert(attribute, value)
+            elif attribute.kind == "id":
+                identifier = (attribute, value)
+            else:
+                if others is None:
+                    others = []
+                others.append((attribute, value))
+        if others is not None:
+            self._init_named(others)
+        if identifier is not None:
+            attribute, value = identifier
+            name = self._convert(attribute, value)
+            assert isinstance(name, str)
+            _claim(self, attribute, name)
+            values[attribute.name] = name
+
+    def _init_named(self, pairs: list[tuple[AttributeSpec, object]]) -> None:
+        """References and the model's name, for :meth:`_init_attributes` (references after
+        the attributes naming their namespace)."""
+        values = self._values
+        waits: list[AttributeSpec] = []
+        if len(pairs) > 1:
+            pairs.sort(key=lambda pair: pair[0].namespace_from is not None)
+        for attribute, value in pairs:
+            stored = self._convert(attribute, value)
+            values[attribute.name] = stored
             if attribute.scope:
                 _rename_model(self, cast(str, stored))
             elif type(stored) is str:
                 waits.append(attribute)
-        if identifier is not None:
-            attribute, name = identifier
-            _claim(self, attribute, cast(str, name))
-            values[attribute.name] = name
         for attribute in waits:
             _wait(self, attribute, cast(str, values[attribute.name]))
 
@@ -549,7 +572,7 @@ class Attribute:
         stored = obj._values.get(self.name)
         if stored is None:
             return None
-        if self.lazy and type(stored) is str:
+        if self.lazy:  # numbers kept as read, arrays (read-only views)
             return self.codec.read(stored)
         if self.reference:
             return _read_reference(obj, self.spec, stored)
@@ -693,11 +716,15 @@ def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
         def add_child(self: Element, **kwargs: object) -> Element:
             return self._add_child(child_spec, None, kwargs)
     else:
-        def add_child(self: Element, **kwargs: object) -> Element:
-            child = _create(element_class(child_spec.class_name), self)
+        def add_child(self: Element, **kwargs: object) -> Element:  # the hot path of a build
+            child = _create(cast("type[Element]", child_spec.cls), self)
             if kwargs:
                 child._init_attributes(kwargs)
-            _append(self, child)
+            children = self._children
+            if type(children) is tuple:
+                _set_children(self, [child])
+            else:
+                cast(list[Element], children).append(child)
             return child
     add_child.__name__ = add_child.__qualname__ = f"add_{child_spec.tag}"
     _ADDERS[key] = add_child
@@ -750,16 +777,36 @@ def attribute_listing(spec: ElementSpec, head: str) -> str:
 # ---------------------------------------------------------------------------- creation
 
 
+class _Slot(Protocol):
+    def __set__(self, obj: Element, value: object, /) -> None: ...
+
+
+def _slot_writer(name: str) -> Callable[[Element, object], None]:
+    """Writes one of Element's slots past Element.__setattr__ (which exists to turn unknown
+    names into helpful errors, and would slow every write of the tree)."""
+    return cast(_Slot, Element.__dict__[name]).__set__
+
+
+_set_values = _slot_writer("_values")
+_set_children = _slot_writer("_children")
+_set_parent = _slot_writer("_parent")
+_set_root = _slot_writer("_root")
+_set_scope = _slot_writer("_scope")
+_set_singles = _slot_writer("_singles")
+_set_attached = _slot_writer("_attached")
+
+
 def _create(cls: type[E], parent: Element) -> E:
     """A new element of ``cls`` under ``parent`` (not yet among its children)."""
     element = _new_object(cls)
-    element._values = {}
-    element._children = _NO_CHILDREN
-    element._parent = parent
-    element._root = parent._root
-    element._scope = _child_scope(parent)
-    element._singles = None
-    element._attached = None
+    _set_values(element, {})
+    _set_children(element, _NO_CHILDREN)
+    _set_parent(element, parent)
+    _set_root(element, parent._root)
+    attached = parent._attached
+    _set_scope(element, parent._scope if attached is None else attached._scope)
+    _set_singles(element, None)
+    _set_attached(element, None)
     return element
 
 
@@ -773,7 +820,7 @@ def _child_scope(parent: Element) -> NameScope:
 def _append(parent: Element, child: Element) -> None:
     children = parent._children
     if type(children) is tuple:
-        parent._children = [child]
+        _set_children(parent, [child])
     else:
         cast(list[Element], children).append(child)
 
@@ -781,7 +828,8 @@ def _append(parent: Element, child: Element) -> None:
 def _mutable_children(parent: Element) -> list[Element]:
     children = parent._children
     if type(children) is tuple:
-        children = parent._children = []
+        children = []
+        _set_children(parent, children)
     return cast(list[Element], children)
 
 
@@ -841,18 +889,25 @@ def _detach_model(model: ModelBase) -> None:
 
 
 def _claim(element: Element, attribute: AttributeSpec, name: str) -> None:
-    scope = element._scope
-    namespace = cast(str, attribute.namespace)
-    facts = grammar_facts()
-    if name == facts.world_body and element.spec.tag == facts.body:
-        raise InvalidValueError(
-            f"{element.path}: invalid {attribute.py_name}={name!r} on <{element.spec.tag}>: "
-            f"{name!r} is the name MuJoCo gives the world body")
+    """Give ``element`` its name in its scope (a refusal names the assignment)."""
     if element._root is None:
         return
-    scope.claim(namespace, name, element,
-                f"{element.path}: invalid {attribute.py_name}={name!r} on <{element.spec.tag}>")
-    _link_waiting(scope, namespace, name, element)
+    scope = element._scope
+    namespace = attribute.namespace or ""  # ids have one
+    if name in _RESERVED_NAMES:
+        facts = grammar_facts()
+        if element.spec.tag == facts.body:
+            raise InvalidValueError(
+                f"{element.path}: invalid {attribute.py_name}={name!r} on "
+                f"<{element.spec.tag}>: {name!r} is the name MuJoCo gives the world body")
+    try:
+        scope.claim(namespace, name, element)
+    except NameTaken as taken:
+        raise DuplicateIdentifierError(
+            f"{element.path}: invalid {attribute.py_name}={name!r} on <{element.spec.tag}>: "
+            f"{taken.detail}") from None
+    if scope.waiting:
+        _link_waiting(scope, namespace, name, element)
 
 
 def _forget(element: Element) -> None:
@@ -896,6 +951,8 @@ def _reference_namespaces(element: Element, attribute: AttributeSpec) -> frozens
 
 def reference_namespace(element: Element, attribute: AttributeSpec) -> str | None:
     """The one namespace a reference names now, if it is known."""
+    if attribute.namespace is not None:
+        return attribute.namespace
     namespaces = _reference_namespaces(element, attribute)
     return next(iter(namespaces)) if len(namespaces) == 1 else None
 
@@ -943,7 +1000,7 @@ def _read(element: Element, attribute: AttributeSpec) -> object:
     stored = element._values.get(attribute.name)
     if stored is None:
         return None
-    if attribute.codec.lazy and type(stored) is str:
+    if attribute.codec.lazy:
         return attribute.codec.read(stored)
     if attribute.is_reference:
         return _read_reference(element, attribute, stored)
@@ -985,7 +1042,7 @@ class _Snapshot:
             if current is not None:
                 scope.release(namespace, current, element)
             if self.name is not None:
-                scope.claim(namespace, self.name, element, element.path)
+                scope.claim(namespace, self.name, element)
         scope_attribute = element.spec.scope_attribute
         if scope_attribute is not None:
             before = self.values.get(scope_attribute.name)
@@ -1007,13 +1064,13 @@ def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: N
     while stack:
         original, clone_parent, clone_scope = stack.pop()
         clone = _new_object(type(original))
-        clone._values = {key: value for key, value in original._values.items()}
-        clone._children = _NO_CHILDREN
-        clone._parent = clone_parent
-        clone._root = root
-        clone._scope = clone_scope
-        clone._singles = None
-        clone._attached = None
+        _set_values(clone, {key: value for key, value in original._values.items()})
+        _set_children(clone, _NO_CHILDREN)
+        _set_parent(clone, clone_parent)
+        _set_root(clone, root)
+        _set_scope(clone, clone_scope)
+        _set_singles(clone, None)
+        _set_attached(clone, None)
         memo[id(original)] = clone
         inner_scope = clone_scope
         if original._attached is not None:
@@ -1047,11 +1104,11 @@ def _copy_model(model: ModelBase, memo: dict[int, object]) -> ModelBase:
     stack: list[Element] = [clone]
     while stack:
         element = stack.pop()
-        element._root = clone
+        _set_root(element, clone)
         name = element_name(element)
         id_attribute = element.spec.id_attribute
         if name is not None and id_attribute is not None:
-            element._scope.claim(cast(str, id_attribute.namespace), name, element, element.path)
+            element._scope.claim(cast(str, id_attribute.namespace), name, element)
         attached = element._attached
         if attached is not None:
             scope.attach(attached._scope)
@@ -1109,7 +1166,7 @@ def _adopt(parent: Element, clone: Element, original: Element) -> None:
         name = element_name(copied)
         id_attribute = copied.spec.id_attribute
         if id_attribute is not None and name is not None:
-            copied._scope.claim(cast(str, id_attribute.namespace), name, copied, copied.path)
+            copied._scope.claim(cast(str, id_attribute.namespace), name, copied)
 
 
 # ---------------------------------------------------------------------------- comparison
@@ -1242,8 +1299,13 @@ def read_value(element: Element, attribute: AttributeSpec) -> object:
 
 def new_child(parent: Element, child_spec: ChildSpec) -> Element:
     """A new child of ``parent``, last among its children."""
-    child = _create(element_class(child_spec.class_name), parent)
-    _place(parent, child, child_spec, None)
+    child = _create(cast("type[Element]", child_spec.cls), parent)
+    if child_spec.single:
+        _place(parent, child, child_spec, None)
+    elif type(parent._children) is tuple:
+        _set_children(parent, [child])
+    else:
+        cast(list[Element], parent._children).append(child)
     return child
 
 
@@ -1256,6 +1318,16 @@ def rejection(element: Element, attribute: AttributeSpec, value: object,
 def assign(element: Element, attribute: AttributeSpec, value: object) -> None:
     """Set ``attribute`` from a Python value, as assignment does."""
     element._assign(attribute, value)
+
+
+def assign_name_text(element: Element, attribute: AttributeSpec, text: str) -> None:
+    """Set an element's name from a file (names read from files may hold '/')."""
+    values = element._values
+    if attribute.name in values or not text:
+        assign_text(element, attribute, text)  # a repeated section renames: the general path
+        return
+    _claim(element, attribute, text)
+    values[attribute.name] = text
 
 
 def assign_text(element: Element, attribute: AttributeSpec, text: str) -> None:
