@@ -30,12 +30,12 @@ from typing import (
     ClassVar,
     Generic,
     NoReturn,
+    Protocol,
     Self,
     TypeAlias,
     TypeVar,
     cast,
     overload,
-    Protocol,
 )
 
 import numpy as np
@@ -828,8 +828,9 @@ def _append(parent: Element, child: Element) -> None:
 def _mutable_children(parent: Element) -> list[Element]:
     children = parent._children
     if type(children) is tuple:
-        children = []
-        _set_children(parent, children)
+        fresh: list[Element] = []
+        _set_children(parent, fresh)
+        return fresh
     return cast(list[Element], children)
 
 
