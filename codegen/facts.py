@@ -159,11 +159,13 @@ def _overrides(value: object, where: str) -> list[AttributeOverride]:
     return entries
 
 _LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "inertia",
+                     "freejoint", "free_type", "joint_type",
                      "sensor_section", "mocap", "childclass", "dclass", "model_name",
                      "replicate_separator")
 _LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",
+                            "shared_defaults", "ordered_children",
                             "named_after_file", "named_from_contents", "typed_references",
-                            "type_namespaces", "keyframe", "attach"})
+                            "type_namespaces", "merge_rules", "keyframe", "attach"})
 _ATTACH_KEYS = ("tag", "model", "prefix", "references")
 
 
@@ -191,12 +193,15 @@ def _language(value: object, where: str) -> _LanguageTable:
     language = ir.LanguageDef(
         **{key: _str(table[key], f"{where} {key}") for key in _LANGUAGE_STRINGS},
         joints=_str_list(table["joints"], f"{where} joints"),
+        shared_defaults=_str_list(table["shared_defaults"], f"{where} shared_defaults"),
+        ordered_children=_str_list(table["ordered_children"], f"{where} ordered_children"),
         class_for_children=_str_list(table["class_for_children"],
                                      f"{where} class_for_children"),
         named_after_file=_strings(table["named_after_file"], f"{where} named_after_file"),
         named_from_contents=_str_list(table["named_from_contents"],
                                       f"{where} named_from_contents"),
         type_namespaces=_strings(table["type_namespaces"], f"{where} type_namespaces"),
+        merge_rules=_merge_rules(table["merge_rules"], f"{where} merge_rules"),
         keyframe=_strings(table["keyframe"], f"{where} keyframe"),
         attach=ir.AttachDef(
             tag=_str(attach["tag"], f"{where} attach tag"),
@@ -208,6 +213,19 @@ def _language(value: object, where: str) -> _LanguageTable:
         language=language,
         typed_references=_strings(table["typed_references"], f"{where} typed_references"),
     )
+
+
+_MERGE_RULES = ("min", "max", "max-bytes")
+
+
+def _merge_rules(value: object, where: str) -> dict[str, str]:
+    rules = _strings(value, where)
+    for key, rule in rules.items():
+        if "@" not in key:
+            raise FactsError(f"{where} {key}: expected a key \"tag@attribute\"")
+        if rule not in _MERGE_RULES:
+            raise FactsError(f"{where} {key}: {rule!r} is not one of {', '.join(_MERGE_RULES)}")
+    return rules
 
 
 # ------------------------------------------------------------------------------- values

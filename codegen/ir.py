@@ -127,6 +127,11 @@ class LanguageDef:
     frame: str = "frame"
     replicate: str = "replicate"
     joints: list[str] = field(default_factory=lambda: [])
+    freejoint: str = "freejoint"
+    free_type: str = "free"
+    joint_type: str = "type"
+    shared_defaults: list[str] = field(default_factory=lambda: [])
+    ordered_children: list[str] = field(default_factory=lambda: [])
     class_for_children: list[str] = field(default_factory=lambda: [])
     inertia: str = "inertial"
     sensor_section: str = "sensor"
@@ -139,6 +144,7 @@ class LanguageDef:
     named_from_contents: list[str] = field(default_factory=lambda: [])
     attach: AttachDef | None = None
     type_namespaces: dict[str, str] = field(default_factory=lambda: {})
+    merge_rules: dict[str, str] = field(default_factory=lambda: {})
     keyframe: dict[str, str] = field(default_factory=lambda: {})
 
 

@@ -24,6 +24,8 @@ GENERATOR_VERSION = "2"
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 GENERATED_DIR = Path(__file__).resolve().parent.parent / "generated" / "typed_mjcf_generated"
 DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
+# find()'s name for attachment frames (dm_control's; typed_mjcf._base.ATTACHMENT_FRAME).
+ATTACHMENT_FRAME = "attachment_frame"
 
 
 @dataclass(frozen=True)
@@ -176,6 +178,11 @@ def _facts(schema: ir.Schema) -> str:
         f"frame={language.frame!r}",
         f"replicate={language.replicate!r}",
         f"joints=frozenset({sorted(language.joints)!r})",
+        f"freejoint={language.freejoint!r}",
+        f"free_type={language.free_type!r}",
+        f"joint_type={language.joint_type!r}",
+        f"shared_defaults=frozenset({sorted(language.shared_defaults)!r})",
+        f"ordered_children=frozenset({sorted(language.ordered_children)!r})",
         f"class_for_children=frozenset({sorted(language.class_for_children)!r})",
         f"inertia={language.inertia!r}",
         f"sensor_section={language.sensor_section!r}",
@@ -185,6 +192,7 @@ def _facts(schema: ir.Schema) -> str:
         f"named_after_file={dict(sorted(language.named_after_file.items()))!r}",
         f"named_from_contents=frozenset({sorted(language.named_from_contents)!r})",
         f"replicate_separator={language.replicate_separator!r}",
+        f"merge_rules={dict(sorted(language.merge_rules.items()))!r}",
         f"keyframe=KeyframeFacts(**{dict(sorted(language.keyframe.items()))!r})",
     ]
     if attach is not None:
@@ -325,6 +333,9 @@ def render(schema: ir.Schema) -> dict[str, str]:
     keyword_sets = typer.keyword_aliases()
     aliases = [*typer.array_aliases(), *typer.namespace_aliases()]
     namespaces = [NamespaceView(ns, typer.namespace_type(ns)) for ns in typer.namespaces()]
+    body = schema.elements.get(schema.language.body)
+    if body is not None:  # frames are bodies
+        namespaces.append(NamespaceView(ATTACHMENT_FRAME, body.class_name))
     class_names = sorted(c.class_name for c in classes)
     context: dict[str, object] = {
         "mujoco_version": schema.mujoco_version,

@@ -4684,6 +4684,11 @@ finish_grammar(GrammarFacts(
     frame='frame',
     replicate='replicate',
     joints=frozenset(['freejoint', 'joint']),
+    freejoint='freejoint',
+    free_type='free',
+    joint_type='type',
+    shared_defaults=frozenset(['actuator']),
+    ordered_children=frozenset(['fixed', 'spatial']),
     class_for_children=frozenset(['frame', 'replicate']),
     inertia='inertial',
     sensor_section='sensor',
@@ -4693,6 +4698,7 @@ finish_grammar(GrammarFacts(
     named_after_file={'hfield': 'file', 'mesh': 'file', 'skin': 'file', 'texture': 'file'},
     named_from_contents=frozenset(['model']),
     replicate_separator='sep',
+    merge_rules={'map@zfar': 'max', 'map@znear': 'min', 'option@ccd_iterations': 'max', 'option@ccd_tolerance': 'min', 'option@iterations': 'max', 'option@ls_iterations': 'max', 'option@ls_tolerance': 'min', 'option@noslip_iterations': 'max', 'option@noslip_tolerance': 'min', 'option@sdf_initpoints': 'max', 'option@sdf_iterations': 'max', 'option@timestep': 'min', 'option@tolerance': 'min', 'size@memory': 'max-bytes', 'size@nconmax': 'max', 'size@njmax': 'max'},
     keyframe=KeyframeFacts(**{'act': 'act', 'ctrl': 'ctrl', 'mpos': 'mpos', 'mquat': 'mquat', 'qpos': 'qpos', 'qvel': 'qvel', 'time': 'time'}),
     attach=AttachFacts('attach', 'model', 'prefix', ('body', 'frame')),
 ))
@@ -4757,7 +4763,7 @@ AnySensor: TypeAlias = Accelerometer | Actuatorfrc | Actuatorpos | Actuatorvel |
 AnyTendon: TypeAlias = Fixed | Spatial
 """An element of namespace ``tendon``."""
 
-Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple"]
+Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple", "attachment_frame"]
 """The identifier namespaces (``find()``'s first argument)."""
 
 

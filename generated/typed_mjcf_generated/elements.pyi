@@ -598,7 +598,7 @@ AnySensor: TypeAlias = Accelerometer | Actuatorfrc | Actuatorpos | Actuatorvel |
 AnyTendon: TypeAlias = Fixed | Spatial
 """An element of namespace ``tendon``."""
 
-Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple"]
+Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple", "attachment_frame"]
 """The identifier namespaces (``find()``'s first argument)."""
 
 
@@ -658,6 +658,8 @@ class _Typed(_Element):
     @overload
     def find(self, namespace: Literal["tuple"], identifier: _builtins.str) -> Tuple | None: ...
     @overload
+    def find(self, namespace: Literal["attachment_frame"], identifier: _builtins.str) -> Body | None: ...
+    @overload
     def find(self, namespace: Namespace, identifier: _builtins.str) -> _Element | None: ...
     @overload
     def find_all(self, namespace: Literal["actuator"], immediate_children_only: _builtins.bool = ..., exclude_attachments: _builtins.bool = ...) -> _builtins.list[AnyActuator]: ...
@@ -711,6 +713,8 @@ class _Typed(_Element):
     def find_all(self, namespace: Literal["texture"], immediate_children_only: _builtins.bool = ..., exclude_attachments: _builtins.bool = ...) -> _builtins.list[Texture]: ...
     @overload
     def find_all(self, namespace: Literal["tuple"], immediate_children_only: _builtins.bool = ..., exclude_attachments: _builtins.bool = ...) -> _builtins.list[Tuple]: ...
+    @overload
+    def find_all(self, namespace: Literal["attachment_frame"], immediate_children_only: _builtins.bool = ..., exclude_attachments: _builtins.bool = ...) -> _builtins.list[Body]: ...
     @overload
     def find_all(self, namespace: Namespace, immediate_children_only: _builtins.bool = ..., exclude_attachments: _builtins.bool = ...) -> _builtins.list[_Element]: ...
 

@@ -10,10 +10,19 @@
 
 __version__ = "0.1.0"
 
+from typing import Final
+
 from typed_mjcf._base import Element, ModelRoot
 from typed_mjcf._generated import elements as _elements
 from typed_mjcf._generated.elements import *
 from typed_mjcf._names import NameScope
+from typed_mjcf._traversal import (
+    commit_defaults,
+    get_attachment_frame,
+    get_frame_freejoint,
+    get_frame_joints,
+    get_freejoint,
+)
 from typed_mjcf._tree import ElementList
 from typed_mjcf._validate import Finding, ValidationError
 from typed_mjcf.assets import Asset
@@ -22,6 +31,7 @@ from typed_mjcf.errors import (
     CompileError,
     DuplicateIdentifierError,
     ExportError,
+    FileReadError,
     IllegalChildError,
     InvalidReferenceError,
     InvalidTypeError,
@@ -33,13 +43,18 @@ from typed_mjcf.errors import (
 from typed_mjcf.io import (
     ParseLimits,
     export_with_assets,
+    export_with_assets_as_zip,
     from_file,
     from_path,
     from_spec,
     from_xml_string,
+    from_zip,
 )
 
+PREFIX_SEPARATOR: Final[str] = "/"  # dm_control's name for the scope separator of attached models
+
 __all__ = [
+    "PREFIX_SEPARATOR",
     "Asset",
     "ChildError",
     "CompileError",
@@ -47,6 +62,7 @@ __all__ = [
     "Element",
     "ElementList",
     "ExportError",
+    "FileReadError",
     "Finding",
     "IllegalChildError",
     "InvalidReferenceError",
@@ -59,10 +75,17 @@ __all__ = [
     "ParseLimits",
     "UnknownAttributeError",
     "ValidationError",
+    "commit_defaults",
     "export_with_assets",
+    "export_with_assets_as_zip",
     "from_file",
     "from_path",
     "from_spec",
     "from_xml_string",
+    "from_zip",
+    "get_attachment_frame",
+    "get_frame_freejoint",
+    "get_frame_joints",
+    "get_freejoint",
 ]
 __all__ += _elements.__all__

@@ -18,6 +18,19 @@ from typed_mjcf._write import collect, vfs_text
 from typed_mjcf.errors import ExportError
 
 
+def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str, bytes]:
+    """The files a folder export writes: the model's XML (named ``model_filename``, else
+    after the model) last, after every file it uses."""
+    xml, collected = vfs_text(model)
+    data = xml.encode("utf-8")
+    if model_filename is None:
+        stem = _tree.scope_of(model).name or "model"
+        name = unique_name(safe_file_name(stem, ".xml"), data, collected)
+    else:
+        name = model_filename
+    return {**collected.files, name: data}
+
+
 def get_assets(model: ModelBase) -> dict[str, bytes]:
     """The files the model uses, by the names its VFS export gives them."""
     return collect(model).files
@@ -40,6 +53,8 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
         name = unique_name(safe_file_name(stem, ".xml"), xml.encode("utf-8"), collected)
     else:
         name = model_filename
+        if not name.lower().endswith(".xml"):
+            raise ExportError(f"the model's file name must end with '.xml', got {name!r}")
         if not is_plain_file_name(name):
             raise ExportError(f"model_filename must be a plain file name (no folders, no "
                               f"leading dot, no characters file systems refuse), got {name!r}; "

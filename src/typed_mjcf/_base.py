@@ -7,7 +7,7 @@ feature module.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Final, cast
 
 from lxml import etree
@@ -15,12 +15,15 @@ from lxml import etree
 from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model, to_spec
 from typed_mjcf._codecs import Format
-from typed_mjcf._compose import attach, detach
+from typed_mjcf._compose import attach, attached_children, detach, include_copy
 from typed_mjcf._defaults import resolve
+from typed_mjcf._files import file_stem
 from typed_mjcf._names import NameScope
-from typed_mjcf._tree import check_removable
+from typed_mjcf._traversal import commit_defaults
+from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
 from typed_mjcf._write import collect, element_text
+from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidValueError, did_you_mean
 
 if TYPE_CHECKING:
@@ -52,11 +55,15 @@ class Element(_tree.Element):
         return cast("Element | None", _tree.parent_of(self))
 
     def get_children(self, tag: str | None = None) -> list[Element]:
-        """The children, in document order; only those with ``tag`` if given."""
-        return cast("list[Element]", _tree.children_with_tag(self, tag))
+        """The children, in document order (only those with ``tag`` if given). An
+        attachment frame's include the attached model's bodies (and the rest of its world
+        body); a top-level section of a composed model, the attached models' sections'."""
+        own = _tree.children_with_tag(self, tag)
+        return cast("list[Element]", own + [e for e in attached_children(self)
+                                            if tag is None or e.spec.tag == tag])
 
     def all_children(self) -> list[Element]:
-        """The children, in document order (dm_control's name for ``get_children()``)."""
+        """dm_control's name for ``get_children()``."""
         return self.get_children()
 
     def iter_elements(self) -> Iterator[Element]:
@@ -80,6 +87,8 @@ class Element(_tree.Element):
         attached = _tree.attached_at(self)
         if attached is not None:
             return f"{_tree.scope_of(self).prefix()}{_tree.scope_of(attached).name}/"
+        if self.spec.holds_bodies and isinstance(self.parent, ModelRoot):  # the world body
+            return prefix or grammar_facts().world_body
         name = _tree.element_name(self)
         return None if name is None else prefix + name
 
@@ -94,24 +103,47 @@ class Element(_tree.Element):
         """The element named ``identifier`` in ``namespace`` inside this element, or ``None``.
         O(1) per scope: ``find("joint", "arm/elbow")`` looks in the model attached as
         ``arm``."""
-        _check_namespace(namespace)
-        found = _tree.scope_of(self).find(namespace, identifier)
+        if namespace == ATTACHMENT_FRAME:
+            attached = self.enter_model(identifier)
+            found: object = None if attached is None else _tree.frame_of(attached)
+        else:
+            _check_namespace(namespace)
+            found = _tree.scope_of(self).find(namespace, identifier)
+            if found is None and namespace in grammar_facts().named_after_file:
+                found = named_after_file(self, namespace, identifier)
         if not isinstance(found, Element) or found.is_removed:
             return None
         if isinstance(self, ModelRoot) and _tree.model_of(self) is self:
             return found
         return found if _is_inside(found, self) else None
 
+    def enter_model(self, scope: str) -> ModelRoot | None:
+        """The model attached under ``scope`` (``"arm"``, or ``"arm/gripper/"`` for one
+        attached inside it) in this element's scope, or ``None``."""
+        current: NameScope | None = _tree.scope_of(self)
+        for part in (p for p in scope.split("/") if p):
+            current = None if current is None else current.attached.get(part)
+        if current is None or current is _tree.scope_of(self):
+            return None
+        return cast(ModelRoot, _tree.scope_model(current))
+
     def find_all(self, namespace: Namespace, immediate_children_only: bool = False,
                  exclude_attachments: bool = False) -> list[Element]:
         """Every element of ``namespace`` inside this element (named or not), attached
         models' included unless ``exclude_attachments``, in the order the exported XML has
         them; only this element's children with ``immediate_children_only``."""
-        _check_namespace(namespace)
+        if namespace == ATTACHMENT_FRAME:
+            def wanted(element: _tree.Element) -> bool:
+                return _tree.attached_at(element) is not None
+        else:
+            _check_namespace(namespace)
+
+            def wanted(element: _tree.Element) -> bool:
+                return element.spec.namespace == namespace
         if immediate_children_only:
-            return [cast(Element, c) for c in _tree.children(self) if c.spec.namespace == namespace]
+            return [cast(Element, c) for c in _tree.children(self) if wanted(c)]
         return [cast(Element, e) for e in _tree.iter_composed(self, not exclude_attachments)
-                if e.spec.namespace == namespace and e is not self]
+                if wanted(e) and e is not self]
 
     # ------------------------------------------------------------------ values
 
@@ -143,23 +175,44 @@ class Element(_tree.Element):
 
     # ------------------------------------------------------------------ export
 
-    def to_xml_string(self, *, precision: int | None = None, zero_threshold: float = 0.0,
-                      pretty_print: bool = True, canonical: bool = False) -> str:
-        """This element as MJCF text.
+    def to_xml_string(self, prefix_root: NameScope | None = None, self_only: bool = False,
+                      pretty_print: bool = True, debug_context: object = None, *,
+                      precision: int | None = None, zero_threshold: float = 0.0,
+                      canonical: bool = False) -> str:
+        """This element as MJCF text (a top-level section of a composed model holds the
+        attached models' sections too).
 
         Numbers read from a file are written as they were read; values set in Python in the
         shortest form that reads back exactly. ``precision`` (significant digits),
         ``zero_threshold`` (smaller magnitudes are written as 0) and ``canonical=True`` (every
-        number in the canonical form, as if set in Python) reformat every number.
+        number in the canonical form, as if set in Python) reformat every number. Names are
+        written as seen from the element's model, or from ``prefix_root`` (a name scope);
+        ``self_only`` writes the element's own tag only. ``debug_context`` is accepted for
+        dm_control's signature and unused.
         """
-        return element_text(self, Format(precision, zero_threshold, canonical), pretty_print)
+        del debug_context
+        return element_text(self, Format(precision, zero_threshold, canonical), pretty_print,
+                            names_from=prefix_root, self_only=self_only)
 
-    def to_xml(self, *, precision: int | None = None, zero_threshold: float = 0.0,
+    def to_xml(self, prefix_root: NameScope | None = None, debug_context: object = None, *,
+               precision: int | None = None, zero_threshold: float = 0.0,
                canonical: bool = False) -> XmlElement:
         """This element as an lxml element."""
+        del debug_context
         return etree.fromstring(self.to_xml_string(
-            precision=precision, zero_threshold=zero_threshold, pretty_print=False,
+            prefix_root, pretty_print=False, precision=precision, zero_threshold=zero_threshold,
             canonical=canonical))
+
+    def __str__(self) -> str:
+        """The element's own tag, e.g. ``<joint type="hinge"/>`` (``...`` for children)."""
+        return self.to_xml_string(self_only=True, pretty_print=False)
+
+    # ------------------------------------------------------------------ defaults
+
+    def commit_defaults(self, attributes: Iterable[str] | None = None) -> None:
+        """Write the values the default classes give this element into it (only
+        ``attributes``, when given): it then says what MuJoCo uses without its classes."""
+        commit_defaults(self, attributes)
 
 
 class Attachable(_tree.Element):
@@ -205,6 +258,34 @@ class ModelRoot(Element, _tree.ModelBase):
         """Undo this model's attachment: its frame (and anything added to it) is removed."""
         detach(self)
 
+    @property
+    def parent_model(self) -> ModelRoot | None:
+        """The model this one is attached to, if it is."""
+        frame = _tree.frame_of(self)
+        return None if frame is None else cast("ModelRoot | None", _tree.model_of(frame))
+
+    @property
+    def root_model(self) -> ModelRoot:
+        """The outermost model this one is attached into (itself when not attached)."""
+        return cast(ModelRoot, _tree.scope_model(_tree.scope_of(self).outermost()))
+
+    def enter_scope(self, scope: str) -> ModelRoot | None:
+        """The model attached under ``scope`` (``"arm"``, or ``"arm/gripper/"`` for one
+        attached inside it), or ``None`` (dm_control's name for ``enter_model``)."""
+        return self.enter_model(scope)
+
+    def resolve_references(self) -> None:
+        """Link every reference held as a name that names an element now (a model read
+        with ``resolve_references=False``, say)."""
+        _tree.resolve_references(self)
+
+    def include_copy(self, other: ModelRoot, override_attributes: bool = False) -> None:
+        """Merge a copy of ``other``'s contents into this model (dm_control's
+        ``include_copy``): its sections' children are copied in (references among them point
+        at the copies), and its global settings are adopted where this model leaves them
+        unset; a setting both give differently is an error unless ``override_attributes``."""
+        include_copy(self, other, override_attributes)
+
     def iter_exported(self) -> Iterator[Element]:
         """Every element of the composed model, in the order the exported XML has them:
         attached models' bodies inside their frames, their other sections after ours."""
@@ -247,6 +328,28 @@ def _namespaces() -> frozenset[str]:
 
 
 _NAMESPACES: Final[set[str]] = set()
+
+
+# dm_control's name for looking up attachment frames by their model's name in find().
+ATTACHMENT_FRAME: Final = "attachment_frame"
+
+
+def named_after_file(element: _tree.Element, namespace: str, name: str) -> _tree.Element | None:
+    """An unnamed element of ``namespace`` (a mesh, a texture...) that MuJoCo names after the
+    stem of its file, if one is named ``name`` that way."""
+    attribute = grammar_facts().named_after_file[namespace]
+    root = _tree.model_of(element)
+    if root is None:
+        return None
+    for candidate in _tree.iter_composed(root, False):
+        if candidate.spec.namespace != namespace or _tree.element_name(candidate) is not None:
+            continue
+        file = _tree.values(candidate).get(attribute)
+        if isinstance(file, str) and file_stem(file) == name:
+            return candidate
+        if isinstance(file, Asset) and file.name == name:
+            return candidate
+    return None
 
 
 def _check_namespace(namespace: str) -> None:

@@ -9,10 +9,18 @@ scope, and its sections join the parent's (see ``ElementSpec.compose``).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from typed_mjcf import _tree
 from typed_mjcf._export import folder_attributes
+from typed_mjcf._merge import combine, rule_of
 from typed_mjcf._tree import Element, ModelBase, grammar_facts, same_value
-from typed_mjcf.errors import ChildError, IllegalChildError, InvalidTypeError, InvalidValueError
+from typed_mjcf.errors import (
+    ChildError,
+    IllegalChildError,
+    InvalidReferenceError,
+    InvalidValueError,
+)
 
 
 def scope_name(model: ModelBase) -> str:
@@ -53,8 +61,8 @@ def _host(site: Element) -> tuple[Element, dict[str, object]]:
 def attach(site: Element, model: ModelBase) -> Element:
     """Attach ``model`` at ``site``; return the attachment frame."""
     if not isinstance(model, ModelBase):  # pyright: ignore[reportUnnecessaryIsInstance]
-        raise InvalidTypeError(f"{site.path}: attach() expected a mjcf.RootElement (a model), "
-                               f"got {model!r}")
+        raise InvalidReferenceError(f"{site.path}: attach() expected a mjcf.RootElement (a "
+                                    f"model), got {model!r}")
     if not site.spec.attachable:
         raise IllegalChildError(f"{site.path}: a model cannot be attached to a <{site.tag}>")
     root = _tree.model_of(site)
@@ -65,10 +73,17 @@ def attach(site: Element, model: ModelBase) -> Element:
         raise ChildError(f"model {scope_name(model)!r} is already attached elsewhere, at "
                          f"{frame.path}; detach() it first or attach a copy")
     if _tree.scope_of(root).is_within(_tree.scope_of(model)):
-        raise ChildError(f"cannot attach model {scope_name(model)!r} into itself")
+        raise ChildError(f"cannot attach model {_tree.scope_of(model).name!r} into itself "
+                         f"(a model cannot merge into itself)")
     host, pose = _host(site)
-    _tree.child_scope(host).check_free(scope_name(model))
-    check_compatible(top_model(root), model)
+    scope = _tree.child_scope(host)
+    name = free_name(scope.attached, _tree.scope_of(model).name)
+    scope.check_free(name)
+    if name != _tree.scope_of(model).name:
+        scope_attribute = model.spec.scope_attribute
+        if scope_attribute is not None:
+            _tree.assign(model, scope_attribute, name)
+    adopt_settings(root, model)
     frame = host.add(grammar_facts().body, **pose)
     _tree.attach_at(frame, model)
     return frame
@@ -86,42 +101,135 @@ def detach(model: ModelBase) -> None:
 # ----------------------------------------------------------------------------- global sections
 
 
-def _effective(section: Element | None, child: Element, name: str) -> object:
-    """The value ``section`` has for ``name`` (its grammar default when unset or absent)."""
-    attribute = child.spec.by_name[name]
-    value = None if section is None else _tree.read_value(section, attribute)
-    if value is None:
-        return None if attribute.default is None else attribute.codec.read(
-            attribute.codec.parse(attribute.default))
-    return value
-
-
-def conflicts(parent: Element | None, child: Element, where: str) -> list[str]:
-    """Attributes set in ``child``'s section whose value differs from the parent's."""
-    found: list[str] = []
+def _reconcile(parent: Element | None, child: Element, where: str, model: str,
+               plan: list[tuple[list[str], str, object]], problems: list[str],
+               route: list[str]) -> None:
+    """What adopting ``child``'s settings into ``parent`` takes (``plan``), or why it can't."""
     for name in _tree.values(child):
         if name in folder_attributes():
             continue  # folders resolve the attached model's own files
-        mine, theirs = _effective(parent, child, name), _effective(child, child, name)
-        if not same_value(mine, theirs):
-            found.append(f"<{where}> {name}: {theirs!r} in the attached model, "
-                         f"{mine!r} in the model it is attached to")
+        attribute = child.spec.by_name[name]
+        theirs = _tree.read_value(child, attribute)
+        mine = None if parent is None else _tree.read_value(parent, attribute)
+        if mine is None:
+            plan.append((route, name, theirs))  # the parent leaves it unset: adopt it
+        elif not same_value(mine, theirs):
+            rule = rule_of(child, name)
+            merged = None if rule is None else combine(rule, mine, theirs)
+            if merged is None:
+                problems.append(f"Conflicting values for attribute `{name}` of <{where}>: "
+                                f"{theirs!r} in the attached model {model!r}, {mine!r} in "
+                                f"the model it is attached to")
+            elif not same_value(merged, mine):
+                plan.append((route, name, merged))
     for grandchild in _tree.children(child):
         if child.spec.children[grandchild.spec.tag].single:
-            existing = None if parent is None else _tree.single_child(parent, grandchild.spec.tag)
-            found += conflicts(existing, grandchild, f"{where}/{grandchild.spec.tag}")
+            tag = grandchild.spec.tag
+            existing = None if parent is None else _tree.single_child(parent, tag)
+            _reconcile(existing, grandchild, f"{where}/{tag}", model, plan, problems,
+                       [*route, tag])
+
+
+def adopt_settings(parent: ModelBase, model: ModelBase) -> None:
+    """Before ``model`` is attached to ``parent``: the global settings ``parent`` leaves unset
+    take ``model``'s values, values both set are combined by their rule (``max`` for
+    ``size`` memory, ...) or refused with both values named; nothing changes on refusal."""
+    plan: list[tuple[list[str], str, object]] = []
+    problems: list[str] = []
+    name = scope_name(model)
+    for section in _tree.children(model):
+        if section.spec.compose == "attributes":
+            tag = section.spec.tag
+            _reconcile(_tree.single_child(parent, tag), section, tag, name, plan, problems,
+                       [tag])
+    if problems:
+        raise InvalidValueError(f"cannot attach model {name!r}: " + "; ".join(problems))
+    for route, attribute, value in plan:
+        target: Element = parent
+        for tag in route:
+            found = _tree.single_child(target, tag)
+            target = found if found is not None else _tree.new_child(
+                target, target.spec.children[tag])
+        _tree.assign(target, target.spec.by_name[attribute], value)
+
+
+def free_name(scope_names: Mapping[str, object], name: str | None) -> str:
+    """A scope name for an attached model: its own, else ``<name>_<n>`` with the first
+    number free (dm_control's rule; an unnamed model is ``unnamed_model``)."""
+    base = name or "unnamed_model"
+    if base not in scope_names:
+        return base
+    n = 1
+    while f"{base}_{n}" in scope_names:
+        n += 1
+    return f"{base}_{n}"
+
+
+# ----------------------------------------------------------------------------- views
+
+
+def attached_children(element: Element) -> list[Element]:
+    """What attached models add to ``element``'s children as users see them: an attachment
+    frame shows the attached model's bodies (and the rest of its world body); a top-level
+    section of a composed model, the same section of every model attached into it (default
+    classes excepted: an attached model's classes stay its own)."""
+    attached = _tree.attached_at(element)
+    if attached is not None:
+        return [child for section in _tree.children(attached) if section.spec.holds_bodies
+                for child in _tree.children(section)]
+    root = _tree.model_of(element)
+    if root is None or element.parent is not root or element.spec.compose == "nest":
+        return []
+    found: list[Element] = []
+    for model in _tree.attached_models(root):
+        section = _tree.single_child(model, element.spec.tag)
+        if section is not None:
+            found += _tree.children(section)
+            found += attached_children(section)
     return found
 
 
-def check_compatible(parent: ModelBase, model: ModelBase) -> None:
-    """Refuse to attach a model whose global settings contradict the parent's."""
+# ----------------------------------------------------------------------------- copies
+
+
+def include_copy(model: ModelBase, other: ModelBase, override_attributes: bool) -> None:
+    """Merge a copy of ``other``'s contents into ``model`` (see ``ModelRoot.include_copy``):
+    dm_control's copier. Once-only children merge into this model's; an element with a name
+    this model has under the same parent merges into it when ``override_attributes``; every
+    other element is copied in. Attributes this model sets keep their value, unless
+    ``override_attributes``; a global setting both give differently is an error."""
+    if other is model:
+        raise ChildError("cannot include a copy of a model into itself")
+    _merge_into(model, other, override_attributes, _tree.scope_of(other).name or "model")
+
+
+def _merge_into(target: Element, source: Element, override: bool, name: str) -> None:
+    stored = _tree.values(target)
     problems: list[str] = []
-    for section in _tree.children(model):
-        if section.spec.compose != "attributes":
+    for attribute_name in _tree.values(source):
+        attribute = source.spec.by_name[attribute_name]
+        if attribute.kind == "id" or attribute.scope or attribute_name in folder_attributes():
             continue
-        mine = _tree.single_child(parent, section.spec.tag)
-        problems += conflicts(mine, section, section.spec.tag)
+        theirs = _tree.read_value(source, attribute)
+        mine = _tree.read_value(target, attribute) if attribute_name in stored else None
+        if mine is None or override:
+            _tree.assign(target, attribute, theirs)
+        elif not same_value(mine, theirs):
+            problems.append(f"Conflicting values for attribute `{attribute_name}` of "
+                            f"<{source.spec.tag}>: {theirs!r} in model {name!r}, {mine!r} here")
     if problems:
-        raise InvalidValueError(
-            f"cannot attach model {scope_name(model)!r}: its global settings "
-            "differ from the model it is attached to:\n  " + "\n  ".join(problems))
+        raise InvalidValueError(f"{target.path}: cannot include a copy: " + "; ".join(problems))
+    for child in _tree.children(source):
+        child_spec = target.spec.children[child.spec.tag]
+        existing: Element | None = None
+        if child_spec.single:
+            existing = _tree.single_child(target, child.spec.tag)
+            if existing is None:
+                existing = _tree.new_child(target, child_spec)
+        elif override and (child_name := _tree.element_name(child)) is not None:
+            existing = next((c for c in _tree.children(target) if c.spec.tag == child.spec.tag
+                             and _tree.element_name(c) == child_name), None)
+        if existing is None:
+            target.paste(child)
+        else:
+            _merge_into(existing, child, override, name)

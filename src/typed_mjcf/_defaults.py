@@ -1,13 +1,19 @@
 """What value MuJoCo uses for an attribute once default classes are applied.
 
-The class of an element is its ``class``, else the ``childclass`` of its nearest ancestor
-that has one, else the model's root class (``main``). A class's value comes from its own
-defaults row for the element's kind, else from the class it is nested in, up to the root.
+The class of an element is its ``class``, else the ``childclass`` (or, for ``<frame>`` and
+``<replicate>``, the ``class``) of its nearest ancestor that has one, else the model's root
+class (``main``). A class's value comes from its own defaults row for the element's kind,
+else from the class it is nested in, up to the root. Kinds that share one default per class
+in MuJoCo (actuators: ``<general>``, ``<motor>``, ``<position>``...) take an attribute they
+have in common from whichever of their rows sets it last.
 """
 
 from __future__ import annotations
 
+import functools
+
 from typed_mjcf import _tree
+from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.errors import InvalidValueError, UnknownAttributeError, did_you_mean
 
@@ -43,16 +49,53 @@ def class_of(element: Element) -> Element | None:
         return _named_class(element, facts.dclass, value)
     ancestor = element.parent
     while ancestor is not None:
-        childclass = _tree.values(ancestor).get(facts.childclass)
+        stored = _tree.values(ancestor)
+        childclass = stored.get(facts.childclass)
         if childclass is not None:
             return _named_class(ancestor, facts.childclass, childclass)
+        own = stored.get(facts.dclass) if ancestor.spec.tag in facts.class_for_children else None
+        if own is not None:
+            return _named_class(ancestor, facts.dclass, own)
         ancestor = ancestor.parent
     root = _tree.model_of(element)
     return None if root is None else main_class(root)
 
 
-def resolve(element: Element, name: str) -> object:
-    """The value of attribute ``name`` that MuJoCo compiles for ``element``."""
+@functools.cache
+def _sharing_rows(defaults_tag: str) -> tuple[str, ...]:
+    """The default rows that set the same default as ``defaults_tag``'s (all actuator kinds'
+    for an actuator's), or just it."""
+    facts = grammar_facts()
+    for cls in _tree.element_classes().values():
+        spec = cls.spec
+        if spec.defaults_tag == defaults_tag and spec.namespace in facts.shared_defaults:
+            return tuple(sorted({c.spec.defaults_tag for c in _tree.element_classes().values()
+                                 if c.spec.namespace == spec.namespace
+                                 and c.spec.defaults_tag is not None}))
+    return (defaults_tag,)
+
+
+def _class_value(default: Element, defaults_tag: str, attribute: AttributeSpec) -> object:
+    """The value a class itself gives ``attribute`` (``None`` if it does not): the last of
+    the rows sharing the default that sets it."""
+    rows = _sharing_rows(defaults_tag)
+    found: object = None
+    if len(rows) == 1:
+        row = _tree.single_child(default, defaults_tag)
+        if row is not None and attribute.name in row.spec.by_name:
+            found = _tree.read_value(row, row.spec.by_name[attribute.name])
+        return found
+    for child in _tree.children(default):  # document order: the last one written wins
+        if child.spec.tag in rows and attribute.name in child.spec.by_name:
+            value = _tree.read_value(child, child.spec.by_name[attribute.name])
+            if value is not None:
+                found = value
+    return found
+
+
+def resolve(element: Element, name: str, grammar_defaults: bool = True) -> object:
+    """The value of attribute ``name`` that MuJoCo compiles for ``element``: its own, else
+    its classes', else (with ``grammar_defaults``) the grammar's default."""
     spec = element.spec
     attribute = spec.by_key.get(name)
     if attribute is None:
@@ -66,14 +109,11 @@ def resolve(element: Element, name: str) -> object:
     if defaults_tag is not None:
         default = class_of(element)
         while default is not None:
-            row = _tree.single_child(default, defaults_tag)
-            if row is not None:
-                value = _tree.read_value(row, row.spec.by_name[attribute.name]) if (
-                    attribute.name in row.spec.by_name) else None
-                if value is not None:
-                    return value
+            value = _class_value(default, defaults_tag, attribute)
+            if value is not None:
+                return value
             parent = default.parent  # nested classes inherit from the class around them
             default = parent if parent is not None and parent.spec is default.spec else None
-    if attribute.default is None:
+    if attribute.default is None or not grammar_defaults:
         return None
     return attribute.codec.read(attribute.codec.parse(attribute.default))

@@ -17,14 +17,16 @@ from.
 from __future__ import annotations
 
 import functools
+import os
 from collections import deque
 from collections.abc import Callable, Iterator
 from typing import cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
-from typed_mjcf._files import absolute_file
+from typed_mjcf._files import absolute_file, name_files
 from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._merge import combine, rule_of
 from typed_mjcf._names import NameScope
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._xmltext import Chunk, Node, escape, indent
@@ -81,16 +83,19 @@ class Writer:
 
     def __init__(self, top: Element, fmt: Format = DEFAULT_FORMAT,
                  file_namer: FileNamer | None = None,
-                 skip_attributes: frozenset[str] = frozenset()) -> None:
+                 skip_attributes: frozenset[str] = frozenset(),
+                 names_from: NameScope | None = None) -> None:
         self.fmt = fmt
         self.top = top
         self.file_namer = file_namer  # renames every file (paths and in-memory assets)
         self.skip = skip_attributes
         root = _tree.model_of(top)
-        scope = _tree.scope_of(root) if root is not None else _tree.scope_of(top)
+        own = _tree.scope_of(root) if root is not None else _tree.scope_of(top)
+        # names are written as seen from this scope (dm_control's prefix_root)
+        scope = own if names_from is None else names_from
         self.top_scope = scope
         self.prefixes: dict[int, str] = {id(scope): ""}
-        self.composed = root is not None and bool(scope.attached)
+        self.composed = root is not None and bool(own.attached)
         # plain output: nothing renamed or reformatted, so common values format inline
         self.plain = fmt.plain and file_namer is None
         # elements with an attachment frame in their subtree: written as nodes, so attached
@@ -103,6 +108,7 @@ class Writer:
         self.mocap_owners: list[ModelBase] = []
         # composed models: each model's keyframe section, for combining (left out here)
         self.keyframe_sections: list[tuple[ModelBase, Element]] = []
+        self._flat_names: dict[tuple[int, str], str] | None = None
         # names this export gives unnamed elements that references link to
         self.given_names: dict[int, str] = _names_to_give(top, scope)
 
@@ -231,14 +237,7 @@ class Writer:
         if kind == "file":
             if self.file_namer is not None:
                 return self.file_namer(element, attribute)
-            if isinstance(value, Asset):
-                raise ExportError(
-                    f"{element.path}: {attribute.py_name} holds an in-memory asset; write the "
-                    f"model with export_with_assets() or compile() so the file gets a name")
-            scope = _tree.scope_of(element)
-            if scope is not self.top_scope:
-                return absolute_file(_tree.scope_model(scope), attribute, cast(str, value))
-            return cast(str, value)
+            return self.file_text(element, attribute, value)
         if kind == "id" or attribute.is_reference:
             text = cast(str, value)
             scope = _tree.scope_of(element)
@@ -249,6 +248,31 @@ class Writer:
                 return self.main_class(scope)
             return self.prefix(scope) + text
         return attribute.codec.write(value, self.fmt)
+
+    def file_text(self, element: Element, attribute: AttributeSpec, value: object) -> str:
+        """A file as plain text writes it: as written (an attached model's as an absolute
+        path, which its parent's folders cannot change), unless it needs the flat name
+        ``get_assets()`` gives it (in-memory contents, or a file whose name another file has
+        too): then ``from_xml_string(text, model.get_assets())`` loads each file right."""
+        flat = self.flat_file_names().get((id(element), attribute.name))
+        if isinstance(value, Asset):
+            assert flat is not None
+            return flat
+        text = cast(str, value)
+        scope = _tree.scope_of(element)
+        if scope is not self.top_scope:
+            text = absolute_file(_tree.scope_model(scope), attribute, text)
+        if flat is not None and flat != os.path.basename(text.replace("\\", "/")):
+            return flat
+        return text
+
+    def flat_file_names(self) -> dict[tuple[int, str], str]:
+        """The flat names of the files (named once per export, when the first is written)."""
+        if self._flat_names is None:
+            root = _tree.model_of(self.top)
+            self._flat_names = {} if root is None else name_files(
+                _tree.scope_model(self.top_scope)).names
+        return self._flat_names
 
     # --------------------------------------------------------------- elements
 
@@ -269,7 +293,8 @@ class Writer:
                 parent_node.children.append(self.chunk(current))
                 continue
             spec = current.spec
-            attrib = self.attributes(current) if _tree.values(current) else {}
+            attrib = self.attributes(current) if (
+                _tree.values(current) or id(current) in self.given_names) else {}
             node = Node(spec.tag, attrib)
             if first is None:
                 first = node
@@ -308,6 +333,16 @@ class Writer:
                 self.track(written)
         return Chunk(lambda depth, pretty_print: self.write(element, depth, pretty_print, extra))
 
+    def start_tag(self, element: Element) -> str:
+        """The element alone: its start tag, ``...`` for its children (dm_control's
+        ``self_only``)."""
+        stored = _tree.values(element)
+        attrs = self.attribute_text(element, stored) if stored else ""
+        tag = element.spec.tag
+        if _tree.children(element) or _tree.attached_at(element) is not None:
+            return f"<{tag}{attrs}>...</{tag}>"
+        return f"<{tag}{attrs}/>"
+
     def text(self, element: Element, pretty_print: bool) -> str:
         """``element``'s subtree as XML text, written in one pass without building nodes
         (for models with nothing attached: composition needs :meth:`element`'s nodes)."""
@@ -324,6 +359,7 @@ class Writer:
         stack: list[tuple[Element | str, int]] = [(element, depth)]
         pop, push = stack.pop, stack.append
         attribute_text = self.attribute_text
+        given = self.given_names
         while stack:
             current, level = pop()
             if isinstance(current, str):
@@ -331,7 +367,8 @@ class Writer:
                 continue
             tag = current.spec.tag
             stored = _tree.values(current)
-            attrs = attribute_text(current, stored) if stored else ""
+            attrs = attribute_text(current, stored) if stored or (
+                given and id(current) in given) else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
             spaces = indent_of(level)
@@ -424,10 +461,19 @@ class Writer:
             if mine is None:
                 target.set(name, text)
             elif mine != text:
-                scope = self.prefix(_tree.scope_of(section)).rstrip("/")
-                raise ExportError(
-                    f"<{section.spec.tag}> {name}: {text!r} in attached model {scope!r} "
-                    f"differs from {mine!r} in the model it is attached to")
+                attribute = section.spec.by_name[name]
+                rule = rule_of(section, name)
+                merged = None if rule is None else combine(
+                    rule, attribute.codec.read(attribute.codec.parse(mine)),
+                    attribute.codec.read(attribute.codec.parse(text)))
+                if merged is None:
+                    scope = self.prefix(_tree.scope_of(section)).rstrip("/")
+                    raise ExportError(
+                        f"Conflicting values for attribute `{name}` of <{section.spec.tag}>: "
+                        f"{text!r} in attached model {scope!r}, {mine!r} in the model it is "
+                        f"attached to")
+                target.set(name, attribute.codec.write(attribute.codec.accept(merged),
+                                                       self.fmt))
         for child in _tree.children(section):
             sub = next((c for c in target if c.tag == child.spec.tag), None)
             if sub is None:
@@ -455,17 +501,23 @@ def _is_main_class(element: Element) -> bool:
 
 
 def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
-    """Names for the unnamed elements that references link to (MJCF refers by name): an
-    attachment frame is named after its model (``arm/``), anything else ``unnamed_<kind>_<n>``
-    with the first number free in its scope. Nothing is stored on the elements."""
+    """Names for unnamed elements MJCF must name: every attachment frame, named after its
+    model (``arm/``, as dm_control names it), and whatever a reference links to, named
+    ``unnamed_<kind>_<n>`` with the first number free in its scope (MJCF refers by name).
+    Nothing is stored on the elements."""
+    given: dict[int, str] = {}
     candidates: dict[int, Element] = {}
     for scope in top_scope.scopes():
+        if scope is not top_scope and scope.name is not None:
+            frame = _tree.frame_of(_tree.scope_model(scope))
+            if frame is not None and _tree.element_name(frame) is None:
+                given[id(frame)] = f"{scope.name}/"
         for target in scope.unnamed_targets:
             assert isinstance(target, Element)
             if _tree.element_name(target) is None and not target.is_removed:
                 candidates[id(target)] = target
     if not candidates:
-        return {}
+        return given
     linked: set[int] = set()
     for element in _tree.iter_composed(top, True):
         stored = _tree.values(element)
@@ -473,21 +525,18 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
             value = stored.get(attribute.name)
             if isinstance(value, Element) and id(value) in candidates:
                 linked.add(id(value))
-    given: dict[int, str] = {}
     taken: set[tuple[int, str, str]] = set()
     for key in sorted(linked, key=list(candidates).index):
+        if key in given:
+            continue
         target = candidates[key]
-        attached = _tree.attached_at(target)
         scope = _tree.scope_of(target)
         namespace = target.spec.namespace or target.spec.tag
-        if attached is not None and _tree.scope_of(attached).name is not None:
-            name = f"{_tree.scope_of(attached).name}/"
-        else:
-            n = 0
-            while (scope.lookup(namespace, f"unnamed_{namespace}_{n}") is not None
-                   or (id(scope), namespace, f"unnamed_{namespace}_{n}") in taken):
-                n += 1
-            name = f"unnamed_{namespace}_{n}"
+        n = 0
+        while (scope.lookup(namespace, f"unnamed_{namespace}_{n}") is not None
+               or (id(scope), namespace, f"unnamed_{namespace}_{n}") in taken):
+            n += 1
+        name = f"unnamed_{namespace}_{n}"
         taken.add((id(scope), namespace, name))
         given[key] = name
     return given

@@ -34,6 +34,10 @@ class CollectedFiles:
     files: dict[str, bytes] = field(default_factory=lambda: {})
     names: dict[tuple[int, str], str] = field(default_factory=lambda: {})
     folded: dict[str, str] = field(default_factory=lambda: {})  # casefolded name -> name
+    keys: dict[str, object] = field(default_factory=lambda: {})  # name -> what file it is
+    # every file attribute named: (its model, element, attribute, value, name)
+    uses: list[tuple[ModelBase, Element, AttributeSpec, object, str]] = field(
+        default_factory=lambda: [])
     directory_attributes: frozenset[str] = frozenset()
 
     def name_of(self, element: Element, attribute: AttributeSpec) -> str:
@@ -124,30 +128,28 @@ def split_name(name: str) -> tuple[str, str]:
     return name[:dot], name[dot:]
 
 
-def unique_name(name: str, contents: bytes, collected: CollectedFiles) -> str:
-    """``name``, or ``name`` with a numeric suffix when a different file (of that name, or of
-    a name differing in case only) is taken already."""
-    files, folded = collected.files, collected.folded
+def unique_name(name: str, key: object, collected: CollectedFiles) -> str:
+    """``name``, or ``name`` with a numeric suffix when another file (``key`` tells files
+    apart: a path, or in-memory contents) has it already, or a name differing in case only
+    (they would collide on a case-insensitive file system)."""
     stem, extension = split_name(name)
     candidate, n = name, 1
     while True:
-        taken = folded.get(candidate.casefold())
-        if taken is None or (taken == candidate and files.get(candidate) == contents):
+        taken = collected.folded.get(candidate.casefold())
+        if taken is None or (taken == candidate and collected.keys.get(candidate) == key):
             break
         n += 1
         candidate = f"{stem}-{n}{extension}"
-    folded[candidate.casefold()] = candidate
+    collected.folded[candidate.casefold()] = candidate
+    collected.keys[candidate] = key
     return candidate
 
 
-def collect_files(model: ModelBase, model_file: ModelFileWriter,
-                  collected: CollectedFiles | None = None,
-                  models: tuple[str, ...] = ()) -> CollectedFiles:
-    """Read every file the model (and the models attached to it) uses and give each a flat
-    name; ``models`` are the MJCF files being read (to refuse one that uses itself)."""
+def name_files(model: ModelBase, collected: CollectedFiles | None = None) -> CollectedFiles:
+    """A flat, unique name for every file the model (and the models attached to it) uses,
+    without reading any: files are told apart by their path, in-memory ones by contents."""
     collected = CollectedFiles() if collected is None else collected
     folders = compiler_folders(model)
-    memory = _tree.memory_files(model)
     directories: set[str] = set()
     for element in model.iter_elements():
         stored = _tree.values(element)
@@ -162,33 +164,57 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
                 continue
             if isinstance(value, Asset):
                 stem = value.name or element_stem(element)
-                name, contents = safe_file_name(stem, value.extension), value.contents
+                name = safe_file_name(stem, value.extension)
+                key: object = (value.digest, value.extension)
             else:
                 assert isinstance(value, str)
-                contents, path = _read(element, attribute, value, model, folders, memory)
-                name = safe_file_name(*split_name(os.path.basename(path)))
-                if is_model_file_name(name):
-                    if path in models:
-                        raise InvalidValueError(
-                            f"{element.path}: {attribute.py_name}: {path} uses itself "
-                            f"(through {' -> '.join(models)})")
-                    contents = model_file(path, contents, collected, (*models, path))
-            name = unique_name(name, contents, collected)
-            collected.files[name] = contents
+                path = resolve_path(model, attribute, value, folders)
+                name, key = safe_file_name(*split_name(os.path.basename(path))), path
+            name = unique_name(name, key, collected)
             collected.names[(id(element), attribute.name)] = name
+            collected.uses.append((model, element, attribute, value, name))
     collected.directory_attributes = collected.directory_attributes | frozenset(directories)
     for attached in _tree.attached_models(model):  # each resolves files in its own folders
-        collect_files(attached, model_file, collected, models)
+        name_files(attached, collected)
+    return collected
+
+
+def collect_files(model: ModelBase, model_file: ModelFileWriter,
+                  collected: CollectedFiles | None = None,
+                  models: tuple[str, ...] = ()) -> CollectedFiles:
+    """Name (see :func:`name_files`) and read every file the model uses; ``models`` are
+    the MJCF files being read (to refuse one that uses itself)."""
+    collected = name_files(model, collected)
+    for owner, element, attribute, value, name in collected.uses:
+        if name in collected.files:
+            continue
+        if isinstance(value, Asset):
+            collected.files[name] = value.contents
+            continue
+        assert isinstance(value, str)
+        folders = compiler_folders(owner)
+        contents, path = _read(element, attribute, value, owner, folders,
+                               _tree.memory_files(owner))
+        if is_model_file_name(name):
+            if path in models:
+                raise InvalidValueError(
+                    f"{element.path}: {attribute.py_name}: {path} uses itself "
+                    f"(through {' -> '.join(models)})")
+            contents = model_file(path, contents, collected, (*models, path))
+        collected.files[name] = contents
     return collected
 
 
 def _read(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
           folders: dict[str, str], memory: dict[str, bytes]) -> tuple[bytes, str]:
     """A file's contents (given in memory, else read from disk) and its path."""
-    given = memory.get(value)
-    if given is not None:
-        return given, value
     path = resolve_path(model, attribute, value, folders)
+    if memory:
+        base = _tree.base_dir(model) or os.getcwd()
+        for key in (value, os.path.relpath(path, base), os.path.basename(value)):
+            given = memory.get(key)
+            if given is not None:
+                return given, path
     try:
         if not stat.S_ISREG(os.stat(path).st_mode):  # a FIFO or /dev/zero: no end
             raise OSError(errno.EINVAL, "not a regular file")
@@ -198,6 +224,12 @@ def _read(element: Element, attribute: AttributeSpec, value: str, model: ModelBa
         raise InvalidValueError(
             f"{element.path}: {attribute.py_name}={value!r}: cannot read {path}: "
             f"{error.strerror}") from None
+
+
+def file_stem(file: str) -> str:
+    """A file's name without folders and extension (what MuJoCo names an unnamed mesh)."""
+    base = file.replace("\\", "/").rsplit("/", 1)[-1]
+    return base.rsplit(".", 1)[0] if "." in base.lstrip(".") else base
 
 
 def is_model_file_name(name: str) -> bool:

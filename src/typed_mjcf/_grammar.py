@@ -305,6 +305,11 @@ class GrammarFacts:
     frame: str  # the tag of <frame>, transparent in the kinematic tree
     replicate: str  # the tag of <replicate>
     joints: frozenset[str]  # tags of joints
+    freejoint: str  # the tag of a free joint (so is a joint whose type is free_type)
+    free_type: str
+    joint_type: str  # the joint attribute naming its kind
+    shared_defaults: frozenset[str]  # namespaces whose kinds share one default per class
+    ordered_children: frozenset[str]  # tags whose children's order matters across tags
     class_for_children: frozenset[str]  # tags whose class= applies to their children too
     inertia: str  # the tag of a body's <inertial>
     sensor_section: str  # the tag of the root's <sensor> section
@@ -315,4 +320,6 @@ class GrammarFacts:
     named_from_contents: frozenset[str] = frozenset()  # namespaces named by the file they read
     attach: AttachFacts | None = None
     replicate_separator: str = "sep"  # <replicate>'s attribute suffixing copies' names
+    # global settings combined on attach rather than refused: "tag@attribute" -> rule
+    merge_rules: Mapping[str, str] = field(default_factory=lambda: {})
     keyframe: KeyframeFacts = KeyframeFacts()

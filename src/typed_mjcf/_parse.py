@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import os
 import stat
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Final, TypeAlias, cast
 
@@ -34,6 +34,7 @@ from typed_mjcf._gc import collector_paused
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
+    FileReadError,
     InvalidTypeError,
     InvalidValueError,
     MjcfError,
@@ -87,6 +88,32 @@ class ParseLimits:
 DEFAULT_LIMITS: Final = ParseLimits()
 
 
+@dataclass(frozen=True, slots=True)
+class ParseOptions:
+    """What a parse does besides reading the grammar (dm_control's parser arguments).
+
+    ``assets``: file contents by the path the model writes (or the file's name), used for
+    included MJCF files and every file attribute before the disk; ``escape_separators``: a
+    ``/`` in a name read from the file becomes ``\\/`` (dm_control's escaping; by default
+    names keep their ``/``); ``resolve_references``: link references to their elements
+    (else they stay names until ``model.resolve_references()``).
+    """
+
+    assets: Mapping[str, bytes] = field(default_factory=lambda: {})
+    escape_separators: bool = False
+    resolve_references: bool = True
+
+    def asset(self, file: str) -> bytes | None:
+        """A file's contents from ``assets``: by the path as written, else by its name."""
+        found = self.assets.get(file)
+        if found is None:
+            found = self.assets.get(os.path.basename(file.replace("\\", "/")))
+        return found
+
+
+DEFAULT_OPTIONS: Final = ParseOptions()
+
+
 def source_line(node: XmlNode) -> int | None:
     """The line ``node`` starts on in the text it was read from, if known."""
     line: object = node.sourceline  # lxml-stubs types it loosely
@@ -122,6 +149,7 @@ class _Context:
     elements: int = 0
     included: dict[str, _Include] = field(default_factory=lambda: {})  # every file, how first read
     nesting: list[_Include] = field(default_factory=lambda: [])  # includes around the current one
+    options: ParseOptions = field(default_factory=lambda: DEFAULT_OPTIONS)
 
     def shown(self, path: str | None) -> str:
         """A path as messages show it: relative to the main file's folder when inside it."""
@@ -139,14 +167,15 @@ class _Context:
     def leave_include(self) -> None:
         self.nesting.pop()
 
-    def error(self, message: str, source: str | None, line: int | None) -> ParseError:
+    def error(self, message: str, source: str | None, line: int | None,
+              kind: type[ParseError] = ParseError) -> ParseError:
         """A ParseError at ``source:line``, saying which includes led there."""
         levels = [f"in {self.shown(level.path)}, included from {self.shown(level.by)}"
                   + (f":{level.line}" if level.line is not None else "")
                   for level in reversed(self.nesting)]
         if levels:
             message += f" ({'; '.join(levels)})"
-        return ParseError(message, source, line)
+        return kind(message, source, line)
 
 
 # ----------------------------------------------------------------------------- reading XML
@@ -290,13 +319,15 @@ def _read_file(path: str, context: _Context, what: str, where: str | None,
         mode = os.stat(path).st_mode
         if not stat.S_ISREG(mode):
             kind = "a folder" if stat.S_ISDIR(mode) else "not a regular file"
-            raise context.error(f"cannot read {what}: it is {kind}", where, line)
+            raise context.error(f"cannot read {what}: it is {kind}", where, line,
+                                FileReadError)
         remaining = max(context.limits.max_bytes - context.bytes_read, 0)
         with open(path, "rb") as f:
             return read_bounded(f.read, remaining, os.fstat(f.fileno()).st_size)
     except OSError as error:
         reason = error.strerror or str(error)
-        raise context.error(f"cannot read {what}: {reason}", where, line) from None
+        raise context.error(f"cannot read {what}: {reason}", where, line,
+                            FileReadError) from None
 
 
 def _encode(text: str, source: str | None, context: _Context) -> bytes:
@@ -322,9 +353,10 @@ def is_model_text(data: bytes) -> bool:
 
 
 def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
-               limits: ParseLimits | None = None) -> ModelBase:
+               limits: ParseLimits | None = None,
+               options: ParseOptions = DEFAULT_OPTIONS) -> ModelBase:
     """Parse MJCF text into a model."""
-    context = _Context(base_dir, limits or DEFAULT_LIMITS)
+    context = _Context(base_dir, limits or DEFAULT_LIMITS, options=options)
     return _guarded(lambda: _parse_text(data, source, context), source)
 
 
@@ -340,10 +372,12 @@ def _parse_text(data: object, source: str | None, context: _Context) -> ModelBas
     return _build_model(node, context, source)
 
 
-def parse_path(path: str, *, limits: ParseLimits | None = None) -> ModelBase:
+def parse_path(path: str, *, limits: ParseLimits | None = None,
+               options: ParseOptions = DEFAULT_OPTIONS) -> ModelBase:
     """Parse an MJCF file; its folder is the base of relative paths."""
     path = os.path.abspath(path)
-    context = _Context(os.path.dirname(path), limits or DEFAULT_LIMITS, main=path)
+    context = _Context(os.path.dirname(path), limits or DEFAULT_LIMITS, main=path,
+                       options=options)
     return _guarded(lambda: _parse_path(path, context), path)
 
 
@@ -381,6 +415,7 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
                             source, source_line(node))
     model = _tree.new_model(cls)
     _tree.set_base_dir(model, context.base_dir)
+    _tree.memory_files(model).update(context.options.assets)
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
         _Builder(context).run(model, node, source)
@@ -410,7 +445,10 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
             continue
         if attribute.kind == "id":
             try:
-                _tree.assign_name_text(element, attribute, str(text))
+                name = str(text)
+                if context.options.escape_separators:
+                    name = escape_separators(name)
+                _tree.assign_name_text(element, attribute, name)
             except MjcfError as error:
                 raise context.error(str(error), source, source_line(node)) from None
             continue
@@ -423,10 +461,18 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
         _set_text(element, attribute, text, node, source, context)
 
 
+def escape_separators(name: str) -> str:
+    """dm_control's escaping of the scope separator in a name read from a file."""
+    return name.replace("/", "\\/")
+
+
 def _set_text(element: Element, attribute: AttributeSpec, text: str, node: XmlNode,
               source: str | None, context: _Context) -> None:
+    options = context.options
+    if options.escape_separators and attribute.is_reference:
+        text = escape_separators(text)
     try:
-        _tree.assign_text(element, attribute, text)
+        _tree.assign_text(element, attribute, text, link=options.resolve_references)
     except Rejected as rejected:
         error = _tree.rejection(element, attribute, text, rejected)
         raise context.error(str(error), source, source_line(node)) from None
@@ -582,8 +628,9 @@ class _Builder:
                      + (f":{first.line}" if first.line is not None else ""))
             raise context.error(f"{file!r} ({context.shown(path)}) {where}; MuJoCo includes "
                                 f"a file at most once per model", source, line)
-        data = _read_file(path, context, f"included file {file!r} ({context.shown(path)})",
-                          source, line)
+        given = context.options.asset(file)
+        data = given if given is not None else _read_file(
+            path, context, f"included file {file!r} ({context.shown(path)})", source, line)
         level = _Include(path, source, line)
         context.included[path] = level
         context.nesting.append(level)

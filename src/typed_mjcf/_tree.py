@@ -24,6 +24,7 @@ module (the internal API), not the elements' private slots.
 from __future__ import annotations
 
 import inspect
+import os
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
@@ -91,6 +92,12 @@ def finish_grammar(facts: GrammarFacts) -> None:
 
 def grammar_facts() -> GrammarFacts:
     return _FACTS[0]
+
+
+def _public_name(attribute: AttributeSpec) -> str:
+    """An attribute's key in ``get_attributes()``: its Python name, and dm_control's
+    ``dclass`` for ``class``."""
+    return "dclass" if attribute.name == grammar_facts().dclass else attribute.py_name
 
 
 def _short(value: object, limit: int = 60) -> str:
@@ -222,13 +229,15 @@ class Element:
                 raise self._unknown_attribute(name) from None
 
     def _unknown_attribute(self, name: str, action: str | None = None) -> UnknownAttributeError:
+        """``name`` is none of the row's attributes: the message says which are (reading,
+        ``action`` says what was done, e.g. "can't set attribute")."""
         spec = self.spec
         known = [a.py_name for a in spec.attributes]
         hint = did_you_mean(name, known + [c.py_name for c in spec.children.values()])
         what = f"{action} {name!r}" if action else (
             f"{type(self).__name__!r} object has no attribute {name!r}")
         return UnknownAttributeError(
-            f"{self.path}: {what}{hint}: <{spec.tag}> has no such attribute; "
+            f"{self.path}: {what}{hint}: {name!r} is not a valid attribute of <{spec.tag}>; "
             f"its attributes are: {', '.join(known) or '(none)'}"
         )
 
@@ -310,7 +319,7 @@ class Element:
         """The attributes that are set, by Python name, in grammar order."""
         spec = self.spec
         by_name = spec.by_name
-        return {by_name[name].py_name: _read(self, by_name[name])
+        return {_public_name(by_name[name]): _read(self, by_name[name])
                 for name in sorted(self._values, key=spec.order.__getitem__)}
 
     def set_attributes(self, **kwargs: object) -> None:
@@ -412,6 +421,8 @@ class Element:
         if child_spec.single and self._single(child_spec.tag) is not None:
             raise ChildError(f"{self.path}: a <{child_spec.tag}> child already exists "
                              f"(<{self.spec.tag}> has at most one)")
+        if self._attached is not None:
+            _check_frame_child(self, child_spec)
         child = _create(element_class(child_spec.class_name), self)
         if kwargs:
             child._init_attributes(kwargs)
@@ -483,13 +494,20 @@ class Element:
 
     def is_same_as(self, other: object) -> bool:
         """Whether ``other`` is an element of the same kind with the same attributes and,
-        recursively, the same children (each kind of child in the same order)."""
+        recursively, the same children: each kind of child in the same order (every child in
+        the same order in a tendon's path), dm_control's ``is_same_as`` (models compare by
+        their contents, whatever their names)."""
         if not isinstance(other, Element) or other.spec is not self.spec:
             return False
         pairs: list[tuple[Element, Element]] = [(self, other)]
         while pairs:
             a, b = pairs.pop()
-            if a.spec is not b.spec or not _same_values(a, b):
+            if a.spec is not b.spec:
+                return False
+            if not (isinstance(a, ModelBase) or _same_values(a, b)):  # a root's name differs
+                return False
+            ordered = a.spec.tag in grammar_facts().ordered_children
+            if ordered and [c.spec.tag for c in a._children] != [c.spec.tag for c in b._children]:
                 return False
             groups_a = _children_by_tag(a)
             groups_b = _children_by_tag(b)
@@ -516,8 +534,17 @@ class ModelBase(Element):
     _frame: Element | None  # the attachment frame, in the model this one is attached to
     _files: dict[str, bytes]  # file contents given with the model (by path as written)
 
-    def __init__(self, **kwargs: object) -> None:
+    def __init__(self, model: str | None = None, *, model_dir: str | None = None,
+                 assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None:
         _init_model(self)
+        if model_dir is not None:
+            self._base_dir = os.fspath(model_dir)
+        if assets is not None:
+            self._files.update(assets)
+        if model is not None:
+            scope_attribute = self.spec.scope_attribute
+            if scope_attribute is not None:
+                kwargs = {scope_attribute.py_name: model, **kwargs}
         self._init_attributes(kwargs)
 
     def __deepcopy__(self, memo: dict[int, object]) -> Self:
@@ -717,6 +744,8 @@ def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
             return self._add_child(child_spec, None, kwargs)
     else:
         def add_child(self: Element, **kwargs: object) -> Element:  # the hot path of a build
+            if self._attached is not None:
+                _check_frame_child(self, child_spec)
             child = _create(cast("type[Element]", child_spec.cls), self)
             if kwargs:
                 child._init_attributes(kwargs)
@@ -865,6 +894,19 @@ def _unlink_child(parent: Element, child: Element) -> None:
         del singles[child.spec.tag]
 
 
+def _check_frame_child(frame: Element, child_spec: ChildSpec) -> None:
+    """MuJoCo allows free joints only in top-level bodies: an attachment frame nested in a
+    body may not have one (refused when added, as dm_control does)."""
+    facts = grammar_facts()
+    parent = frame._parent
+    if child_spec.tag == facts.freejoint and parent is not None and not (
+            parent.spec.holds_bodies and isinstance(parent._parent, ModelBase)):
+        raise IllegalChildError(
+            f"{frame.path}: <{child_spec.tag}> is not a valid child of this attachment frame: "
+            f"MuJoCo allows free joints only in top-level bodies, and the frame is inside "
+            f"{parent.path}")
+
+
 def check_removable(element: Element) -> None:
     """Refuse to remove a section of a model that attached models merge their own section
     into (dm_control's guard: ``remove(affect_attachments=True)`` says what is meant)."""
@@ -989,12 +1031,11 @@ def _link_waiting(scope: NameScope, namespace: str, name: str, target: Element) 
 
 
 def _read_reference(element: Element, attribute: AttributeSpec, stored: object) -> object:
+    """A link reads as its element (``None`` once the element is removed), a name as the
+    name (it links when an element of that name appears, or on ``resolve_references()``)."""
     if isinstance(stored, Element):
         return None if stored._root is None else stored
-    found = _resolve(element, attribute, cast(str, stored))
-    if found is not stored:
-        element._values[attribute.name] = found
-    return found
+    return stored
 
 
 def _read(element: Element, attribute: AttributeSpec) -> object:
@@ -1009,7 +1050,7 @@ def _read(element: Element, attribute: AttributeSpec) -> object:
 
 
 def resolve_references(model: Element) -> None:
-    """Link every reference by name that names an element now (after a parse, say)."""
+    """Link every reference held as a name that names an element now."""
     for element in model.iter_elements():
         values = element._values
         for attribute in element.spec.references:
@@ -1331,14 +1372,19 @@ def assign_name_text(element: Element, attribute: AttributeSpec, text: str) -> N
     values[attribute.name] = text
 
 
-def assign_text(element: Element, attribute: AttributeSpec, text: str) -> None:
+def assign_text(element: Element, attribute: AttributeSpec, text: str,
+                link: bool = True) -> None:
     """Set ``attribute`` from text read from a file (numbers stay text once checked; names
-    may hold '/'; references link when their target exists); raises :class:`Rejected`."""
+    may hold '/'; references link when their target exists, unless ``link`` is false);
+    raises :class:`Rejected`."""
     if not text:
         element._unset(attribute)  # an empty value: MuJoCo reads it as absent
         return
     stored = attribute.codec.parse(text)
     if attribute.is_reference:
+        if not link:
+            element._values[attribute.name] = text
+            return
         stored = _resolve(element, attribute, text)
     element._store(attribute, stored)
 

@@ -21,6 +21,7 @@ from typing import Final, Literal
 
 from typed_mjcf import _tree
 from typed_mjcf._export import is_empty_single
+from typed_mjcf._files import file_stem
 from typed_mjcf._grammar import AttributeSpec, ElementSpec
 from typed_mjcf._names import NameScope
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
@@ -386,8 +387,7 @@ def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
         file = attrs.get(file_attribute)
         stem: str | None = None
         if isinstance(file, str):
-            base = file.replace("\\", "/").rsplit("/", 1)[-1]
-            stem = base.rsplit(".", 1)[0] if "." in base.lstrip(".") else base
+            stem = file_stem(file)
         elif isinstance(file, Asset):
             stem = file.name or spec.tag  # as the asset writer names in-memory files
         if stem:

@@ -11,6 +11,7 @@ from typed_mjcf._export import FileNamer, Writer
 from typed_mjcf._files import CollectedFiles, collect_files, is_model_file_name
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._keyframes import combine_keyframes, compile_layout, has_keyframes
+from typed_mjcf._names import NameScope
 from typed_mjcf._parse import is_model_text, parse_path
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf._xmltext import serialize
@@ -19,17 +20,35 @@ NO_ATTRIBUTES: Final[frozenset[str]] = frozenset()
 
 
 def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
-                 collected: CollectedFiles | None = None) -> str:
-    """The XML text of ``element`` and its subtree (attached models included); with
-    ``collected``, every file by its flat name and no folder attributes."""
+                 collected: CollectedFiles | None = None, names_from: NameScope | None = None,
+                 self_only: bool = False) -> str:
+    """The XML text of ``element`` and its subtree (attached models included: a top-level
+    section of a composed model holds the attached models' too); with ``collected``, every
+    file by its flat name and no folder attributes; names as seen from ``names_from``;
+    only the element's own tag with ``self_only``."""
     file_namer: FileNamer | None = None if collected is None else collected.name_of
     skip = NO_ATTRIBUTES if collected is None else collected.directory_attributes
     with collector_paused():  # an export makes no reference cycles, only short-lived text
-        writer = Writer(element, fmt, file_namer, skip)
+        writer = Writer(element, fmt, file_namer, skip, names_from)
+        if self_only:
+            return writer.start_tag(element)
         if not writer.composed:
             return writer.text(element, pretty_print)
-        if not isinstance(element, ModelBase) or _tree.model_of(element) is not element:
-            return serialize(writer.element(element, None), pretty_print)
+        root = _tree.model_of(element)
+        if isinstance(element, ModelBase) and root is element:
+            return _model_text(writer, element, collected, pretty_print)
+        if root is not None and element.parent is root:  # a section: attached ones join it
+            node = Writer(root, fmt, file_namer, skip, names_from).model(root)
+            section = next((n for n in node if n.tag == element.spec.tag), None)
+            if section is not None:
+                return serialize(section, pretty_print)
+        return serialize(writer.element(element, None), pretty_print)
+
+
+def _model_text(writer: Writer, element: ModelBase, collected: CollectedFiles | None,
+                pretty_print: bool) -> str:
+    """A composed model's text: attached models joined, keyframes combined."""
+    with collector_paused():
         node = writer.model(element)
         if has_keyframes(writer):
             if collected is None:  # the layout is compiled from memory: files by flat names
@@ -64,6 +83,7 @@ def rewrite_model_file(path: str, contents: bytes, collected: CollectedFiles,
     if not is_model_file_name(path) or not is_model_text(contents):
         return contents
     submodel = parse_path(path)
-    sub_collected = CollectedFiles(files=collected.files, folded=collected.folded)
+    sub_collected = CollectedFiles(files=collected.files, folded=collected.folded,
+                                   keys=collected.keys)
     collect_files(submodel, rewrite_model_file, sub_collected, models)
     return element_text(submodel, DEFAULT_FORMAT, True, sub_collected).encode("utf-8")

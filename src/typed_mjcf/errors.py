@@ -16,13 +16,13 @@ class InvalidValueError(MjcfError, ValueError):
     """A value of the right Python type that MJCF does not allow."""
 
 
-class InvalidTypeError(MjcfError, TypeError):
-    """A value of a Python type the attribute cannot take."""
+class InvalidTypeError(MjcfError, TypeError, ValueError):
+    """A value of a Python type the attribute cannot take (also a ``ValueError``, which is
+    what dm_control raises for every refused value)."""
 
 
 class InvalidReferenceError(InvalidValueError, InvalidTypeError):
-    """An element given where an element of another namespace is expected (a ``ValueError``
-    as in dm_control, and a ``TypeError``: it is of the wrong kind)."""
+    """An element given where an element of another namespace (or a model) is expected."""
 
 
 class UnknownAttributeError(MjcfError, AttributeError):
@@ -58,6 +58,11 @@ class ParseError(MjcfError, ValueError):
         elif line is not None:
             where = f"line {line}: "
         super().__init__(where + message)
+
+
+class FileReadError(ParseError, OSError):
+    """A file the model needs (the model, or a file it includes) cannot be read (also an
+    ``OSError``, as dm_control's ``IOError``)."""
 
 
 class CompileError(MjcfError, ValueError):

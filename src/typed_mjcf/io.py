@@ -7,12 +7,14 @@ how to raise its bounds. Every failure is a :class:`~typed_mjcf.ParseError`.
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from typing import IO, TYPE_CHECKING, cast
 
 from typed_mjcf._assets_io import export_with_assets as export
 from typed_mjcf._bridge import spec_to_xml
-from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, parse_path, parse_text
+from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 from typed_mjcf._tree import ModelBase
+from typed_mjcf._zip import read_zip, write_zip
 from typed_mjcf.errors import InvalidTypeError, ParseError
 
 if TYPE_CHECKING:
@@ -36,43 +38,86 @@ def _folder(base_dir: object, what: str) -> str | None:
     return folder
 
 
-def from_xml_string(xml: str | bytes, *, base_dir: str | os.PathLike[str] | None = None,
-                    source: str | None = None, limits: ParseLimits | None = None) -> RootElement:
-    """Parse MJCF text. ``base_dir`` is where relative files and includes are found (the
-    current directory if not given); ``source`` names the text in error messages; ``limits``
-    raises (or lowers) the bounds on size, depth and element count (see :class:`ParseLimits`).
+def _options(assets: Mapping[str, bytes] | None, escape_separators: bool,
+             resolve_references: bool) -> ParseOptions:
+    if assets is not None and not isinstance(assets, Mapping):  # pyright: ignore[reportUnnecessaryIsInstance]
+        raise InvalidTypeError(f"assets must map file names to bytes, got {type(assets).__name__}")
+    return ParseOptions(dict(assets or {}), bool(escape_separators), bool(resolve_references))
+
+
+def from_xml_string(xml_string: str | bytes, escape_separators: bool = False,
+                    model_dir: str | os.PathLike[str] | None = None,
+                    resolve_references: bool = True,
+                    assets: Mapping[str, bytes] | None = None, *,
+                    base_dir: str | os.PathLike[str] | None = None, source: str | None = None,
+                    limits: ParseLimits | None = None) -> RootElement:
+    """Parse MJCF text.
+
+    ``model_dir`` (or ``base_dir``) is where relative files and includes are found (the
+    current directory if not given); ``assets`` gives file contents by the path the model
+    writes (or the file's name), used before the disk; ``escape_separators`` escapes ``/`` in
+    names as dm_control does (by default names keep their ``/``); ``resolve_references=False``
+    keeps references as names until ``model.resolve_references()``. ``source`` names the text
+    in error messages; ``limits`` raises (or lowers) the bounds on size, depth and element
+    count (see :class:`ParseLimits`).
     """
-    folder = _folder(base_dir, "base_dir")
-    return _typed(parse_text(xml, base_dir=folder, source=source, limits=_limits(limits)))
+    folder = _folder(base_dir if base_dir is not None else model_dir, "model_dir")
+    return _typed(parse_text(xml_string, base_dir=folder, source=source,
+                             limits=_limits(limits),
+                             options=_options(assets, escape_separators, resolve_references)))
 
 
-def from_path(path: str | os.PathLike[str], *, limits: ParseLimits | None = None) -> RootElement:
-    """Parse an MJCF file; relative files and includes resolve against its folder."""
+def from_path(path: str | os.PathLike[str], escape_separators: bool = False,
+              resolve_references: bool = True, assets: Mapping[str, bytes] | None = None, *,
+              limits: ParseLimits | None = None) -> RootElement:
+    """Parse an MJCF file; relative files and includes resolve against its folder (see
+    :func:`from_xml_string` for the other arguments)."""
     file = _folder(path, "path")
     if file is None:
         raise InvalidTypeError("path must be a path (str or os.PathLike), got None")
-    return _typed(parse_path(file, limits=_limits(limits)))
+    return _typed(parse_path(file, limits=_limits(limits),
+                             options=_options(assets, escape_separators, resolve_references)))
 
 
-def from_file(file: IO[str] | IO[bytes], *, base_dir: str | os.PathLike[str] | None = None,
+def from_file(file: IO[str] | IO[bytes] | str | os.PathLike[str],
+              escape_separators: bool = False,
+              model_dir: str | os.PathLike[str] | None = None, resolve_references: bool = True,
+              assets: Mapping[str, bytes] | None = None, *,
+              base_dir: str | os.PathLike[str] | None = None,
               limits: ParseLimits | None = None) -> RootElement:
-    """Parse MJCF from an open file object (text or binary). Relative files and includes
-    resolve against ``base_dir``, else the file's folder if it has a name."""
+    """Parse MJCF from an open file object (text or binary), or a path. Relative files and
+    includes resolve against ``model_dir``, else the file's folder if it has a name (see
+    :func:`from_xml_string` for the other arguments)."""
+    if isinstance(file, str | os.PathLike):
+        return from_path(file, escape_separators, resolve_references, assets, limits=limits)
     limits = _limits(limits)
     name = getattr(file, "name", None)
     source = name if isinstance(name, str) else None
-    if base_dir is None and source is not None:
-        base_dir = os.path.dirname(os.path.abspath(source))
+    folder = base_dir if base_dir is not None else model_dir
+    if folder is None and source is not None:
+        folder = os.path.dirname(os.path.abspath(source))
     read: object = getattr(file, "read", None)
     if not callable(read):
-        raise InvalidTypeError(f"from_file needs an open file, got {type(file).__name__}")
+        raise InvalidTypeError(f"from_file needs an open file or a path, got "
+                               f"{type(file).__name__}")
     try:
         data = _read_all(file, limits.max_bytes)
     except (OSError, ValueError) as error:  # UnicodeDecodeError is a ValueError
         if isinstance(error, InvalidTypeError):
             raise
         raise ParseError(f"cannot read the file: {error}", source) from None
-    return from_xml_string(data, base_dir=base_dir, source=source, limits=limits)
+    return from_xml_string(data, escape_separators, None, resolve_references, assets,
+                           base_dir=folder, source=source, limits=limits)
+
+
+def from_zip(path: str | os.PathLike[str] | IO[bytes], model_file: str = "model.xml",
+             escape_separators: bool = False, resolve_references: bool = True, *,
+             limits: ParseLimits | None = None) -> RootElement:
+    """Parse a model and its files from a zip archive (one MJCF file, or the one named
+    ``model_file`` among several)."""
+    xml, assets, source = read_zip(path, model_file)
+    return from_xml_string(xml, escape_separators, None, resolve_references, assets,
+                           source=source, limits=limits)
 
 
 def _read_all(file: IO[str] | IO[bytes], limit: int) -> str | bytes:
@@ -115,25 +160,36 @@ def from_spec(spec: mujoco.MjSpec) -> RootElement:
     return from_xml_string(xml, base_dir=folder if isinstance(folder, str) and folder else None)
 
 
-def export_with_assets(model: ModelBase, directory: str | os.PathLike[str],
-                       model_filename: str | None = None, *, overwrite: bool = False) -> str:
-    """Write the model's XML and every file it uses into ``directory``; return the XML's path.
+def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
+                       out_file_name: str | None = None, *, overwrite: bool = False) -> str:
+    """Write the model's XML and every file it uses into ``out_dir``; return the XML's path.
 
-    Files are written only inside ``directory``, under flat names (names that would reach
-    elsewhere, e.g. with ``..`` or a path separator, are made safe), each atomically
-    (a temporary file, then a rename). A file already there with the same contents is left
-    as it is; one with different contents is an :class:`~typed_mjcf.ExportError` unless
+    The XML is named ``out_file_name`` (which must end in ``.xml``), else after the model.
+    Files are written only inside ``out_dir``, under flat names (names that would reach
+    elsewhere, e.g. with ``..`` or a path separator, are made safe), each atomically (a
+    temporary file, then a rename). A file already there with the same contents is left as
+    it is; one with different contents is an :class:`~typed_mjcf.ExportError` unless
     ``overwrite=True``, and then nothing is written.
     """
-    folder = _folder(directory, "directory")
+    folder = _folder(out_dir, "out_dir")
     if folder is None:
-        raise InvalidTypeError("directory must be a path (str or os.PathLike), got None")
-    if model_filename is not None and not isinstance(model_filename, str):  # pyright: ignore[reportUnnecessaryIsInstance]
-        raise InvalidTypeError(f"model_filename must be a str, got {type(model_filename).__name__}")
+        raise InvalidTypeError("out_dir must be a path (str or os.PathLike), got None")
+    if out_file_name is not None and not isinstance(out_file_name, str):  # pyright: ignore[reportUnnecessaryIsInstance]
+        raise InvalidTypeError(f"out_file_name must be a str, got {type(out_file_name).__name__}")
     if not isinstance(overwrite, bool):  # pyright: ignore[reportUnnecessaryIsInstance]
         raise InvalidTypeError(f"overwrite must be a bool, got {type(overwrite).__name__}")
-    return export(model, folder, model_filename, overwrite=overwrite)
+    return export(mjcf_model, folder, out_file_name, overwrite=overwrite)
 
 
-__all__ = ["ParseLimits", "export_with_assets", "from_file", "from_path", "from_spec",
-           "from_xml_string"]
+def export_with_assets_as_zip(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
+                              model_name: str | None = None) -> str:
+    """Write the model and every file it uses into ``out_dir/<model_name>.zip`` (a folder
+    ``<model_name>/`` inside, as dm_control writes it); return the archive's path."""
+    folder = _folder(out_dir, "out_dir")
+    if folder is None:
+        raise InvalidTypeError("out_dir must be a path (str or os.PathLike), got None")
+    return write_zip(mjcf_model, folder, model_name)
+
+
+__all__ = ["ParseLimits", "export_with_assets", "export_with_assets_as_zip", "from_file",
+           "from_path", "from_spec", "from_xml_string", "from_zip"]

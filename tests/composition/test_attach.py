@@ -121,20 +121,25 @@ def test_free_floating_attachment_adds_a_free_joint() -> None:
     assert m.key_qpos[0][:7].tolist() == m.qpos0[:7].tolist()  # type: ignore[attr-defined]
 
 
-def test_attaching_twice_into_itself_or_under_a_taken_name_is_refused() -> None:
+def test_attaching_twice_or_into_itself_is_refused_and_taken_names_are_made_free() -> None:
     world = make_world()
     arm = make_arm("arm")
     site(world, "left").attach(arm)
     with pytest.raises(mjcf.ChildError, match="already attached"):
         site(world, "right").attach(arm)
-    with pytest.raises(mjcf.ChildError, match="already attached to this model"):
-        site(world, "right").attach(make_arm("arm"))
     with pytest.raises(mjcf.ChildError, match="into itself"):
         arm.worldbody.attach_model(world)
     with pytest.raises(mjcf.ChildError, match="into itself"):
         world.worldbody.attach_model(world)
-    with pytest.raises(mjcf.InvalidValueError, match="needs a name"):
-        world.worldbody.attach_model(mjcf.RootElement())
+    # as in dm_control, a taken (or no) name is made free: the model is renamed
+    second = make_arm("arm")
+    site(world, "right").attach(second)
+    assert second.model == "arm_1"
+    anonymous = mjcf.RootElement()
+    world.worldbody.attach_model(anonymous)
+    assert anonymous.model == "unnamed_model"
+    assert world.find("joint", "arm_1/joint0") is second.find("joint", "joint0")
+    assert world.compile().njnt == 6
 
 
 def test_global_sections_merge_when_compatible_and_conflicts_name_both_values() -> None:
@@ -146,11 +151,33 @@ def test_global_sections_merge_when_compatible_and_conflicts_name_both_values() 
     world.worldbody.attach_model(arm)
     assert 'timestep="0.005"' in world.to_xml_string()
     other = make_arm("other")
+    world.compiler.angle = "degree"
     other.compiler.angle = "radian"
-    with pytest.raises(mjcf.InvalidValueError, match=r"angle: 'radian' in the attached model, "
-                                                      r"'degree' in the model it is attached to"):
+    with pytest.raises(mjcf.InvalidValueError,
+                       match=r"Conflicting values for attribute `angle` of <compiler>: 'radian' "
+                             r"in the attached model 'other', 'degree' in the model it is "
+                             r"attached to"):
         world.worldbody.attach_model(other)
     assert world.find("joint", "other/joint0") is None
+
+
+def test_settings_the_parent_leaves_unset_are_adopted_and_some_combine() -> None:
+    """dm_control's rules: the parent adopts what it leaves unset; size's memory takes the
+    larger, option's timestep the smaller."""
+    world = make_world()
+    world.size.memory = "10000"
+    world.option.timestep = 0.002
+    arm = make_arm("arm")
+    arm.compiler.angle = "radian"
+    arm.size.memory = "1M"
+    arm.option.timestep = 0.001
+    world.worldbody.attach_model(arm)
+    assert world.compiler.angle == "radian"
+    assert world.size.memory == "1048576"
+    assert world.option.timestep == 0.001
+    arm.size.memory = "1K"  # changed after attaching: the export still takes the larger
+    assert 'memory="1048576"' in world.to_xml_string()
+    assert world.compile().opt.timestep == 0.001
 
 
 def test_nested_attachments_scope_twice() -> None:

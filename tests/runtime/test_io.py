@@ -164,9 +164,10 @@ def test_in_memory_assets_compile_and_export_with_readable_names(tmp_path: Path)
     body = model.worldbody.add_body()
     body.add_freejoint()
     body.add_geom(type="mesh", mesh=mesh)
-    with pytest.raises(mjcf.ExportError, match="in-memory asset"):
-        model.to_xml_string()
+    text = model.to_xml_string()
+    assert 'file="cube.stl"' in text  # the name get_assets() gives it: the pair loads
     assert model.get_assets() == {"cube.stl": box_stl()}
+    assert mujoco.MjModel.from_xml_string(text, model.get_assets()).nmesh == 1
     assert model.compile().nmesh == 1
     path = mjcf.export_with_assets(model, tmp_path / "out")
     assert Path(path).name == "boxy.xml"
@@ -181,6 +182,30 @@ def test_different_files_with_the_same_name_get_distinct_names() -> None:
     model.asset.add_mesh(name="b", file=mjcf.Asset(box_stl(0.2), ".stl", name="part"))
     model.asset.add_mesh(name="c", file=mjcf.Asset(box_stl(0.1), ".stl", name="part"))
     assert sorted(model.get_assets()) == ["part-2.stl", "part.stl"]
+
+
+def test_attached_models_files_of_the_same_name_never_collide(tmp_path: Path) -> None:
+    """dm_control's pair, from_xml_string(to_xml_string(), get_assets()), loads each model's
+    own file even when both are called shape.stl (MuJoCo's VFS goes by file name)."""
+    world = mjcf.RootElement(model="world")
+    for n, size in ((1, 0.1), (2, 0.3)):
+        folder = tmp_path / f"part{n}"
+        folder.mkdir()
+        (folder / "shape.stl").write_bytes(box_stl(size))
+        part = mjcf.from_xml_string(
+            '<mujoco model="p"><asset><mesh name="m" file="shape.stl"/></asset><worldbody>'
+            '<body><geom type="mesh" mesh="m"/></body></worldbody></mujoco>',
+            model_dir=str(folder))
+        part.model = f"part{n}"
+        world.attach(part)
+    text, assets = world.to_xml_string(), world.get_assets()
+    assert sorted(assets) == ["shape-2.stl", "shape.stl"]
+    pair = mujoco.MjModel.from_xml_string(text, assets)
+    compiled = world.compile()
+    for m in (pair, compiled):
+        sizes = [float(np.ptp(m.mesh_vert[m.mesh_vertadr[i]:m.mesh_vertadr[i] + m.mesh_vertnum[i]],
+                              axis=0)[0]) for i in range(m.nmesh)]
+        assert sorted(round(x, 6) for x in sizes) == [0.2, 0.6]
 
 
 # ----------------------------------------------------------------------------- bridge

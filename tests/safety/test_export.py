@@ -75,11 +75,15 @@ def test_names_differing_only_in_case_do_not_collide() -> None:
 
 def test_explicit_model_filename_must_be_plain(tmp_path: Path) -> None:
     model = model_with_meshes(["part"])
-    for bad in ["../m.xml", "sub/m.xml", str(tmp_path / "m.xml"), ".m.xml", ""]:
+    model.asset.add_mesh(name="clash", file=mjcf.Asset(box_stl(), ".xml", name="PART"))
+    for bad in ["../m.xml", "sub/m.xml", str(tmp_path / "m.xml"), ".m.xml"]:
         with pytest.raises(mjcf.ExportError, match="plain file name"):
             mjcf.export_with_assets(model, tmp_path / "out", bad)
+    for not_xml in ["", "m.png"]:  # dm_control's rule too
+        with pytest.raises(mjcf.ExportError, match="must end with '.xml'"):
+            mjcf.export_with_assets(model, tmp_path / "out", not_xml)
     with pytest.raises(mjcf.ExportError, match="also the name of a file the model uses"):
-        mjcf.export_with_assets(model, tmp_path / "out", "PART.stl")
+        mjcf.export_with_assets(model, tmp_path / "out", "part.XML")
     assert not (tmp_path / "out").exists() or not os.listdir(tmp_path / "out")
 
 

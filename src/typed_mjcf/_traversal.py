@@ -1,0 +1,56 @@
+"""dm_control's traversal helpers: committing defaults into elements, and finding the
+frame, freejoint and joints of attachments."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from typed_mjcf import _tree
+from typed_mjcf._defaults import resolve
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
+
+
+def commit_defaults(element: Element, attributes: Iterable[str] | None = None) -> None:
+    """Write into ``element`` the value its default classes give each of its attributes
+    (only ``attributes``, when given) that it does not set itself: afterwards its own values
+    say what MuJoCo uses, whatever the classes."""
+    spec = element.spec
+    if spec.defaults_tag is None:
+        return
+    names = [a.py_name for a in spec.attributes] if attributes is None else list(attributes)
+    stored = _tree.values(element)
+    for name in names:
+        attribute = spec.by_key[name]
+        if attribute.name in stored or attribute.kind == "id":
+            continue
+        value = resolve(element, name, grammar_defaults=False)
+        if value is not None:
+            _tree.assign(element, attribute, value)
+
+
+def get_attachment_frame(model: ModelBase) -> Element | None:
+    """Where ``model`` is attached (its frame in the parent model), if it is."""
+    return _tree.frame_of(model)
+
+
+def get_freejoint(element: Element) -> Element | None:
+    """The ``<freejoint>`` (or ``<joint type="free">``) directly in ``element``, if any."""
+    facts = grammar_facts()
+    for child in _tree.children(element):
+        if child.spec.tag == facts.freejoint:
+            return child
+        joint_type = child.spec.by_name.get(facts.joint_type)
+        if child.spec.tag in facts.joints and joint_type is not None and (
+                _tree.read_value(child, joint_type) == facts.free_type):
+            return child
+    return None
+
+
+def get_frame_freejoint(frame: Element) -> Element | None:
+    """The free joint of an attachment frame, if it has one."""
+    return get_freejoint(frame)
+
+
+def get_frame_joints(frame: Element) -> list[Element]:
+    """The joints of an attachment frame (what makes the attached model move)."""
+    return [child for child in _tree.children(frame) if child.spec.tag in grammar_facts().joints]
