@@ -52,7 +52,7 @@ def redirected() -> Iterator[None]:
     saved_attribute = getattr(dm_control, "mjcf", None)
     try:
         sys.modules.update(shims)
-        setattr(dm_control, "mjcf", package)  # noqa: B010
+        setattr(dm_control, "mjcf", package)
         yield
     finally:
         for name, module in saved.items():
@@ -61,7 +61,7 @@ def redirected() -> Iterator[None]:
             else:
                 sys.modules[name] = module
         if had_attribute:
-            setattr(dm_control, "mjcf", saved_attribute)  # noqa: B010
+            setattr(dm_control, "mjcf", saved_attribute)
         else:
             delattr(dm_control, "mjcf")
 
