@@ -159,7 +159,8 @@ def _overrides(value: object, where: str) -> list[AttributeOverride]:
     return entries
 
 _LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "inertia",
-                     "freejoint", "free_type", "joint_type",
+                     "freejoint", "free_type", "joint_type", "skin_file",
+                     "class_namespace", "actuator_namespace",
                      "sensor_section", "mocap", "childclass", "dclass", "model_name",
                      "replicate_separator")
 _LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",

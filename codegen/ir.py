@@ -138,6 +138,8 @@ class LanguageDef:
     mocap: str = "mocap"
     childclass: str = "childclass"
     dclass: str = "class"
+    class_namespace: str = "default"
+    actuator_namespace: str = "actuator"
     model_name: str = "model"
     replicate_separator: str = "sep"
     named_after_file: dict[str, str] = field(default_factory=lambda: {})
@@ -145,6 +147,7 @@ class LanguageDef:
     attach: AttachDef | None = None
     type_namespaces: dict[str, str] = field(default_factory=lambda: {})
     merge_rules: dict[str, str] = field(default_factory=lambda: {})
+    skin_file: str = ""
     keyframe: dict[str, str] = field(default_factory=lambda: {})
 
 

@@ -9,7 +9,7 @@ import keyword
 # of <attach> children is ``body.attach_``), and an attribute may not have one.
 RESERVED = frozenset({
     "add", "all_children", "attach", "attach_model", "attached_model", "attachment_frame",
-    "base_dir", "commit_defaults", "compile", "detach", "enter_scope", "find", "find_all",
+    "base_dir", "commit_defaults", "compile", "detach", "enter_model", "enter_scope", "find", "find_all",
     "full_identifier", "get_assets", "get_attachment_frame", "get_attributes",
     "get_children", "get_frame_freejoint", "get_frame_joints", "get_freejoint",
     "include_copy", "insert", "is_removed", "is_same_as", "iter_elements", "iter_exported",

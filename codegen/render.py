@@ -189,10 +189,13 @@ def _facts(schema: ir.Schema) -> str:
         f"mocap={language.mocap!r}",
         f"childclass={language.childclass!r}",
         f"dclass={language.dclass!r}",
+        f"class_namespace={language.class_namespace!r}",
+        f"actuator_namespace={language.actuator_namespace!r}",
         f"named_after_file={dict(sorted(language.named_after_file.items()))!r}",
         f"named_from_contents=frozenset({sorted(language.named_from_contents)!r})",
         f"replicate_separator={language.replicate_separator!r}",
         f"merge_rules={dict(sorted(language.merge_rules.items()))!r}",
+        f"skin_file={language.skin_file!r}",
         f"keyframe=KeyframeFacts(**{dict(sorted(language.keyframe.items()))!r})",
     ]
     if attach is not None:
@@ -281,6 +284,8 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     for c in el.children:
         child = schema.elements[c.element]
         child_params = [ParamView(a.py_name, typer.setter(a)) for a in child.attributes]
+        child_params += [ParamView("dclass", typer.setter(a)) for a in child.attributes
+                         if a.name == schema.language.dclass]  # dm_control's name
         children.append(ChildView(child.tag, child_py_name(child.tag), child.class_name,
                                   c.single, child_params, _adder_doc(typer, child)))
     is_root = el.name == schema.root

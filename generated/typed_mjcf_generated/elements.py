@@ -4695,10 +4695,13 @@ finish_grammar(GrammarFacts(
     mocap='mocap',
     childclass='childclass',
     dclass='class',
+    class_namespace='default',
+    actuator_namespace='actuator',
     named_after_file={'hfield': 'file', 'mesh': 'file', 'skin': 'file', 'texture': 'file'},
     named_from_contents=frozenset(['model']),
     replicate_separator='sep',
     merge_rules={'map@zfar': 'max', 'map@znear': 'min', 'option@ccd_iterations': 'max', 'option@ccd_tolerance': 'min', 'option@iterations': 'max', 'option@ls_iterations': 'max', 'option@ls_tolerance': 'min', 'option@noslip_iterations': 'max', 'option@noslip_tolerance': 'min', 'option@sdf_initpoints': 'max', 'option@sdf_iterations': 'max', 'option@timestep': 'min', 'option@tolerance': 'min', 'size@memory': 'max-bytes', 'size@nconmax': 'max', 'size@njmax': 'max'},
+    skin_file='skin@file',
     keyframe=KeyframeFacts(**{'act': 'act', 'ctrl': 'ctrl', 'mpos': 'mpos', 'mquat': 'mquat', 'qpos': 'qpos', 'qvel': 'qvel', 'time': 'time'}),
     attach=AttachFacts('attach', 'model', 'prefix', ('body', 'frame')),
 ))

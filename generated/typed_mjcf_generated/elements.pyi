@@ -1041,6 +1041,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
         self,
         *,
         class_: _builtins.str | None = ...,
+        dclass: _builtins.str | None = ...,
     ) -> Default:
         """Add a ``<default>`` child and return it.
 
@@ -1494,6 +1495,7 @@ class Actuator(_Typed):
         gainprm: Reals1To10 | None = ...,
         biasprm: Reals1To10 | None = ...,
         actearly: _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> General:
         """Add a ``<general>`` child and return it.
 
@@ -1610,6 +1612,7 @@ class Actuator(_Typed):
         cranksite: _builtins.str | Site | None = ...,
         site: _builtins.str | Site | None = ...,
         refsite: _builtins.str | Site | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Motor:
         """Add a ``<motor>`` child and return it.
 
@@ -1698,6 +1701,7 @@ class Actuator(_Typed):
         kv: _t.Real | None = ...,
         dampratio: _t.Real | None = ...,
         timeconst: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Position:
         """Add a ``<position>`` child and return it.
 
@@ -1792,6 +1796,7 @@ class Actuator(_Typed):
         site: _builtins.str | Site | None = ...,
         refsite: _builtins.str | Site | None = ...,
         kv: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Velocity:
         """Add a ``<velocity>`` child and return it.
 
@@ -1883,6 +1888,7 @@ class Actuator(_Typed):
         kp: _t.Real | None = ...,
         kv: _t.Real | None = ...,
         dampratio: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Intvelocity:
         """Add a ``<intvelocity>`` child and return it.
 
@@ -1972,6 +1978,7 @@ class Actuator(_Typed):
         kv: _t.Real | None = ...,
         dampratio: _t.Real | None = ...,
         input: Inputchart | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Orientation:
         """Add a ``<orientation>`` child and return it.
 
@@ -2054,6 +2061,7 @@ class Actuator(_Typed):
         imax: _t.Real | None = ...,
         slewmax: _t.Real | None = ...,
         input: Inputbit | Collection[Inputbit] | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Pid:
         """Add a ``<pid>`` child and return it.
 
@@ -2159,6 +2167,7 @@ class Actuator(_Typed):
         site: _builtins.str | Site | None = ...,
         refsite: _builtins.str | Site | None = ...,
         kv: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Damper:
         """Add a ``<damper>`` child and return it.
 
@@ -2246,6 +2255,7 @@ class Actuator(_Typed):
         area: _t.Real | None = ...,
         diameter: _t.Real | None = ...,
         bias: Reals3 | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Cylinder:
         """Add a ``<cylinder>`` child and return it.
 
@@ -2345,6 +2355,7 @@ class Actuator(_Typed):
         vmax: _t.Real | None = ...,
         fpmax: _t.Real | None = ...,
         fvmax: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Muscle:
         """Add a ``<muscle>`` child and return it.
 
@@ -2433,6 +2444,7 @@ class Actuator(_Typed):
         forcerange: Reals2 | None = ...,
         body: _builtins.str | Body | None = ...,
         gain: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Adhesion:
         """Add a ``<adhesion>`` child and return it.
 
@@ -2502,6 +2514,7 @@ class Actuator(_Typed):
         thermal: Reals1To6 | None = ...,
         lugre: Reals1To5 | None = ...,
         input: Inputbit | Collection[Inputbit] | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Dcmotor:
         """Add a ``<dcmotor>`` child and return it.
 
@@ -2608,6 +2621,7 @@ class Actuator(_Typed):
         cranksite: _builtins.str | Site | None = ...,
         slidersite: _builtins.str | Site | None = ...,
         actearly: _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> ActuatorPlugin:
         """Add a ``<plugin>`` child and return it.
 
@@ -3854,6 +3868,7 @@ class AssetSection(_Typed):
         builtin: MeshBuiltin | None = ...,
         params: RealsAny | None = ...,
         material: _builtins.str | Material | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Mesh:
         """Add a ``<mesh>`` child and return it.
 
@@ -4005,6 +4020,7 @@ class AssetSection(_Typed):
         nchannel: _t.Integer | None = ...,
         class_: _builtins.str | Default | None = ...,
         embed: FalseTrueAuto | _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Texture:
         """Add a ``<texture>`` child and return it.
 
@@ -4083,6 +4099,7 @@ class AssetSection(_Typed):
         metallic: _t.Real | None = ...,
         roughness: _t.Real | None = ...,
         rgba: Reals4 | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Material:
         """Add a ``<material>`` child and return it.
 
@@ -4723,6 +4740,7 @@ class Body(_Typed, _Attachable):
         scaling: Scaling | None = ...,
         massscale: _t.Real | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Frame:
         """Add a ``<frame>`` child and return it.
 
@@ -4766,6 +4784,7 @@ class Body(_Typed, _Attachable):
         sep: _builtins.str | None = ...,
         childclass: _builtins.str | Default | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Replicate:
         """Add a ``<replicate>`` child and return it.
 
@@ -4858,6 +4877,7 @@ class Body(_Typed, _Attachable):
         frictionloss: _t.Real | None = ...,
         user: RealsAny | None = ...,
         springyield: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Joint:
         """Add a ``<joint>`` child and return it.
 
@@ -4982,6 +5002,7 @@ class Body(_Typed, _Attachable):
         fluidcoef: Reals1To5 | None = ...,
         user: RealsAny | None = ...,
         castshadow: _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Geom:
         """Add a ``<geom>`` child and return it.
 
@@ -5110,6 +5131,7 @@ class Body(_Typed, _Attachable):
         fromto: Reals6 | None = ...,
         rgba: Reals4 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Site:
         """Add a ``<site>`` child and return it.
 
@@ -5179,6 +5201,7 @@ class Body(_Typed, _Attachable):
         principalpixel: Reals2 | None = ...,
         sensorsize: Reals2 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Camera:
         """Add a ``<camera>`` child and return it.
 
@@ -5256,6 +5279,7 @@ class Body(_Typed, _Attachable):
         mode: Camlight | None = ...,
         target: _builtins.str | Body | None = ...,
         texture: _builtins.str | Texture | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Light:
         """Add a ``<light>`` child and return it.
 
@@ -6869,6 +6893,7 @@ class Contact(_Typed):
         gap: _t.Real | None = ...,
         margin: _t.Real | None = ...,
         adhesion: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Pair:
         """Add a ``<pair>`` child and return it.
 
@@ -8263,6 +8288,7 @@ class Default(_Typed):
         self,
         *,
         class_: _builtins.str | None = ...,
+        dclass: _builtins.str | None = ...,
     ) -> Default:
         """Add a ``<default>`` child and return it.
 
@@ -16214,6 +16240,7 @@ class Equality(_Typed):
         anchor: Reals3 | None = ...,
         site1: _builtins.str | Site | None = ...,
         site2: _builtins.str | Site | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Connect:
         """Add a ``<connect>`` child and return it.
 
@@ -16260,6 +16287,7 @@ class Equality(_Typed):
         site1: _builtins.str | Site | None = ...,
         site2: _builtins.str | Site | None = ...,
         torquescale: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Weld:
         """Add a ``<weld>`` child and return it.
 
@@ -16306,6 +16334,7 @@ class Equality(_Typed):
         joint1: _builtins.str | AnyJoint | None = ...,
         joint2: _builtins.str | AnyJoint | None = ...,
         polycoef: Reals1To5 | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> EqualityJoint:
         """Add a ``<joint>`` child and return it.
 
@@ -16344,6 +16373,7 @@ class Equality(_Typed):
         tendon1: _builtins.str | AnyTendon | None = ...,
         tendon2: _builtins.str | AnyTendon | None = ...,
         polycoef: Reals1To5 | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> EqualityTendon:
         """Add a ``<tendon>`` child and return it.
 
@@ -16380,6 +16410,7 @@ class Equality(_Typed):
         solref: Reals1To2 | None = ...,
         solimp: Reals1To5 | None = ...,
         flex: _builtins.str | AnyFlex | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> EqualityFlex:
         """Add a ``<flex>`` child and return it.
 
@@ -16413,6 +16444,7 @@ class Equality(_Typed):
         solimp: Reals1To5 | None = ...,
         flex: _builtins.str | AnyFlex | None = ...,
         cell: Reals3 | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Flexstrain:
         """Add a ``<flexstrain>`` child and return it.
 
@@ -19483,6 +19515,7 @@ class Frame(_Typed, _Attachable):
         scaling: Scaling | None = ...,
         massscale: _t.Real | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Frame:
         """Add a ``<frame>`` child and return it.
 
@@ -19526,6 +19559,7 @@ class Frame(_Typed, _Attachable):
         sep: _builtins.str | None = ...,
         childclass: _builtins.str | Default | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Replicate:
         """Add a ``<replicate>`` child and return it.
 
@@ -19618,6 +19652,7 @@ class Frame(_Typed, _Attachable):
         frictionloss: _t.Real | None = ...,
         user: RealsAny | None = ...,
         springyield: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Joint:
         """Add a ``<joint>`` child and return it.
 
@@ -19742,6 +19777,7 @@ class Frame(_Typed, _Attachable):
         fluidcoef: Reals1To5 | None = ...,
         user: RealsAny | None = ...,
         castshadow: _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Geom:
         """Add a ``<geom>`` child and return it.
 
@@ -19870,6 +19906,7 @@ class Frame(_Typed, _Attachable):
         fromto: Reals6 | None = ...,
         rgba: Reals4 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Site:
         """Add a ``<site>`` child and return it.
 
@@ -19939,6 +19976,7 @@ class Frame(_Typed, _Attachable):
         principalpixel: Reals2 | None = ...,
         sensorsize: Reals2 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Camera:
         """Add a ``<camera>`` child and return it.
 
@@ -20016,6 +20054,7 @@ class Frame(_Typed, _Attachable):
         mode: Camlight | None = ...,
         target: _builtins.str | Body | None = ...,
         texture: _builtins.str | Texture | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Light:
         """Add a ``<light>`` child and return it.
 
@@ -30692,6 +30731,7 @@ class Replicate(_Typed, _Attachable):
         scaling: Scaling | None = ...,
         massscale: _t.Real | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Frame:
         """Add a ``<frame>`` child and return it.
 
@@ -30735,6 +30775,7 @@ class Replicate(_Typed, _Attachable):
         sep: _builtins.str | None = ...,
         childclass: _builtins.str | Default | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Replicate:
         """Add a ``<replicate>`` child and return it.
 
@@ -30827,6 +30868,7 @@ class Replicate(_Typed, _Attachable):
         frictionloss: _t.Real | None = ...,
         user: RealsAny | None = ...,
         springyield: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Joint:
         """Add a ``<joint>`` child and return it.
 
@@ -30928,6 +30970,7 @@ class Replicate(_Typed, _Attachable):
         fluidcoef: Reals1To5 | None = ...,
         user: RealsAny | None = ...,
         castshadow: _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Geom:
         """Add a ``<geom>`` child and return it.
 
@@ -31056,6 +31099,7 @@ class Replicate(_Typed, _Attachable):
         fromto: Reals6 | None = ...,
         rgba: Reals4 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Site:
         """Add a ``<site>`` child and return it.
 
@@ -31125,6 +31169,7 @@ class Replicate(_Typed, _Attachable):
         principalpixel: Reals2 | None = ...,
         sensorsize: Reals2 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Camera:
         """Add a ``<camera>`` child and return it.
 
@@ -31202,6 +31247,7 @@ class Replicate(_Typed, _Attachable):
         mode: Camlight | None = ...,
         target: _builtins.str | Body | None = ...,
         texture: _builtins.str | Texture | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Light:
         """Add a ``<light>`` child and return it.
 
@@ -36622,6 +36668,7 @@ class Tendon(_Typed):
         rgba: Reals4 | None = ...,
         user: RealsAny | None = ...,
         springyield: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Spatial:
         """Add a ``<spatial>`` child and return it.
 
@@ -36700,6 +36747,7 @@ class Tendon(_Typed):
         armature: _t.Real | None = ...,
         user: RealsAny | None = ...,
         springyield: _t.Real | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Fixed:
         """Add a ``<fixed>`` child and return it.
 
@@ -39642,6 +39690,7 @@ class Worldbody(_Typed, _Attachable):
         scaling: Scaling | None = ...,
         massscale: _t.Real | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Frame:
         """Add a ``<frame>`` child and return it.
 
@@ -39685,6 +39734,7 @@ class Worldbody(_Typed, _Attachable):
         sep: _builtins.str | None = ...,
         childclass: _builtins.str | Default | None = ...,
         class_: _builtins.str | Default | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Replicate:
         """Add a ``<replicate>`` child and return it.
 
@@ -39745,6 +39795,7 @@ class Worldbody(_Typed, _Attachable):
         fluidcoef: Reals1To5 | None = ...,
         user: RealsAny | None = ...,
         castshadow: _builtins.bool | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Geom:
         """Add a ``<geom>`` child and return it.
 
@@ -39873,6 +39924,7 @@ class Worldbody(_Typed, _Attachable):
         fromto: Reals6 | None = ...,
         rgba: Reals4 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Site:
         """Add a ``<site>`` child and return it.
 
@@ -39942,6 +39994,7 @@ class Worldbody(_Typed, _Attachable):
         principalpixel: Reals2 | None = ...,
         sensorsize: Reals2 | None = ...,
         user: RealsAny | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Camera:
         """Add a ``<camera>`` child and return it.
 
@@ -40019,6 +40072,7 @@ class Worldbody(_Typed, _Attachable):
         mode: Camlight | None = ...,
         target: _builtins.str | Body | None = ...,
         texture: _builtins.str | Texture | None = ...,
+        dclass: _builtins.str | Default | None = ...,
     ) -> Light:
         """Add a ``<light>`` child and return it.
 

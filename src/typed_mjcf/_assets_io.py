@@ -13,6 +13,7 @@ import tempfile
 
 from typed_mjcf import _tree
 from typed_mjcf._files import is_plain_file_name, safe_file_name, split_name, unique_name
+from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._write import collect, vfs_text
 from typed_mjcf.errors import ExportError
@@ -24,7 +25,7 @@ def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str
     xml, collected = vfs_text(model)
     data = xml.encode("utf-8")
     if model_filename is None:
-        stem = _tree.scope_of(model).name or "model"
+        stem = _tree.scope_of(model).name or UNNAMED_MODEL
         name = unique_name(safe_file_name(stem, ".xml"), data, collected)
     else:
         name = model_filename
@@ -49,7 +50,7 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
     """
     xml, collected = vfs_text(model)
     if model_filename is None:
-        stem = _tree.scope_of(model).name or "model"
+        stem = _tree.scope_of(model).name or UNNAMED_MODEL
         name = unique_name(safe_file_name(stem, ".xml"), xml.encode("utf-8"), collected)
     else:
         name = model_filename

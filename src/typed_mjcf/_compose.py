@@ -14,6 +14,7 @@ from collections.abc import Mapping
 from typed_mjcf import _tree
 from typed_mjcf._export import folder_attributes
 from typed_mjcf._merge import combine, rule_of
+from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._tree import Element, ModelBase, grammar_facts, same_value
 from typed_mjcf.errors import (
     ChildError,
@@ -156,7 +157,7 @@ def adopt_settings(parent: ModelBase, model: ModelBase) -> None:
 def free_name(scope_names: Mapping[str, object], name: str | None) -> str:
     """A scope name for an attached model: its own, else ``<name>_<n>`` with the first
     number free (dm_control's rule; an unnamed model is ``unnamed_model``)."""
-    base = name or "unnamed_model"
+    base = name or UNNAMED_MODEL
     if base not in scope_names:
         return base
     n = 1
@@ -200,7 +201,7 @@ def include_copy(model: ModelBase, other: ModelBase, override_attributes: bool) 
     ``override_attributes``; a global setting both give differently is an error."""
     if other is model:
         raise ChildError("cannot include a copy of a model into itself")
-    _merge_into(model, other, override_attributes, _tree.scope_of(other).name or "model")
+    _merge_into(model, other, override_attributes, _tree.scope_of(other).name or UNNAMED_MODEL)
 
 
 def _merge_into(target: Element, source: Element, override: bool, name: str) -> None:

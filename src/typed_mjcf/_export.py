@@ -24,7 +24,7 @@ from typing import cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
-from typed_mjcf._files import absolute_file, name_files
+from typed_mjcf._files import absolute_file, is_skin_file, name_files
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._merge import combine, rule_of
 from typed_mjcf._names import NameScope
@@ -243,7 +243,7 @@ class Writer:
             scope = _tree.scope_of(element)
             if scope is self.top_scope:
                 return text
-            if kind == "ref" and attribute.namespace == "default" and (
+            if kind == "ref" and attribute.namespace == grammar_facts().class_namespace and (
                     text == grammar_facts().main_class):
                 return self.main_class(scope)
             return self.prefix(scope) + text
@@ -261,6 +261,8 @@ class Writer:
         text = cast(str, value)
         scope = _tree.scope_of(element)
         if scope is not self.top_scope:
+            if flat is not None and is_skin_file(element, attribute):
+                return flat  # its bones are renamed: only get_assets() has that file
             text = absolute_file(_tree.scope_model(scope), attribute, text)
         if flat is not None and flat != os.path.basename(text.replace("\\", "/")):
             return flat
@@ -392,7 +394,7 @@ class Writer:
         facts = grammar_facts()
         if element.spec.tag in facts.joints:
             self.joint_owners.append(model)
-        elif namespace == "actuator":
+        elif namespace == facts.actuator_namespace:
             self.actuator_owners.append(model)
         elif element.spec.tag == facts.body and _tree.values(element).get(facts.mocap) is True:
             self.mocap_owners.append(model)

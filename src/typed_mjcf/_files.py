@@ -22,7 +22,8 @@ from dataclasses import dataclass, field
 
 from typed_mjcf import _tree
 from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf._skin import scope_bone_names
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidValueError
 
@@ -35,8 +36,8 @@ class CollectedFiles:
     names: dict[tuple[int, str], str] = field(default_factory=lambda: {})
     folded: dict[str, str] = field(default_factory=lambda: {})  # casefolded name -> name
     keys: dict[str, object] = field(default_factory=lambda: {})  # name -> what file it is
-    # every file attribute named: (its model, element, attribute, value, name)
-    uses: list[tuple[ModelBase, Element, AttributeSpec, object, str]] = field(
+    # every file attribute named: (its model, element, attribute, value, name, scope prefix)
+    uses: list[tuple[ModelBase, Element, AttributeSpec, object, str, str]] = field(
         default_factory=lambda: [])
     directory_attributes: frozenset[str] = frozenset()
 
@@ -145,9 +146,16 @@ def unique_name(name: str, key: object, collected: CollectedFiles) -> str:
     return candidate
 
 
-def name_files(model: ModelBase, collected: CollectedFiles | None = None) -> CollectedFiles:
+def is_skin_file(element: Element, attribute: AttributeSpec) -> bool:
+    """Whether the attribute holds a binary skin file (whose bones name bodies)."""
+    return f"{element.spec.name}@{attribute.name}" == grammar_facts().skin_file
+
+
+def name_files(model: ModelBase, collected: CollectedFiles | None = None,
+               prefix: str = "") -> CollectedFiles:
     """A flat, unique name for every file the model (and the models attached to it) uses,
-    without reading any: files are told apart by their path, in-memory ones by contents."""
+    without reading any: files are told apart by their path, in-memory ones by contents
+    (and an attached model's skin files by its scope too: their bones are renamed)."""
     collected = CollectedFiles() if collected is None else collected
     folders = compiler_folders(model)
     directories: set[str] = set()
@@ -170,12 +178,13 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None) -> Col
                 assert isinstance(value, str)
                 path = resolve_path(model, attribute, value, folders)
                 name, key = safe_file_name(*split_name(os.path.basename(path))), path
-            name = unique_name(name, key, collected)
+            scoped = prefix if prefix and is_skin_file(element, attribute) else ""
+            name = unique_name(name, (key, scoped) if scoped else key, collected)
             collected.names[(id(element), attribute.name)] = name
-            collected.uses.append((model, element, attribute, value, name))
+            collected.uses.append((model, element, attribute, value, name, scoped))
     collected.directory_attributes = collected.directory_attributes | frozenset(directories)
     for attached in _tree.attached_models(model):  # each resolves files in its own folders
-        name_files(attached, collected)
+        name_files(attached, collected, f"{prefix}{_tree.scope_of(attached).name}/")
     return collected
 
 
@@ -185,11 +194,13 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
     """Name (see :func:`name_files`) and read every file the model uses; ``models`` are
     the MJCF files being read (to refuse one that uses itself)."""
     collected = name_files(model, collected)
-    for owner, element, attribute, value, name in collected.uses:
+    for owner, element, attribute, value, name, scoped in collected.uses:
         if name in collected.files:
             continue
         if isinstance(value, Asset):
-            collected.files[name] = value.contents
+            contents = value.contents
+            collected.files[name] = scope_bone_names(contents, scoped, element.path) if (
+                scoped) else contents
             continue
         assert isinstance(value, str)
         folders = compiler_folders(owner)
@@ -201,6 +212,8 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
                     f"{element.path}: {attribute.py_name}: {path} uses itself "
                     f"(through {' -> '.join(models)})")
             contents = model_file(path, contents, collected, (*models, path))
+        if scoped:
+            contents = scope_bone_names(contents, scoped, element.path)
         collected.files[name] = contents
     return collected
 

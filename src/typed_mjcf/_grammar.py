@@ -247,8 +247,6 @@ class ElementSpec:
                 self.scope_attribute = attribute
         for attribute in self.attributes:
             self.by_key.setdefault(attribute.name, attribute)
-        if "class" in self.by_key:
-            self.by_key.setdefault("dclass", self.by_key["class"])  # dm_control's spelling
         self.references = tuple(a for a in self.attributes if a.is_reference)
         self.namespace = self.id_attribute.namespace if self.id_attribute else None
         self.children = {}
@@ -316,10 +314,13 @@ class GrammarFacts:
     mocap: str  # the body attribute that makes a body a mocap body
     childclass: str  # the attribute naming the default class of a subtree
     dclass: str  # the attribute naming an element's default class
+    class_namespace: str  # the namespace of default classes
+    actuator_namespace: str  # its elements are the model's controls
     named_after_file: Mapping[str, str] = field(default_factory=lambda: {})  # namespace -> attribute
     named_from_contents: frozenset[str] = frozenset()  # namespaces named by the file they read
     attach: AttachFacts | None = None
     replicate_separator: str = "sep"  # <replicate>'s attribute suffixing copies' names
     # global settings combined on attach rather than refused: "tag@attribute" -> rule
     merge_rules: Mapping[str, str] = field(default_factory=lambda: {})
+    skin_file: str = ""  # "row@attribute" of binary skin files (bone names to scope)
     keyframe: KeyframeFacts = KeyframeFacts()

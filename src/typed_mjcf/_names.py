@@ -17,6 +17,7 @@ from typing import Protocol
 from typed_mjcf.errors import ChildError, DuplicateIdentifierError
 
 SEPARATOR = "/"
+UNNAMED_MODEL = "unnamed_model"  # what an attached model without a name is called
 
 
 class Named(Protocol):

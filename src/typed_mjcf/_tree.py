@@ -29,6 +29,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
     ClassVar,
+    Final,
     Generic,
     NoReturn,
     Protocol,
@@ -62,6 +63,7 @@ _Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscript
 
 _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
+DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
@@ -81,6 +83,11 @@ def finish_grammar(facts: GrammarFacts) -> None:
     """Called by the generated tables once every class exists: the language-wide facts,
     which rows hold bodies, and the signature and docstring of every ``add_<tag>()``."""
     _FACTS[:] = [facts]
+    for cls in _CLASSES.values():  # dm_control's spelling of the class attribute
+        dclass = cls.spec.by_name.get(facts.dclass)
+        if dclass is not None:
+            cls.spec.by_key.setdefault(DCLASS, dclass)
+            setattr(cls, DCLASS, Attribute(dclass))
     _RESERVED_NAMES.clear()
     _RESERVED_NAMES.add(facts.world_body)
     for cls in _CLASSES.values():
@@ -97,7 +104,7 @@ def grammar_facts() -> GrammarFacts:
 def _public_name(attribute: AttributeSpec) -> str:
     """An attribute's key in ``get_attributes()``: its Python name, and dm_control's
     ``dclass`` for ``class``."""
-    return "dclass" if attribute.name == grammar_facts().dclass else attribute.py_name
+    return DCLASS if attribute.name == grammar_facts().dclass else attribute.py_name
 
 
 def _short(value: object, limit: int = 60) -> str:
@@ -138,8 +145,6 @@ class Element:
         _CLASSES[cls.__name__] = cls
         for attribute in spec.attributes:
             setattr(cls, attribute.py_name, Attribute(attribute))
-        if "class" in spec.by_name:
-            setattr(cls, "dclass", Attribute(spec.by_name["class"]))  # dm_control's spelling
         for child in spec.children.values():
             setattr(cls, child.py_name, SingleChild(child) if child.single else ChildList(child))
             setattr(cls, "add_" + child.tag, _adder(child))

@@ -52,9 +52,6 @@ RULES: Final[dict[Rule, str]] = {
     "unused-default": "a default class is used by some class= or childclass= (warning)",
 }
 
-# The namespace of default classes: a reference there in a <default> class is only a warning.
-DEFAULT_NAMESPACE: Final = "default"
-
 # Suggestions ("did you mean") compare a name with every name of its namespace: only the first
 # unresolved references get one, so that a broken model still validates in linear time.
 _MAX_HINTS: Final = 20
@@ -216,7 +213,7 @@ def _is_written(parent: Element, child: Element) -> bool:
     return not is_empty_single(parent, child)
 
 
-Owner = Literal["world", "body", "replicate"]
+Owner = Literal["in_world", "in_body", "in_replicate"]
 
 
 def _owner(element: Element, parent: Element | None, owner: Owner | None,
@@ -228,10 +225,10 @@ def _owner(element: Element, parent: Element | None, owner: Owner | None,
         return None
     tag = element.spec.tag
     if owner is None:
-        return "world"
+        return "in_world"
     if tag == facts.frame:
         return owner
-    return "replicate" if tag == facts.replicate else "body"
+    return "in_replicate" if tag == facts.replicate else "in_body"
 
 
 def validate(model: ModelBase) -> list[Finding]:
@@ -243,8 +240,8 @@ def validate(model: ModelBase) -> list[Finding]:
     while stack:
         element, parent, owner = stack.pop()
         order += 1
-        projection = (parent is not None and parent.spec.namespace == DEFAULT_NAMESPACE
-                      and element.spec.namespace != DEFAULT_NAMESPACE)
+        projection = (parent is not None and parent.spec.namespace == grammar_facts().class_namespace
+                      and element.spec.namespace != grammar_facts().class_namespace)
         _check_element(state, order, element, parent, projection)
         if owner is not None:
             _check_tree(state, order, element, owner)
@@ -308,14 +305,14 @@ def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> Non
     """Rules of the kinematic tree: what the world body and replicates may hold."""
     facts = grammar_facts()
     tag = element.spec.tag
-    if tag in facts.joints and owner == "world":
+    if tag in facts.joints and owner == "in_world":
         state.add(order, element, "world-body",
                   f"the world body cannot have joints: move the <{tag}> into a <body>")
-    elif tag in facts.joints and owner == "replicate":
+    elif tag in facts.joints and owner == "in_replicate":
         state.add(order, element, "replicate-joint",
                   f"a <{tag}> cannot be a direct child of <replicate> (frames do not count): "
                   f"wrap it in a <body>")
-    elif tag == facts.inertia and owner == "world":
+    elif tag == facts.inertia and owner == "in_world":
         state.add(order, element, "world-body",
                   "the world body cannot have inertia: move the <inertial> into a <body>")
     elif facts.attach is not None and tag == facts.attach.tag:
@@ -367,8 +364,8 @@ def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
     assert namespace is not None
     facts = grammar_facts()
     name = _tree.element_name(element)
-    if namespace == DEFAULT_NAMESPACE:
-        top_level = parent is None or parent.spec.namespace != DEFAULT_NAMESPACE
+    if namespace == grammar_facts().class_namespace:
+        top_level = parent is None or parent.spec.namespace != grammar_facts().class_namespace
         if top_level:
             if name is not None and name != facts.main_class:
                 state.add(order, element, "default-class",
@@ -412,20 +409,20 @@ def _check_reference(state: _Pass, order: int, element: Element, attribute: str,
         name = value
         scope = _tree.scope_of(element)
         if not _builtin(namespace, name) and scope.find(namespace, name) is None:
-            in_default = (namespace != DEFAULT_NAMESPACE and element.parent is not None
-                          and element.parent.spec.namespace == DEFAULT_NAMESPACE)
+            in_default = (namespace != grammar_facts().class_namespace and element.parent is not None
+                          and element.parent.spec.namespace == grammar_facts().class_namespace)
             state.pending.append(_Pending(order, element, attribute, namespace, name,
                                           in_default))
     else:
         return
-    if namespace == DEFAULT_NAMESPACE and name is not None:
+    if namespace == grammar_facts().class_namespace and name is not None:
         state.used_classes.add(name)
 
 
 def _builtin(namespace: str, name: str) -> bool:
     """Names MuJoCo defines itself: the class ``main`` and the world body."""
     facts = grammar_facts()
-    return ((namespace == DEFAULT_NAMESPACE and name == facts.main_class)
+    return ((namespace == grammar_facts().class_namespace and name == facts.main_class)
             or (namespace == facts.body and name == facts.world_body))
 
 
@@ -438,13 +435,7 @@ def _check_element_reference(state: _Pass, order: int, element: Element, attribu
     elif not element_in_model(state.model, target):
         state.add(order, element, "unresolved-reference",
                   f"{attribute} refers to {target.path}, of another model")
-    elif _tree.element_name(target) is None and not _is_main(target):
-        state.add(order, element, "unresolved-reference",
-                  f"{attribute} refers to {target.path}, which has no name")
-
-
-def _is_main(element: Element) -> bool:
-    return element.spec.compose == "nest" and isinstance(element.parent, ModelBase)
+    # an unnamed target is fine: the export names it (unnamed_<kind>_<n>)
 
 
 def element_in_model(model: ModelBase, target: Element) -> bool:
@@ -493,7 +484,7 @@ def _unresolved_message(state: _Pass, ref: _Pending, *, hint: bool) -> str:
     if hint:
         identifiers = _tree.scope_of(ref.element).names(namespace)
         suggestion = did_you_mean(name, [*identifiers, *state.implicit_names.get(namespace, ())])
-    if namespace == DEFAULT_NAMESPACE:
+    if namespace == grammar_facts().class_namespace:
         return (f"{ref.attribute}={name!r} names no default class (no <default "
                 f"class={name!r}>){suggestion}")
     scoped = " (no attached model provides the scoped name)" if "/" in name else ""
@@ -518,7 +509,7 @@ def _check_unused_classes(state: _Pass) -> None:
     for name in state.used_classes:
         entry = state.classes.get(name)
         element: Element | None = None if entry is None else entry[1]
-        while element is not None and element.spec.namespace == DEFAULT_NAMESPACE:
+        while element is not None and element.spec.namespace == grammar_facts().class_namespace:
             class_name = _tree.element_name(element)
             if class_name is None or class_name in used:
                 break

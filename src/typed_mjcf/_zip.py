@@ -11,6 +11,7 @@ from typing import IO
 from typed_mjcf import _tree
 from typed_mjcf._assets_io import model_files
 from typed_mjcf._files import safe_file_name
+from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._tree import ModelBase
 from typed_mjcf.errors import ExportError, FileReadError, ParseError
 
@@ -46,7 +47,7 @@ def read_zip(path: str | os.PathLike[str] | IO[bytes],
 def write_zip(model: ModelBase, directory: str, model_name: str | None = None) -> str:
     """Write ``model`` and its files into ``directory/<name>.zip``, each under ``<name>/``
     (as dm_control writes it); return the archive's path."""
-    name = model_name or _tree.scope_of(model).name or "model"
+    name = model_name or _tree.scope_of(model).name or UNNAMED_MODEL
     stem = safe_file_name(name)
     files = model_files(model, f"{stem}.xml")
     try:

@@ -39,13 +39,26 @@ FloatArrayLike: TypeAlias = (
 """numpy arrays a real-valued array attribute accepts: any real dtype (the length is
 checked at assignment)."""
 
-Integer: TypeAlias = (
-    int | np.int64 | np.int32 | np.int16 | np.int8 | np.uint64 | np.uint32 | np.uint16
-    | np.uint8
-)
-"""An integer: an int or a numpy integer scalar (a float is refused: it would be truncated)."""
-Real: TypeAlias = float | np.float64 | np.float32 | np.float16 | np.longdouble | Integer
-"""A real number: a float, an int, or a numpy scalar (``np.float32(1.5)``, ``np.int64(3)``)."""
+class RealScalar(Protocol):
+    """A real number that is not a float: an int, or a numpy scalar (``np.float32(1.5)``,
+    ``np.int64(3)``); not an array."""
+
+    def __float__(self) -> float: ...
+    def is_integer(self) -> bool: ...  # what arrays lack
+
+
+class IntegerScalar(Protocol):
+    """An integer that is not an int: a numpy integer scalar (``np.int64(3)``); not a float
+    (it would be truncated) and not an array."""
+
+    def __index__(self) -> int: ...
+    def is_integer(self) -> bool: ...  # what arrays lack
+
+
+Real: TypeAlias = float | RealScalar
+"""A real number: a float, an int, or a numpy scalar."""
+Integer: TypeAlias = int | IntegerScalar
+"""An integer: an int or a numpy integer scalar."""
 
 _T_co = TypeVar("_T_co", covariant=True)
 
@@ -71,5 +84,6 @@ XmlElement: TypeAlias = etree._Element  # pyright: ignore[reportPrivateUsage]
 
 __all__ = [
     "Asset", "FileLike", "Float32Array", "Float64Array", "FloatArrayLike", "Int32Array",
-    "IntArrayLike", "Integer", "NumberList", "Real", "XmlElement",
+    "IntArrayLike", "Integer", "IntegerScalar", "NumberList", "Real", "RealScalar",
+    "XmlElement",
 ]
