@@ -1,8 +1,8 @@
 """Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``.
 
-Every session runs on the first Python it finds that the project supports (3.11 or newer:
-on PATH, pyenv, uv, the ``py`` launcher, ...); ``nox -P 3.13 -s tests`` picks one. With
-none installed, a session fails (it does not skip) and says which Python it looked for.
+Every session runs on the first Python nox finds that the project supports (3.11 or newer);
+``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
+installed, a session fails (it does not skip) and says which Python it looked for.
 """
 
 from __future__ import annotations
