@@ -1,16 +1,27 @@
-"""Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``."""
+"""Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``.
+
+Every session runs on the first Python nox finds that the project supports (3.11 or newer);
+``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
+installed, a session fails (it does not skip) and says which Python it looked for.
+"""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import nox
 
+# python="<version range>" (interpreter discovery by python-discovery) came in nox 2026.8.10;
+# older versions would look for an interpreter literally named ">=3.11" and find none.
+nox.needs_version = ">=2026.8.10"
 nox.options.default_venv_backend = "venv"
 nox.options.reuse_existing_virtualenvs = True
 nox.options.sessions = ["tests"]
+# A missing interpreter is a failure, not a skip that exits 0 and looks like a pass.
+nox.options.error_on_missing_interpreters = True
 
-PYTHON = "3.11"
+PYTHON = ">=3.11"  # pyproject's requires-python: any installed version that satisfies it
 # src holds the generated classes too (src/typed_mjcf/_generated links to generated/).
 TYPED_PATHS = ["src", "codegen", "tests/typing", "examples"]
 # Deliberately ill-typed code: tests/typing/test_typecheck.py checks that mypy and pyright
@@ -55,18 +66,43 @@ MUJOCO_VERSION = "4.0.0"  # what schema/ describes; keep in step with the dev ex
 def generate(session: nox.Session) -> None:
     """Refresh schema/ from a mujoco wheel (and a grammar file) and render generated/.
 
+    The session installs the MuJoCo it generates for, in its own environment: the pinned
+    version (what schema/ describes) unless --mujoco-version names another.
+
     nox -s generate                                  # the pinned MuJoCo: expect no changes
     nox -s generate -- --mujoco-version 4.1.0        # bindings for another MuJoCo
     nox -s generate -- --grammar path/to/mujoco/src/xml/mjcf.schema
     """
-    args = list(session.posargs)
-    version = MUJOCO_VERSION
-    if "--mujoco-version" in args:
-        at = args.index("--mujoco-version")
-        version = args[at + 1]
-        del args[at : at + 2]
+    try:
+        version, args = _generate_args(session.posargs)
+    except ValueError as error:  # before installing anything: a mistake fails at once
+        session.error(str(error))
     session.install("-e", ".[codegen]", f"mujoco-core=={version}")
     session.run("python", "-m", "codegen", "generate", *args)
+
+
+def _generate_args(posargs: list[str]) -> tuple[str, list[str]]:
+    """The MuJoCo version to install and the arguments for ``python -m codegen generate``;
+    ``ValueError`` (one line) for a missing or malformed value."""
+    args, version = list(posargs), MUJOCO_VERSION
+    for at, arg in enumerate(args):
+        if arg == "--mujoco-version" or arg.startswith("--mujoco-version="):
+            value = arg.partition("=")[2] if "=" in arg else (
+                args[at + 1] if at + 1 < len(args) else "")
+            if not re.fullmatch(r"\d+(\.\d+)*", value):
+                raise ValueError(f"--mujoco-version needs a release number such as 4.1.0, "
+                                 f"got {value!r}")
+            del args[at : at + (1 if "=" in arg else 2)]
+            version = value
+            break
+    for at, arg in enumerate(args):  # the generator checks this too; here it saves an install
+        if arg == "--grammar" or arg.startswith("--grammar="):
+            value = arg.partition("=")[2] if "=" in arg else (
+                args[at + 1] if at + 1 < len(args) else "")
+            if value and not Path(value).expanduser().is_file():  # none: argparse says so
+                raise ValueError(f"--grammar {value}: no such file; expected MuJoCo's "
+                                 "grammar file (src/xml/mjcf.schema in its source tree)")
+    return version, args
 
 
 @nox.session(python=PYTHON)

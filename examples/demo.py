@@ -1,5 +1,8 @@
 """Build a small articulated robot with the typed API, compile it, simulate one second.
 
+Two position servos drive a two-link arm to target angles; the demo prints each target next
+to what the simulation reached, and where the hand ended up next to where the targets put it.
+
     nox -s demo            # or: python examples/demo.py [--out DIR]
 """
 
@@ -10,8 +13,11 @@ from pathlib import Path
 
 import mujoco
 import numpy as np
+from numpy.typing import NDArray
 
 import typed_mjcf as mjcf
+
+TARGETS = {"shoulder": 0.8, "elbow": -1.0}  # servo targets, radians
 
 
 def build_arm() -> mjcf.RootElement:
@@ -36,19 +42,23 @@ def build_arm() -> mjcf.RootElement:
     base = world.add_body(name="base", pos=(0.0, 0.0, 0.1))
     base.add_geom(type="cylinder", size=(0.1, 0.05))
 
-    upper = base.add_body(name="upper_arm", pos=(0.0, 0.0, 0.05))
+    # gravcomp: the servos then hold their targets exactly instead of sagging under gravity.
+    upper = base.add_body(name="upper_arm", pos=(0.0, 0.0, 0.05), gravcomp=1.0)
     shoulder = upper.add_joint(name="shoulder", type="hinge", axis=(0.0, 1.0, 0.0),
                                range=(-1.5, 1.5))
     upper.add_geom(type="capsule", fromto=(0.0, 0.0, 0.0, 0.0, 0.0, 0.4), size=(0.04,))
+    # The base is welded to the world, so MuJoCo's parent-child filter does not apply: the
+    # capsule's end, sunk into the base at the shoulder, would push against it.
+    model.contact.add_exclude(body1=base, body2=upper)
 
-    fore = upper.add_body(name="forearm", pos=(0.0, 0.0, 0.4))
+    fore = upper.add_body(name="forearm", pos=(0.0, 0.0, 0.4), gravcomp=1.0)
     elbow = fore.add_joint(name="elbow", type="hinge", axis=(0.0, 1.0, 0.0), range=(-2.0, 2.0))
     fore.add_geom(type="capsule", fromto=(0.0, 0.0, 0.0, 0.0, 0.0, 0.35), size=(0.035,))
     fore.add_site(name="hand", pos=(0.0, 0.0, 0.35), size=(0.02,))
 
     for joint in (shoulder, elbow):
         model.actuator.add_position(name=f"{joint.name}_servo", joint=joint, kp=20.0,
-                                    ctrlrange=(-1.5, 1.5))
+                                    dampratio=1.0, ctrlrange=(-1.5, 1.5))
         model.sensor.add_jointpos(name=f"{joint.name}_angle", joint=joint)
     model.sensor.add_framepos(name="hand_position", objtype="site", objname="hand")
     model.keyframe.add_key(name="bent", qpos=(0.5, -0.8))
@@ -58,10 +68,20 @@ def build_arm() -> mjcf.RootElement:
 def simulate(model: mjcf.RootElement, seconds: float = 1.0) -> tuple[mujoco.MjModel, mujoco.MjData]:
     compiled = model.compile()
     data = mujoco.MjData(compiled)
-    data.ctrl[:] = (0.8, -1.0)  # servo targets for shoulder and elbow
+    for joint, target in TARGETS.items():
+        data.actuator(f"{joint}_servo").ctrl = target
     while data.time < seconds:
         mujoco.mj_step(compiled, data)
     return compiled, data
+
+
+def hand_at_targets(compiled: mujoco.MjModel) -> NDArray[np.float64]:
+    """Where the hand is when every joint is at its target (MuJoCo's forward kinematics)."""
+    data = mujoco.MjData(compiled)
+    for joint, target in TARGETS.items():
+        data.joint(joint).qpos = target
+    mujoco.mj_kinematics(compiled, data)
+    return data.site("hand").xpos.copy()
 
 
 def main() -> None:
@@ -71,12 +91,18 @@ def main() -> None:
 
     model = build_arm()
     compiled, data = simulate(model)
-    angles = np.degrees(data.qpos)
-    hand = data.sensor("hand_position").data
     print(f"model {model.model!r}: {compiled.nbody} bodies, {compiled.njnt} joints, "
           f"{compiled.nu} actuators, {compiled.nsensor} sensors")
-    print(f"after {data.time:.3f} s: shoulder {angles[0]:+.1f} deg, elbow {angles[1]:+.1f} deg, "
-          f"hand at ({hand[0]:+.3f}, {hand[1]:+.3f}, {hand[2]:+.3f}) m")
+    print(f"after {data.time:.3f} s:")
+    for joint, target in TARGETS.items():
+        reached = data.sensor(f"{joint}_angle").data[0]
+        print(f"  {joint:<8}  target {np.degrees(target):+6.1f} deg  "
+              f"reached {np.degrees(reached):+6.1f} deg")
+    goal = hand_at_targets(compiled)
+    hand = data.sensor("hand_position").data
+    print(f"  hand      target ({goal[0]:+.3f}, {goal[1]:+.3f}, {goal[2]:+.3f}) m  "
+          f"reached ({hand[0]:+.3f}, {hand[1]:+.3f}, {hand[2]:+.3f}) m  "
+          f"error {np.linalg.norm(hand - goal) * 1000:.1f} mm")
     args.out.mkdir(parents=True, exist_ok=True)
     path = args.out / "two_link_arm.xml"
     path.write_text(model.to_xml_string(), encoding="utf-8")

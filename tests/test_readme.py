@@ -1,27 +1,151 @@
-"""Every Python example in the README runs, and prints what the README says it prints."""
+"""The README's Python examples and the scripts in ``examples/``, as a user meets them.
+
+- every Python block of the README runs and prints what the README says it prints;
+- the README's blocks (each written to a module of its own) and every file in ``examples/``
+  are clean under ``mypy --strict`` and pyright strict, with no configuration but that: one
+  mypy run and one pyright run over all of them, from a folder outside the repository, so
+  that what is checked is what a user's own script would see (the installed ``typed_mjcf``
+  and its ``mujoco`` stubs, none of this repository's settings).
+
+The examples' behaviour when run is tested in ``test_examples.py``.
+"""
 
 from __future__ import annotations
 
 import contextlib
 import io
+import json
 import re
+import subprocess
+import sys
+from collections.abc import Mapping
+from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parent.parent / "README.md"
-BLOCKS = re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), re.DOTALL)
+from tests.typing.test_typecheck import CHECKERS, Checker, Diagnostic, parse_mypy, parse_pyright
+
+ROOT = Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+EXAMPLES = sorted((ROOT / "examples").glob("*.py"))
 
 
-@pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
-def test_readme_example_runs(code: str) -> None:
-    expected = [line[2:] for line in code.splitlines() if line.startswith("# ")]
+@dataclass(frozen=True)
+class Block:
+    """A fenced Python block of the README."""
+
+    code: str
+    line: int  # the README's line number of the block's first line of code
+
+
+def readme_blocks() -> list[Block]:
+    text = README.read_text(encoding="utf-8")
+    return [Block(match[1], text.count("\n", 0, match.start(1)) + 1)
+            for match in re.finditer(r"```python\n(.*?)```", text, re.DOTALL)]
+
+
+BLOCKS = readme_blocks()
+
+
+@pytest.mark.parametrize("block", BLOCKS, ids=[f"line{b.line}" for b in BLOCKS])
+def test_readme_example_runs(block: Block) -> None:
+    expected = [line[2:] for line in block.code.splitlines() if line.startswith("# ")]
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
-        exec(compile(code, str(README), "exec"), {})
+        exec(compile("\n" * (block.line - 1) + block.code, str(README), "exec"), {})
     for line in expected:
         assert line in out.getvalue()
 
 
 def test_readme_has_examples() -> None:
-    assert len(BLOCKS) >= 2
+    assert len(BLOCKS) >= 3
+    assert len(EXAMPLES) >= 4
+
+
+# ----------------------------------------------------------------------------- type checks
+
+
+@dataclass(frozen=True)
+class Checked:
+    """What the checkers said, and where each checked file's lines come from."""
+
+    diagnostics: Mapping[Checker, list[Diagnostic]]
+    origin: Mapping[Path, tuple[Path, int]]  # checked file -> (file shown, line offset)
+    canary: Path
+
+    def describe(self, diagnostic: Diagnostic) -> str:
+        shown, offset = self.origin.get(diagnostic.file, (diagnostic.file, 0))
+        name = shown.relative_to(ROOT) if shown.is_relative_to(ROOT) else shown
+        first = diagnostic.message.splitlines()[0]
+        return f"{name}:{diagnostic.line + offset}: [{diagnostic.code}] {first}"
+
+
+def commands(folder: Path, files: list[Path]) -> dict[Checker, list[str]]:
+    """Each checker in its strict mode and otherwise its defaults (the configuration files
+    in ``folder`` say only that), so that the repository's settings play no part."""
+    (folder / "mypy.ini").write_text("[mypy]\n", encoding="utf-8")
+    (folder / "pyrightconfig.json").write_text(json.dumps({"typeCheckingMode": "strict"}),
+                                               encoding="utf-8")
+    paths = [str(f) for f in files]
+    return {
+        "mypy": [sys.executable, "-m", "mypy", "--strict",
+                 "--config-file", str(folder / "mypy.ini"),
+                 "--cache-dir", str(folder / ".mypy_cache"),
+                 "--show-absolute-path", "--show-error-codes", "--no-pretty",
+                 "--no-error-summary", "--hide-error-context", "--no-color-output", *paths],
+        "pyright": [sys.executable, "-m", "pyright", "--outputjson",
+                    "--project", str(folder / "pyrightconfig.json"),
+                    "--pythonpath", sys.executable, *paths],
+    }
+
+
+# A module with two mistakes, checked with the others: it proves that the runs see the
+# library's and MuJoCo's types (an untyped import would make everything Any, and clean).
+CANARY = """import mujoco
+
+import typed_mjcf as mjcf
+
+mjcf.RootElement().worldbody.add_geom(type="capsul")
+mujoco.mj_step(mjcf.RootElement().compile())
+"""
+CANARY_LINES = [5, 6]
+
+
+@pytest.fixture(scope="module")
+def checked(tmp_path_factory: pytest.TempPathFactory) -> Checked:
+    folder = tmp_path_factory.mktemp("user_code")
+    origin: dict[Path, tuple[Path, int]] = {}
+    for number, block in enumerate(BLOCKS):
+        module = folder / f"readme_block{number}.py"
+        module.write_text(block.code, encoding="utf-8")
+        origin[module.resolve()] = (README, block.line - 1)
+    for example in EXAMPLES:
+        origin[example] = (example, 0)
+    canary = folder / "canary.py"
+    canary.write_text(CANARY, encoding="utf-8")
+    origin[canary.resolve()] = (canary.resolve(), 0)
+    processes = {
+        checker: subprocess.Popen(command, cwd=folder, stdout=subprocess.PIPE,
+                                  stderr=subprocess.PIPE, text=True)
+        for checker, command in commands(folder, list(origin)).items()
+    }  # both at once: they take a few seconds each
+    outputs = {checker: process.communicate() for checker, process in processes.items()}
+    return Checked({"mypy": parse_mypy(processes["mypy"].returncode, *outputs["mypy"]),
+                    "pyright": parse_pyright(processes["pyright"].returncode,
+                                             *outputs["pyright"])}, origin, canary.resolve())
+
+
+@pytest.mark.parametrize("checker", CHECKERS)
+def test_readme_and_examples_type_check(checker: Checker, checked: Checked) -> None:
+    """No error and no warning (errors inside the library would count too)."""
+    found = [checked.describe(d) for d in sorted(checked.diagnostics[checker])
+             if d.file != checked.canary]
+    assert not found, f"{checker} (strict) on the README's code and examples/:\n" + "\n".join(
+        found)
+
+
+@pytest.mark.parametrize("checker", CHECKERS)
+def test_the_type_check_sees_mistakes(checker: Checker, checked: Checked) -> None:
+    lines = sorted({d.line for d in checked.diagnostics[checker] if d.file == checked.canary})
+    assert lines == CANARY_LINES, [checked.describe(d) for d in checked.diagnostics[checker]]

@@ -1,0 +1,57 @@
+"""The commands of ``python -m codegen`` (``__main__`` parses the command line and reports
+failures; this module does the work)."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from codegen import ir, mujoco_stubs, render
+from codegen.pipeline import refresh
+
+
+def generate(grammar: Path | None, allow_untyped: bool) -> int:
+    before = ir.load() if ir.SCHEMA_PATH.exists() else None
+    schema, report = refresh(before, grammar)
+    print(report.format())
+    if report.untyped and not allow_untyped:
+        print("error: the attributes above cannot be typed precisely; add them to "
+              "schema/facts.toml ([[attribute]]) or pass --allow-untyped", file=sys.stderr)
+        return 1
+    ir.dump(schema)
+    changed = render.write(render.render(schema))
+    print(f"schema/mjcf.json: MuJoCo {schema.mujoco_version}, {len(schema.elements)} rows, "
+          f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
+    print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    return stubs()
+
+
+def stubs() -> int:
+    changed = mujoco_stubs.write(mujoco_stubs.render())
+    print("generated/mujoco-stubs/: "
+          + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    return 0
+
+
+def render_only() -> int:
+    changed = render.write(render.render(ir.load()))
+    print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    return 0
+
+
+def check() -> int:
+    files = render.render(ir.load())
+    stale = [name for name, text in sorted(files.items())
+             if not (render.GENERATED_DIR / name).exists()
+             or (render.GENERATED_DIR / name).read_text(encoding="utf-8") != text]
+    if stale:
+        print(f"generated/ is out of date: {', '.join(stale)}; run `nox -s generate`")
+        return 1
+    print("generated/ matches schema/")
+    stale_stubs = mujoco_stubs.stale(mujoco_stubs.render())
+    if stale_stubs:
+        print(f"generated/mujoco-stubs/ is out of date: {', '.join(stale_stubs)}; "
+              "run `python -m codegen stubs`")
+        return 1
+    print("generated/mujoco-stubs/ matches the installed mujoco")
+    return 0
