@@ -1,9 +1,12 @@
 """``typed-mjcf to-python`` output passes ``mypy --strict`` and pyright's strict mode with no
-ignores: the code for every corpus model MuJoCo compiles (the biggest among them), checked in
-one run of each checker, with the repository's configuration."""
+ignores, and ruff's formatter and linter leave it as it is: the code for every corpus model
+MuJoCo compiles (the biggest among them), checked in one run of each tool, the type checkers
+with the repository's configuration."""
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -52,3 +55,19 @@ def test_the_sample_is_big_enough(modules: list[Path]) -> None:
 def test_the_code_type_checks(checker: Checker, reports: dict[Checker, list[Diagnostic]]) -> None:
     found = [f"{d.file.name}:{d.line}: {d.code}: {d.message}" for d in reports[checker]]
     assert found == []
+
+
+RUFF = [sys.executable, "-m", "ruff"]
+RUFF_OPTIONS = ["--no-cache", "--isolated", "--line-length", "100"]
+
+
+def test_ruff_format_leaves_the_code_as_it_is(modules: list[Path]) -> None:
+    result = subprocess.run([*RUFF, "format", "--check", *RUFF_OPTIONS, *map(str, modules)],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_ruff_finds_nothing_to_lint(modules: list[Path]) -> None:
+    result = subprocess.run([*RUFF, "check", *RUFF_OPTIONS, "--select", "E,F,W,I,B,UP",
+                             *map(str, modules)], capture_output=True, text=True, check=False)
+    assert result.returncode == 0, result.stdout + result.stderr

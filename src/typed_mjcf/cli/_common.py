@@ -124,6 +124,7 @@ class Progress:
 
 def _terminal_width() -> int:
     try:
-        return os.get_terminal_size(sys.stderr.fileno()).columns
+        columns = os.get_terminal_size(sys.stderr.fileno()).columns
     except (OSError, ValueError):
-        return 80
+        columns = 0
+    return columns if columns >= 20 else 80  # a pseudo-terminal may report no size
