@@ -416,9 +416,12 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     model = _tree.new_model(cls)
     _tree.set_base_dir(model, context.base_dir)
     _tree.memory_files(model).update(context.options.assets)
+    sources = _tree.SourceMap()
+    sources.lines[model] = (source, node.sourceline)
+    _tree.set_source_map(model, sources)
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
-        _Builder(context).run(model, node, source)
+        _Builder(context, sources).run(model, node, source)
     return model
 
 
@@ -489,14 +492,15 @@ _Frame = tuple[Element, Iterator[XmlNode], str | None, int, Element, Callable[[]
 class _Builder:
     """Builds the typed tree from XML with an explicit stack (no recursion)."""
 
-    def __init__(self, context: _Context) -> None:
+    def __init__(self, context: _Context, sources: _tree.SourceMap) -> None:
         self.context = context
+        self.sources = sources
         self.stack: list[_Frame] = []
         self.nested: list[tuple[Element, Element]] = []  # (class, its section), not counted
         self.hierarchies: dict[int, _Hierarchy] = {}  # by id(section): repeated hierarchies
 
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
-        context, stack = self.context, self.stack
+        context, stack, lines = self.context, self.stack, self.sources.lines
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         self.count(node, source, 1)  # the root
         stack.append((root, iter(node), source, 1, root, None))
@@ -535,6 +539,7 @@ class _Builder:
                 stack.append((existing, iter(child_node), source, depth + 1, existing, check))
                 continue
             child = _tree.new_child(parent, child_spec)
+            lines[child] = (source, child_node.sourceline)
             _set_attributes(child, child_node, source, context)
             child_top = child
             if tag == parent.spec.tag:
@@ -633,6 +638,7 @@ class _Builder:
             path, context, f"included file {file!r} ({context.shown(path)})", source, line)
         level = _Include(path, source, line)
         context.included[path] = level
+        self.sources.includes[path] = (source, parent)
         context.nesting.append(level)
         included_root = _read_xml(data, path, context)
         self.count(included_root, path, 1)

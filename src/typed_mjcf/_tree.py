@@ -531,13 +531,15 @@ class Element:
 
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
-    is attached, and the file contents it was given in memory."""
+    is attached, the file contents it was given in memory, and where a parsed model's
+    elements were read."""
 
-    __slots__ = ("_base_dir", "_files", "_frame")
+    __slots__ = ("_base_dir", "_files", "_frame", "_sources")
 
     _base_dir: str | None
     _frame: Element | None  # the attachment frame, in the model this one is attached to
     _files: dict[str, bytes]  # file contents given with the model (by path as written)
+    _sources: SourceMap | None  # filled by the parser; None for models built in Python
 
     def __init__(self, model: str | None = None, *, model_dir: str | None = None,
                  assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None:
@@ -570,6 +572,22 @@ def _init_model(model: ModelBase) -> None:
     model._base_dir = None
     model._frame = None
     model._files = {}
+    model._sources = None
+
+
+class SourceMap:
+    """Where a parsed model's elements were read (for messages that point into the files).
+
+    ``lines`` maps each element to its file (``None`` for text given in memory) and line,
+    in the order the parser read them; ``includes`` maps each included file to the file
+    that included it and the element its contents were read into.
+    """
+
+    __slots__ = ("includes", "lines")
+
+    def __init__(self) -> None:
+        self.lines: dict[Element, tuple[str | None, int | None]] = {}
+        self.includes: dict[str, tuple[str | None, Element]] = {}
 
 
 def new_model(cls: type[ModelBase]) -> ModelBase:
@@ -1148,6 +1166,7 @@ def _copy_model(model: ModelBase, memo: dict[int, object]) -> ModelBase:
     clone._base_dir = model._base_dir
     clone._files = dict(model._files)
     clone._frame = None
+    clone._sources = None  # a copy was not read from anywhere
     stack: list[Element] = [clone]
     while stack:
         element = stack.pop()
@@ -1333,6 +1352,23 @@ def set_base_dir(model: ModelBase, folder: str | None) -> None:
 def memory_files(model: ModelBase) -> dict[str, bytes]:
     """File contents the model was given in memory, by the path its attributes write."""
     return model._files
+
+
+def source_map(model: ModelBase) -> SourceMap | None:
+    """Where the parser read ``model``'s elements (``None`` for a model built in Python)."""
+    return model._sources
+
+
+def set_source_map(model: ModelBase, sources: SourceMap | None) -> None:
+    model._sources = sources
+
+
+def source_of(element: Element) -> tuple[str | None, int | None] | None:
+    """The file and line ``element`` was read from, if it was parsed (and is still in the
+    model it was read into)."""
+    root = element._root
+    sources = None if root is None else root._sources
+    return None if sources is None else sources.lines.get(element)
 
 
 def single_child(element: Element, tag: str) -> Element | None:

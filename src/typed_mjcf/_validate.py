@@ -65,6 +65,8 @@ class Finding:
     rule: Rule
     message: str
     severity: Severity = "error"
+    # the element found at fault, for tools that point into its file (typed_mjcf.cli check)
+    element: Element | None = field(default=None, compare=False, repr=False)
 
     def __str__(self) -> str:
         return f"{self.path}: {self.rule}: {self.message}"
@@ -203,7 +205,7 @@ class _Pass:
 
     def findings(self) -> list[Finding]:
         self.found.sort(key=lambda item: (item[0], item[1]))
-        return [Finding(element.path, rule, message, severity)
+        return [Finding(element.path, rule, message, severity, element)
                 for _, _, element, rule, message, severity in self.found]
 
 

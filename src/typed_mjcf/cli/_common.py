@@ -1,0 +1,130 @@
+"""What every command shares: exit codes, reading models, naming files and lines, progress."""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Iterable, Iterator
+from typing import Final, TextIO, TypeVar
+
+from typed_mjcf import _tree
+from typed_mjcf._generated.elements import RootElement
+from typed_mjcf._tree import Element
+from typed_mjcf.errors import MjcfError, ParseError
+from typed_mjcf.io import from_path
+
+OK: Final = 0
+FOUND: Final = 1  # findings, differences, files that would change
+BAD_INPUT: Final = 2  # a file that cannot be read as MJCF (also argparse's usage errors)
+
+T = TypeVar("T")
+
+
+class BadInput(Exception):
+    """A file the command cannot work with; the message is one line naming file and line."""
+
+
+def shown(path: str | None) -> str:
+    """A path as messages show it: relative to the current folder when inside it."""
+    if path is None:
+        return "<text>"
+    try:
+        relative = os.path.relpath(path)
+    except ValueError:  # another drive (Windows)
+        return path
+    return path if relative.startswith(os.pardir) else relative
+
+
+def location(source: str | None, line: int | None) -> str:
+    """``file:line`` (or ``file`` when the line is unknown)."""
+    return shown(source) if line is None else f"{shown(source)}:{line}"
+
+
+def one_line(text: str) -> str:
+    return " ".join(text.split())
+
+
+def parse_error_text(error: ParseError) -> str:
+    """A parse error as ``file:line: message``, the file as messages show it."""
+    message = str(error)
+    if error.source is not None:
+        prefix = f"{error.source}:{error.line}: " if error.line is not None else f"{error.source}: "
+        message = message.removeprefix(prefix)
+        return f"{location(error.source, error.line)}: {one_line(message)}"
+    return one_line(message)
+
+
+def load(path: str) -> RootElement:
+    """Parse an MJCF file; raise :class:`BadInput` with a one-line message if it cannot be."""
+    try:
+        return from_path(path)
+    except ParseError as error:
+        raise BadInput(parse_error_text(error)) from None
+    except MjcfError as error:  # pragma: no cover - from_path raises only ParseError
+        raise BadInput(f"{shown(path)}: {one_line(str(error))}") from None
+
+
+def source_of(element: Element) -> tuple[str | None, int | None]:
+    """The file and line the element was read from (the model's file, no line, if unknown)."""
+    found = _tree.source_of(element)
+    if found is not None:
+        return found
+    model = _tree.model_of(element)
+    root_source = None if model is None else _tree.source_of(model)
+    return (root_source[0], None) if root_source is not None else (None, None)
+
+
+def where(element: Element) -> str:
+    """``file:line`` of the element."""
+    return location(*source_of(element))
+
+
+def error(command: str, message: str, stream: TextIO | None = None) -> None:
+    """Report bad input on stderr: ``typed-mjcf <command>: <message>``."""
+    print(f"typed-mjcf {command}: {message}", file=stream or sys.stderr)
+
+
+class Progress:
+    """``[i/n] file`` on one stderr line, rewritten in place; shown when stderr is a terminal
+    (or when asked), only for several files. Call :meth:`clear` before printing anything."""
+
+    def __init__(self, total: int, enabled: bool | None = None,
+                 stream: TextIO | None = None) -> None:
+        self.stream = stream or sys.stderr
+        if enabled is None:
+            enabled = total > 1 and self.stream.isatty()
+        self.enabled = enabled
+        self.total = total
+        self.shown = False
+
+    def each(self, items: Iterable[T], label: str = "") -> Iterator[T]:
+        """The items, showing progress as each one starts."""
+        for i, item in enumerate(items, 1):
+            self.update(i, f"{label} {item}".strip())
+            yield item
+        self.clear()
+
+    def update(self, done: int, text: str) -> None:
+        if not self.enabled:
+            return
+        line = f"[{done}/{self.total}] {text}"
+        width = _terminal_width()
+        if len(line) > width - 1:
+            line = line[: width - 4] + "..."
+        self.stream.write(f"\r\x1b[K{line}")
+        self.stream.flush()
+        self.shown = True
+
+    def clear(self) -> None:
+        if self.shown:
+            self.stream.write("\r\x1b[K")
+            self.stream.flush()
+            self.shown = False
+
+
+def _terminal_width() -> int:
+    try:
+        columns = os.get_terminal_size(sys.stderr.fileno()).columns
+    except (OSError, ValueError):
+        columns = 0
+    return columns if columns >= 20 else 80  # a pseudo-terminal may report no size

@@ -1,0 +1,228 @@
+"""``typed-mjcf diff``: what differs between two models, element by element.
+
+Elements are aligned by name (the same tag and name, wherever they are), unnamed ones under
+aligned parents by their order among children of their tag (an element inserted or deleted
+among them is found as such, by comparing the attributes of the sequences). Values are
+compared in their canonical form, so formatting, attribute order and the spelling of numbers
+never show; with ``--resolved``, each attribute is compared as MuJoCo will use it, defaults
+applied.
+"""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+from typed_mjcf import _tree
+from typed_mjcf._defaults import resolve
+from typed_mjcf._export import iter_written, written_children
+from typed_mjcf._tree import Element
+from typed_mjcf.cli._common import BAD_INPUT, FOUND, OK, BadInput, error, load, shown, where
+from typed_mjcf.cli._values import stored_text, value_text
+from typed_mjcf.errors import MjcfError
+
+NAME = "diff"
+HELP = "show how two models differ, element by element (exit 1 if they do)"
+DESCRIPTION = """\
+Compare two models semantically: elements are aligned by name (or, unnamed, by their place
+among their parent's children of the same tag), and each difference is one line:
+
+  + PATH: <element ...>                       added in B
+  - PATH: <element ...>                       removed from A
+  ~ PATH: ATTRIBUTE "A's value" -> "B's value"  changed (unset values show as (unset))
+  > PATH: moved from PARENT to PARENT         a named element under another parent
+  ^ PATH: order of <tag> children changed
+
+each followed by the file and line of the element in A and B. Formatting, attribute order
+and the spelling of numbers ("0.10" and ".1") never show; --resolved compares every
+attribute as MuJoCo will use it, with default classes applied, so a change to a default
+class shows on each element it reaches.
+
+exit status: 0 the models are the same, 1 they differ, 2 a file cannot be read as MJCF."""
+
+_TAG_WIDTH = 160  # characters of an added or removed element's start tag shown
+
+
+def arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the command's arguments."""
+    parser.add_argument("a", metavar="A.xml", help="the first model")
+    parser.add_argument("b", metavar="B.xml", help="the second model")
+    parser.add_argument("--resolved", action="store_true",
+                        help="compare values with default classes applied")
+    parser.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        a = load(args.a)
+        b = load(args.b)
+    except BadInput as problem:
+        error("diff", str(problem))
+        return BAD_INPUT
+    lines = diff_models(a, b, resolved=args.resolved)
+    if not lines:
+        return OK
+    print(f"--- {shown(args.a)}")
+    print(f"+++ {shown(args.b)}")
+    for line in lines:
+        print(line)
+    return FOUND
+
+
+@dataclass(frozen=True)
+class _Line:
+    order: tuple[int, int, int]
+    text: str
+
+
+def diff_models(a: Element, b: Element, resolved: bool = False) -> list[str]:
+    """The differences between two models (or subtrees), one line each; empty if none."""
+    pairs = _align(a, b)
+    order_a = {e: i for i, e in enumerate(iter_written(a))}
+    order_b = {e: i for i, e in enumerate(iter_written(b))}
+    back = {y: x for x, y in pairs.items()}
+    lines: list[_Line] = []
+    values = _resolved_texts if resolved else _stored_texts
+    anchor = 0  # removed elements are listed after what precedes them in A
+    for x, position in order_a.items():
+        if x in pairs:
+            anchor = order_b[pairs[x]]
+            continue
+        parent = x.parent
+        if parent is not None and parent not in pairs:
+            continue  # inside a removed element: that one is reported
+        lines.append(_Line((anchor, 1, position), f"- {x.path}: {_start_tag(x)}  [{where(x)}]"))
+    for y, position in order_b.items():
+        counterpart = back.get(y)
+        if counterpart is None:
+            parent = y.parent
+            if parent is None or parent in back:
+                lines.append(_Line((position, 0, 0), f"+ {y.path}: {_start_tag(y)}  "
+                                                     f"[{where(y)}]"))
+            continue
+        x = counterpart
+        places = f"  [{where(x)}, {where(y)}]"
+        for name, (before, after) in _changes(values(x), values(y)).items():
+            lines.append(_Line((position, 0, 0), f"~ {y.path}: {name} {_shown_value(before)} "
+                                                 f"-> {_shown_value(after)}{places}"))
+        if x.parent is not None and y.parent is not None and pairs.get(x.parent) is not y.parent:
+            lines.append(_Line((position, 0, 0), f"> {y.path}: moved from {x.parent.path} to "
+                                                 f"{y.parent.path}{places}"))
+        for tag in _reordered(x, y, pairs):
+            lines.append(_Line((position, 0, 0), f"^ {y.path}: order of <{tag}> children "
+                                                 f"changed{places}"))
+    lines.sort(key=lambda line: line.order)
+    return [line.text for line in lines]
+
+
+# ---------------------------------------------------------------------------- alignment
+
+
+def _align(a: Element, b: Element) -> dict[Element, Element]:
+    """Each element of ``a`` paired with its counterpart in ``b``: by tag and name, and
+    unnamed ones by their place among the same tag's unnamed children of paired parents."""
+    pairs: dict[Element, Element] = {a: b}
+    named_b = {key: y for y in iter_written(b) if (key := _name_key(y)) is not None}
+    for x in iter_written(a):
+        key = _name_key(x)
+        if key is not None and key in named_b and x is not a:
+            pairs[x] = named_b[key]
+    taken = set(pairs.values())
+    for x in iter_written(a):  # parents come first: their children are paired by then
+        y = pairs.get(x)
+        if y is None:
+            continue
+        for tag, group_a in _unnamed_children(x, pairs).items():
+            group_b = [c for c in _unnamed_children(y, {}).get(tag, []) if c not in taken]
+            for first, second in _matched(group_a, group_b):
+                pairs[first] = second
+                taken.add(second)
+    return pairs
+
+
+def _name_key(element: Element) -> tuple[str, str] | None:
+    name = _tree.element_name(element)
+    return None if name is None else (element.spec.tag, name)
+
+
+def _unnamed_children(element: Element, pairs: dict[Element, Element]) -> dict[str, list[Element]]:
+    groups: dict[str, list[Element]] = {}
+    for child in written_children(element):
+        if child not in pairs and _tree.element_name(child) is None:
+            groups.setdefault(child.spec.tag, []).append(child)
+    return groups
+
+
+def _matched(group_a: list[Element], group_b: list[Element]) -> Iterable[tuple[Element, Element]]:
+    """Pairs of two sequences of elements of one tag: equal runs, and changed elements where
+    one sequence has as many in a place as the other (the rest were inserted or deleted)."""
+    signature: Callable[[Element], tuple[tuple[str, str | None], ...]] = (
+        lambda e: tuple(_stored_texts(e).items()))
+    matcher = difflib.SequenceMatcher(None, [signature(e) for e in group_a],
+                                      [signature(e) for e in group_b], autojunk=False)
+    for op, i1, i2, j1, j2 in matcher.get_opcodes():
+        if op in ("equal", "replace"):
+            yield from zip(group_a[i1:i2], group_b[j1:j2], strict=False)
+
+
+def _reordered(x: Element, y: Element, pairs: dict[Element, Element]) -> list[str]:
+    """The tags whose children kept under the same parent are in another order."""
+    tags: list[str] = []
+    mine: dict[str, list[Element]] = {}
+    for child in written_children(x):
+        counterpart = pairs.get(child)
+        if counterpart is not None and counterpart.parent is y:
+            mine.setdefault(child.spec.tag, []).append(counterpart)
+    for tag, wanted in mine.items():
+        kept = set(wanted)
+        theirs = [c for c in written_children(y) if c in kept]
+        if theirs != wanted:
+            tags.append(tag)
+    return tags
+
+
+# ---------------------------------------------------------------------------- values
+
+
+def _stored_texts(element: Element) -> dict[str, str | None]:
+    """The attributes set on ``element``, as canonical text."""
+    spec = element.spec
+    return {name: stored_text(element, spec.by_name[name])
+            for name in sorted(_tree.values(element), key=spec.order.__getitem__)}
+
+
+def _resolved_texts(element: Element) -> dict[str, str | None]:
+    """Every attribute as MuJoCo will use it (defaults applied), as canonical text."""
+    texts: dict[str, str | None] = {}
+    for attribute in element.spec.attributes:
+        try:
+            value = resolve(element, attribute.name)
+        except MjcfError:  # a class that is not defined: compare what is set
+            value = _tree.read_value(element, attribute)
+        texts[attribute.name] = value_text(attribute, value)
+    return texts
+
+
+def _changes(before: dict[str, str | None],
+             after: dict[str, str | None]) -> dict[str, tuple[str | None, str | None]]:
+    names = list(before) + [name for name in after if name not in before]
+    return {name: (before.get(name), after.get(name)) for name in names
+            if before.get(name) != after.get(name)}
+
+
+def _shown_value(text: str | None) -> str:
+    return "(unset)" if text is None else f'"{text}"'
+
+
+def _start_tag(element: Element) -> str:
+    """``<tag a="..." ...>`` with canonical values (shortened), and how much is inside."""
+    attributes = "".join(f' {name}="{text}"' for name, text in _stored_texts(element).items()
+                         if text is not None)
+    tag = f"<{element.spec.tag}{attributes}"
+    if len(tag) > _TAG_WIDTH:
+        tag = tag[: _TAG_WIDTH - 3] + "..."
+    inside = sum(1 for _ in iter_written(element)) - 1
+    return tag + ("/>" if not inside else f"> ({inside} element{'s' if inside > 1 else ''} "
+                                          "inside)")

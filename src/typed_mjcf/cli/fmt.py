@@ -1,0 +1,360 @@
+"""``typed-mjcf fmt``: rewrite MJCF files in the canonical form, keeping what a person wrote.
+
+The canonical form is what typed-mjcf's exporter writes with ``canonical=True`` (attributes in
+grammar order, numbers in the shortest text that reads back exactly, keywords in their grammar
+spelling, two spaces of indentation, no empty attributes or empty once-only sections), with
+the file's own structure kept: elements stay where they are (repeated sections are not
+merged), comments, processing instructions and stray text (MuJoCo ignores text) stay in place,
+and ``<include>`` elements stay ``<include>`` elements. A model's included files are formatted
+with it, each in the context it is included in.
+"""
+
+from __future__ import annotations
+
+import argparse
+import difflib
+import os
+import re
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
+
+from lxml import etree
+
+from typed_mjcf import _tree
+from typed_mjcf._codecs import Rejected
+from typed_mjcf._grammar import ElementSpec
+from typed_mjcf._parse import INCLUDE, root_class
+from typed_mjcf._xmltext import escape, indent
+from typed_mjcf.cli._common import (
+    BAD_INPUT,
+    FOUND,
+    OK,
+    BadInput,
+    Progress,
+    error,
+    load,
+    location,
+    shown,
+)
+from typed_mjcf.cli._values import canonical_text
+from typed_mjcf.types import XmlElement
+
+NAME = "fmt"
+HELP = "rewrite MJCF files in the canonical form (comments and includes kept)"
+DESCRIPTION = """\
+Rewrite MJCF files in the canonical form: attributes in MuJoCo's grammar order, numbers in
+the shortest form that reads back exactly ("0.10" -> "0.1", "1.0" -> "1"), keywords in their
+grammar spelling, two-space indentation; empty attributes and empty once-only sections
+(<compiler/>) are dropped. Everything else is kept as written: element order, repeated
+sections, comments, <include> elements, and text inside elements (MJCF has none and MuJoCo
+ignores it, but fmt does not drop it). The files a model includes are formatted too, each in
+the place it is included. The result compiles to the same model, and formatting it again
+changes nothing.
+
+exit status: 0 formatted (or nothing to change), 1 with --check: some file would change,
+2 a file cannot be read as MJCF (other files are still formatted)."""
+
+_DECLARATION = re.compile(rb"<\?xml\s")
+_PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                          remove_comments=False, remove_pis=False, huge_tree=True)
+
+
+def arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the command's arguments."""
+    parser.add_argument("files", nargs="+", metavar="MODEL.xml", help="the models to format")
+    parser.add_argument("--check", action="store_true",
+                        help="write nothing; list the files that would change (exit 1 if any)")
+    parser.add_argument("--diff", action="store_true",
+                        help="write nothing; show the changes as a unified diff")
+    parser.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
+                        help="show progress on stderr (default: for several files, on a "
+                             "terminal)")
+    parser.set_defaults(run=run)
+
+
+@dataclass
+class Formatted:
+    """One file: its path, its text now, and its canonical text."""
+
+    path: str
+    before: bytes
+    after: str
+
+    @property
+    def changed(self) -> bool:
+        return self.before != self.after.encode("utf-8")
+
+
+def run(args: argparse.Namespace) -> int:
+    files: list[str] = args.files
+    write = not (args.check or args.diff)
+    status = OK
+    seen: set[str] = set()
+    changed = unchanged = 0
+    progress = Progress(len(files), args.progress)
+    for file in progress.each(files, "formatting"):
+        try:
+            results = format_model(file, seen)
+            for result in results:
+                if result.changed and write:
+                    _replace(result.path, result.after)
+        except BadInput as problem:
+            progress.clear()
+            error("fmt", str(problem))
+            status = BAD_INPUT
+            continue
+        except OSError as problem:
+            progress.clear()
+            error("fmt", f"{shown(problem.filename)}: cannot write: {problem.strerror}")
+            status = BAD_INPUT
+            continue
+        for result in results:
+            if not result.changed:
+                unchanged += 1
+                continue
+            changed += 1
+            progress.clear()
+            if args.diff:
+                sys.stdout.write(unified_diff(result))
+            if args.check:
+                print(f"would reformat {shown(result.path)}")
+            elif write:
+                print(f"reformatted {shown(result.path)}")
+    if args.check and changed and status == OK:
+        status = FOUND
+    verb = "would be reformatted" if not write else "reformatted"
+    summary = f"{_files(changed)} {verb}, {_files(unchanged)} already formatted"
+    print(summary, file=sys.stderr if args.diff else sys.stdout)
+    return status
+
+
+def _files(n: int) -> str:
+    return f"{n} file" if n == 1 else f"{n} files"
+
+
+def unified_diff(result: Formatted) -> str:
+    before = result.before.decode("utf-8", "replace").splitlines(keepends=True)
+    after = result.after.splitlines(keepends=True)
+    name = shown(result.path)
+    lines = difflib.unified_diff(before, after, f"{name} (before)", f"{name} (formatted)")
+    return "".join(line if line.endswith("\n") else line + "\n" for line in lines)
+
+
+def _replace(path: str, text: str) -> None:
+    """Write ``text`` over ``path`` atomically, keeping the file's permissions."""
+    folder = os.path.dirname(os.path.abspath(path))
+    handle, temporary = tempfile.mkstemp(prefix=".fmt-", suffix=".xml", dir=folder)
+    try:
+        with os.fdopen(handle, "wb") as f:
+            f.write(text.encode("utf-8"))
+        shutil.copymode(path, temporary)
+        os.replace(temporary, path)
+    except BaseException:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+        raise
+
+
+# ---------------------------------------------------------------------------- formatting
+
+
+def format_model(path: str, seen: set[str] | None = None) -> list[Formatted]:
+    """The canonical text of a model's file and of every file it includes (each once, also
+    across calls sharing ``seen``); raises :class:`BadInput` if one cannot be read."""
+    model = load(path)
+    seen = set() if seen is None else seen
+    sources = _tree.source_map(model)
+    assert sources is not None
+    main = os.path.abspath(path)
+    # each file, and the row whose children its top-level elements are
+    files: list[tuple[str, ElementSpec | None]] = [(main, None)]
+    files += [(included, parent.spec) for included, (_, parent) in sources.includes.items()]
+    results: list[Formatted] = []
+    for file, context in files:
+        if file in seen:
+            continue
+        seen.add(file)
+        results.append(format_file(file, context))
+    return results
+
+
+def format_file(path: str, context: ElementSpec | None = None) -> Formatted:
+    """The canonical text of one file; ``context`` is the row its top-level elements belong
+    to when it is included (its root ``<mujoco>`` then stands for the including element)."""
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as problem:  # pragma: no cover - the model was read already
+        raise BadInput(f"{shown(path)}: cannot read the file: {problem.strerror}") from None
+    try:
+        tree = etree.fromstring(data, _PARSER).getroottree()
+    except etree.XMLSyntaxError as problem:  # pragma: no cover - the model was read already
+        raise BadInput(f"{location(path, problem.lineno)}: malformed XML: {problem.msg}") from None
+    declared = _DECLARATION.match(data.removeprefix(b"\xef\xbb\xbf").lstrip()) is not None
+    return Formatted(path, data, _Printer(path, context).document(tree, declared))
+
+
+class _Printer:
+    """Writes one file's tree in the canonical form."""
+
+    def __init__(self, path: str, context: ElementSpec | None) -> None:
+        self.path = path
+        self.context = context
+
+    def document(self, tree: etree._ElementTree,  # pyright: ignore[reportPrivateUsage]
+                 declared: bool) -> str:
+        """The file's text; ``declared``: it starts with an XML declaration."""
+        root = tree.getroot()
+        info = tree.docinfo
+        head: list[str] = []
+        if declared:
+            head.append(f'<?xml version="{info.xml_version}" encoding="utf-8"?>')
+        subset = info.internalDTD
+        if subset is not None and (any(True for _ in subset.iterelements())
+                                   or any(True for _ in subset.iterentities())):
+            raise BadInput(f"{shown(self.path)}: the DOCTYPE declares an internal subset, which "
+                           f"fmt would not keep; remove it (MJCF does not use DTDs)")
+        if info.doctype:
+            head.append(info.doctype)
+        before = list(root.itersiblings(preceding=True))
+        for node in reversed(before):
+            head.append(_other(node))
+        body = self.element(root, root_class().spec, 0, included_root=self.context is not None)
+        tail = [_other(node) for node in root.itersiblings()]
+        return "".join(f"{line}\n" for line in [*head, *body, *tail])
+
+    def element(self, node: XmlElement, spec: ElementSpec, depth: int,
+                included_root: bool = False) -> list[str]:
+        """The lines of ``node`` (a ``spec`` element) and its subtree; iterative, since
+        models can nest deeper than Python recurses."""
+        out: list[str] = []
+        # (node, its row, depth, whether it is the included file's root): an element to open,
+        # or a line to write as it is
+        stack: list[tuple[XmlElement, ElementSpec, int, bool] | str] = [
+            (node, spec, depth, included_root)]
+        while stack:
+            item = stack.pop()
+            if isinstance(item, str):
+                out.append(item)
+                continue
+            current, row, level, is_included_root = item
+            spaces = indent(level)
+            tag = _tag(current)
+            start = f"<{tag}{self.attributes(current, row, is_included_root)}"
+            children_row = self.context if is_included_root and self.context else row
+            inside = _inside(current)
+            kept = _blank_lines([child for child in inside if isinstance(child, str)
+                                 or not self.is_empty(child, children_row)])
+            if not kept:
+                out.append(f"{spaces}{start}/>")
+                continue
+            out.append(f"{spaces}{start}>")
+            stack.append(f"{spaces}</{tag}>")
+            inner = indent(level + 1)
+            for child in reversed(kept):
+                if child is _BLANK:
+                    stack.append("")
+                elif isinstance(child, str):
+                    stack.append(f"{inner}{_text(child)}")
+                elif not isinstance(child.tag, str) or child.tag == INCLUDE:
+                    stack.append(f"{inner}{_other(child)}")
+                else:
+                    stack.append((child, _child_row(children_row, child.tag), level + 1, False))
+        return out
+
+    def attributes(self, node: XmlElement, row: ElementSpec, verbatim: bool) -> str:
+        """`` name="value"`` in grammar order, canonical values (an included file's root:
+        as written, MuJoCo does not read them)."""
+        if verbatim:
+            return "".join(f' {key}="{escape(str(value))}"' for key, value in node.attrib.items())
+        texts: list[tuple[int, str, str]] = []
+        for key, value in node.attrib.items():
+            attribute = row.by_name[str(key)]
+            try:
+                text = canonical_text(attribute, str(value))
+            except Rejected:  # pragma: no cover - the model was read already
+                raise BadInput(f"{location(self.path, node.sourceline)}: invalid "
+                               f"{attribute.name}={str(value)!r}") from None
+            if text is not None:
+                texts.append((attribute.index, attribute.name, text))
+        texts.sort()
+        return "".join(f' {name}="{escape(text)}"' for _, name, text in texts)
+
+    def is_empty(self, node: XmlElement, parent_row: ElementSpec) -> bool:
+        """A once-only section with nothing to say (what the exporter leaves out too)."""
+        if not isinstance(node.tag, str) or node.tag == INCLUDE:
+            return False
+        child = parent_row.children[node.tag]
+        if not child.single or any(value for value in node.attrib.values()):
+            return False
+        row = _child_row(parent_row, node.tag)
+        return all(inner is _BLANK or (not isinstance(inner, str) and self.is_empty(inner, row))
+                   for inner in _inside(node))
+
+def _child_row(row: ElementSpec, tag: str) -> ElementSpec:
+    return _tree.element_class(row.children[tag].class_name).spec
+
+
+_BLANK = "\n"  # a blank line the author left between two things (kept, one at most)
+
+
+def _inside(node: XmlElement) -> list[XmlElement | str]:
+    """What is inside an element, in order: child nodes, text that is not whitespace, and
+    :data:`_BLANK` where whitespace holds an empty line."""
+    inside: list[XmlElement | str] = []
+    _add_text(inside, node.text)
+    for child in node:
+        inside.append(child)
+        _add_text(inside, child.tail)
+    return inside
+
+
+def _add_text(inside: list[XmlElement | str], text: str | None) -> None:
+    if not text:
+        return
+    content = text.strip()
+    if not content:
+        if text.count("\n") >= 2:
+            inside.append(_BLANK)
+        return
+    before, _, after = text.partition(content)
+    if before.count("\n") >= 2:
+        inside.append(_BLANK)
+    inside.append(content)
+    if after.count("\n") >= 2:
+        inside.append(_BLANK)
+
+
+def _blank_lines(items: list[XmlElement | str]) -> list[XmlElement | str]:
+    """At most one blank line in a row, none first or last."""
+    kept: list[XmlElement | str] = []
+    for item in items:
+        if item is _BLANK and (not kept or kept[-1] is _BLANK):
+            continue
+        kept.append(item)
+    while kept and kept[-1] is _BLANK:
+        kept.pop()
+    return kept
+
+
+def _text(text: str) -> str:
+    """Text inside an element (MuJoCo ignores it), escaped, as written otherwise."""
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def _other(node: XmlElement) -> str:
+    """A comment, processing instruction or ``<include>``, as written (on a line of its own)."""
+    if isinstance(node, etree._Comment):  # pyright: ignore[reportPrivateUsage]
+        return f"<!--{node.text or ''}-->"
+    if isinstance(node, etree._ProcessingInstruction):  # pyright: ignore[reportPrivateUsage]
+        return f"<?{node.target} {node.text or ''}?>" if node.text else f"<?{node.target}?>"
+    attributes = "".join(f' {key}="{escape(str(value))}"' for key, value in node.attrib.items())
+    return f"<{_tag(node)}{attributes}/>"
+
+
+def _tag(node: XmlElement) -> str:
+    tag: object = node.tag  # an element's tag is text (lxml's types allow bytes and more)
+    assert isinstance(tag, str)
+    return tag

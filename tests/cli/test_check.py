@@ -1,0 +1,126 @@
+"""``typed-mjcf check``: every finding at the file and line of its element, as text or JSON,
+with exit codes CI can use."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import pytest
+
+from typed_mjcf.cli import main
+from typed_mjcf.cli._common import Progress
+
+MODEL = """\
+<mujoco>
+  <include file="parts.xml"/>
+  <default>
+    <default class="unused"><geom size="1"/></default>
+  </default>
+  <worldbody>
+    <geom size="1" material="rde"/>
+    <body name="b">
+      <joint name="j"/>
+      <geom size="1"/>
+    </body>
+  </worldbody>
+  <asset><material name="red"/></asset>
+</mujoco>
+"""
+PARTS = """\
+<mujoco>
+  <actuator>
+
+    <motor joint="jj"/>
+  </actuator>
+</mujoco>
+"""
+
+
+@pytest.fixture(autouse=True)
+def _in_tmp_path(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)  # files are shown relative to the current folder
+
+
+def _model(text: str = MODEL) -> str:
+    Path("parts.xml").write_text(PARTS, encoding="utf-8")
+    Path("m.xml").write_text(text, encoding="utf-8")
+    return "m.xml"
+
+
+def test_findings_point_into_the_files(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check", _model()]) == 1
+    assert capsys.readouterr().out.splitlines() == [
+        ("m.xml:4: unused-default (warning): default/default[unused]: default class 'unused' is "
+         "defined but no element uses it (class= or childclass=)"),
+        ("m.xml:7: unresolved-reference: worldbody/geom[0]: material='rde' names no material in "
+         "the model (did you mean 'red'?)"),
+        ("parts.xml:4: unresolved-reference: actuator/motor[0]: joint='jj' names no joint in the "
+         "model (did you mean 'j'?) (in the model m.xml reads)"),
+        "checked 1 file: 2 errors, 1 warning",
+    ]
+
+
+def test_warnings_alone_pass_unless_strict(capsys: pytest.CaptureFixture[str]) -> None:
+    model = _model(MODEL.replace('material="rde"', 'material="red"').replace(
+        '<include file="parts.xml"/>', ""))
+    assert main(["check", model]) == 0
+    assert capsys.readouterr().out.endswith("checked 1 file: 0 errors, 1 warning\n")
+    assert main(["check", "--strict", model]) == 1
+
+
+def test_json(capsys: pytest.CaptureFixture[str]) -> None:
+    Path("broken.xml").write_text("<mujoco><worldbody><geom sise='1'/></worldbody></mujoco>",
+                                  encoding="utf-8")
+    assert main(["check", "--format", "json", _model(), "broken.xml"]) == 2
+    document = json.loads(capsys.readouterr().out)
+    assert document["summary"] == {"files": 2, "errors": 2, "warnings": 1, "unreadable": 1}
+    assert document["findings"][1] == {
+        "file": "m.xml", "line": 7, "rule": "unresolved-reference", "severity": "error",
+        "path": "worldbody/geom[0]",
+        "message": "material='rde' names no material in the model (did you mean 'red'?)"}
+    assert document["unreadable"] == [
+        "broken.xml:1: <geom> has no attribute 'sise' (did you mean 'size'?)"]
+
+
+def test_compile_reports_mujocos_error_at_the_element(capsys: pytest.CaptureFixture[str]) -> None:
+    model = _model("<mujoco>\n<worldbody>\n<body name='b'>\n<joint/>\n</body>\n</worldbody>\n"
+                   "</mujoco>\n")
+    assert main(["check", model]) == 0
+    capsys.readouterr()
+    assert main(["check", "--compile", model]) == 1
+    assert capsys.readouterr().out.splitlines() == [
+        ("m.xml:3: compile: worldbody/body[b]: MuJoCo: mass and inertia of moving bodies must be "
+         "larger than mjMINVAL"),
+        "checked 1 file: 1 error, 0 warnings"]
+
+
+def test_compile_reports_a_missing_file_at_its_element(capsys: pytest.CaptureFixture[str]) -> None:
+    model = _model("<mujoco>\n<asset>\n<mesh name='m' file='gone.stl'/>\n</asset>\n</mujoco>\n")
+    assert main(["check", "--compile", model]) == 1
+    first = capsys.readouterr().out.splitlines()[0]
+    assert first.startswith("m.xml:3: compile: asset/mesh[m]: file='gone.stl': cannot read ")
+
+
+def test_several_files_and_progress(capsys: pytest.CaptureFixture[str]) -> None:
+    model = _model()
+    assert main(["check", "--progress", model, model]) == 1
+    captured = capsys.readouterr()
+    assert captured.out.endswith("checked 2 files: 4 errors, 2 warnings\n")
+    assert "\r\x1b[K[1/2] checking m.xml" in captured.err
+    assert "\r\x1b[K[2/2] checking m.xml" in captured.err
+    assert captured.err.endswith("\r\x1b[K")  # the line is cleared at the end
+    assert main(["check", model, model]) == 1
+    assert capsys.readouterr().err == ""  # not a terminal: no progress unless asked
+
+
+def test_progress_shows_only_on_a_terminal_for_several_files() -> None:
+    class Terminal(io.StringIO):
+        def isatty(self) -> bool:
+            return True
+
+    assert Progress(2, stream=Terminal()).enabled
+    assert not Progress(1, stream=Terminal()).enabled
+    assert not Progress(2, stream=io.StringIO()).enabled
+    assert Progress(1, enabled=True, stream=io.StringIO()).enabled

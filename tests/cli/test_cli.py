@@ -1,0 +1,99 @@
+"""The ``typed-mjcf`` command: entry points, help, and bad input (a missing file, XML that is
+not MJCF, malformed XML, a schema error) as one line naming file and line, exit code 2, no
+traceback, for every command."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from typed_mjcf.cli import main
+
+ROOT = Path(__file__).resolve().parents[2]
+
+BAD = {
+    "missing.xml": None,  # not written: the file does not exist
+    "not_mjcf.xml": "<robot name='r'>\n  <link name='base'/>\n</robot>\n",
+    "malformed.xml": "<mujoco>\n  <worldbody>\n    <geom size='1'>\n  </worldbody>\n</mujoco>\n",
+    "schema.xml": "<mujoco>\n  <worldbody>\n    <geom sise='1'/>\n  </worldbody>\n</mujoco>\n",
+}
+EXPECTED = {
+    "missing.xml": "missing.xml: cannot read the file: No such file or directory",
+    "not_mjcf.xml": "not_mjcf.xml:1: the root element is <robot>, expected <mujoco>",
+    "malformed.xml": "malformed.xml:4: malformed XML: Opening and ending tag mismatch: geom line 3 "
+                     "and worldbody, line 4, column 15",
+    "schema.xml": "schema.xml:3: <geom> has no attribute 'sise' (did you mean 'size'?)",
+}
+GOOD = "<mujoco>\n  <worldbody>\n    <geom size='1'/>\n  </worldbody>\n</mujoco>\n"
+
+
+@pytest.fixture(autouse=True)
+def _files(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    for name, text in BAD.items():
+        if text is not None:
+            Path(name).write_text(text, encoding="utf-8")
+    Path("good.xml").write_text(GOOD, encoding="utf-8")
+
+
+def _commands(name: str) -> list[list[str]]:
+    return [["to-python", name], ["check", name], ["check", "--compile", name], ["fmt", name],
+            ["fmt", "--check", name], ["diff", name, "good.xml"], ["diff", "good.xml", name]]
+
+
+@pytest.mark.parametrize("name", list(BAD))
+def test_bad_input_is_one_line_and_exit_2(name: str, capsys: pytest.CaptureFixture[str]) -> None:
+    for command in _commands(name):
+        assert main(command) == 2, command
+        err = capsys.readouterr().err
+        assert err == f"typed-mjcf {command[0]}: {EXPECTED[name]}\n", command
+
+
+def test_other_files_are_still_processed(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check", "schema.xml", "good.xml"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "checked 2 files: 0 errors, 0 warnings, 1 file not readable\n"
+    assert main(["fmt", "schema.xml", "good.xml"]) == 2
+    assert capsys.readouterr().out.splitlines() == [
+        "reformatted good.xml", "1 file reformatted, 0 files already formatted"]
+    assert Path("schema.xml").read_text(encoding="utf-8") == BAD["schema.xml"]
+
+
+def test_no_traceback_from_the_command_line() -> None:
+    """The real process: ``python -m typed_mjcf`` prints the one line and exits 2."""
+    result = subprocess.run([sys.executable, "-m", "typed_mjcf", "check", "schema.xml"],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 2
+    assert result.stderr == f"typed-mjcf check: {EXPECTED['schema.xml']}\n"
+    assert "Traceback" not in result.stdout + result.stderr
+
+
+def test_help_names_every_command_and_the_exit_codes(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as exit_info:
+        main(["--help"])
+    assert exit_info.value.code == 0
+    text = capsys.readouterr().out
+    for command in ("to-python", "check", "fmt", "diff"):
+        assert f"typed-mjcf {command}" in text
+    assert "exit status: 0 ok; 1 findings" in text
+    for command in ("to-python", "check", "fmt", "diff"):
+        with pytest.raises(SystemExit):
+            main([command, "--help"])
+        assert "exit status:" in capsys.readouterr().out
+
+
+def test_usage_errors_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
+    for argv in ([], ["lint", "good.xml"], ["check"], ["diff", "good.xml"]):
+        with pytest.raises(SystemExit) as exit_info:
+            main(argv)
+        assert exit_info.value.code == 2
+        assert "usage: typed-mjcf" in capsys.readouterr().err
+
+
+def test_the_console_script_is_declared() -> None:
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    assert project["project"]["scripts"]["typed-mjcf"] == "typed_mjcf.cli:main"
