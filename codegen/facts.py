@@ -160,11 +160,14 @@ def _overrides(value: object, where: str) -> list[AttributeOverride]:
 
 _LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "inertia",
                      "sensor_section", "mocap", "childclass", "dclass", "model_name",
-                     "replicate_separator")
+                     "replicate_separator", "replicate_count", "replicate_copy")
 _LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",
                             "named_after_file", "named_from_contents", "typed_references",
-                            "type_namespaces", "keyframe", "attach"})
+                            "type_namespaces", "keyframe", "attach", "copied_with_replicate",
+                            "flexcomp"})
 _ATTACH_KEYS = ("tag", "model", "prefix", "references")
+_FLEXCOMP_STRINGS = ("tag", "namespace", "dof", "rigid", "vertex_body", "node_body")
+_FLEXCOMP_KEYS = frozenset({*_FLEXCOMP_STRINGS, "nodes"})
 
 
 @dataclasses.dataclass(frozen=True)
@@ -198,16 +201,34 @@ def _language(value: object, where: str) -> _LanguageTable:
                                       f"{where} named_from_contents"),
         type_namespaces=_strings(table["type_namespaces"], f"{where} type_namespaces"),
         keyframe=_strings(table["keyframe"], f"{where} keyframe"),
+        copied_with_replicate=_str_list(table["copied_with_replicate"],
+                                        f"{where} copied_with_replicate"),
         attach=ir.AttachDef(
             tag=_str(attach["tag"], f"{where} attach tag"),
             model=_str(attach["model"], f"{where} attach model"),
             prefix=_str(attach["prefix"], f"{where} attach prefix"),
             references=_str_list(attach["references"], f"{where} attach references")),
+        flexcomp=_flexcomp(table["flexcomp"], f"{where} flexcomp"),
     )
     return _LanguageTable(
         language=language,
         typed_references=_strings(table["typed_references"], f"{where} typed_references"),
     )
+
+
+def _flexcomp(value: object, where: str) -> ir.FlexcompDef:
+    """``[language.flexcomp]``: the bodies a ``<flexcomp>`` makes and how they are named."""
+    table = _table(value, where)
+    extra = sorted(set(table) ^ _FLEXCOMP_KEYS)
+    if extra:
+        raise FactsError(f"{where}: unknown or missing key {extra[0]!r}")
+    nodes: dict[str, int] = {}
+    for dof, count in _table(table["nodes"], f"{where} nodes").items():
+        if not isinstance(count, int) or isinstance(count, bool) or count < 1:
+            raise FactsError(f"{where} nodes {dof}: expected a positive integer, got {count!r}")
+        nodes[dof] = count
+    strings = {key: _str(table[key], f"{where} {key}") for key in _FLEXCOMP_STRINGS}
+    return ir.FlexcompDef(**strings, nodes=nodes)
 
 
 # ------------------------------------------------------------------------------- values

@@ -13,7 +13,7 @@ from typing import Literal, TypeAlias, TypedDict, get_args
 
 from typed_mjcf import types as _t
 from typed_mjcf._base import Attachable, Element, ModelRoot
-from typed_mjcf._grammar import AttachFacts, GrammarFacts, KeyframeFacts
+from typed_mjcf._grammar import AttachFacts, FlexcompFacts, GrammarFacts, KeyframeFacts
 from typed_mjcf._grammar import AttributeSpec as A
 from typed_mjcf._grammar import ChildSpec as C
 from typed_mjcf._grammar import ElementSpec as S
@@ -4693,8 +4693,12 @@ finish_grammar(GrammarFacts(
     named_after_file={'hfield': 'file', 'mesh': 'file', 'skin': 'file', 'texture': 'file'},
     named_from_contents=frozenset(['model']),
     replicate_separator='sep',
+    replicate_count='count',
+    replicate_copy='{name}{sep}{index}',
+    copied_with_replicate=frozenset(['actuator', 'sensor']),
     keyframe=KeyframeFacts(**{'act': 'act', 'ctrl': 'ctrl', 'mpos': 'mpos', 'mquat': 'mquat', 'qpos': 'qpos', 'qvel': 'qvel', 'time': 'time'}),
     attach=AttachFacts('attach', 'model', 'prefix', ('body', 'frame')),
+    flexcomp=FlexcompFacts('flexcomp', 'body', 'dof', 'rigid', '{name}_{vertex}', '{name}_{i}_{j}_{k}', {'quadratic': 3, 'trilinear': 2}),
 ))
 
 Integers2: TypeAlias = tuple[_t.Integer, _t.Integer] | _t.NumberList[_t.Integer] | _t.IntArrayLike

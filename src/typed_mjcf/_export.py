@@ -269,7 +269,8 @@ class Writer:
                 parent_node.children.append(self.chunk(current))
                 continue
             spec = current.spec
-            attrib = self.attributes(current) if _tree.values(current) else {}
+            named = _tree.values(current) or id(current) in self.given_names
+            attrib = self.attributes(current) if named else {}
             node = Node(spec.tag, attrib)
             if first is None:
                 first = node
@@ -324,6 +325,7 @@ class Writer:
         stack: list[tuple[Element | str, int]] = [(element, depth)]
         pop, push = stack.pop, stack.append
         attribute_text = self.attribute_text
+        given_names = self.given_names
         while stack:
             current, level = pop()
             if isinstance(current, str):
@@ -331,7 +333,9 @@ class Writer:
                 continue
             tag = current.spec.tag
             stored = _tree.values(current)
-            attrs = attribute_text(current, stored) if stored else ""
+            # (an element without attributes may still get a name from this export)
+            named = stored or (given_names and id(current) in given_names)
+            attrs = attribute_text(current, stored) if named else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
             spaces = indent_of(level)

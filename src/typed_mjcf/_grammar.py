@@ -295,6 +295,21 @@ class AttachFacts:
 
 
 @dataclass(frozen=True)
+class FlexcompFacts:
+    """``<flexcomp>``: the bodies MuJoCo's compiler makes for it, named after it by a
+    template: ``{name}`` the flexcomp's name, ``{vertex}`` a vertex's index, ``{i}``,
+    ``{j}``, ``{k}`` a grid node's indices along each axis."""
+
+    tag: str
+    namespace: str  # of the bodies it makes
+    dof: str  # the attribute choosing vertex bodies or grid-node bodies
+    rigid: str  # the attribute that, true, makes no bodies
+    vertex_body: str
+    node_body: str
+    nodes: Mapping[str, int]  # dof keyword -> grid nodes per axis (the dofs with node bodies)
+
+
+@dataclass(frozen=True)
 class GrammarFacts:
     """Facts about the language as a whole, from ``schema/facts.toml``."""
 
@@ -315,4 +330,9 @@ class GrammarFacts:
     named_from_contents: frozenset[str] = frozenset()  # namespaces named by the file they read
     attach: AttachFacts | None = None
     replicate_separator: str = "sep"  # <replicate>'s attribute suffixing copies' names
+    replicate_count: str = "count"  # <replicate>'s attribute counting its copies
+    # a copy's name: {name} the original's, {sep} the separator, {index} the copy's index
+    replicate_copy: str = "{name}{sep}{index}"
+    copied_with_replicate: frozenset[str] = frozenset()  # root sections copied with targets
+    flexcomp: FlexcompFacts | None = None
     keyframe: KeyframeFacts = KeyframeFacts()

@@ -37,8 +37,8 @@ def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: b
                 layout = Writer(element, DEFAULT_FORMAT, collected.name_of,
                                 collected.directory_attributes)
                 layout_xml = serialize(layout.model(element), pretty_print=False)
-            else:
-                layout_xml = serialize(node, pretty_print=False)
+            else:  # written as the text is, so MuJoCo's errors give the text's lines
+                layout_xml = serialize(node, pretty_print)
             combine_keyframes(writer, node, compile_layout(layout_xml, collected.files))
         return serialize(node, pretty_print)
 
