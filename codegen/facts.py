@@ -164,7 +164,7 @@ _LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "
 _LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",
                             "named_after_file", "named_from_contents", "typed_references",
                             "type_namespaces", "keyframe", "attach", "copied_with_replicate",
-                            "flexcomp"})
+                            "name_lists", "flexcomp"})
 _ATTACH_KEYS = ("tag", "model", "prefix", "references")
 _FLEXCOMP_STRINGS = ("tag", "namespace", "dof", "rigid", "vertex_body", "node_body")
 _FLEXCOMP_KEYS = frozenset({*_FLEXCOMP_STRINGS, "nodes"})
@@ -203,6 +203,7 @@ def _language(value: object, where: str) -> _LanguageTable:
         keyframe=_strings(table["keyframe"], f"{where} keyframe"),
         copied_with_replicate=_str_list(table["copied_with_replicate"],
                                         f"{where} copied_with_replicate"),
+        name_lists=_strings(table["name_lists"], f"{where} name_lists"),
         attach=ir.AttachDef(
             tag=_str(attach["tag"], f"{where} attach tag"),
             model=_str(attach["model"], f"{where} attach model"),

@@ -151,6 +151,7 @@ class LanguageDef:
     replicate_count: str = "count"
     replicate_copy: str = "{name}{sep}{index}"  # name template of a copy: {name}, {sep}, {index}
     copied_with_replicate: list[str] = field(default_factory=lambda: [])  # root sections
+    name_lists: dict[str, str] = field(default_factory=lambda: {})  # tag@attribute -> namespace
     named_after_file: dict[str, str] = field(default_factory=lambda: {})
     named_from_contents: list[str] = field(default_factory=lambda: [])
     attach: AttachDef | None = None

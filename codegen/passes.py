@@ -300,16 +300,18 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
     """The facts naming what MuJoCo's compiler makes must name rows, attributes and keywords
     of the grammar: a MuJoCo release that renames one shows up here, not as wrong names."""
     language = schema.language
-    rows = {e.tag: e for e in schema.elements.values()}
+    rows: dict[str, list[ir.ElementDef]] = {}
+    for row in schema.elements.values():
+        rows.setdefault(row.tag, []).append(row)
     problems: list[str] = []
 
     def attribute(tag: str, name: str, kind: str) -> ir.AttributeDef | None:
-        row = rows.get(tag)
-        found = None if row is None else next(
-            (a for a in row.attributes if a.name == name), None)
-        if found is None or found.kind != kind:
+        """The attribute of that name and kind of a row of that tag (tags repeat: <flex> in
+        <deformable> and in <equality>)."""
+        found = next((a for row in rows.get(tag, []) for a in row.attributes
+                      if a.name == name and a.kind == kind), None)
+        if found is None:
             problems.append(f"language facts: <{tag}> has no {kind} attribute {name!r}")
-            return None
         return found
 
     if language.replicate in rows:  # (small test grammars have none)
@@ -317,6 +319,10 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
         attribute(language.replicate, language.replicate_separator, "string")
     problems += _template_problems("language replicate_copy", language.replicate_copy,
                                    {"name", "sep", "index"})
+    for key in language.name_lists:
+        tag, _, name = key.partition("@")
+        if tag in rows:
+            attribute(tag, name, "string")
     sections = {c.element for c in schema.elements[schema.root].children}
     problems += [f"language copied_with_replicate: no root section {section!r}"
                  for section in language.copied_with_replicate if section not in sections]
@@ -324,10 +330,10 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
     if flexcomp is not None and flexcomp.tag in rows:
         dof = attribute(flexcomp.tag, flexcomp.dof, "keyword")
         attribute(flexcomp.tag, flexcomp.rigid, "bool")
-        keywords = ({k for k, _ in schema.enums[dof.enum].values}
-                    if dof is not None and dof.enum in schema.enums else set[str]())
-        problems += [f"language flexcomp nodes: {k!r} is no keyword of <{flexcomp.tag}> "
-                     f"{flexcomp.dof}" for k in flexcomp.nodes if k not in keywords]
+        if dof is not None and dof.enum in schema.enums:
+            keywords = {k for k, _ in schema.enums[dof.enum].values}
+            problems += [f"language flexcomp nodes: {k!r} is no keyword of <{flexcomp.tag}> "
+                         f"{flexcomp.dof}" for k in flexcomp.nodes if k not in keywords]
         problems += _template_problems("language flexcomp vertex_body", flexcomp.vertex_body,
                                        {"name", "vertex"})
         problems += _template_problems("language flexcomp node_body", flexcomp.node_body,

@@ -188,6 +188,7 @@ def _facts(schema: ir.Schema) -> str:
         f"replicate_count={language.replicate_count!r}",
         f"replicate_copy={language.replicate_copy!r}",
         f"copied_with_replicate=frozenset({sorted(language.copied_with_replicate)!r})",
+        f"name_lists={dict(sorted(language.name_lists.items()))!r}",
         f"keyframe=KeyframeFacts(**{dict(sorted(language.keyframe.items()))!r})",
     ]
     if attach is not None:

@@ -137,7 +137,7 @@ def _flexcomp_bodies(element: Element, name: str, facts: GrammarFacts) -> list[P
     return _expand(flexcomp.node_body, {"name": [name], "i": node, "j": node, "k": node})
 
 
-def _file_stem(element: Element, attribute: str) -> str | None:
+def file_stem(element: Element, attribute: str) -> str | None:
     """The name MuJoCo gives an unnamed element that reads a file: the file's name without
     folder and extension (an in-memory asset: the name the asset writer gives it)."""
     spec = element.spec.by_name.get(attribute)
@@ -235,7 +235,7 @@ class CompiledNames:
         facts = self.facts
         file_attribute = facts.named_after_file.get(namespace)
         if file_attribute is not None:
-            stem = _file_stem(element, file_attribute)
+            stem = file_stem(element, file_attribute)
             if stem:
                 self._add(scope, namespace, Family(element, [stem]))
         elif namespace in facts.named_from_contents:
@@ -249,15 +249,37 @@ class CompiledNames:
                 and parent.spec.tag in self.facts.copied_with_replicate)
 
     def _target_chain(self, element: Element) -> Chain:
-        """The replicates copying what ``element`` refers to: it is copied with them."""
+        """The replicates copying what ``element`` or its children refer to (a tendon's
+        sites, a tuple's objects): it is copied with them."""
+        stack = [element]
+        while stack:
+            current = stack.pop()
+            for target in self._targets(current):
+                chain = self.chains.get(id(target))
+                if chain:
+                    return chain
+            stack.extend(_tree.children(current))
+        return ()
+
+    def _targets(self, element: Element) -> Iterator[Element]:
+        """What ``element`` refers to: its references' targets, and the elements named by
+        its attributes that list names (a <flex>'s bodies)."""
         stored = _tree.values(element)
         for attribute in element.spec.references:
             target = stored.get(attribute.name)
             if isinstance(target, Element):
-                chain = self.chains.get(id(target))
-                if chain:
-                    return chain
-        return ()
+                yield target
+        lists = self.facts.name_lists
+        if not lists:
+            return
+        scope = _tree.scope_of(element)
+        for name, value in stored.items():
+            namespace = lists.get(f"{element.spec.tag}@{name}")
+            if namespace is not None and isinstance(value, str):
+                for part in value.split():
+                    found = scope.find(namespace, part)
+                    if isinstance(found, Element):
+                        yield found
 
     # ---------------------------------------------------------------- looking up
 

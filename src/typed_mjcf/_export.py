@@ -23,6 +23,7 @@ from typing import cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
+from typed_mjcf._compiled_names import file_stem
 from typed_mjcf._files import absolute_file
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._names import NameScope
@@ -105,6 +106,8 @@ class Writer:
         self.keyframe_sections: list[tuple[ModelBase, Element]] = []
         # names this export gives unnamed elements that references link to
         self.given_names: dict[int, str] = _names_to_give(top, scope)
+        if self.composed:
+            self.given_names.update(_file_names_of_attached(scope))
 
     # --------------------------------------------------------------- names
 
@@ -494,6 +497,24 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
             name = f"unnamed_{namespace}_{n}"
         taken.add((id(scope), namespace, name))
         given[key] = name
+    return given
+
+
+def _file_names_of_attached(top_scope: NameScope) -> dict[int, str]:
+    """The unnamed assets of attached models that MuJoCo names after their file: written
+    with that name, so that it takes the model's prefix as the references to it do."""
+    named_after_file = grammar_facts().named_after_file
+    given: dict[int, str] = {}
+    for scope in top_scope.scopes():
+        if scope is top_scope:
+            continue
+        for section in _tree.children(_tree.scope_model(scope)):
+            for element in _tree.children(section):
+                attribute = named_after_file.get(element.spec.namespace or "")
+                if attribute is not None and _tree.element_name(element) is None:
+                    stem = file_stem(element, attribute)
+                    if stem:
+                        given[id(element)] = stem
     return given
 
 

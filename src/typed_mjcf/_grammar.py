@@ -334,5 +334,7 @@ class GrammarFacts:
     # a copy's name: {name} the original's, {sep} the separator, {index} the copy's index
     replicate_copy: str = "{name}{sep}{index}"
     copied_with_replicate: frozenset[str] = frozenset()  # root sections copied with targets
+    # string attributes listing names: "tag@attribute" -> the namespace of the names
+    name_lists: Mapping[str, str] = field(default_factory=lambda: {})
     flexcomp: FlexcompFacts | None = None
     keyframe: KeyframeFacts = KeyframeFacts()

@@ -95,6 +95,8 @@ class _Locator:
         self.writer = Writer(model, DEFAULT_FORMAT, collected.name_of,
                              collected.directory_attributes)
         self.marks: list[Element] = []
+        self.marked: set[int] = set()  # ids of the marks
+        self.root: XmlNode | None = None  # of the marked text
         self.compiled: CompiledNames | None = None
         self.exported: dict[str, list[Element]] | None = None
 
@@ -119,9 +121,7 @@ class _Locator:
         element = self._element_of(node)
         if element is None or found.name is None:
             return element
-        written = _tree.element_name(element)
-        exported = None if written is None else self._exported_name(element)
-        if found.name == (exported or ""):
+        if found.name == (self._written_name(element) or ""):
             return element
         # a copy MuJoCo made of the element (a <replicate>'s) carries its line too
         namespace = element.spec.namespace
@@ -191,8 +191,9 @@ class _Locator:
     # ------------------------------------------------------------------ the marked text
 
     def _node_at(self, line: int) -> XmlNode | None:
-        root = self._marked_root()
-        return next((node for node in root.iter() if source_line(node) == line), None)
+        if self.root is None:
+            self.root = self._marked_root()
+        return next((node for node in self.root.iter() if source_line(node) == line), None)
 
     def _marked_root(self) -> XmlNode:
         """The model written as for MuJoCo, with a marker name on every unnamed element that
@@ -204,6 +205,7 @@ class _Locator:
                     and id(element) not in writer.given_names):
                 writer.given_names[id(element)] = f"{_MARK}{len(self.marks)}"
                 self.marks.append(element)
+                self.marked.add(id(element))
         if writer.composed:
             text = serialize(writer.model(self.model), pretty_print=True)
         else:
@@ -251,21 +253,25 @@ class _Locator:
 
     # ------------------------------------------------------------------ names
 
-    def _exported_name(self, element: Element) -> str:
+    def _written_name(self, element: Element) -> str | None:
+        """The name the text MuJoCo read gives ``element`` (``None``: it has none there):
+        its own, one the export gives it, or a default class's for the top-level one."""
         name = _tree.element_name(element)
+        if name is None and id(element) not in self.marked:
+            name = self.writer.given_names.get(id(element))
         scope = _tree.scope_of(element)
         if name is None:
-            return self.writer.main_class(scope)
+            return self.writer.main_class(scope) if _is_main_class(element) else None
         return self.writer.prefix(scope) + name
 
     def _exported(self) -> dict[str, list[Element]]:
-        """Every named element by the name the text gives it."""
+        """Every element named in the text, by that name."""
         if self.exported is None:
             self.exported = {}
             for element in _tree.iter_composed(self.model, True):
-                if element.spec.namespace is not None and (
-                        _tree.element_name(element) is not None or _is_main_class(element)):
-                    self.exported.setdefault(self._exported_name(element), []).append(element)
+                name = None if element.spec.namespace is None else self._written_name(element)
+                if name is not None:
+                    self.exported.setdefault(name, []).append(element)
         return self.exported
 
     def _compiled(self) -> CompiledNames:
