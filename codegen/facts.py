@@ -162,12 +162,15 @@ _LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "
                      "freejoint", "free_type", "joint_type", "skin_file",
                      "class_namespace", "actuator_namespace",
                      "sensor_section", "mocap", "childclass", "dclass", "model_name",
-                     "replicate_separator")
+                     "replicate_separator", "replicate_count", "replicate_copy")
 _LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",
                             "shared_defaults", "ordered_children",
                             "named_after_file", "named_from_contents", "typed_references",
-                            "type_namespaces", "merge_rules", "keyframe", "attach"})
+                            "type_namespaces", "merge_rules", "keyframe", "attach",
+                            "copied_with_replicate", "name_lists", "flexcomp"})
 _ATTACH_KEYS = ("tag", "model", "prefix", "references")
+_FLEXCOMP_STRINGS = ("tag", "namespace", "dof", "rigid", "vertex_body", "node_body")
+_FLEXCOMP_KEYS = frozenset({*_FLEXCOMP_STRINGS, "nodes"})
 
 
 @dataclasses.dataclass(frozen=True)
@@ -204,11 +207,15 @@ def _language(value: object, where: str) -> _LanguageTable:
         type_namespaces=_strings(table["type_namespaces"], f"{where} type_namespaces"),
         merge_rules=_merge_rules(table["merge_rules"], f"{where} merge_rules"),
         keyframe=_strings(table["keyframe"], f"{where} keyframe"),
+        copied_with_replicate=_str_list(table["copied_with_replicate"],
+                                        f"{where} copied_with_replicate"),
+        name_lists=_strings(table["name_lists"], f"{where} name_lists"),
         attach=ir.AttachDef(
             tag=_str(attach["tag"], f"{where} attach tag"),
             model=_str(attach["model"], f"{where} attach model"),
             prefix=_str(attach["prefix"], f"{where} attach prefix"),
             references=_str_list(attach["references"], f"{where} attach references")),
+        flexcomp=_flexcomp(table["flexcomp"], f"{where} flexcomp"),
     )
     return _LanguageTable(
         language=language,
@@ -227,6 +234,21 @@ def _merge_rules(value: object, where: str) -> dict[str, str]:
         if rule not in _MERGE_RULES:
             raise FactsError(f"{where} {key}: {rule!r} is not one of {', '.join(_MERGE_RULES)}")
     return rules
+
+
+def _flexcomp(value: object, where: str) -> ir.FlexcompDef:
+    """``[language.flexcomp]``: the bodies a ``<flexcomp>`` makes and how they are named."""
+    table = _table(value, where)
+    extra = sorted(set(table) ^ _FLEXCOMP_KEYS)
+    if extra:
+        raise FactsError(f"{where}: unknown or missing key {extra[0]!r}")
+    nodes: dict[str, int] = {}
+    for dof, count in _table(table["nodes"], f"{where} nodes").items():
+        if not isinstance(count, int) or isinstance(count, bool) or count < 1:
+            raise FactsError(f"{where} nodes {dof}: expected a positive integer, got {count!r}")
+        nodes[dof] = count
+    strings = {key: _str(table[key], f"{where} {key}") for key in _FLEXCOMP_STRINGS}
+    return ir.FlexcompDef(**strings, nodes=nodes)
 
 
 # ------------------------------------------------------------------------------- values

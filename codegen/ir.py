@@ -118,6 +118,19 @@ class AttachDef:
 
 
 @dataclass
+class FlexcompDef:
+    """``<flexcomp>``: the bodies MuJoCo's compiler makes and names after it."""
+
+    tag: str
+    namespace: str  # of the bodies it makes
+    dof: str  # the attribute choosing vertex bodies or grid-node bodies
+    rigid: str  # the attribute that, true, makes no bodies
+    vertex_body: str  # name template of a vertex's body: {name}, {vertex}
+    node_body: str  # name template of a grid node's body: {name}, {i}, {j}, {k}
+    nodes: dict[str, int]  # dof keyword -> nodes per axis (the dofs with node bodies)
+
+
+@dataclass
 class LanguageDef:
     """Facts about MJCF as a whole that the runtime needs (from ``schema/facts.toml``)."""
 
@@ -142,9 +155,14 @@ class LanguageDef:
     actuator_namespace: str = "actuator"
     model_name: str = "model"
     replicate_separator: str = "sep"
+    replicate_count: str = "count"
+    replicate_copy: str = "{name}{sep}{index}"  # name template of a copy: {name}, {sep}, {index}
+    copied_with_replicate: list[str] = field(default_factory=lambda: [])  # root sections
+    name_lists: dict[str, str] = field(default_factory=lambda: {})  # tag@attribute -> namespace
     named_after_file: dict[str, str] = field(default_factory=lambda: {})
     named_from_contents: list[str] = field(default_factory=lambda: [])
     attach: AttachDef | None = None
+    flexcomp: FlexcompDef | None = None
     type_namespaces: dict[str, str] = field(default_factory=lambda: {})
     merge_rules: dict[str, str] = field(default_factory=lambda: {})
     skin_file: str = ""
@@ -257,9 +275,12 @@ def _language_to_json(language: LanguageDef) -> dict[str, object]:
 def _language_from_json(raw: object) -> LanguageDef:
     d = dict(cast(dict[str, object], raw or {}))
     attach = d.pop("attach", None)
+    flexcomp = d.pop("flexcomp", None)
     language = LanguageDef(**cast(dict[str, Any], d))
     if attach is not None:
         language.attach = AttachDef(**cast(dict[str, Any], attach))
+    if flexcomp is not None:
+        language.flexcomp = FlexcompDef(**cast(dict[str, Any], flexcomp))
     return language
 
 

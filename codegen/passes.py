@@ -8,6 +8,7 @@ every row, child and name it is given.
 from __future__ import annotations
 
 import copy
+import re
 from collections.abc import Iterable, Mapping
 
 from codegen import ir, naming
@@ -203,6 +204,7 @@ def check(schema: ir.Schema) -> None:
     problems = [
         *_reference_problems(schema),
         *_class_name_problems(schema),
+        *_naming_fact_problems(schema),
         *(p for e in schema.elements.values() for p in _element_problems(schema, e)),
     ]
     if problems:
@@ -280,6 +282,63 @@ def _add_projection(schema: ir.Schema, primary_name: str) -> str:
         attributes=attributes, struct=primary.struct, projection_of=primary_name,
     )
     return name
+
+
+_PLACEHOLDERS = re.compile(r"\{(\w*)\}")
+
+
+def _template_problems(where: str, template: str, allowed: set[str]) -> list[str]:
+    fields = _PLACEHOLDERS.findall(template)
+    problems = [f"{where}: unknown placeholder {{{f}}} (known: {', '.join(sorted(allowed))})"
+                for f in fields if f not in allowed]
+    if not template.startswith("{name}"):
+        problems.append(f"{where}: a generated name starts with {{name}}")
+    return problems
+
+
+def _naming_fact_problems(schema: ir.Schema) -> list[str]:
+    """The facts naming what MuJoCo's compiler makes must name rows, attributes and keywords
+    of the grammar: a MuJoCo release that renames one shows up here, not as wrong names."""
+    language = schema.language
+    rows: dict[str, list[ir.ElementDef]] = {}
+    for row in schema.elements.values():
+        rows.setdefault(row.tag, []).append(row)
+    problems: list[str] = []
+
+    def attribute(tag: str, name: str, kind: str) -> ir.AttributeDef | None:
+        """The attribute of that name and kind of a row of that tag (tags repeat: <flex> in
+        <deformable> and in <equality>)."""
+        found = next((a for row in rows.get(tag, []) for a in row.attributes
+                      if a.name == name and a.kind == kind), None)
+        if found is None:
+            problems.append(f"language facts: <{tag}> has no {kind} attribute {name!r}")
+        return found
+
+    if language.replicate in rows:  # (small test grammars have none)
+        attribute(language.replicate, language.replicate_count, "int")
+        attribute(language.replicate, language.replicate_separator, "string")
+    problems += _template_problems("language replicate_copy", language.replicate_copy,
+                                   {"name", "sep", "index"})
+    for key in language.name_lists:
+        tag, _, name = key.partition("@")
+        if tag in rows:
+            attribute(tag, name, "string")
+    sections = {c.element for c in schema.elements[schema.root].children}
+    problems += [f"language copied_with_replicate: no root section {section!r}"
+                 for section in language.copied_with_replicate if section not in sections]
+    flexcomp = language.flexcomp
+    if flexcomp is not None and flexcomp.tag in rows:
+        dof = attribute(flexcomp.tag, flexcomp.dof, "keyword")
+        attribute(flexcomp.tag, flexcomp.rigid, "bool")
+        if dof is not None and dof.enum in schema.enums:
+            keywords = {k for k, _ in schema.enums[dof.enum].values}
+            problems += [f"language flexcomp nodes: {k!r} is no keyword of <{flexcomp.tag}> "
+                         f"{flexcomp.dof}" for k in flexcomp.nodes if k not in keywords]
+        problems += _template_problems("language flexcomp vertex_body", flexcomp.vertex_body,
+                                       {"name", "vertex"})
+        problems += _template_problems("language flexcomp node_body", flexcomp.node_body,
+                                       {"name", "i", "j", "k"})
+    return problems
 
 
 def _reference_problems(schema: ir.Schema) -> list[str]:

@@ -196,11 +196,20 @@ def _facts(schema: ir.Schema) -> str:
         f"replicate_separator={language.replicate_separator!r}",
         f"merge_rules={dict(sorted(language.merge_rules.items()))!r}",
         f"skin_file={language.skin_file!r}",
+        f"replicate_count={language.replicate_count!r}",
+        f"replicate_copy={language.replicate_copy!r}",
+        f"copied_with_replicate=frozenset({sorted(language.copied_with_replicate)!r})",
+        f"name_lists={dict(sorted(language.name_lists.items()))!r}",
         f"keyframe=KeyframeFacts(**{dict(sorted(language.keyframe.items()))!r})",
     ]
     if attach is not None:
         fields.append(f"attach=AttachFacts({attach.tag!r}, {attach.model!r}, "
                       f"{attach.prefix!r}, {tuple(attach.references)!r})")
+    flexcomp = language.flexcomp
+    if flexcomp is not None:
+        fields.append(f"flexcomp=FlexcompFacts({flexcomp.tag!r}, {flexcomp.namespace!r}, "
+                      f"{flexcomp.dof!r}, {flexcomp.rigid!r}, {flexcomp.vertex_body!r}, "
+                      f"{flexcomp.node_body!r}, {dict(sorted(flexcomp.nodes.items()))!r})")
     return "\n".join(f"    {field}," for field in fields)
 
 

@@ -24,7 +24,7 @@ from typing import cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
-from typed_mjcf._files import absolute_file, is_skin_file, name_files
+from typed_mjcf._files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._merge import combine, rule_of
 from typed_mjcf._names import NameScope
@@ -111,6 +111,8 @@ class Writer:
         self._flat_names: dict[tuple[int, str], str] | None = None
         # names this export gives unnamed elements that references link to
         self.given_names: dict[int, str] = _names_to_give(top, scope)
+        if self.composed:
+            self.given_names.update(_file_names_of_attached(scope))
 
     # --------------------------------------------------------------- names
 
@@ -295,8 +297,8 @@ class Writer:
                 parent_node.children.append(self.chunk(current))
                 continue
             spec = current.spec
-            attrib = self.attributes(current) if (
-                _tree.values(current) or id(current) in self.given_names) else {}
+            named = _tree.values(current) or id(current) in self.given_names
+            attrib = self.attributes(current) if named else {}
             node = Node(spec.tag, attrib)
             if first is None:
                 first = node
@@ -361,7 +363,7 @@ class Writer:
         stack: list[tuple[Element | str, int]] = [(element, depth)]
         pop, push = stack.pop, stack.append
         attribute_text = self.attribute_text
-        given = self.given_names
+        given_names = self.given_names
         while stack:
             current, level = pop()
             if isinstance(current, str):
@@ -369,8 +371,9 @@ class Writer:
                 continue
             tag = current.spec.tag
             stored = _tree.values(current)
-            attrs = attribute_text(current, stored) if stored or (
-                given and id(current) in given) else ""
+            # (an element without attributes may still get a name from this export)
+            named = stored or (given_names and id(current) in given_names)
+            attrs = attribute_text(current, stored) if named else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
             spaces = indent_of(level)
@@ -541,6 +544,24 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
         name = f"unnamed_{namespace}_{n}"
         taken.add((id(scope), namespace, name))
         given[key] = name
+    return given
+
+
+def _file_names_of_attached(top_scope: NameScope) -> dict[int, str]:
+    """The unnamed assets of attached models that MuJoCo names after their file: written
+    with that name, so that it takes the model's prefix as the references to it do."""
+    named_after_file = grammar_facts().named_after_file
+    given: dict[int, str] = {}
+    for scope in top_scope.scopes():
+        if scope is top_scope:
+            continue
+        for section in _tree.children(_tree.scope_model(scope)):
+            for element in _tree.children(section):
+                attribute = named_after_file.get(element.spec.namespace or "")
+                if attribute is not None and _tree.element_name(element) is None:
+                    stem = element_file_stem(element, attribute)
+                    if stem:
+                        given[id(element)] = stem
     return given
 
 

@@ -245,6 +245,17 @@ def file_stem(file: str) -> str:
     return base.rsplit(".", 1)[0] if "." in base.lstrip(".") else base
 
 
+def element_file_stem(element: Element, attribute: str) -> str | None:
+    """The name MuJoCo gives an unnamed element that reads a file: the file's stem (an
+    in-memory asset: the stem the asset writer gives it); None without a file."""
+    file = _tree.values(element).get(attribute)
+    if isinstance(file, str):
+        return file_stem(file)
+    if isinstance(file, Asset):
+        return file.name or element_stem(element)
+    return None
+
+
 def is_model_file_name(name: str) -> bool:
     return name.lower().endswith(".xml")
 

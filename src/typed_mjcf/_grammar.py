@@ -293,6 +293,21 @@ class AttachFacts:
 
 
 @dataclass(frozen=True)
+class FlexcompFacts:
+    """``<flexcomp>``: the bodies MuJoCo's compiler makes for it, named after it by a
+    template: ``{name}`` the flexcomp's name, ``{vertex}`` a vertex's index, ``{i}``,
+    ``{j}``, ``{k}`` a grid node's indices along each axis."""
+
+    tag: str
+    namespace: str  # of the bodies it makes
+    dof: str  # the attribute choosing vertex bodies or grid-node bodies
+    rigid: str  # the attribute that, true, makes no bodies
+    vertex_body: str
+    node_body: str
+    nodes: Mapping[str, int]  # dof keyword -> grid nodes per axis (the dofs with node bodies)
+
+
+@dataclass(frozen=True)
 class GrammarFacts:
     """Facts about the language as a whole, from ``schema/facts.toml``."""
 
@@ -323,4 +338,11 @@ class GrammarFacts:
     # global settings combined on attach rather than refused: "tag@attribute" -> rule
     merge_rules: Mapping[str, str] = field(default_factory=lambda: {})
     skin_file: str = ""  # "row@attribute" of binary skin files (bone names to scope)
+    replicate_count: str = "count"  # <replicate>'s attribute counting its copies
+    # a copy's name: {name} the original's, {sep} the separator, {index} the copy's index
+    replicate_copy: str = "{name}{sep}{index}"
+    copied_with_replicate: frozenset[str] = frozenset()  # root sections copied with targets
+    # string attributes listing names: "tag@attribute" -> the namespace of the names
+    name_lists: Mapping[str, str] = field(default_factory=lambda: {})
+    flexcomp: FlexcompFacts | None = None
     keyframe: KeyframeFacts = KeyframeFacts()

@@ -35,6 +35,16 @@ def has_keyframes(writer: Writer) -> bool:
     return any(_tree.children(section) for _, section in writer.keyframe_sections)
 
 
+class LayoutError(ExportError):
+    """MuJoCo refused the composed model without its keyframes; ``mujoco_message`` is what
+    it said (about the text given to it: the model's text less its keyframes)."""
+
+    def __init__(self, mujoco_message: str) -> None:
+        super().__init__(f"combining the keyframes of the attached models needs the composed "
+                         f"model to compile, and MuJoCo refused it: {mujoco_message}")
+        self.mujoco_message = mujoco_message
+
+
 def compile_layout(xml: str, files: dict[str, bytes]) -> mujoco.MjModel:
     """The composed model compiled without keyframes: where each part's values go."""
     import mujoco  # heavy, and only composed models with keyframes need it here
@@ -42,8 +52,7 @@ def compile_layout(xml: str, files: dict[str, bytes]) -> mujoco.MjModel:
     try:
         return mujoco.MjModel.from_xml_string(xml, files)
     except ValueError as error:
-        raise ExportError(f"combining the keyframes of the attached models needs the composed "
-                          f"model to compile, and MuJoCo refused it: {error}") from None
+        raise LayoutError(str(error)) from None
 
 
 class _Key:

@@ -14,18 +14,15 @@ Every finding has a rule name (see :data:`RULES`), the path of the element and a
 from __future__ import annotations
 
 import functools
-import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal
 
 from typed_mjcf import _tree
+from typed_mjcf._compiled_names import CompiledNames
 from typed_mjcf._export import is_empty_single
-from typed_mjcf._files import file_stem
 from typed_mjcf._grammar import AttributeSpec, ElementSpec
-from typed_mjcf._names import NameScope
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
-from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidValueError, did_you_mean
 
 Severity = Literal["error", "warning"]
@@ -181,11 +178,7 @@ class _Pass:
         default_factory=list[tuple[int, int, Element, Rule, str, Severity]])
     plans: dict[tuple[int, bool], _Plan] = field(default_factory=dict[tuple[int, bool], _Plan])
     pending: list[_Pending] = field(default_factory=list[_Pending])
-    implicit_names: dict[str, set[str]] = field(default_factory=dict[str, set[str]])
-    unverifiable: set[str] = field(default_factory=set[str])  # namespaces
-    prefixes: list[str] = field(default_factory=list[str])  # of <attach> elements
     replicates: int = 0
-    replicate_seps: set[str] = field(default_factory=set[str])  # how copies' names are suffixed
     objectless_sensors: list[tuple[int, Element]] = field(
         default_factory=list[tuple[int, Element]])
     classes: dict[str, tuple[int, Element]] = field(default_factory=dict[str, tuple[int, Element]])
@@ -278,12 +271,8 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
                 state.add(order, element, "required-child",
                           f"<{tag}> requires a <{child_tag}> child, which it does not have "
                           f"(an empty one is not written)")
-    if spec.namespace is not None:
-        _declare(state, order, element, parent, spec, attrs)
-    elif facts.attach is not None and tag == facts.attach.tag:
-        prefix = attrs.get(facts.attach.prefix)
-        if isinstance(prefix, str):
-            state.prefixes.append(prefix)
+    if spec.namespace == grammar_facts().class_namespace:
+        _declare_class(state, order, element, parent)
     if plan.references:
         skipped = _child_model_references(spec, attrs)
         for attribute in plan.references:
@@ -295,8 +284,6 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
                 _check_reference(state, order, element, attribute.name, namespace, value)
     if tag == facts.replicate:
         state.replicates += 1
-        sep = attrs.get(facts.replicate_separator)
-        state.replicate_seps.add(sep if isinstance(sep, str) else "")
     elif (parent is not None and parent.spec.tag == facts.sensor_section and spec.namespace
           and _tree.element_name(element) is not None
           and not any(a.name in attrs for a in plan.references)):
@@ -359,40 +346,20 @@ def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> 
     return ", ".join(name for bundle in bundles for name in bundle if name in attrs)
 
 
-def _declare(state: _Pass, order: int, element: Element, parent: Element | None,
-             spec: ElementSpec, attrs: dict[str, object]) -> None:
-    """Record what the element defines: default classes, names MuJoCo derives."""
-    namespace = spec.namespace
-    assert namespace is not None
+def _declare_class(state: _Pass, order: int, element: Element, parent: Element | None) -> None:
+    """Record a default class, and check its name."""
     facts = grammar_facts()
     name = _tree.element_name(element)
-    if namespace == grammar_facts().class_namespace:
-        top_level = parent is None or parent.spec.namespace != grammar_facts().class_namespace
-        if top_level:
-            if name is not None and name != facts.main_class:
-                state.add(order, element, "default-class",
-                          f"the top-level <default> is class {facts.main_class!r}; it cannot be "
-                          f"renamed {name!r} (nest a <default class={name!r}> in it)")
-        elif name is None:
+    top_level = parent is None or parent.spec.namespace != grammar_facts().class_namespace
+    if top_level:
+        if name is not None and name != facts.main_class:
             state.add(order, element, "default-class",
-                      "a nested <default> needs a class name")
-        else:
-            state.classes[name] = (order, element)
-        return
-    if name is not None:
-        return
-    file_attribute = facts.named_after_file.get(namespace)
-    if file_attribute is not None:
-        file = attrs.get(file_attribute)
-        stem: str | None = None
-        if isinstance(file, str):
-            stem = file_stem(file)
-        elif isinstance(file, Asset):
-            stem = file.name or spec.tag  # as the asset writer names in-memory files
-        if stem:
-            state.implicit_names.setdefault(namespace, set()).add(stem)
-    elif namespace in facts.named_from_contents:
-        state.unverifiable.add(namespace)
+                      f"the top-level <default> is class {facts.main_class!r}; it cannot be "
+                      f"renamed {name!r} (nest a <default class={name!r}> in it)")
+    elif name is None:
+        state.add(order, element, "default-class", "a nested <default> needs a class name")
+    else:
+        state.classes[name] = (order, element)
 
 
 def _child_model_references(spec: ElementSpec, attrs: dict[str, object]) -> frozenset[str]:
@@ -446,46 +413,32 @@ def element_in_model(model: ModelBase, target: Element) -> bool:
     return _tree.scope_of(target).is_within(_tree.scope_of(model))
 
 
-def _replicated_name(scope: NameScope, namespace: str, name: str, seps: set[str]) -> bool:
-    """Whether ``name`` is a copy's name that <replicate> derives: ``base<sep><index>``, once
-    per level of nested replicates."""
-    for sep in seps:
-        suffix = re.compile(re.escape(sep) + r"\d+$")
-        base = name
-        while (match := suffix.search(base)) is not None and match.start() > 0:
-            base = base[: match.start()]
-            if scope.find(namespace, base) is not None:
-                return True
-    return False
-
-
 def _resolve_pending(state: _Pass) -> None:
-    """Resolve the references the namespaces did not: names MuJoCo derives (asset files),
-    names only MuJoCo can see (attached MJCF files), scoped names of attached models."""
+    """Resolve the references the namespaces did not: names of objects MuJoCo's compiler
+    makes (replicate copies, flexcomp bodies, meshes named after their files, what an
+    <attach prefix> brings), here or in an attached model."""
+    if not state.pending:
+        return
+    compiled = CompiledNames(state.model)
     hints = _MAX_HINTS
     for ref in state.pending:
-        namespace, name = ref.namespace, ref.name
-        if name in state.implicit_names.get(namespace, ()) or namespace in state.unverifiable:
-            continue
-        if any(name.startswith(prefix) for prefix in state.prefixes):
-            continue  # named by an <attach prefix=...> from a model only MuJoCo reads
-        scope = _tree.scope_of(ref.element)
-        if _replicated_name(scope, namespace, name, state.replicate_seps):
+        if compiled.origin(_tree.scope_of(ref.element), ref.namespace, ref.name) is not None:
             continue
         # In a default class the reference matters only to elements that use the class, and
         # MuJoCo accepts a class nobody uses it from: a warning there, an error elsewhere.
         severity: Severity = "warning" if ref.in_default else "error"
         state.add(ref.order, ref.element, "unresolved-reference",
-                  _unresolved_message(state, ref, hint=hints > 0), severity)
+                  _unresolved_message(compiled, ref, hint=hints > 0), severity)
         hints -= 1
 
 
-def _unresolved_message(state: _Pass, ref: _Pending, *, hint: bool) -> str:
+def _unresolved_message(compiled: CompiledNames, ref: _Pending, *, hint: bool) -> str:
     namespace, name = ref.namespace, ref.name
     suggestion = ""
     if hint:
-        identifiers = _tree.scope_of(ref.element).names(namespace)
-        suggestion = did_you_mean(name, [*identifiers, *state.implicit_names.get(namespace, ())])
+        scope = _tree.scope_of(ref.element)
+        suggestion = did_you_mean(name, [*scope.names(namespace),
+                                         *compiled.exact_names(scope, namespace)])
     if namespace == grammar_facts().class_namespace:
         return (f"{ref.attribute}={name!r} names no default class (no <default "
                 f"class={name!r}>){suggestion}")

@@ -56,8 +56,8 @@ def _model_text(writer: Writer, element: ModelBase, collected: CollectedFiles | 
                 layout = Writer(element, DEFAULT_FORMAT, collected.name_of,
                                 collected.directory_attributes)
                 layout_xml = serialize(layout.model(element), pretty_print=False)
-            else:
-                layout_xml = serialize(node, pretty_print=False)
+            else:  # written as the text is, so MuJoCo's errors give the text's lines
+                layout_xml = serialize(node, pretty_print)
             combine_keyframes(writer, node, compile_layout(layout_xml, collected.files))
         return serialize(node, pretty_print)
 

@@ -66,7 +66,14 @@ class FileReadError(ParseError, OSError):
 
 
 class CompileError(MjcfError, ValueError):
-    """MuJoCo refused to compile the model."""
+    """MuJoCo refused to compile the model; ``path`` is the element its message is about,
+    where one is known."""
+
+    path: str | None
+
+    def __init__(self, message: str, path: str | None = None) -> None:
+        super().__init__(message)
+        self.path = path
 
 
 class ExportError(MjcfError, ValueError):

@@ -44,7 +44,9 @@ class RealScalar(Protocol):
     ``np.int64(3)``); not an array."""
 
     def __float__(self) -> float: ...
-    def is_integer(self) -> bool: ...  # what arrays lack
+    # What arrays lack. (Not is_integer: int has it only from Python 3.12, and a checker
+    # targeting 3.11 then refuses the ints of [0, 0, 1.5] where reals are expected.)
+    def __round__(self) -> int: ...
 
 
 class IntegerScalar(Protocol):

@@ -435,3 +435,56 @@ def test_reference_grammar_normalizes() -> None:
     assert any(c.element == "worldbody" and c.single for c in out.elements["mujoco"].children)
     assert out.elements["default_equality"].projection_of is None
     assert out.elements["default_geom"].class_name == "DefaultGeom"
+
+
+# ---------------------------------------------------------------------- naming facts
+
+
+def test_naming_facts_are_read_into_the_language() -> None:
+    language = load_facts().language
+    assert language.replicate_copy == "{name}{sep}{index}"
+    assert "sensor" in language.copied_with_replicate
+    assert language.flexcomp is not None and language.flexcomp.nodes["trilinear"] == 2
+
+
+def _language_text(flexcomp: str) -> str:
+    """The repository's [language] table with another [language.flexcomp]."""
+    text = (ir.SCHEMA_DIR / "facts.toml").read_text(encoding="utf-8")
+    start = text.index("[language]")
+    table = text[start:text.index("[language.flexcomp]")]
+    return table + "[language.flexcomp]\n" + flexcomp
+
+
+FLEXCOMP = ('tag = "flexcomp"\nnamespace = "body"\ndof = "dof"\nrigid = "rigid"\n'
+            'vertex_body = "{name}_{vertex}"\nnode_body = "{name}_{i}_{j}_{k}"\n')
+
+
+@pytest.mark.parametrize(("flexcomp", "message"), [
+    (FLEXCOMP, "[language] flexcomp: unknown or missing key 'nodes'"),
+    (FLEXCOMP + "nodes = { trilinear = 0 }\n",
+     "[language] flexcomp nodes trilinear: expected a positive integer, got 0"),
+    (FLEXCOMP + "nodes = {}\nextra = 1\n", "[language] flexcomp: unknown or missing key 'extra'"),
+])
+def test_malformed_naming_facts(flexcomp: str, message: str) -> None:
+    with pytest.raises(FactsError) as info:
+        parse_facts(_language_text(flexcomp), "f.toml")
+    assert str(info.value) == f"f.toml: {message}"
+
+
+def test_naming_facts_agree_with_the_grammar() -> None:
+    schema = ir.load()
+    assert passes._naming_fact_problems(schema) == []  # pyright: ignore[reportPrivateUsage]
+    broken = copy.deepcopy(schema)
+    assert broken.language.flexcomp is not None
+    broken.language.flexcomp.rigid = "stiff"
+    broken.language.flexcomp.nodes["cubic"] = 4
+    broken.language.replicate_copy = "{name}{separator}{index}"
+    broken.language.copied_with_replicate.append("sensors")
+    broken.language.name_lists["flex@bodies"] = "body"
+    assert passes._naming_fact_problems(broken) == [  # pyright: ignore[reportPrivateUsage]
+        "language replicate_copy: unknown placeholder {separator} (known: index, name, sep)",
+        "language facts: <flex> has no string attribute 'bodies'",
+        "language copied_with_replicate: no root section 'sensors'",
+        "language facts: <flexcomp> has no bool attribute 'stiff'",
+        "language flexcomp nodes: 'cubic' is no keyword of <flexcomp> dof",
+    ]

@@ -1,5 +1,8 @@
-"""validate() on every model of the corpus (the MJCF files shipped with dm_control and mujoco):
-no error in a file MuJoCo's parser accepts, since compile() refuses models with errors."""
+"""validate() on every model of the corpus (the MJCF files shipped with dm_control and mujoco,
+found at test time: ``tests/runtime/test_corpus.py``) and on the models of ``shapes.py``: no
+error in a file MuJoCo's parser accepts, nor in what typed-mjcf writes for it, since
+compile() refuses models with errors. (Compiling equal to MuJoCo and writing back unchanged
+are checked in ``test_corpus.py`` and ``test_shapes.py``.)"""
 
 from __future__ import annotations
 
@@ -14,6 +17,10 @@ from typed_mjcf._validate import validate
 from ..runtime.test_corpus import CORPUS, XFAIL
 
 
+def _errors(model: typed_mjcf.RootElement) -> list[str]:
+    return [str(f) for f in validate(model) if f.severity == "error"]
+
+
 @pytest.mark.parametrize(("ident", "path"), [pytest.param(i, p, id=i) for i, p in CORPUS
                                              if i not in XFAIL])
 def test_no_error_in_models_mujoco_accepts(ident: str, path: Path) -> None:
@@ -21,5 +28,7 @@ def test_no_error_in_models_mujoco_accepts(ident: str, path: Path) -> None:
         mujoco.MjSpec.from_file(str(path))
     except ValueError as error:
         pytest.skip(f"{ident}: MuJoCo does not parse it by itself: {' '.join(str(error).split())}")
-    errors = [str(f) for f in validate(typed_mjcf.from_path(path)) if f.severity == "error"]
-    assert errors == []
+    model = typed_mjcf.from_path(path)
+    assert _errors(model) == []
+    written = typed_mjcf.from_xml_string(model.to_xml_string(), base_dir=path.parent)
+    assert _errors(written) == []

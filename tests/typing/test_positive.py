@@ -98,6 +98,14 @@ def build() -> mjcf.RootElement:
     geom.size = np.array([0.1, 0.2])
     geom.rgba = np.array([1, 0, 0, 1], dtype=np.float32)
     geom.rgba = None
+    # ints and numpy scalars where reals are expected, alone and mixed with floats in a
+    # list (mypy targeting 3.11, where int has no is_integer, once refused the mixed list)
+    geom.mass = 1
+    geom.mass = np.float32(0.5)
+    geom.size = [1, 2.5, np.int64(3)]
+    geom.pos = (0, 0, np.float64(0.5))
+    model.keyframe.add_key(qpos=[0, 0, 0.5, 1, 0, 0, 0], ctrl=[0.5, 0])
+    geom.mass = 1.5
     shoulder.type = "slide"
     shoulder.limited = "auto"
     shoulder.limited = False
