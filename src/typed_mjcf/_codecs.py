@@ -237,6 +237,11 @@ class BoolCodec(Codec):
             return found
         raise _type_rejected("a bool")
 
+    def parse(self, text: str) -> object:
+        found = self.accept(text)
+        _check_spelling(text, "true" if found else "false")
+        return found
+
     def write(self, stored: object, fmt: Format) -> str:
         return "true" if stored else "false"
 
@@ -486,6 +491,13 @@ class ArrayCodec(Codec):
 # ---------------------------------------------------------------------------- keywords
 
 
+def _check_spelling(text: str, keyword: str) -> None:
+    """Refuse a keyword read from a file in another case: Python assignment accepts any case
+    (as dm_control does), but MuJoCo reads files exactly as written."""
+    if text != keyword:
+        raise Rejected(f"{keyword!r} (MuJoCo reads keywords only as its grammar spells them)")
+
+
 class KeywordCodec(Codec):
     __slots__ = ("keywords", "listing", "lookup", "takes_bool")
 
@@ -503,6 +515,11 @@ class KeywordCodec(Codec):
         found = self.lookup.get(value.lower())
         if found is None:
             raise Rejected(f"one of {self.listing}" + did_you_mean(value, self.keywords))
+        return found
+
+    def parse(self, text: str) -> object:
+        found = cast(str, self.accept(text))
+        _check_spelling(text, found)
         return found
 
 
@@ -535,6 +552,12 @@ class FlagsCodec(Codec):
             raise Rejected(f"at least one keyword from {self.listing}")
         # MuJoCo reads some flag sets only in their canonical order.
         return tuple(sorted(found, key=self.order.__getitem__))
+
+    def parse(self, text: str) -> object:
+        found = self.accept(text)
+        for word in text.split():
+            _check_spelling(word, self.lookup[word.lower()])
+        return found
 
     def write(self, stored: object, fmt: Format) -> str:
         return " ".join(cast(tuple[str, ...], stored))

@@ -58,6 +58,10 @@ CASES: dict[str, str] = {
     "negative-damper-ctrlrange": doc(WORLD, '<actuator><damper joint="j" ctrlrange="-1 1"/>'
                                             '</actuator>'),
     "maxhullvert-below-4": doc('<default><mesh maxhullvert="2"/></default>'),
+    # --- keywords in another case (Python assignment takes any case, as dm_control does) ---
+    "keyword-in-upper-case": doc('<worldbody><geom type="CAPSULE" size="1 1"/></worldbody>'),
+    "bool-in-title-case": doc('<worldbody><body mocap="True"/></worldbody>'),
+    "flag-in-upper-case": doc('<option><flag contact="DISABLE"/></option>'),
     "headlight-active-5": doc('<visual><headlight active="5"/></visual>'),
     "contact-sensor-num-zero": doc(WORLD, '<sensor><contact body1="b" num="0"/></sensor>'),
     "actuatorgroupdisable-above-30": doc('<option actuatorgroupdisable="31"/>'),
@@ -156,6 +160,9 @@ MESSAGES: dict[str, str] = {
     'undefined-class': "unknown default class name 'nope'",
     'user-sensor-dim': "required attribute missing: 'dim'",
     'zero-quaternion': 'zero quaternion is not allowed',
+    'keyword-in-upper-case': "invalid keyword: 'CAPSULE'",
+    'bool-in-title-case': "invalid keyword: 'True'",
+    'flag-in-upper-case': "invalid keyword: 'DISABLE'",
 }
 
 _RANGES = ("the schema carries no numeric ranges: MuJoCo's grammar file has min=/max=/"

@@ -1,7 +1,8 @@
 """Round trip: parsing then exporting keeps everything but comments.
 
 Element order, names and every attribute survive; floats read back bit for bit (-0.0 and
-subnormals included); keywords come back in their canonical spelling; flags in MuJoCo's order.
+subnormals included); keywords and flags as MuJoCo spells them (which MuJoCo alone reads in files); given in
+Python in any case or order, they are stored that way.
 """
 
 from __future__ import annotations
@@ -20,10 +21,10 @@ DOCUMENT = """<?xml version="1.0"?>
 <!-- a comment before the root -->
 <mujoco model="every-value">
   <!-- comments are not kept -->
-  <compiler angle="RADIAN" autolimits="TRUE" eulerseq="XyZ"/>
+  <compiler angle="radian" autolimits="true" eulerseq="XyZ"/>
   <option timestep="0.001" gravity="0 -0 -9.81" iterations="2147483647"
-          actuatorgroupdisable="0 5 30" integrator="implicitFast">
-    <flag contact="Disable" energy="ENABLE"/>
+          actuatorgroupdisable="0 5 30" integrator="implicitfast">
+    <flag contact="disable" energy="enable"/>
   </option>
   <default>
     <default class="limb">
@@ -37,29 +38,29 @@ DOCUMENT = """<?xml version="1.0"?>
     <material name="steel" rgba="1 1 1 1" texrepeat="2.5 -0"/>
   </asset>
   <worldbody>
-    <geom name="floor" type="PLANE" size="0 0 0.05"/>
+    <geom name="floor" type="plane" size="0 0 0.05"/>
     <body name="upper" pos="0.1 0.3333333333333333 -0" quat="1 0 0 0" childclass="limb">
       <site name="first" pos="1e-07 2.5e-08 123456789012.5"/>
-      <joint name="shoulder" type="Hinge" limited="true" range="-1 1" user="1 2 3 4 5 6 7"/>
+      <joint name="shoulder" type="hinge" limited="true" range="-1 1" user="1 2 3 4 5 6 7"/>
       <geom name="g1" type="capsule" size="0.04 0.2" material="steel"/>
       <body name="fore" euler="0.5 -0.25 1e-10">
         <joint name="elbow" class="finger"/>
         <geom type="sphere" size="0.05" contype="-2147483648" conaffinity="7"/>
       </body>
       <site name="last"/>
-      <camera name="eye" resolution="640 480" output="DEPTH" fovy="45"/>
+      <camera name="eye" resolution="640 480" output="depth" fovy="45"/>
     </body>
     <frame name="f" pos="1 2 3">
       <geom type="box" size="1 1 1"/>
     </frame>
   </worldbody>
   <actuator>
-    <pid name="p" joint="elbow" kp="1e3" input="ff Pos" ctrlrange="-1.5 1.5"/>
+    <pid name="p" joint="elbow" kp="1e3" input="pos ff" ctrlrange="-1.5 1.5"/>
     <motor name="m" joint="shoulder" gear="1e+2"/>
   </actuator>
   <sensor>
     <jointpos name="s" joint="shoulder" noise="0.1"/>
-    <framepos name="fp" objtype="XBODY" objname="upper"/>
+    <framepos name="fp" objtype="xbody" objname="upper"/>
   </sensor>
   <keyframe>
     <key name="home" qpos="0.1 -0" time="1e-5"/>
@@ -131,6 +132,10 @@ def test_values_are_read_bit_for_bit() -> None:
     assert isinstance(key, mjcf.Key) and key.time == 1e-5
 
 
+def test_the_document_is_one_mujoco_reads() -> None:
+    mujoco.MjSpec.from_string(DOCUMENT)
+
+
 def test_ints_keywords_and_flags_are_canonical() -> None:
     model = mjcf.from_xml_string(DOCUMENT)
     assert model.option.iterations == 2**31 - 1
@@ -145,14 +150,23 @@ def test_ints_keywords_and_flags_are_canonical() -> None:
     assert model.option.flag.contact == "disable" and model.option.flag.energy == "enable"
     xml = model.to_xml_string()
     assert 'type="plane"' in xml and 'type="hinge"' in xml and 'objtype="xbody"' in xml
-    assert 'input="pos ff"' in xml  # flags in MuJoCo's order
+    assert 'input="pos ff"' in xml
     assert 'output="depth"' in xml
     assert 'integrator="implicitfast"' in xml
+    # given in Python in another case or order (as dm_control takes them): stored canonical
+    model.compiler.angle = "RADIAN"
+    model.option.integrator = "implicitFast"
+    model.option.flag.contact = "Disable"
+    pid = model.find("actuator", "p")
+    assert isinstance(pid, mjcf.Pid)
+    pid.input = ("ff", "pos")
+    assert pid.input == ("pos", "ff")  # MuJoCo reads servo inputs only in this order
+    assert model.to_xml_string() == xml
 
 
 def test_what_mujoco_writes_back_reads_the_same() -> None:
     # (without the pid: MuJoCo writes it as <general input="pos ff">, see test_regressions)
-    pid = '    <pid name="p" joint="elbow" kp="1e3" input="ff Pos" ctrlrange="-1.5 1.5"/>\n'
+    pid = '    <pid name="p" joint="elbow" kp="1e3" input="pos ff" ctrlrange="-1.5 1.5"/>\n'
     assert pid in DOCUMENT
     model = mjcf.from_xml_string(DOCUMENT.replace(pid, ""))
     spec = mujoco.MjSpec.from_string(model.to_xml_string())

@@ -75,7 +75,7 @@ def test_reference_to_an_unnamed_element_cannot_be_exported() -> None:
 def test_parse_converts_every_value() -> None:
     model = mjcf.from_xml_string(
         '<mujoco model="m"><worldbody><body name="b" pos="1 2 3">'
-        '<joint name="j" type="Slide" limited="true" range="-1 1" group="2"/>'
+        '<joint name="j" type="slide" limited="true" range="-1 1" group="2"/>'
         '<geom size=".1" rgba="1 0 0 1"/></body></worldbody></mujoco>')
     joint = model.find("joint", "j")
     assert joint is not None
@@ -91,6 +91,8 @@ def test_parse_converts_every_value() -> None:
     ("<mujoco>\n\n<worldbody><geom size='1 2 3 4'/></worldbody></mujoco>", r"line 3: .*expected 1 to 3 numbers"),
     ("<mujoco><worldbody><body name='a'/><body name='a'/></worldbody></mujoco>", r"unique"),
     ("<robot/>", r"root element is <robot>"),
+    ("<mujoco>\n<worldbody><geom type='Box'/></worldbody></mujoco>",
+     r"line 2: .*type='Box'.*expected 'box' \(MuJoCo reads keywords only as"),
 ])
 def test_parse_errors_are_the_library_error_with_a_line(xml: str, pattern: str) -> None:
     with pytest.raises(mjcf.ParseError, match=pattern):
