@@ -38,8 +38,13 @@ INT32_MAX: Final = 2**31 - 1
 DTYPES: Final[dict[str, type[np.generic]]] = {
     "double": np.float64, "float": np.float32, "int": np.int32}
 
-_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"  # what MJCF files spell numbers as
+# Numbers as MJCF files spell them, kept as text once matched: few enough integer digits and
+# a short enough exponent that no match can overflow (10^200 * 10^99 for a double, 10^20 *
+# 10^9 for a float). Anything else (longer, hexadecimal, inf, nan) is converted to be checked.
+_DOUBLE = r"[-+]?(?:\d{1,200}(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,2})?"
+_FLOAT = r"[-+]?(?:\d{1,20}(?:\.\d*)?|\.\d+)(?:[eE](?:-\d{1,2}|\+?\d))?"
 _INTEGER = r"[-+]?\d{1,9}"  # at most nine digits: always within 32 bits
+FLOAT32_MAX: Final = float(np.finfo(np.float32).max)
 
 
 class Rejected(Exception):
@@ -260,6 +265,8 @@ def to_int(value: object) -> int:
             raise Rejected("an integer (the value would be truncated)")
         result = int(f)
     elif isinstance(value, str):
+        if not value.isascii() or "_" in value:  # Python's int takes them; MuJoCo does not
+            raise Rejected("an integer")
         try:
             result = int(value)
         except ValueError:
@@ -280,11 +287,35 @@ def to_float(value: object) -> float:
     if isinstance(value, int | float | np.integer | np.floating):
         return float(cast(SupportsFloat, value))
     if isinstance(value, str):
-        try:
-            return float(value)
-        except ValueError:
-            raise Rejected("a number") from None
+        return text_to_float(value)
     raise _type_rejected("a number")
+
+
+def text_to_float(text: str) -> float:
+    """A number spelled as MuJoCo reads one (C's strtod): hexadecimal too, but no '_'
+    separators or non-ASCII digits (which Python's float takes), and nothing too large for a
+    double."""
+    if not text.isascii() or "_" in text:
+        raise Rejected("a number")
+    try:
+        value = float(text)
+    except ValueError:
+        if "x" not in text.lower():
+            raise Rejected("a number") from None
+        try:
+            value = float.fromhex(text)
+        except (ValueError, OverflowError):
+            raise Rejected("a number") from None
+    if math.isinf(value) and "inf" not in text.lower():
+        raise Rejected("a number within the range of a double")
+    return value
+
+
+def check_float32(value: float, text: str) -> None:
+    """Refuse a finite number too large for a float32 (MuJoCo: "number is too large")."""
+    if abs(value) > FLOAT32_MAX and not math.isinf(value) or (
+            math.isinf(value) and "inf" not in text.lower()):
+        raise Rejected("a number within the range of a float32")
 
 
 class IntCodec(Codec):
@@ -310,7 +341,9 @@ class RealCodec(Codec):
         return to_float(value)
 
     def parse(self, text: str) -> object:
-        to_float(text)
+        value = text_to_float(text)
+        if self.single:
+            check_float32(value, text)
         return text
 
     def read(self, stored: object) -> object:
@@ -346,7 +379,9 @@ def _text_to_float32(text: str) -> np.float32:
     other = np.nextafter(single, np.float32(math.copysign(math.inf, double - float(single))))
     if double - float(single) != float(other) - double:
         return single
-    exact, midpoint = Fraction(text.strip()), (Fraction(float(single)) + Fraction(float(other))) / 2
+    # (a hexadecimal spelling is exact in a double: the double is its value)
+    exact = Fraction(double) if "x" in text.lower() else Fraction(text.strip())
+    midpoint = (Fraction(float(single)) + Fraction(float(other))) / 2
     if exact == midpoint:
         return single  # a true tie: round half to even, as the cast did
     closer = abs(exact - Fraction(float(other))) < abs(exact - Fraction(float(single)))
@@ -359,8 +394,9 @@ def _doubles_to_float32(doubles: Float64Array, parts: list[str]) -> Float32Array
     back = singles.astype(np.float64)
     toward = np.nextafter(singles, np.where(doubles > back, np.float32(np.inf),
                                             np.float32(-np.inf)).astype(np.float32))
-    ties = np.flatnonzero((back != doubles) & np.isfinite(doubles)
-                          & (doubles - back == toward.astype(np.float64) - doubles))
+    with np.errstate(invalid="ignore"):  # inf - inf: infinities are no ties
+        ties = np.flatnonzero((back != doubles) & np.isfinite(doubles)
+                              & (doubles - back == toward.astype(np.float64) - doubles))
     for i in ties.tolist():
         singles[i] = _text_to_float32(parts[i])
     return singles
@@ -384,10 +420,10 @@ class ArrayCodec(Codec):
         self.single = dtype == "float"
         self.plain_types = frozenset({int}) if self.is_int else frozenset({int, float})
         self.expected = f"{count_text(lo, hi)} {'integers' if self.is_int else 'numbers'}"
-        number = _INTEGER if self.is_int else _NUMBER
+        number = _INTEGER if self.is_int else _FLOAT if self.single else _DOUBLE
         low, high = max(lo - 1, 0), "" if hi is None else str(max(hi - 1, 0))
         repeat = f"(?:\\s+{number}){{{low},{high}}}"
-        self.pattern = re.compile(f"\\s*{number}{repeat}\\s*" if hi != 0 else r"\s*")
+        self.pattern = re.compile(f"\\s*{number}{repeat}\\s*" if hi != 0 else r"\s*", re.ASCII)
 
     def accept(self, value: object) -> object:
         kind = type(value)
@@ -448,13 +484,21 @@ class ArrayCodec(Codec):
         if self.hi is not None and len(parts) > self.hi:  # refuse before converting millions
             raise Rejected(f"{self.expected}, got {len(parts)}")
         try:  # C-level conversion; on any trouble, the per-item path says what was wrong
+            if not text.isascii() or "_" in text:
+                raise ValueError(text)  # Python takes them; MuJoCo does not
             if self.is_int:
                 return np.array(list(map(int, parts)), dtype=self.dtype)
             doubles = np.fromiter(map(float, parts), np.float64, len(parts))
+            if not np.isfinite(doubles).all():
+                raise ValueError(text)  # inf, nan or too large: the per-item path decides
         except (ValueError, OverflowError):
-            converter = to_int if self.is_int else to_float
-            return np.array([converter(p) for p in parts], dtype=self.dtype)
+            if self.is_int:
+                return np.array([to_int(p) for p in parts], dtype=self.dtype)
+            doubles = np.array([text_to_float(p) for p in parts], dtype=np.float64)
         if self.single:
+            for value, part in zip(doubles.tolist(), parts, strict=True):
+                if not -FLOAT32_MAX <= value <= FLOAT32_MAX:
+                    check_float32(value, part)
             return _doubles_to_float32(doubles, parts)
         return doubles
 

@@ -58,6 +58,12 @@ CASES: dict[str, str] = {
     "negative-damper-ctrlrange": doc(WORLD, '<actuator><damper joint="j" ctrlrange="-1 1"/>'
                                             '</actuator>'),
     "maxhullvert-below-4": doc('<default><mesh maxhullvert="2"/></default>'),
+    # --- numbers C's strtod does not read, though Python's float() and int() do -----------
+    "number-with-underscore": doc('<worldbody><site pos="1_0 0 0"/></worldbody>'),
+    "number-with-non-ascii-digit": doc('<worldbody><site pos="\u0661 0 0"/></worldbody>'),
+    "int-in-hexadecimal": doc('<worldbody><geom size="1" condim="0x3"/></worldbody>'),
+    "double-too-large": doc('<worldbody><site pos="1e400 0 0"/></worldbody>'),
+    "float-too-large": doc('<worldbody><geom size="1" rgba="1e39 0 0 1"/></worldbody>'),
     # --- keywords in another case (Python assignment takes any case, as dm_control does) ---
     "keyword-in-upper-case": doc('<worldbody><geom type="CAPSULE" size="1 1"/></worldbody>'),
     "bool-in-title-case": doc('<worldbody><body mocap="True"/></worldbody>'),
@@ -160,6 +166,11 @@ MESSAGES: dict[str, str] = {
     'undefined-class': "unknown default class name 'nope'",
     'user-sensor-dim': "required attribute missing: 'dim'",
     'zero-quaternion': 'zero quaternion is not allowed',
+    'number-with-underscore': "bad format in attribute 'pos'",
+    'number-with-non-ascii-digit': "bad format in attribute 'pos'",
+    'int-in-hexadecimal': "bad format in attribute 'condim'",
+    'double-too-large': "number is too large in attribute 'pos'",
+    'float-too-large': "number is too large in attribute 'rgba'",
     'keyword-in-upper-case': "invalid keyword: 'CAPSULE'",
     'bool-in-title-case': "invalid keyword: 'True'",
     'flag-in-upper-case': "invalid keyword: 'DISABLE'",
@@ -252,6 +263,10 @@ ACCEPTED: dict[str, str] = {
     "inertial-in-replicate-in-world": doc(
         '<worldbody><replicate count="2"><inertial pos="0 0 0" mass="1"/></replicate>'
         '</worldbody>'),
+    # numbers C's strtod reads that Python's float() does not, or reads differently
+    "hexadecimal-double": doc('<worldbody><site pos="0x1p3 0 -0x.8p0"/></worldbody>'),
+    "infinite-and-tiny": doc('<worldbody><site pos="inf -INF 1e-400"/></worldbody>'),
+    "double-beyond-float32": doc('<worldbody><site pos="1e39 0 0"/></worldbody>'),
     # found by test_round_trip: what MuJoCo writes for a <pid> and a <dcmotor>
     "general-input-servo-tokens": doc(WORLD, '<actuator><general joint="j" input="pos ff"/>'
                                              '</actuator>'),
