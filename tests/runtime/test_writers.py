@@ -12,6 +12,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from lxml import etree
 
 import typed_mjcf as mjcf
 from typed_mjcf._codecs import Format
@@ -86,3 +87,22 @@ def test_a_disabled_collector_stays_disabled() -> None:
     finally:
         if was:
             gc.enable()
+
+
+@pytest.mark.parametrize("composed", [False, True])
+def test_deep_models_are_indented_like_libxml2(composed: bool) -> None:
+    """Indentation stops growing at libxml2's cap, so a 2,000-deep chain writes about as
+    much text as lxml does for the same tree (not 2 spaces x depth per line), on both
+    writers."""
+    model = mjcf.RootElement()
+    body: mjcf.Body | mjcf.Worldbody = model.worldbody
+    for _ in range(2000):
+        body = body.add_body()
+    if composed:
+        model.worldbody.add_site(name="s").attach(mjcf.RootElement(model="arm"))
+    text = model.to_xml_string()
+    tree = etree.fromstring(text.encode(), etree.XMLParser(huge_tree=True))
+    ours = etree.tostring(tree, pretty_print=True).decode()
+    assert text.strip() == ours.strip()
+    assert max(len(line) - len(line.lstrip()) for line in text.splitlines()) == 60
+    assert len(text) < 300_000  # 2,000 levels of 2 spaces each would be over 4 million
