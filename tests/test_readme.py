@@ -73,6 +73,7 @@ class Checked:
     diagnostics: Mapping[Checker, list[Diagnostic]]
     origin: Mapping[Path, tuple[Path, int]]  # checked file -> (file shown, line offset)
     canary: Path
+    mistakes: Path
 
     def describe(self, diagnostic: Diagnostic) -> str:
         shown, offset = self.origin.get(diagnostic.file, (diagnostic.file, 0))
@@ -100,6 +101,40 @@ def commands(folder: Path, files: list[Path]) -> dict[Checker, list[str]]:
     }
 
 
+# The mistakes of the README's table "What the type checker catches", one per line in the
+# table's order after the three set-up lines; what mypy says of each must be what the
+# table's typed-mjcf column shows ("…" standing for the middle of a long list).
+MISTAKES = [
+    'body.add_geom(tpye="capsule")',
+    'body.add_geom(type="capsul")',
+    "body.add_geom(pos=(1, 2))",
+    "body.add_geom(size=(1, 2, 3, 4))",
+    'body.add_geom(mass="heavy")',
+    "body.add_geom(condim=3.5)",
+    'body.add_joint(limited="yes")',
+    "model.worldbody.add_motor()",
+    "joint.add_geom()",
+    "model.sensor.add_jointpos(joint=body.add_geom())",
+    'joint.tpye = "hinge"',
+]
+MISTAKES_MODULE = ("import typed_mjcf as mjcf\n\nmodel = mjcf.RootElement()\n"
+                   "body = model.worldbody.add_body()\njoint = body.add_joint()\n"
+                   + "".join(line + "\n" for line in MISTAKES))
+MISTAKES_FIRST_LINE = 6
+
+
+def readme_table_messages() -> list[str]:
+    """The typed-mjcf column of the README's table of mistakes, in its order."""
+    text = README.read_text(encoding="utf-8")
+    section = text.split("## What the type checker catches", 1)[1].split("\n#", 1)[0]
+    messages: list[str] = []
+    for row in section.splitlines():
+        cells = [c.strip() for c in re.split(r"(?<!\\)\|", row)[1:-1]]
+        if len(cells) == 4 and cells[1].startswith("`") and cells[1] != "typed-mjcf":
+            messages.append(cells[1].strip("`").replace("\\|", "|"))
+    return messages
+
+
 # A module with two mistakes, checked with the others: it proves that the runs see the
 # library's and MuJoCo's types (an untyped import would make everything Any, and clean).
 CANARY = """import mujoco
@@ -125,6 +160,9 @@ def checked(tmp_path_factory: pytest.TempPathFactory) -> Checked:
     canary = folder / "canary.py"
     canary.write_text(CANARY, encoding="utf-8")
     origin[canary.resolve()] = (canary.resolve(), 0)
+    mistakes = folder / "mistakes.py"
+    mistakes.write_text(MISTAKES_MODULE, encoding="utf-8")
+    origin[mistakes.resolve()] = (mistakes.resolve(), 0)
     processes = {
         checker: subprocess.Popen(command, cwd=folder, stdout=subprocess.PIPE,
                                   stderr=subprocess.PIPE, text=True)
@@ -133,14 +171,15 @@ def checked(tmp_path_factory: pytest.TempPathFactory) -> Checked:
     outputs = {checker: process.communicate() for checker, process in processes.items()}
     return Checked({"mypy": parse_mypy(processes["mypy"].returncode, *outputs["mypy"]),
                     "pyright": parse_pyright(processes["pyright"].returncode,
-                                             *outputs["pyright"])}, origin, canary.resolve())
+                                             *outputs["pyright"])}, origin, canary.resolve(),
+                   mistakes.resolve())
 
 
 @pytest.mark.parametrize("checker", CHECKERS)
 def test_readme_and_examples_type_check(checker: Checker, checked: Checked) -> None:
     """No error and no warning (errors inside the library would count too)."""
     found = [checked.describe(d) for d in sorted(checked.diagnostics[checker])
-             if d.file != checked.canary]
+             if d.file not in (checked.canary, checked.mistakes)]
     assert not found, f"{checker} (strict) on the README's code and examples/:\n" + "\n".join(
         found)
 
@@ -149,3 +188,20 @@ def test_readme_and_examples_type_check(checker: Checker, checked: Checked) -> N
 def test_the_type_check_sees_mistakes(checker: Checker, checked: Checked) -> None:
     lines = sorted({d.line for d in checked.diagnostics[checker] if d.file == checked.canary})
     assert lines == CANARY_LINES, [checked.describe(d) for d in checked.diagnostics[checker]]
+
+
+def test_the_readme_table_shows_what_mypy_says(checked: Checked) -> None:
+    said: dict[int, str] = {}
+    for diagnostic in checked.diagnostics["mypy"]:
+        if diagnostic.file == checked.mistakes and diagnostic.line not in said:
+            said[diagnostic.line] = f"{diagnostic.message}  [{diagnostic.code}]"
+    table = readme_table_messages()
+    assert len(table) == len(MISTAKES)
+    for number, (code, shown) in enumerate(zip(MISTAKES, table, strict=True)):
+        actual = said.get(MISTAKES_FIRST_LINE + number)
+        assert actual is not None, f"mypy says nothing of {code}"
+        head, _, tail = shown.partition("…")
+        if tail:
+            assert actual.startswith(head) and actual.endswith(tail), (code, actual)
+        else:
+            assert actual == shown, (code, actual)
