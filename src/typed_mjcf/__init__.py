@@ -10,7 +10,7 @@
 
 __version__ = "0.1.0"
 
-from typing import Final
+from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
 from typed_mjcf._generated import elements as _elements
@@ -51,7 +51,7 @@ from typed_mjcf.io import (
     from_zip,
 )
 
-PREFIX_SEPARATOR: Final[str] = "/"  # dm_control's name for the scope separator of attached models
+PREFIX_SEPARATOR: _Final[str] = "/"  # dm_control's name for the scope separator of attached models
 
 __all__ = [
     "PREFIX_SEPARATOR",
