@@ -11,8 +11,13 @@ have in common from whichever of their rows sets it last.
 from __future__ import annotations
 
 import functools
+from collections.abc import Iterator
+from typing import cast
+
+import numpy as np
 
 from typed_mjcf import _tree
+from typed_mjcf._codecs import Array, ArrayCodec
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.errors import InvalidValueError, UnknownAttributeError, did_you_mean
@@ -95,7 +100,9 @@ def _class_value(default: Element, defaults_tag: str, attribute: AttributeSpec) 
 
 def resolve(element: Element, name: str, grammar_defaults: bool = True) -> object:
     """The value of attribute ``name`` that MuJoCo compiles for ``element``: its own, else
-    its classes', else (with ``grammar_defaults``) the grammar's default."""
+    its classes', else (with ``grammar_defaults``) the grammar's default. An array given
+    shorter than it may be (``size="0.1"`` of up to 3) keeps the rest from where it would
+    otherwise come, as MuJoCo reads it into the default's values."""
     spec = element.spec
     attribute = spec.by_key.get(name)
     if attribute is None:
@@ -103,17 +110,52 @@ def resolve(element: Element, name: str, grammar_defaults: bool = True) -> objec
         raise UnknownAttributeError(f"{element.path}: <{spec.tag}> has no attribute {name!r}"
                                     f"{did_you_mean(name, known)}")
     own = _tree.read_value(element, attribute)
-    if own is not None:
-        return own
-    defaults_tag = spec.defaults_tag
+    length = _filled_length(element, attribute)
+    found = own
+    if found is not None and (length is None or _size(found) >= length):
+        return found
+    for value in _inherited(element, attribute, grammar_defaults):
+        found = value if found is None else _filled(found, value)
+        if length is None or _size(found) >= length:
+            break
+    return found
+
+
+def _filled_length(element: Element, attribute: AttributeSpec) -> int | None:
+    """The length a shorter array of ``attribute`` is filled up to from defaults (None: it
+    is not: scalars, fixed and unbounded lengths, elements no default applies to)."""
+    codec = attribute.codec
+    if element.spec.defaults_tag is None or not isinstance(codec, ArrayCodec):
+        return None
+    return codec.hi if codec.hi is not None and codec.lo < codec.hi else None
+
+
+def _inherited(element: Element, attribute: AttributeSpec,
+               grammar_defaults: bool) -> Iterator[object]:
+    """What the element would have without its own value: its classes' values, innermost
+    first, then (with ``grammar_defaults``) the grammar's default."""
+    defaults_tag = element.spec.defaults_tag
     if defaults_tag is not None:
         default = class_of(element)
         while default is not None:
             value = _class_value(default, defaults_tag, attribute)
             if value is not None:
-                return value
+                yield value
             parent = default.parent  # nested classes inherit from the class around them
             default = parent if parent is not None and parent.spec is default.spec else None
-    if attribute.default is None or not grammar_defaults:
-        return None
-    return attribute.codec.read(attribute.codec.parse(attribute.default))
+    if attribute.default is not None and grammar_defaults:
+        yield attribute.codec.read(attribute.codec.parse(attribute.default))
+
+
+def _size(value: object) -> int:
+    return len(cast(Array, value))
+
+
+def _filled(own: object, fallback: object) -> object:
+    """``own``, continued by the entries of ``fallback`` past its length (read-only)."""
+    head, tail = cast(Array, own), cast(Array, fallback)
+    if tail.shape[0] <= head.shape[0]:
+        return head
+    array = np.concatenate([head, tail[head.shape[0]:].astype(head.dtype)])
+    array.flags.writeable = False
+    return array

@@ -12,19 +12,20 @@ from typed_mjcf._tree import Element, ModelBase, grammar_facts
 
 def commit_defaults(element: Element, attributes: Iterable[str] | None = None) -> None:
     """Write into ``element`` the value its default classes give each of its attributes
-    (only ``attributes``, when given) that it does not set itself: afterwards its own values
-    say what MuJoCo uses, whatever the classes."""
+    (only ``attributes``, when given) that it does not set itself, and the rest of an array
+    it sets shorter than its classes do: afterwards its own values say what MuJoCo uses,
+    whatever the classes."""
     spec = element.spec
     if spec.defaults_tag is None:
         return
     names = [a.py_name for a in spec.attributes] if attributes is None else list(attributes)
-    stored = _tree.values(element)
     for name in names:
         attribute = spec.by_key[name]
-        if attribute.name in stored or attribute.kind == "id":
+        if attribute.kind == "id":
             continue
+        own = _tree.read_value(element, attribute)
         value = resolve(element, name, grammar_defaults=False)
-        if value is not None:
+        if value is not None and value is not own:  # unset, or an array its classes fill up
             _tree.assign(element, attribute, value)
 
 

@@ -1,0 +1,111 @@
+"""``commit_defaults`` and ``resolve`` agree with MuJoCo over every corpus model it compiles.
+
+Committing every element's defaults and then deleting every default class (and every
+``class``/``childclass`` naming one) must compile to the model MuJoCo compiles from the
+file, field by field: the classes then say nothing the elements do not say themselves.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import mujoco
+import pytest
+
+import typed_mjcf as mjcf
+from tests.runtime.model_compare import model_differences
+from tests.runtime.test_corpus import CORPUS
+from typed_mjcf import _tree
+
+
+def _compilable() -> list[object]:
+    params: list[object] = []
+    for ident, path in CORPUS:
+        try:
+            mujoco.MjModel.from_xml_path(str(path))
+        except ValueError:
+            continue
+        params.append(pytest.param(ident, path, id=ident))
+    return params
+
+
+COMPILABLE = _compilable()
+
+
+def _strip_classes(model: mjcf.RootElement) -> int:
+    """Remove every default class and every attribute naming one; how many were named."""
+    named = 0
+    for element in list(model.iter_elements()):
+        for attribute in element.spec.attributes:
+            if attribute.namespace == "default" and attribute.name in _tree.values(element):
+                element.set_attributes(**{attribute.py_name: None})
+                named += 1
+    for section in list(model.default.get_children()):
+        section.remove()
+    return named
+
+
+def test_the_corpus_has_models_with_classes() -> None:
+    assert len(COMPILABLE) >= 40
+
+
+@pytest.mark.parametrize(("ident", "path"), COMPILABLE)
+def test_committed_defaults_compile_like_the_classes(ident: str, path: Path) -> None:
+    expected = mujoco.MjModel.from_xml_path(str(path))
+    model = mjcf.from_path(path)
+    for element in list(model.iter_elements()):
+        mjcf.commit_defaults(element)
+    _strip_classes(model)
+    assert not model.default.get_children()
+    actual = model.compile()
+    _copy_what_fixed_tendons_cannot_state(expected, actual)
+    assert model_differences(expected, actual) == []
+
+
+def _copy_what_fixed_tendons_cannot_state(expected: mujoco.MjModel,
+                                          actual: mujoco.MjModel) -> None:
+    """A ``<tendon>`` default sets ``width``, ``rgba`` and ``material``, which a ``<fixed>``
+    tendon takes from its class but has no attributes to state itself: those fields of
+    fixed tendons are left out of the comparison (taken from MuJoCo's compile)."""
+    for tendon in range(expected.ntendon):
+        start, count = expected.tendon_adr[tendon], expected.tendon_num[tendon]
+        wraps = expected.wrap_type[start:start + count]
+        if (wraps == mujoco.mjtWrap.mjWRAP_JOINT).all():
+            actual.tendon_width[tendon] = expected.tendon_width[tendon]
+            actual.tendon_rgba[tendon] = expected.tendon_rgba[tendon]
+            actual.tendon_matid[tendon] = expected.tendon_matid[tendon]
+
+
+def test_a_shorter_array_keeps_the_rest_from_its_classes_as_mujoco_reads_it() -> None:
+    model = mjcf.from_xml_string("""<mujoco>
+      <default>
+        <geom size="1 2 3" friction="0.7 0.01 0.002"/>
+        <default class="outer">
+          <geom size="4 5"/>
+          <default class="inner"><geom friction="0.3"/></default>
+        </default>
+      </default>
+      <worldbody><body>
+        <geom name="a" type="box" size="0.5" friction="0.2"/>
+        <geom name="b" type="box" class="inner" size="0.25"/>
+        <site name="s" size="0.1"/>
+      </body></worldbody>
+    </mujoco>""")
+    compiled = model.compile()
+    for name in ("a", "b"):
+        geom = model.find("geom", name)
+        assert isinstance(geom, mjcf.Geom)
+        index = mujoco.mj_name2id(compiled, mujoco.mjtObj.mjOBJ_GEOM, name)
+        size, friction = geom.resolve("size"), geom.resolve("friction")
+        assert size is not None and size.tolist() == compiled.geom_size[index].tolist()
+        assert friction is not None
+        assert friction.tolist() == compiled.geom_friction[index].tolist()
+    site = model.find("site", "s")
+    assert isinstance(site, mjcf.Site)
+    size = site.resolve("size")  # the rest from the grammar's default
+    assert size is not None and size.tolist() == compiled.site_size[0].tolist()
+    before = list(model.find_all("geom"))
+    for geom in before:
+        mjcf.commit_defaults(geom)
+    b = model.find("geom", "b")
+    assert isinstance(b, mjcf.Geom) and b.size is not None and b.size.tolist() == [0.25, 5, 3]
