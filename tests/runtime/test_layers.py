@@ -121,10 +121,20 @@ def _string_constants(tree: ast.Module) -> list[ast.Constant]:
             and isinstance(node.value, str) and id(node) not in skipped]
 
 
+# Strings spelled like a tag that are not one: (module, string) -> what it is.
+_NOT_TAGS = {
+    ("cli/to_python.py", "model"): "the root's variable in the code written, and the "
+                                   "command's argument",
+}
+
+
 def test_tag_facts_come_from_the_generated_tables() -> None:
-    found = [f"{name}:{node.lineno}: {node.value!r}" for name, path in _modules().items()
+    """In the runtime and the command line alike."""
+    paths = sorted(SRC.rglob("*.py"))
+    found = [f"{path.relative_to(SRC)}:{node.lineno}: {node.value!r}" for path in paths
              for node in _string_constants(ast.parse(path.read_text(encoding="utf-8")))
-             if node.value in _TAG_NAMES]
+             if node.value in _TAG_NAMES
+             and (path.relative_to(SRC).as_posix(), node.value) not in _NOT_TAGS]
     assert not found, "\n".join(found)
 
 

@@ -32,7 +32,7 @@ from typed_mjcf._codecs import ArrayCodec, KeywordCodec, make_codec, to_float
 from typed_mjcf._export import iter_written
 from typed_mjcf._files import compiler_folders, resolve_path
 from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
 from typed_mjcf.cli import _pycode
 from typed_mjcf.cli._common import BAD_INPUT, OK, BadInput, error, load, shown, where
@@ -240,7 +240,7 @@ class _Module:
         if name is None:
             return _pycode.identifier(_child_name(element), tag)
         base = _pycode.identifier(name, tag)
-        return f"{base}_class" if element.spec.namespace == "default" else base
+        return f"{base}_class" if element.spec.namespace == grammar_facts().class_namespace else base
 
     # --------------------------------------------------------------- code
 
@@ -266,7 +266,7 @@ class _Module:
         return "\n".join([*head, *body, *tail]) + "\n"
 
     def title(self) -> str:
-        name = _tree.values(self.model).get("model")
+        name = _tree.values(self.model).get(grammar_facts().model_name)
         file = _doc(os.path.basename(self.main))
         if isinstance(name, str):
             return f'The MJCF model "{_doc(name)}" ({file}) as typed-mjcf code.'
