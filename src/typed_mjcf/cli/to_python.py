@@ -266,7 +266,7 @@ class _Module:
         return "\n".join([*head, *body, *tail]) + "\n"
 
     def title(self) -> str:
-        name = _tree.values(self.model).get(grammar_facts().model_name)
+        name = _tree.scope_of(self.model).name
         file = _doc(os.path.basename(self.main))
         if isinstance(name, str):
             return f'The MJCF model "{_doc(name)}" ({file}) as typed-mjcf code.'
