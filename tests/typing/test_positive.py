@@ -105,6 +105,13 @@ def build() -> mjcf.RootElement:
     geom.size = [1, 2.5, np.int64(3)]
     geom.pos = (0, 0, np.float64(0.5))
     model.keyframe.add_key(qpos=[0, 0, 0.5, 1, 0, 0, 0], ctrl=[0.5, 0])
+    # a default class by name or element, spelt class_ or dclass (dm_control's)
+    limb = model.default.add_default(dclass="limb")
+    assert_type(limb, mjcf.Default)
+    arm.add_geom(dclass=limb, size=[0.1])
+    arm.add_geom(class_="limb", size=[0.1])
+    assert_type(arm.add_geom(size=[0.1]).dclass, str | mjcf.Default | None)
+    geom.dclass = limb
     geom.mass = 1.5
     shoulder.type = "slide"
     shoulder.limited = "auto"

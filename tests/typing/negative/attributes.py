@@ -35,3 +35,9 @@ model.asset.add_mesh(face=np.array([0.5, 1, 2], dtype=np.float64))  # E: mypy[ar
 # a number where a string or a bool belongs
 body.add_geom(name=3)  # E: mypy[arg-type] pyright[reportArgumentType]
 model.compiler.autolimits = "true"  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
+
+# numpy arrays are not scalars, even of one element; bools are not keywords for a class
+body.add_geom(mass=np.zeros(1))  # E: mypy[arg-type] pyright[reportArgumentType]
+body.add_geom(dclass=3)  # E: mypy[arg-type] pyright[reportArgumentType]
+body.add_geom(dclass=body)  # E: mypy[arg-type] pyright[reportArgumentType]
+body.add_geom(pos=[0, 0, "1"])  # E: mypy[list-item] pyright[reportArgumentType]
