@@ -45,6 +45,8 @@ class AttributeOverride:
     dtype: ir.DType | None = None
     arity: tuple[int, int | None] | None = None
     enum: str | None = None
+    alone: tuple[str, ...] | None = None  # flags: enums whose keywords it also takes alone
+    ordered: bool | None = None  # flags: MuJoCo reads them only in the enum's order
     namespace: str | None = None
     default: str | None = None
     required: bool | None = None
@@ -294,6 +296,15 @@ def _arity(value: object, where: str) -> tuple[int, int | None]:
     return (bounds[0], bounds[1] if len(bounds) == 2 else None)
 
 
+def _alone(value: object, where: str) -> tuple[str, ...]:
+    """A non-empty list of distinct enum names."""
+    names = _str_list(value, where)
+    if not names or len(set(names)) != len(names):
+        raise FactsError(f"{where}: expected a non-empty list of distinct enum names, "
+                         f"got {value!r}")
+    return tuple(names)
+
+
 _OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride))
 
 
@@ -319,6 +330,8 @@ def _override(value: object, where: str) -> AttributeOverride:
         dtype=_choice(entry["dtype"], _DTYPES, f"{where} dtype") if "dtype" in entry else None,
         arity=_arity(entry["arity"], f"{where} arity") if "arity" in entry else None,
         enum=opt_str("enum"), namespace=opt_str("namespace"), default=opt_str("default"),
+        alone=_alone(entry["alone"], f"{where} alone") if "alone" in entry else None,
+        ordered=opt_bool("ordered"),
         required=opt_bool("required"), nodefault=opt_bool("nodefault"),
         pattern=opt_str("pattern"), field=opt_str("field"), doc=opt_str("doc"),
         reason=_str(entry["reason"], f"{where} reason"),

@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 
 from codegen import ir, naming, probe
 from codegen.facts import AttributeOverride, Facts
-from codegen.passes import DEFAULT_ROW, PROJECTION_PREFIX, apply_override
+from codegen.passes import DEFAULT_ROW, PROJECTION_PREFIX, apply_override, enums_of
 from codegen.wheel import AtVal, Reference, Wheel, WheelRow, parse_at_val
 
 # The longest tag path an anchor spells before the attribute: ``compiler-lengthrange-mode``.
@@ -114,6 +114,10 @@ def describe(attr: ir.AttributeDef) -> str:
     text: str = attr.kind
     if attr.kind in ("keyword", "flags"):
         text += f"<{attr.enum}>"
+        if attr.alone:
+            text += f" or alone <{', '.join(attr.alone)}>"
+        if attr.ordered:
+            text += " (ordered)"
     elif attr.kind in ("id", "ref"):
         text += f"<{attr.namespace}>"
     elif attr.dtype is not None and attr.kind == "real":
@@ -130,8 +134,8 @@ def describe(attr: ir.AttributeDef) -> str:
 
 def _type_of(attr: ir.AttributeDef) -> tuple[object, ...]:
     """The fields that make an attribute's type (not its documentation or anchor)."""
-    return (attr.kind, attr.dtype, attr.arity, attr.enum, attr.namespace, attr.default,
-            attr.pattern, attr.field)
+    return (attr.kind, attr.dtype, attr.arity, attr.enum, attr.alone, attr.ordered,
+            attr.namespace, attr.default, attr.pattern, attr.field)
 
 
 # ----------------------------------------------------------------------------------- sync
@@ -559,7 +563,7 @@ class _Sync:
         return None, [(k, str(i)) for i, k in enumerate(keywords)]
 
     def _used_enums(self) -> set[str]:
-        return {a.enum for r in self.rows.values() for a in r.attributes if a.enum}
+        return {n for r in self.rows.values() for a in r.attributes for n in enums_of(a)}
 
     def _check_enums(self) -> None:
         """Every C constant of a bound enum must exist in the wheel; drop those that do not."""

@@ -143,6 +143,19 @@ def test_every_facts_table_is_parsed_into_typed_fields() -> None:
     )
 
 
+def test_flags_keys_of_an_attribute_entry() -> None:
+    facts = parse_facts(ENTRY + 'alone = ["jt", "unused"]\nordered = true\n', "f.toml")
+    assert facts.attributes == [AttributeOverride("a", "b", alone=("jt", "unused"), ordered=True,
+                                                  reason="r")]
+
+
+def test_repository_facts_type_input_as_flags_with_keywords_alone() -> None:
+    entries = {(o.element, o.name): o for o in load_facts().attributes}
+    for row in ("general", "pid", "dcmotor"):
+        entry = entries[(row, "input")]
+        assert (entry.alone, entry.ordered) == (("inputchart", "inputkeyword"), True)
+
+
 def test_empty_facts() -> None:
     assert parse_facts("") == Facts()
 
@@ -174,6 +187,12 @@ ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
     (ENTRY + "arity = [1, 2, 3]\n",
      "f.toml: [[attribute]] #1 arity: expected [lo, hi] or [lo] integers, got [1, 2, 3]"),
     (ENTRY + "required = 1\n", "f.toml: [[attribute]] #1 required: expected true or false, got 1"),
+    (ENTRY + 'alone = "jt"\n', "f.toml: [[attribute]] #1 alone: expected a list of strings"),
+    (ENTRY + "alone = []\n",
+     "f.toml: [[attribute]] #1 alone: expected a non-empty list of distinct enum names, got []"),
+    (ENTRY + 'alone = ["jt", "jt"]\n',
+     "f.toml: [[attribute]] #1 alone: expected a non-empty list of distinct enum names"),
+    (ENTRY + "ordered = 1\n", "f.toml: [[attribute]] #1 ordered: expected true or false, got 1"),
     (ENTRY + "doc = 2\n", "f.toml: [[attribute]] #1 doc: expected a string, got 2"),
     ('[[attribute]]\nelement = "a"\nname = "b"\nreason = 2\n',
      "f.toml: [[attribute]] #1 reason: expected a string, got 2"),
@@ -289,6 +308,54 @@ def test_override_naming_no_grammar_attribute_is_left_to_sync() -> None:
     assert normalized(facts) == normalized(Facts(root_children=FACTS.root_children))
     with pytest.raises(ValueError, match="joint@nope: row 'joint' has no such attribute"):
         passes.apply_overrides(normalized(facts), facts.attributes)
+
+
+FLAGS = AttributeOverride("joint", "type", kind="flags", alone=("unused",), ordered=True)
+
+
+def test_override_to_flags_taking_keywords_alone_reaches_the_projection() -> None:
+    schema = normalized(Facts(root_children=FACTS.root_children, attributes=[FLAGS]))
+    for row in ("joint", "default_joint"):
+        joint_type = schema.elements[row].attribute("type")
+        assert (joint_type.kind, joint_type.enum, joint_type.alone, joint_type.ordered) == (
+            "flags", "jt", ["unused"], True)
+    assert set(schema.enums) == {"jt", "unused"}  # an enum used only alone is kept
+    passes.check(schema)
+
+
+def test_a_kind_other_than_flags_forgets_alone_and_order() -> None:
+    schema = normalized(Facts(root_children=FACTS.root_children, attributes=[FLAGS]))
+    joint_type = schema.elements["joint"].attribute("type")
+    passes.apply_override(joint_type, AttributeOverride("joint", "type", kind="keyword"), schema)
+    assert (joint_type.kind, joint_type.enum, joint_type.alone, joint_type.ordered) == (
+        "keyword", "jt", None, False)
+
+
+@pytest.mark.parametrize(("override", "message"), [
+    (AttributeOverride("joint", "type", alone=("unused",)),
+     "only flags take keywords alone or in order, not a keyword attribute"),
+    (AttributeOverride("joint", "type", ordered=True),
+     "only flags take keywords alone or in order, not a keyword attribute"),
+    (AttributeOverride("joint", "type", kind="flags", alone=("nope",)),
+     "alone names undeclared enum 'nope'"),
+    (AttributeOverride("joint", "type", kind="flags", alone=("jt",)),
+     "keyword 'hinge' of enum 'jt' is also one of enum 'jt': a value would be ambiguous"),
+])
+def test_keywords_alone_errors(override: AttributeOverride, message: str) -> None:
+    with pytest.raises(ValueError) as info:
+        normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
+    assert str(info.value) == f"attribute override joint@type: {message}"
+
+
+def test_check_keywords_alone() -> None:
+    schema = normalized(Facts(root_children=FACTS.root_children, attributes=[FLAGS]))
+    schema.elements["default_joint"].attribute("type").kind = "keyword"
+    schema.elements["joint"].attribute("type").alone = ["unused", "gone"]
+    assert check_message(schema) == (
+        "2 schema problem(s):\n"
+        "  row 'joint': attribute 'type' uses missing enum 'gone'\n"
+        "  row 'default_joint': attribute 'type': only flags take keywords alone or in order, "
+        "not a keyword attribute")
 
 
 def test_override_to_int_sets_dtype() -> None:
@@ -435,6 +502,12 @@ def test_reference_grammar_normalizes() -> None:
     assert any(c.element == "worldbody" and c.single for c in out.elements["mujoco"].children)
     assert out.elements["default_equality"].projection_of is None
     assert out.elements["default_geom"].class_name == "DefaultGeom"
+    for row in ("general", "default_general", "pid", "default_pid", "dcmotor",
+                "default_dcmotor"):
+        servo_input = out.elements[row].attribute("input")
+        assert (servo_input.kind, servo_input.enum, servo_input.alone, servo_input.ordered) == (
+            "flags", "inputbit", ["inputchart", "inputkeyword"], True)
+    assert out.enums["inputkeyword"].keywords == ["none"]
 
 
 # ---------------------------------------------------------------------- naming facts
