@@ -12,7 +12,7 @@ import re
 from collections.abc import Iterable, Mapping
 
 from codegen import ir, naming
-from codegen.facts import AttributeOverride, Facts
+from codegen.facts import AttributeOverride, EnumFact, Facts
 
 DEFAULT_ROW = "default"  # the <default> class row; its children are per-tag settings
 PROJECTION_PREFIX = "default_"  # rows valid only inside <default>
@@ -23,6 +23,7 @@ def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     """The renderer's IR: ``schema`` (left untouched) with ``facts`` applied and checked."""
     out = copy.deepcopy(schema)
     route_root_children(out, facts.root_children)
+    apply_enum_facts(out, facts.enums)
     # Overrides on declared rows go first so default projections inherit them; an entry may
     # also name a projection row, which only exists afterwards, or an attribute the wheel
     # adds, which sync types (and where an entry that names nothing is an error).
@@ -55,6 +56,19 @@ def route_root_children(schema: ir.Schema, routes: Mapping[str, str]) -> None:
             raise ValueError(f"root_children: root {root.name!r} has no child {source!r}")
         old = root.children[index]
         root.children[index] = ir.ChildDef(target, old.card, old.single)
+
+
+def apply_enum_facts(schema: ir.Schema, enums: Iterable[EnumFact]) -> None:
+    """Hand-kept keyword sets (``[[enum]]``): added, or replacing the sources' keywords."""
+    for fact in enums:
+        schema.enums[fact.name] = enum_from_fact(fact, schema.enums.get(fact.name))
+
+
+def enum_from_fact(fact: EnumFact, old: ir.EnumDef | None) -> ir.EnumDef:
+    """The enum an ``[[enum]]`` entry makes of ``old`` (None: a new enum)."""
+    ctype = fact.ctype if fact.ctype is not None else old.ctype if old else None
+    doc = fact.doc if fact.doc is not None else old.doc if old else ""
+    return ir.EnumDef(fact.name, list(fact.values), ctype, doc)
 
 
 def mark_single(schema: ir.Schema, single: Mapping[str, Iterable[str]]) -> None:

@@ -484,7 +484,7 @@ Gain: TypeAlias = Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", 
 GeomType: TypeAlias = Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
 """The keywords of geomtype."""
 
-Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage"]
+Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 """The keywords of bitflags: tokens combine bitwise, canonical order enforced."""
 
 InputbitAlone: TypeAlias = Literal["expmap", "quat", "none"]

@@ -479,7 +479,7 @@ Gain: TypeAlias = Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", 
 GeomType: TypeAlias = Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
 """The keywords of geomtype."""
 
-Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage"]
+Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 """The keywords of bitflags: tokens combine bitwise, canonical order enforced."""
 
 InputbitAlone: TypeAlias = Literal["expmap", "quat", "none"]
@@ -1560,8 +1560,8 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
             actdim: int. Default: "-1". Saved default depends on dyntype.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none. So3 chart
-                keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                So3 chart keyword, or servo token subset.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
             velrange: double[2].
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
@@ -2139,7 +2139,7 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             slewmax: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
 
@@ -2586,8 +2586,8 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             lugre: double[1..5] (1 to 5 values).
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none. Token
-                subset, or the none keyword.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                Token subset, or the none keyword.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
 
@@ -8091,7 +8091,7 @@ class Dcmotor(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         Token subset, or the none keyword.
 
@@ -8991,8 +8991,8 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
             actdim: int. Default: "-1". Saved default depends on dyntype.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none. So3 chart
-                keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                So3 chart keyword, or servo token subset.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
             velrange: double[2].
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
@@ -9411,7 +9411,7 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             slewmax: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
 
@@ -9737,8 +9737,8 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             lugre: double[1..5] (1 to 5 values).
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none. Token
-                subset, or the none keyword.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                Token subset, or the none keyword.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
 
@@ -10999,7 +10999,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         Token subset, or the none keyword.
 
@@ -11325,7 +11325,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         So3 chart keyword, or servo token subset.
 
@@ -14203,7 +14203,7 @@ class DefaultPid(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
@@ -22403,7 +22403,7 @@ class General(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         So3 chart keyword, or servo token subset.
 
@@ -29602,7 +29602,7 @@ class Pid(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """

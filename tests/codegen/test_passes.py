@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from codegen import ir, passes, render
-from codegen.facts import AttributeOverride, Facts, FactsError, load_facts, parse_facts
+from codegen.facts import AttributeOverride, EnumFact, Facts, FactsError, load_facts, parse_facts
 from codegen.grammar import parse_grammar
 from codegen.passes import normalize
 
@@ -156,18 +156,32 @@ def test_repository_facts_type_input_as_flags_with_keywords_alone() -> None:
         assert (entry.alone, entry.ordered) == (("inputchart", "inputkeyword"), True)
 
 
+def test_enum_entries() -> None:
+    facts = parse_facts(ENUM + 'ctype = "mjtE"\ndoc = "d"\n' + ENUM.replace('"e"', '"f"'))
+    assert facts.enums == [EnumFact("e", (("a", "mjA"),), "mjtE", "d", "r"),
+                           EnumFact("f", (("a", "mjA"),), reason="r")]
+
+
+def test_repository_facts_give_inputbit_the_pressure_token() -> None:
+    inputbit = next(e for e in load_facts().enums if e.name == "inputbit")
+    assert [k for k, _ in inputbit.values] == ["pos", "vel", "ff", "voltage", "pressure"]
+    assert all(e.reason.strip() for e in load_facts().enums)
+
+
 def test_empty_facts() -> None:
     assert parse_facts("") == Facts()
 
 
 ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
+ENUM = '[[enum]]\nname = "e"\nvalues = [["a", "mjA"]]\nreason = "r"\n'
 
 
 @pytest.mark.parametrize(("text", "message"), [
     ("[root_children\n", "f.toml: Expected ']' at the end of a table declaration"),
     ("[root_childern]\nbody = \"worldbody\"\n",
-     ("f.toml: unknown table 'root_childern' (known tables: root_children, single, attribute, "
-      "directories, class_names, compose, attachment_sites, default_rows, language)")),
+     ("f.toml: unknown table 'root_childern' (known tables: root_children, single, enum, "
+      "attribute, directories, class_names, compose, attachment_sites, default_rows, "
+      "language)")),
     ("[[attribute_type]]\nelement = \"a\"\n", "f.toml: unknown table 'attribute_type'"),
     ("root_children = 3\n", "f.toml: [root_children]: expected a table"),
     ("[root_children]\nbody = 1\n", "f.toml: [root_children] body: expected a string, got 1"),
@@ -197,6 +211,17 @@ ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
     ('[[attribute]]\nelement = "a"\nname = "b"\nreason = 2\n',
      "f.toml: [[attribute]] #1 reason: expected a string, got 2"),
     (ENTRY + ENTRY, "f.toml: [[attribute]] #2: a second entry for a@b"),
+    ("enum = 1\n", "f.toml: [[enum]]: expected an array of tables ([[enum]] entries)"),
+    ('[[enum]]\nname = "e"\nreason = "r"\n', "f.toml: [[enum]] #1: missing key 'values'"),
+    (ENUM + 'ctyp = "x"\n', "f.toml: [[enum]] #1: unknown key 'ctyp'"),
+    (ENUM.replace('[["a", "mjA"]]', '["a"]'),
+     ("f.toml: [[enum]] #1 values: expected a non-empty list of [keyword, C constant] string "
+      "pairs, got ['a']")),
+    (ENUM.replace('[["a", "mjA"]]', "[]"), "f.toml: [[enum]] #1 values: expected a non-empty"),
+    (ENUM.replace('[["a", "mjA"]]', '[["a", ""]]'), "f.toml: [[enum]] #1 values: expected"),
+    (ENUM.replace('[["a", "mjA"]]', '[["a", "0"], ["a", "1"]]'),
+     "f.toml: [[enum]] #1 values: a keyword is listed twice in ['a', 'a']"),
+    (ENUM + ENUM, "f.toml: [[enum]] #2: a second entry for enum 'e'"),
     ('[directories]\n"mesh" = ["meshdir"]\n',
      'f.toml: [directories] mesh: expected a key "row@attribute"'),
     ('[directories]\n"mesh@file" = "meshdir"\n',
@@ -358,6 +383,20 @@ def test_check_keywords_alone() -> None:
         "not a keyword attribute")
 
 
+def test_enum_facts_replace_keywords_or_add_an_enum() -> None:
+    facts = Facts(root_children=FACTS.root_children,
+                  enums=[EnumFact("jt", (("hinge", "1"), ("slide", "2"), ("ball", "3")),
+                                  reason="r"),
+                         EnumFact("extra", (("x", "mjX"),), ctype="mjtX", doc="d", reason="r")],
+                  attributes=[AttributeOverride("joint", "type", kind="flags", alone=("extra",),
+                                                reason="r")])
+    schema = normalized(facts)
+    assert schema.enums["jt"] == ir.EnumDef("jt", [("hinge", "1"), ("slide", "2"),
+                                                    ("ball", "3")])
+    assert schema.enums["extra"] == ir.EnumDef("extra", [("x", "mjX")], "mjtX", "d")
+    assert schema.elements["default_joint"].attribute("type").alone == ["extra"]
+
+
 def test_override_to_int_sets_dtype() -> None:
     facts = Facts(attributes=[AttributeOverride("joint", "type", kind="int")])
     joint_type = normalized(facts).elements["joint"].attribute("type")
@@ -508,6 +547,7 @@ def test_reference_grammar_normalizes() -> None:
         assert (servo_input.kind, servo_input.enum, servo_input.alone, servo_input.ordered) == (
             "flags", "inputbit", ["inputchart", "inputkeyword"], True)
     assert out.enums["inputkeyword"].keywords == ["none"]
+    assert out.enums["inputbit"].keywords == ["pos", "vel", "ff", "voltage", "pressure"]
 
 
 # ---------------------------------------------------------------------- naming facts

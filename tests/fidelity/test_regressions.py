@@ -287,6 +287,9 @@ ACCEPTED: dict[str, str] = {
     "dcmotor-input-every-token": doc(WORLD, '<actuator><dcmotor joint="j" motorconst="1" '
                                             'resistance="1" input="pos vel ff voltage"/>'
                                             '</actuator>'),
+    # what MuJoCo writes for a <cylinder> (MuJoCo 4.0.0 added the pressure input)
+    "general-input-pressure": doc(WORLD, '<actuator><general joint="j" dyntype="filter" '
+                                         'input="pressure" biastype="affine"/></actuator>'),
     "default-input-forms": doc('<default><general input="quat"/><default class="a">'
                                '<pid input="none"/></default><default class="b">'
                                '<dcmotor motorconst="1" resistance="1" input="vel ff"/>'

@@ -1,9 +1,10 @@
 """Flags attributes that also take one keyword alone, and flags MuJoCo reads only in order.
 
 ``input=`` of ``<general>``, ``<pid>`` and ``<dcmotor>`` (and their ``<default>`` rows) is the
-case in MuJoCo 4.0.0: a chart keyword (``expmap``, ``quat``), ``none``, or servo tokens in
-canonical order (``pos ff``). Every form is read from files, assigned in Python, written,
-read back, and given to MuJoCo, which must take it as the same input signature.
+case in MuJoCo 4.0.0: a chart keyword (``expmap``, ``quat``), ``none``, or input tokens
+(``pos vel ff voltage pressure``) in that order (``pos ff``). Every form is read from files,
+assigned in Python, written, read back, and given to MuJoCo, which must take it as the same
+input signature.
 """
 
 from __future__ import annotations
@@ -24,12 +25,13 @@ WORLD = ('<worldbody><body name="b"><joint name="j"/><geom size="0.1"/></body>'
 NEEDS = {"general": "", "pid": "", "dcmotor": ' motorconst="1" resistance="1"'}
 ROWS = ("general", "pid", "dcmotor")
 ALONE = ("expmap", "quat", "none")
-TOKENS = ("pos", "vel", "ff", "voltage")
+TOKENS = ("pos", "vel", "ff", "voltage", "pressure")
 # every form, as written in a file, and as the property reads it
 FORMS: dict[str, str | tuple[str, ...]] = {
     "expmap": "expmap", "quat": "quat", "none": "none",
     "pos": ("pos",), "voltage": ("voltage",), "pos ff": ("pos", "ff"),
     "vel ff": ("vel", "ff"), "pos vel ff voltage": ("pos", "vel", "ff", "voltage"),
+    "pressure": ("pressure",), "ff voltage pressure": ("ff", "voltage", "pressure"),
 }
 
 
@@ -66,7 +68,8 @@ def test_the_grammar_tables_say_which_keywords_go_alone() -> None:
         spec = cls.spec.by_name["input"]
         assert (spec.kind, spec.keywords, spec.alone, spec.ordered) == (
             "flags", TOKENS, ALONE, True), cls
-        assert spec.describe() == "flags: pos|vel|ff|voltage, or alone: expmap|quat|none"
+        assert spec.describe() == (
+            "flags: pos|vel|ff|voltage|pressure, or alone: expmap|quat|none")
     # orientation@input stays one chart keyword: the only forms it compiles with
     orientation = mjcf.Orientation.spec.by_name["input"]
     assert (orientation.kind, orientation.keywords) == ("keyword", ("expmap", "quat"))
@@ -99,6 +102,7 @@ def test_each_form_reads_writes_and_reads_back(tag: str, text: str, in_default: 
 # each, the compiler refuses e.g. a pid with a voltage input or a fixed-gain general with ff).
 COMPILES: list[tuple[str, str | tuple[str, ...]]] = [
     ("general", "expmap"), ("general", "quat"), ("general", ("pos",)), ("general", ("vel",)),
+    ("general", ("pressure",)),
     ("pid", "expmap"), ("pid", ("pos", "ff")), ("pid", ("vel", "ff")), ("pid", ("ff",)),
     ("dcmotor", "none"), ("dcmotor", "quat"), ("dcmotor", ("voltage",)),
     ("dcmotor", ("pos", "vel", "ff", "voltage")),
@@ -129,6 +133,7 @@ def test_mujoco_compiles_what_we_write_for_each_form(tag: str,
 SERVOS = {
     "position": f'<mujoco>{WORLD}<actuator><position joint="j" kp="1"/></actuator></mujoco>',
     "velocity": f'<mujoco>{WORLD}<actuator><velocity joint="j"/></actuator></mujoco>',
+    "cylinder": f'<mujoco>{WORLD}<actuator><cylinder joint="j"/></actuator></mujoco>',
     "pid": actuator_doc("pid", "pos ff"),
     "dcmotor": actuator_doc("dcmotor", "none"),
 }
@@ -151,16 +156,16 @@ def test_what_mujoco_writes_for_a_servo_reads_back_as_it_compiles(tag: str) -> N
 
 @pytest.mark.parametrize(("text", "message"), [
     ("ff pos", ("expected 'pos ff' (MuJoCo reads these keywords only in the order pos, vel, "
-                "ff, voltage)")),
+                "ff, voltage, pressure)")),
     ("pos expmap", ("expected 'expmap' alone (it cannot be combined with other keywords), or "
-                    "keywords from 'pos', 'vel', 'ff', 'voltage'")),
+                    "keywords from 'pos', 'vel', 'ff', 'voltage', 'pressure'")),
     ("none voltage", "expected 'none' alone (it cannot be combined with other keywords)"),
     ("expmap quat", "expected 'expmap' alone"),
     ("pos pos", "expected each keyword once ('pos' is repeated; MuJoCo refuses that)"),
     ("NONE", "expected 'none' (MuJoCo reads keywords only as its grammar spells them)"),
     ("Pos", "expected 'pos' (MuJoCo reads keywords only as its grammar spells them)"),
-    ("nnoe", ("expected keywords from 'pos', 'vel', 'ff', 'voltage', or one of 'expmap', "
-              "'quat', 'none' alone (did you mean 'none'?)")),
+    ("nnoe", ("expected keywords from 'pos', 'vel', 'ff', 'voltage', 'pressure', or one of "
+              "'expmap', 'quat', 'none' alone (did you mean 'none'?)")),
 ])
 @pytest.mark.parametrize("tag", ROWS)
 def test_files_mujoco_refuses_are_refused_saying_why(tag: str, text: str, message: str) -> None:
@@ -194,12 +199,12 @@ def test_python_takes_any_case_and_order_and_stores_them_canonically() -> None:
      "expected 'expmap' alone (it cannot be combined with other keywords)"),
     ("none pos", mjcf.InvalidValueError, "expected 'none' alone"),
     ("bogus", mjcf.InvalidValueError,
-     ("expected keywords from 'pos', 'vel', 'ff', 'voltage', or one of 'expmap', 'quat', "
-      "'none' alone")),
+     ("expected keywords from 'pos', 'vel', 'ff', 'voltage', 'pressure', or one of 'expmap', "
+      "'quat', 'none' alone")),
     ("qaut", mjcf.InvalidValueError, "(did you mean 'quat'?)"),
     ((), mjcf.InvalidValueError,
-     ("expected at least one keyword from 'pos', 'vel', 'ff', 'voltage', or one of 'expmap', "
-      "'quat', 'none' alone")),
+     ("expected at least one keyword from 'pos', 'vel', 'ff', 'voltage', 'pressure', or one "
+      "of 'expmap', 'quat', 'none' alone")),
     (3, mjcf.InvalidTypeError, "invalid input=3 on <general>: expected keywords from"),
     (["pos", 1], mjcf.InvalidTypeError, "expected keywords from"),
 ])

@@ -207,6 +207,7 @@ def test_flags_that_also_take_a_keyword_alone() -> None:
     general.input = ("pos", "ff")
     general.input = "expmap"
     general.input = ["vel"]
+    general.input = "pressure"  # what MuJoCo writes for a <cylinder>
     general.input = None
     model.default.add_dcmotor(input="quat")
     model.default.dcmotor.input = "voltage"
@@ -218,7 +219,7 @@ def test_flags_that_also_take_a_keyword_alone() -> None:
     if isinstance(value, str):
         assert_type(value, Literal["expmap", "quat", "none"])
     else:
-        assert_type(value, tuple[Literal["pos", "vel", "ff", "voltage"], ...] | None)
+        assert_type(value, tuple[Literal["pos", "vel", "ff", "voltage", "pressure"], ...] | None)
         assert value == ("ff",)
 
 
