@@ -1,8 +1,8 @@
 """Hand-kept facts about MJCF (``schema/facts.toml``) as typed values.
 
 This module owns every table of the file and checks it strictly: an unknown table, an unknown
-key in an ``[[attribute]]`` entry or a value of the wrong type raises FactsError naming the
-file, the table and the key. The passes read the typed fields only.
+key in an ``[[enum]]`` or ``[[attribute]]`` entry or a value of the wrong type raises
+FactsError naming the file, the table and the key. The passes read the typed fields only.
 """
 
 from __future__ import annotations
@@ -24,8 +24,8 @@ _DTYPES: dict[str, ir.DType] = {"double": "double", "float": "float", "int": "in
 _KINDS: dict[str, ir.AttrKind] = {k: k for k in ir.ATTR_KINDS}
 _T = TypeVar("_T")
 # The top-level tables of facts.toml, in the file's order.
-TABLES = ("root_children", "single", "attribute", "directories", "class_names", "compose",
-          "attachment_sites", "default_rows", "language")
+TABLES = ("root_children", "single", "enum", "attribute", "directories", "class_names",
+          "compose", "attachment_sites", "default_rows", "language")
 
 
 class FactsError(ValueError):
@@ -45,12 +45,26 @@ class AttributeOverride:
     dtype: ir.DType | None = None
     arity: tuple[int, int | None] | None = None
     enum: str | None = None
+    alone: tuple[str, ...] | None = None  # flags: enums whose keywords it also takes alone
+    ordered: bool | None = None  # flags: MuJoCo reads them only in the enum's order
     namespace: str | None = None
     default: str | None = None
     required: bool | None = None
     nodefault: bool | None = None
     pattern: str | None = None
     field: str | None = None
+    doc: str | None = None
+    reason: str = ""  # why the entry exists (required in facts.toml); documentation only
+
+
+@dataclasses.dataclass(frozen=True)
+class EnumFact:
+    """One ``[[enum]]`` entry: the keywords of an enum, set by hand (it is added to the schema,
+    or replaces the keywords the sources give; ``ctype`` and ``doc``, None: unchanged)."""
+
+    name: str
+    values: tuple[tuple[str, str], ...]  # (keyword, C constant or integer text), in order
+    ctype: str | None = None
     doc: str | None = None
     reason: str = ""  # why the entry exists (required in facts.toml); documentation only
 
@@ -63,6 +77,7 @@ class Facts:
     root_children: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
     # parent row -> child tags exposed as properties created on first use
     single: dict[str, list[str]] = dataclasses.field(default_factory=dict[str, list[str]])
+    enums: list[EnumFact] = dataclasses.field(default_factory=list[EnumFact])
     attributes: list[AttributeOverride] = dataclasses.field(
         default_factory=list[AttributeOverride])
     # (row, file attribute) -> the <compiler> attributes naming its folder, in order
@@ -106,6 +121,7 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
     return Facts(
         root_children=read("root_children", _strings, {}),
         single=read("single", _string_lists, {}),
+        enums=read("enum", _enums, []),
         attributes=read("attribute", _overrides, []),
         directories=read("directories", _directories, {}),
         class_names=read("class_names", _strings, {}),
@@ -121,7 +137,7 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
 
 
 def _header(table: str) -> str:
-    return f"[[{table}]]" if table == "attribute" else f"[{table}]"
+    return f"[[{table}]]" if table in ("enum", "attribute") else f"[{table}]"
 
 
 def _strings(value: object, where: str) -> dict[str, str]:
@@ -157,6 +173,57 @@ def _overrides(value: object, where: str) -> list[AttributeOverride]:
                              f"{entry.element}@{entry.name}")
         entries.append(entry)
     return entries
+
+_ENUM_KEYS = frozenset(f.name for f in dataclasses.fields(EnumFact))
+
+
+def _enums(value: object, where: str) -> list[EnumFact]:
+    if not isinstance(value, list):
+        raise FactsError(f"{where}: expected an array of tables ([[enum]] entries)")
+    entries: list[EnumFact] = []
+    for i, raw in enumerate(cast(list[object], value)):
+        entry = _enum(raw, f"{where} #{i + 1}")
+        if any(e.name == entry.name for e in entries):
+            raise FactsError(f"{where} #{i + 1}: a second entry for enum {entry.name!r}")
+        entries.append(entry)
+    return entries
+
+
+def _enum(value: object, where: str) -> EnumFact:
+    entry = _table(value, where)
+    unknown = sorted(set(entry) - _ENUM_KEYS)
+    if unknown:
+        raise FactsError(f"{where}: unknown key {unknown[0]!r}")
+    for key in ("name", "values", "reason"):
+        if key not in entry:
+            raise FactsError(f"{where}: missing key {key!r}")
+    return EnumFact(
+        name=_str(entry["name"], f"{where} name"),
+        values=_enum_values(entry["values"], f"{where} values"),
+        ctype=_str(entry["ctype"], f"{where} ctype") if "ctype" in entry else None,
+        doc=_str(entry["doc"], f"{where} doc") if "doc" in entry else None,
+        reason=_str(entry["reason"], f"{where} reason"),
+    )
+
+
+def _enum_values(value: object, where: str) -> tuple[tuple[str, str], ...]:
+    """A non-empty list of ``[keyword, C constant]`` pairs of non-empty strings, each keyword
+    once."""
+    values: list[tuple[str, str]] = []
+    for item in cast(list[object], value) if isinstance(value, list) else []:
+        pair = cast(list[object], item) if isinstance(item, list) else []
+        if len(pair) != 2 or not all(isinstance(x, str) and x for x in pair):
+            values = []
+            break
+        values.append((cast(str, pair[0]), cast(str, pair[1])))
+    if not values:
+        raise FactsError(f"{where}: expected a non-empty list of [keyword, C constant] string "
+                         f"pairs, got {value!r}")
+    keywords = [k for k, _ in values]
+    if len(set(keywords)) != len(keywords):
+        raise FactsError(f"{where}: a keyword is listed twice in {keywords!r}")
+    return tuple(values)
+
 
 _LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "inertia",
                      "freejoint", "free_type", "joint_type", "skin_file",
@@ -294,6 +361,15 @@ def _arity(value: object, where: str) -> tuple[int, int | None]:
     return (bounds[0], bounds[1] if len(bounds) == 2 else None)
 
 
+def _alone(value: object, where: str) -> tuple[str, ...]:
+    """A non-empty list of distinct enum names."""
+    names = _str_list(value, where)
+    if not names or len(set(names)) != len(names):
+        raise FactsError(f"{where}: expected a non-empty list of distinct enum names, "
+                         f"got {value!r}")
+    return tuple(names)
+
+
 _OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride))
 
 
@@ -319,6 +395,8 @@ def _override(value: object, where: str) -> AttributeOverride:
         dtype=_choice(entry["dtype"], _DTYPES, f"{where} dtype") if "dtype" in entry else None,
         arity=_arity(entry["arity"], f"{where} arity") if "arity" in entry else None,
         enum=opt_str("enum"), namespace=opt_str("namespace"), default=opt_str("default"),
+        alone=_alone(entry["alone"], f"{where} alone") if "alone" in entry else None,
+        ordered=opt_bool("ordered"),
         required=opt_bool("required"), nodefault=opt_bool("nodefault"),
         pattern=opt_str("pattern"), field=opt_str("field"), doc=opt_str("doc"),
         reason=_str(entry["reason"], f"{where} reason"),

@@ -13,8 +13,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal, cast
 
-FORMAT_VERSION = 2
-READABLE_FORMATS = (1, 2)  # 1 lacks the language facts: the next generate adds them
+FORMAT_VERSION = 3
+# 1 lacks the language facts, 2 the flags' ``alone`` and ``ordered``: the next generate adds them
+READABLE_FORMATS = (1, 2, 3)
 
 AttrKind = Literal[
     "string",  # free text
@@ -58,6 +59,10 @@ class AttributeDef:
     dtype: DType | None = None  # numbers only
     arity: tuple[int, int | None] | None = None  # None: scalar; (n, n): fixed; (lo, hi|None)
     enum: str | None = None  # keyword / flags
+    # flags only: enums whose keywords the attribute also takes, each alone in place of flags
+    # (``input``: "pos ff", or just "expmap"); their keywords are distinct from ``enum``'s
+    alone: list[str] | None = None
+    ordered: bool = False  # flags only: MuJoCo reads them only in ``enum``'s order
     namespace: str | None = None  # id / ref
     namespace_from: str | None = None  # a reference whose namespace this attribute's keyword names
     default: str | None = None  # MJCF text of the default value, e.g. "0 0 1"
@@ -197,13 +202,15 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
     if a.py_name != a.name:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
-    for key in ("dtype", "arity", "enum", "namespace", "namespace_from", "default", "pattern",
-                "field", "directory", "anchor"):
+    for key in ("dtype", "arity", "enum", "alone", "namespace", "namespace_from", "default",
+                "pattern", "field", "directory", "anchor"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
         if value is not None:
             d[key] = value
+        if key == "alone" and a.ordered:
+            d["ordered"] = True
     if a.required:
         d["required"] = True
     if a.nodefault:
@@ -299,6 +306,8 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         dtype=cast("DType | None", d.get("dtype")),
         arity=arity_t,
         enum=cast("str | None", d.get("enum")),
+        alone=cast("list[str] | None", d.get("alone")),
+        ordered=bool(d.get("ordered", False)),
         namespace=cast("str | None", d.get("namespace")),
         namespace_from=cast("str | None", d.get("namespace_from")),
         default=cast("str | None", d.get("default")),

@@ -12,7 +12,7 @@ import re
 from collections.abc import Iterable, Mapping
 
 from codegen import ir, naming
-from codegen.facts import AttributeOverride, Facts
+from codegen.facts import AttributeOverride, EnumFact, Facts
 
 DEFAULT_ROW = "default"  # the <default> class row; its children are per-tag settings
 PROJECTION_PREFIX = "default_"  # rows valid only inside <default>
@@ -23,6 +23,7 @@ def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     """The renderer's IR: ``schema`` (left untouched) with ``facts`` applied and checked."""
     out = copy.deepcopy(schema)
     route_root_children(out, facts.root_children)
+    apply_enum_facts(out, facts.enums)
     # Overrides on declared rows go first so default projections inherit them; an entry may
     # also name a projection row, which only exists afterwards, or an attribute the wheel
     # adds, which sync types (and where an entry that names nothing is an error).
@@ -55,6 +56,19 @@ def route_root_children(schema: ir.Schema, routes: Mapping[str, str]) -> None:
             raise ValueError(f"root_children: root {root.name!r} has no child {source!r}")
         old = root.children[index]
         root.children[index] = ir.ChildDef(target, old.card, old.single)
+
+
+def apply_enum_facts(schema: ir.Schema, enums: Iterable[EnumFact]) -> None:
+    """Hand-kept keyword sets (``[[enum]]``): added, or replacing the sources' keywords."""
+    for fact in enums:
+        schema.enums[fact.name] = enum_from_fact(fact, schema.enums.get(fact.name))
+
+
+def enum_from_fact(fact: EnumFact, old: ir.EnumDef | None) -> ir.EnumDef:
+    """The enum an ``[[enum]]`` entry makes of ``old`` (None: a new enum)."""
+    ctype = fact.ctype if fact.ctype is not None else old.ctype if old else None
+    doc = fact.doc if fact.doc is not None else old.doc if old else ""
+    return ir.EnumDef(fact.name, list(fact.values), ctype, doc)
 
 
 def mark_single(schema: ir.Schema, single: Mapping[str, Iterable[str]]) -> None:
@@ -195,8 +209,13 @@ def drop_unreachable(schema: ir.Schema) -> None:
 
 
 def drop_unused_enums(schema: ir.Schema) -> None:
-    used = {a.enum for e in schema.elements.values() for a in e.attributes if a.enum}
+    used = {n for e in schema.elements.values() for a in e.attributes for n in enums_of(a)}
     schema.enums = {k: v for k, v in schema.enums.items() if k in used}
+
+
+def enums_of(attr: ir.AttributeDef) -> list[str]:
+    """The enums an attribute uses: its own and those whose keywords it takes alone."""
+    return ([attr.enum] if attr.enum else []) + list(attr.alone or [])
 
 
 def check(schema: ir.Schema) -> None:
@@ -205,6 +224,7 @@ def check(schema: ir.Schema) -> None:
         *_reference_problems(schema),
         *_class_name_problems(schema),
         *_naming_fact_problems(schema),
+        *_flags_problems(schema),
         *(p for e in schema.elements.values() for p in _element_problems(schema, e)),
     ]
     if problems:
@@ -221,8 +241,8 @@ def _row(schema: ir.Schema, name: str, where: str) -> ir.ElementDef:
     return row
 
 
-_OVERRIDABLE = ("dtype", "arity", "enum", "namespace", "default", "required", "nodefault",
-                "pattern", "field", "doc")
+_OVERRIDABLE = ("dtype", "arity", "enum", "ordered", "namespace", "default", "required",
+                "nodefault", "pattern", "field", "doc")
 
 
 def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
@@ -233,6 +253,8 @@ def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
         value: object = getattr(o, name)
         if value is not None:
             setattr(attr, name, value)
+    if o.alone is not None:
+        attr.alone = list(o.alone)
 
 
 def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
@@ -245,6 +267,8 @@ def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
         attr.arity = None
     if attr.kind not in ("keyword", "flags"):
         attr.enum = None
+    if attr.kind != "flags":
+        attr.alone, attr.ordered = None, False
     if attr.kind not in ("id", "ref"):
         attr.namespace = None
     if attr.kind not in ("string", "chars"):
@@ -259,10 +283,29 @@ def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
         return "a real attribute needs dtype 'double' or 'float'"
     if attr.kind in ("keyword", "flags") and attr.enum not in schema.enums:
         return f"{attr.kind} attribute needs a declared enum, got {attr.enum!r}"
+    if attr.kind != "flags" and (attr.alone or attr.ordered):
+        return f"only flags take keywords alone or in order, not a {attr.kind} attribute"
+    if attr.alone:
+        return _alone_problem(attr, schema)
     if attr.kind in ("id", "ref") and not attr.namespace:
         return f"{attr.kind} attribute needs a namespace"
     if attr.kind == "chars" and (attr.arity is None or attr.arity[1] is None):
         return "chars attribute needs a bounded arity"
+    return None
+
+
+def _alone_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
+    """Keywords taken alone come from declared enums, and each spells one thing only."""
+    missing = [n for n in attr.alone or [] if n not in schema.enums]
+    if missing:
+        return f"alone names undeclared enum {missing[0]!r}"
+    seen: dict[str, str] = {}
+    for name in enums_of(attr):
+        for keyword in schema.enums[name].keywords:
+            if keyword in seen:
+                return (f"keyword {keyword!r} of enum {name!r} is also one of enum "
+                        f"{seen[keyword]!r}: a value would be ambiguous")
+            seen[keyword] = name
     return None
 
 
@@ -349,8 +392,22 @@ def _reference_problems(schema: ir.Schema) -> list[str]:
         problems += [f"row {e.name!r}: {what} names missing row {target!r}"
                      for what, target in targets
                      if target is not None and target not in schema.elements]
-        problems += [f"row {e.name!r}: attribute {a.name!r} uses missing enum {a.enum!r}"
-                     for a in e.attributes if a.enum is not None and a.enum not in schema.enums]
+        problems += [f"row {e.name!r}: attribute {a.name!r} uses missing enum {name!r}"
+                     for a in e.attributes for name in enums_of(a)
+                     if name not in schema.enums]
+    return problems
+
+
+def _flags_problems(schema: ir.Schema) -> list[str]:
+    """Keywords taken alone or in order: on flags only, from declared, disjoint enums."""
+    problems: list[str] = []
+    for e in schema.elements.values():
+        for a in e.attributes:
+            declared = all(n in schema.enums for n in enums_of(a))  # else: a missing enum
+            problem = _attribute_problem(a, schema) if (a.alone or a.ordered) and declared \
+                else None
+            if problem is not None:
+                problems.append(f"row {e.name!r}: attribute {a.name!r}: {problem}")
     return problems
 
 

@@ -26,7 +26,13 @@ from dataclasses import dataclass, field
 
 from codegen import ir, naming, probe
 from codegen.facts import AttributeOverride, Facts
-from codegen.passes import DEFAULT_ROW, PROJECTION_PREFIX, apply_override
+from codegen.passes import (
+    DEFAULT_ROW,
+    PROJECTION_PREFIX,
+    apply_override,
+    enum_from_fact,
+    enums_of,
+)
 from codegen.wheel import AtVal, Reference, Wheel, WheelRow, parse_at_val
 
 # The longest tag path an anchor spells before the attribute: ``compiler-lengthrange-mode``.
@@ -114,6 +120,10 @@ def describe(attr: ir.AttributeDef) -> str:
     text: str = attr.kind
     if attr.kind in ("keyword", "flags"):
         text += f"<{attr.enum}>"
+        if attr.alone:
+            text += f" or alone <{', '.join(attr.alone)}>"
+        if attr.ordered:
+            text += " (ordered)"
     elif attr.kind in ("id", "ref"):
         text += f"<{attr.namespace}>"
     elif attr.dtype is not None and attr.kind == "real":
@@ -130,8 +140,8 @@ def describe(attr: ir.AttributeDef) -> str:
 
 def _type_of(attr: ir.AttributeDef) -> tuple[object, ...]:
     """The fields that make an attribute's type (not its documentation or anchor)."""
-    return (attr.kind, attr.dtype, attr.arity, attr.enum, attr.namespace, attr.default,
-            attr.pattern, attr.field)
+    return (attr.kind, attr.dtype, attr.arity, attr.enum, attr.alone, attr.ordered,
+            attr.namespace, attr.default, attr.pattern, attr.field)
 
 
 # ----------------------------------------------------------------------------------- sync
@@ -155,6 +165,7 @@ class _Sync:
         self.report = report
         self.single = facts.single
         self.overrides = {(o.element, o.name): o for o in facts.attributes}
+        self.enum_facts = facts.enums
         self.matches: dict[str, WheelRow] = {}  # IR row -> the printSchema row it stands for
         self.added_edges: dict[str, list[ir.ChildDef]] = {}  # per row, edges sync added
         self.touched: set[str] = set()
@@ -176,6 +187,7 @@ class _Sync:
             self._sync_attributes(row, self.matches[row.name])
         for row in self._alias_rows():
             self._sync_probed_attributes(row)
+        self._apply_enum_facts()
         self._apply_overrides()
         self._report_committed_untyped()
         self._check_enums()
@@ -558,8 +570,32 @@ class _Sync:
             return ctype, [(k, by_keyword[k]) for k in keywords]
         return None, [(k, str(i)) for i, k in enumerate(keywords)]
 
+    def _apply_enum_facts(self) -> None:
+        """Every ``[[enum]]`` entry holds after a sync: its enum is added, or its keywords
+        replace those the schema has."""
+        for fact in self.enum_facts:
+            old = self.schema.enums.get(fact.name)
+            new = enum_from_fact(fact, old)
+            if new == old:
+                continue
+            self.schema.enums[fact.name] = new
+            if old is None:
+                self.report.added_enums.append(
+                    f"{new.name}{f' ({new.ctype})' if new.ctype else ''}: "
+                    f"{', '.join(new.keywords)}  [facts.toml]")
+                continue
+            changes = [f"+ {k}" for k in new.keywords if k not in old.keywords]
+            changes += [f"- {k}" for k in old.keywords if k not in new.keywords]
+            if not changes:
+                changes = [what for what, changed in (
+                    ("keyword order", new.keywords != old.keywords),
+                    ("C constants", sorted(new.values) != sorted(old.values)),
+                    (f"C type {old.ctype} -> {new.ctype}", new.ctype != old.ctype),
+                    ("doc", new.doc != old.doc)) if changed]
+            self.report.changed_enums.append(f"{new.name}: {', '.join(changes)}  [facts.toml]")
+
     def _used_enums(self) -> set[str]:
-        return {a.enum for r in self.rows.values() for a in r.attributes if a.enum}
+        return {n for r in self.rows.values() for a in r.attributes for n in enums_of(a)}
 
     def _check_enums(self) -> None:
         """Every C constant of a bound enum must exist in the wheel; drop those that do not."""

@@ -101,6 +101,11 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append(f"arity={a.arity!r}")
     if a.enum is not None:
         args.append(f"keywords=get_args({typer.keyword_type(a)})")
+    alone = typer.alone_type(a)
+    if alone is not None:
+        args.append(f"alone=get_args({alone})")
+    if a.ordered:
+        args.append("ordered=True")
     if a.namespace is not None:
         args.append(f"namespace={a.namespace!r}")
     if a.namespace_from is not None:

@@ -32,6 +32,13 @@ def _camel(text: str) -> str:
     return "".join(part[:1].upper() + part[1:] for part in text.replace("-", "_").split("_"))
 
 
+def _alone_key(a: ir.AttributeDef) -> tuple[str, tuple[str, ...]] | None:
+    """What names the keywords flags take alone: their enum and the alone enums."""
+    if a.kind != "flags" or not a.alone or a.enum is None:
+        return None
+    return a.enum, tuple(a.alone)
+
+
 def _literal(keywords: list[str]) -> str:
     return "Literal[" + ", ".join(f'"{k}"' for k in keywords) + "]"
 
@@ -47,6 +54,7 @@ class Typer:
                 if a.kind == "id" and a.namespace is not None:
                     self._namespace_classes.setdefault(a.namespace, []).append(element.class_name)
         self._keyword_names = self._name_keyword_sets()
+        self._alone_names = self._name_alone_sets()
         self._arrays: dict[str, Alias] = {}
 
     # ------------------------------------------------------------------ names
@@ -78,6 +86,26 @@ class Typer:
             names[enum] = name
         return names
 
+    def _name_alone_sets(self) -> dict[tuple[str, tuple[str, ...]], str]:
+        """A public name per set of keywords flags also take alone: the flags' name and
+        ``Alone`` (``InputbitAlone``); ``<Tag><Attribute>Alone`` when flags of one enum take
+        different sets."""
+        taken = self.class_names() | set(self._keyword_names.values())
+        names: dict[tuple[str, tuple[str, ...]], str] = {}
+        for element in sorted(self.schema.elements.values(), key=lambda e: e.name):
+            for a in element.attributes:
+                key = _alone_key(a)
+                if key is None or key in names:
+                    continue
+                name = self._keyword_names[key[0]] + "Alone"
+                if name in taken:
+                    name = _camel(element.tag) + _camel(a.name) + "Alone"
+                while name in taken:
+                    name += "Keyword"
+                taken.add(name)
+                names[key] = name
+        return names
+
     def class_names(self) -> set[str]:
         return {e.class_name for e in self.schema.elements.values()}
 
@@ -86,7 +114,14 @@ class Typer:
         aliases = [Alias(name, _literal(self.schema.enums[enum].keywords),
                          f"The keywords of {self.schema.enums[enum].doc or enum}.")
                    for enum, name in self._keyword_names.items()]
+        aliases += [Alias(name, _literal(self._keywords_of(alone)),
+                          f"The keywords ``{self._keyword_names[enum]}`` flags also take, one "
+                          f"alone in place of the flags (from {', '.join(alone)}).")
+                    for (enum, alone), name in self._alone_names.items()]
         return sorted(aliases, key=lambda a: a.name)
+
+    def _keywords_of(self, enums: tuple[str, ...]) -> list[str]:
+        return [k for enum in enums for k in self.schema.enums[enum].keywords]
 
     def namespace_aliases(self) -> list[Alias]:
         """``AnyJoint = Joint | Freejoint``: each namespace of more than one class."""
@@ -113,6 +148,11 @@ class Typer:
         assert a.enum is not None
         return self._keyword_names[a.enum]
 
+    def alone_type(self, a: ir.AttributeDef) -> str | None:
+        """The name of the keywords flags take alone, or None when they take none."""
+        key = _alone_key(a)
+        return None if key is None else self._alone_names[key]
+
     # ------------------------------------------------------------------ annotations
 
     def getter(self, a: ir.AttributeDef) -> str:
@@ -128,7 +168,9 @@ class Typer:
         if a.kind == "keyword":
             return self.keyword_type(a)
         if a.kind == "flags":
-            return f"tuple[{self.keyword_type(a)}, ...]"
+            alone = self.alone_type(a)
+            flags = f"tuple[{self.keyword_type(a)}, ...]"
+            return flags if alone is None else f"{flags} | {alone}"
         if a.kind == "file":
             return "_builtins.str | _t.Asset"
         if a.kind == "ref" or a.namespace_from is not None:
@@ -150,7 +192,9 @@ class Typer:
             return f"{name} | _builtins.bool" if takes_bool else name
         if a.kind == "flags":
             name = self.keyword_type(a)
-            return f"{name} | Collection[{name}]"
+            alone = self.alone_type(a)
+            flags = f"{name} | Collection[{name}]"
+            return flags if alone is None else f"{flags} | {alone}"
         if a.kind == "file":
             return "_t.FileLike"
         return self.getter(a)
@@ -207,7 +251,11 @@ class Typer:
         """The MJCF type in words, for docstrings."""
         if a.kind in ("keyword", "flags"):
             words = ", ".join(self.schema.enums[a.enum or ""].keywords)
-            return f"one of: {words}" if a.kind == "keyword" else f"any of: {words}"
+            if a.kind == "keyword":
+                return f"one of: {words}"
+            alone = f"; or alone one of: {', '.join(self._keywords_of(tuple(a.alone)))}" \
+                if a.alone else ""
+            return f"any of: {words}{alone}"
         if a.kind in ("id", "ref"):
             verb = "name declared in" if a.kind == "id" else "reference to"
             return f"{verb} namespace ``{a.namespace}``"

@@ -230,6 +230,7 @@ __all__ = [
     "Inertial",
     "InertialAttributes",
     "Inputbit",
+    "InputbitAlone",
     "Inputchart",
     "Insidesite",
     "InsidesiteAttributes",
@@ -483,8 +484,11 @@ Gain: TypeAlias = Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", 
 GeomType: TypeAlias = Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
 """The keywords of geomtype."""
 
-Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage"]
+Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 """The keywords of bitflags: tokens combine bitwise, canonical order enforced."""
+
+InputbitAlone: TypeAlias = Literal["expmap", "quat", "none"]
+"""The keywords ``Inputbit`` flags also take, one alone in place of the flags (from inputchart, inputkeyword)."""
 
 Inputchart: TypeAlias = Literal["expmap", "quat"]
 """The keywords of inputchart."""
@@ -1195,7 +1199,7 @@ class Dcmotor(Element):
             A('controller', 'real', arity=(1, 6)),
             A('thermal', 'real', arity=(1, 6)),
             A('lugre', 'real', arity=(1, 5)),
-            A('input', 'flags', keywords=get_args(Inputbit), doc='token subset, or the none keyword'),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, doc='token subset, or the none keyword'),
         ),
         anchor='actuator-dcmotor',
         defaults='dcmotor',
@@ -1379,7 +1383,7 @@ class DefaultDcmotor(Element):
             A('controller', 'real', arity=(1, 6), anchor='actuator-dcmotor-controller'),
             A('thermal', 'real', arity=(1, 6), anchor='actuator-dcmotor-thermal'),
             A('lugre', 'real', arity=(1, 5), anchor='actuator-dcmotor-lugre'),
-            A('input', 'flags', keywords=get_args(Inputbit), anchor='actuator-dcmotor-input', doc='token subset, or the none keyword'),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, anchor='actuator-dcmotor-input', doc='token subset, or the none keyword'),
         ),
         anchor='default-dcmotor',
     )
@@ -1425,7 +1429,7 @@ class DefaultGeneral(Element):
             A('armature', 'real', anchor='actuator-general-armature'),
             A('cranklength', 'real', anchor='actuator-general-cranklength', doc='slidercrank-only, validated'),
             A('actdim', 'int', default='-1', anchor='actuator-general-actdim', doc='saved default depends on dyntype'),
-            A('input', 'keyword', keywords=get_args(Inputchart), anchor='actuator-general-input', doc='so3 chart keyword, or servo token subset'),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, anchor='actuator-general-input', doc='so3 chart keyword, or servo token subset'),
             A('velrange', 'real', arity=(2, 2), anchor='actuator-general-velrange'),
             A('ffrange', 'real', arity=(2, 2), anchor='actuator-general-ffrange'),
             A('inheritrange', 'real', anchor='actuator-general-inheritrange', doc='compiled values have the range in its place'),
@@ -1766,7 +1770,7 @@ class DefaultPid(Element):
             A('ki', 'real', anchor='actuator-pid-ki'),
             A('imax', 'real', anchor='actuator-pid-imax'),
             A('slewmax', 'real', anchor='actuator-pid-slewmax'),
-            A('input', 'flags', keywords=get_args(Inputbit), anchor='actuator-pid-input'),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, anchor='actuator-pid-input'),
         ),
         anchor='default-pid',
     )
@@ -2750,7 +2754,7 @@ class General(Element):
             A('refsite', 'ref', namespace='site'),
             A('body', 'ref', namespace='body', doc='transmission target'),
             A('actdim', 'int', default='-1', doc='saved default depends on dyntype'),
-            A('input', 'keyword', keywords=get_args(Inputchart), doc='so3 chart keyword, or servo token subset'),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, doc='so3 chart keyword, or servo token subset'),
             A('velrange', 'real', arity=(2, 2)),
             A('ffrange', 'real', arity=(2, 2)),
             A('inheritrange', 'real', doc='compiled values have the range in its place'),
@@ -3657,7 +3661,7 @@ class Pid(Element):
             A('ki', 'real'),
             A('imax', 'real'),
             A('slewmax', 'real'),
-            A('input', 'flags', keywords=get_args(Inputbit)),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True),
         ),
         anchor='actuator-pid',
         defaults='pid',
@@ -5436,7 +5440,7 @@ class DcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     dclass: _builtins.str | Default | None
 
@@ -5622,7 +5626,7 @@ class DefaultDcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
 
 class DefaultEqualityAttributes(TypedDict, total=False):
@@ -5670,7 +5674,7 @@ class DefaultGeneralAttributes(TypedDict, total=False):
 
     actdim: _t.Integer | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     velrange: Reals2 | None
 
@@ -6104,7 +6108,7 @@ class DefaultPidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
 
 class DefaultPositionAttributes(TypedDict, total=False):
@@ -7142,7 +7146,7 @@ class GeneralAttributes(TypedDict, total=False):
 
     actdim: _t.Integer | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     velrange: Reals2 | None
 
@@ -8228,7 +8232,7 @@ class PidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     dclass: _builtins.str | Default | None
 

@@ -225,6 +225,7 @@ __all__ = [
     "Inertial",
     "InertialAttributes",
     "Inputbit",
+    "InputbitAlone",
     "Inputchart",
     "Insidesite",
     "InsidesiteAttributes",
@@ -478,8 +479,11 @@ Gain: TypeAlias = Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", 
 GeomType: TypeAlias = Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
 """The keywords of geomtype."""
 
-Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage"]
+Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 """The keywords of bitflags: tokens combine bitwise, canonical order enforced."""
+
+InputbitAlone: TypeAlias = Literal["expmap", "quat", "none"]
+"""The keywords ``Inputbit`` flags also take, one alone in place of the flags (from inputchart, inputkeyword)."""
 
 Inputchart: TypeAlias = Literal["expmap", "quat"]
 """The keywords of inputchart."""
@@ -1484,7 +1488,7 @@ class Actuator(_Typed):
         refsite: _builtins.str | Site | None = ...,
         body: _builtins.str | Body | None = ...,
         actdim: _t.Integer | None = ...,
-        input: Inputchart | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
         velrange: Reals2 | None = ...,
         ffrange: Reals2 | None = ...,
         inheritrange: _t.Real | None = ...,
@@ -1556,7 +1560,8 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
             actdim: int. Default: "-1". Saved default depends on dyntype.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
-            input: one of: expmap, quat. So3 chart keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                So3 chart keyword, or servo token subset.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
             velrange: double[2].
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
@@ -2060,7 +2065,7 @@ class Actuator(_Typed):
         ki: _t.Real | None = ...,
         imax: _t.Real | None = ...,
         slewmax: _t.Real | None = ...,
-        input: Inputbit | Collection[Inputbit] | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
         dclass: _builtins.str | Default | None = ...,
     ) -> Pid:
         """Add a ``<pid>`` child and return it.
@@ -2134,7 +2139,7 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             slewmax: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-            input: any of: pos, vel, ff, voltage.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
 
@@ -2513,7 +2518,7 @@ class Actuator(_Typed):
         controller: Reals1To6 | None = ...,
         thermal: Reals1To6 | None = ...,
         lugre: Reals1To5 | None = ...,
-        input: Inputbit | Collection[Inputbit] | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
         dclass: _builtins.str | Default | None = ...,
     ) -> Dcmotor:
         """Add a ``<dcmotor>`` child and return it.
@@ -2581,7 +2586,8 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             lugre: double[1..5] (1 to 5 values).
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-            input: any of: pos, vel, ff, voltage. Token subset, or the none keyword.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                Token subset, or the none keyword.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
 
@@ -8084,15 +8090,15 @@ class Dcmotor(_Typed):
     def lugre(self, value: Reals1To5 | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | None:
-        """``input``: any of: pos, vel, ff, voltage.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         Token subset, or the none keyword.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -8252,7 +8258,7 @@ class Dcmotor(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -8936,7 +8942,7 @@ class Default(_Typed):
         armature: _t.Real | None = ...,
         cranklength: _t.Real | None = ...,
         actdim: _t.Integer | None = ...,
-        input: Inputchart | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
         velrange: Reals2 | None = ...,
         ffrange: Reals2 | None = ...,
         inheritrange: _t.Real | None = ...,
@@ -8985,7 +8991,8 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
             actdim: int. Default: "-1". Saved default depends on dyntype.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
-            input: one of: expmap, quat. So3 chart keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                So3 chart keyword, or servo token subset.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
             velrange: double[2].
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
@@ -9351,7 +9358,7 @@ class Default(_Typed):
         ki: _t.Real | None = ...,
         imax: _t.Real | None = ...,
         slewmax: _t.Real | None = ...,
-        input: Inputbit | Collection[Inputbit] | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
     ) -> DefaultPid:
         """Add a ``<pid>`` child and return it.
 
@@ -9404,7 +9411,7 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             slewmax: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-            input: any of: pos, vel, ff, voltage.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
 
@@ -9683,7 +9690,7 @@ class Default(_Typed):
         controller: Reals1To6 | None = ...,
         thermal: Reals1To6 | None = ...,
         lugre: Reals1To5 | None = ...,
-        input: Inputbit | Collection[Inputbit] | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
     ) -> DefaultDcmotor:
         """Add a ``<dcmotor>`` child and return it.
 
@@ -9730,7 +9737,8 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             lugre: double[1..5] (1 to 5 values).
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-            input: any of: pos, vel, ff, voltage. Token subset, or the none keyword.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+                Token subset, or the none keyword.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
 
@@ -10990,15 +10998,15 @@ class DefaultDcmotor(_Typed):
     def lugre(self, value: Reals1To5 | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | None:
-        """``input``: any of: pos, vel, ff, voltage.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         Token subset, or the none keyword.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -11101,7 +11109,7 @@ class DefaultDcmotor(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -11316,15 +11324,15 @@ class DefaultGeneral(_Typed):
     def actdim(self, value: _t.Integer | None) -> None: ...
 
     @property
-    def input(self) -> Inputchart | None:
-        """``input``: one of: expmap, quat.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         So3 chart keyword, or servo token subset.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
     @input.setter
-    def input(self, value: Inputchart | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -11503,7 +11511,7 @@ class DefaultGeneral(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> Inputchart | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -14194,13 +14202,13 @@ class DefaultPid(_Typed):
     def slewmax(self, value: _t.Real | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | None:
-        """``input``: any of: pos, vel, ff, voltage.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -14318,7 +14326,7 @@ class DefaultPid(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -22394,15 +22402,15 @@ class General(_Typed):
     def actdim(self, value: _t.Integer | None) -> None: ...
 
     @property
-    def input(self) -> Inputchart | None:
-        """``input``: one of: expmap, quat.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         So3 chart keyword, or servo token subset.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
     @input.setter
-    def input(self, value: Inputchart | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -22643,7 +22651,7 @@ class General(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> Inputchart | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -29593,13 +29601,13 @@ class Pid(_Typed):
     def slewmax(self, value: _t.Real | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | None:
-        """``input``: any of: pos, vel, ff, voltage.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -29774,7 +29782,7 @@ class Pid(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -40970,7 +40978,7 @@ class DcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     dclass: _builtins.str | Default | None
 
@@ -41156,7 +41164,7 @@ class DefaultDcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
 
 class DefaultEqualityAttributes(TypedDict, total=False):
@@ -41204,7 +41212,7 @@ class DefaultGeneralAttributes(TypedDict, total=False):
 
     actdim: _t.Integer | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     velrange: Reals2 | None
 
@@ -41638,7 +41646,7 @@ class DefaultPidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
 
 class DefaultPositionAttributes(TypedDict, total=False):
@@ -42676,7 +42684,7 @@ class GeneralAttributes(TypedDict, total=False):
 
     actdim: _t.Integer | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     velrange: Reals2 | None
 
@@ -43762,7 +43770,7 @@ class PidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     dclass: _builtins.str | Default | None
 

@@ -568,13 +568,37 @@ class KeywordCodec(Codec):
 
 
 class FlagsCodec(Codec):
-    __slots__ = ("keywords", "listing", "lookup", "order")
+    """Keywords combined, stored as a tuple in the grammar's order; where the grammar allows,
+    one keyword taken alone in place of them (``input="none"``), stored as that string.
 
-    def __init__(self, keywords: tuple[str, ...]) -> None:
+    Python assignment takes any case and order (as dm_control does) and repeats; a file is
+    read as MuJoCo reads it: as spelt, each keyword once, in the grammar's order if
+    ``ordered``.
+    """
+
+    __slots__ = (
+        "alone",
+        "alone_lookup",
+        "expected",
+        "keywords",
+        "listing",
+        "lookup",
+        "or_alone",
+        "order",
+        "ordered",
+    )
+
+    def __init__(self, keywords: tuple[str, ...], alone: tuple[str, ...] = (),
+                 ordered: bool = False) -> None:
         self.keywords = keywords
         self.lookup = {k.lower(): k for k in keywords}
         self.order = {k: i for i, k in enumerate(keywords)}
         self.listing = ", ".join(repr(k) for k in keywords)
+        self.alone = alone
+        self.alone_lookup = {k.lower(): k for k in alone}
+        self.ordered = ordered
+        self.or_alone = f", or one of {', '.join(repr(k) for k in alone)} alone" if alone else ""
+        self.expected = f"keywords from {self.listing}{self.or_alone}"
 
     def accept(self, value: object) -> object:
         words: list[object]
@@ -583,27 +607,50 @@ class FlagsCodec(Codec):
         elif isinstance(value, Iterable):
             words = list(cast(Iterable[object], value))
         else:
-            raise _type_rejected(f"keywords from {self.listing}")
+            raise _type_rejected(self.expected)
         found: set[str] = set()
         for word in words:
             if not isinstance(word, str):
-                raise _type_rejected(f"keywords from {self.listing}")
+                raise _type_rejected(self.expected)
             canonical = self.lookup.get(word.lower())
             if canonical is None:
-                raise Rejected(f"keywords from {self.listing}" + did_you_mean(word, self.keywords))
+                return self._alone(word, len(words))
             found.add(canonical)
         if not found:
-            raise Rejected(f"at least one keyword from {self.listing}")
+            raise Rejected(f"at least one keyword from {self.listing}{self.or_alone}")
         # MuJoCo reads some flag sets only in their canonical order.
         return tuple(sorted(found, key=self.order.__getitem__))
 
+    def _alone(self, word: str, count: int) -> str:
+        """``word``, a keyword taken alone, as the whole value; else what was expected."""
+        lone = self.alone_lookup.get(word.lower())
+        if lone is None:
+            raise Rejected(self.expected + did_you_mean(word, (*self.keywords, *self.alone)))
+        if count > 1:
+            raise Rejected(f"{lone!r} alone (it cannot be combined with other keywords), or "
+                           f"keywords from {self.listing}")
+        return lone
+
     def parse(self, text: str) -> object:
         found = self.accept(text)
-        for word in text.split():
-            _check_spelling(word, self.lookup[word.lower()])
-        return found
+        words = text.split()
+        for word in words:
+            key = word.lower()
+            _check_spelling(word, self.lookup.get(key) or self.alone_lookup[key])
+        if type(found) is str:
+            return found
+        flags = cast(tuple[str, ...], found)
+        if len(words) != len(flags):
+            repeated = next(w for i, w in enumerate(words) if w in words[:i])
+            raise Rejected(f"each keyword once ({repeated!r} is repeated; MuJoCo refuses that)")
+        if self.ordered and tuple(words) != flags:
+            raise Rejected(f"{' '.join(flags)!r} (MuJoCo reads these keywords only in the order "
+                           f"{', '.join(self.keywords)})")
+        return flags
 
     def write(self, stored: object, fmt: Format) -> str:
+        if type(stored) is str:
+            return stored
         return " ".join(cast(tuple[str, ...], stored))
 
 
@@ -611,12 +658,18 @@ _SHARED: dict[tuple[object, ...], Codec] = {}
 
 
 def make_codec(kind: str, *, dtype: str | None, is_array: bool, lo: int, hi: int | None,
-               keywords: tuple[str, ...], pattern: str | None) -> Codec:
-    """The codec of an attribute (one object per distinct signature)."""
-    key = (kind, dtype, is_array, lo, hi, keywords, pattern)
+               keywords: tuple[str, ...], pattern: str | None, alone: tuple[str, ...] = (),
+               ordered: bool = False) -> Codec:
+    """The codec of an attribute (one object per distinct signature). ``alone`` and
+    ``ordered`` concern flags: keywords also taken alone, and a file's order enforced."""
+    key = (kind, dtype, is_array, lo, hi, keywords, pattern, alone, ordered)
     codec = _SHARED.get(key)
     if codec is None:
-        codec = _SHARED[key] = _new_codec(kind, dtype, is_array, lo, hi, keywords, pattern)
+        if kind == "flags":
+            codec = FlagsCodec(keywords, alone, ordered)
+        else:
+            codec = _new_codec(kind, dtype, is_array, lo, hi, keywords, pattern)
+        _SHARED[key] = codec
     return codec
 
 
@@ -632,8 +685,6 @@ def _new_codec(kind: str, dtype: str | None, is_array: bool, lo: int, hi: int | 
         return BoolCodec()
     if kind == "keyword":
         return KeywordCodec(keywords)
-    if kind == "flags":
-        return FlagsCodec(keywords)
     if kind == "id":
         return IdentifierCodec()
     if kind == "ref":

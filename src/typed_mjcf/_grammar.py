@@ -26,6 +26,7 @@ class AttributeSpec:
     """One attribute of one grammar row."""
 
     __slots__ = (
+        "alone",
         "anchor",
         "codec",
         "default",
@@ -43,6 +44,7 @@ class AttributeSpec:
         "name",
         "namespace",
         "namespace_from",
+        "ordered",
         "pattern",
         "py_name",
         "required",
@@ -57,6 +59,8 @@ class AttributeSpec:
     hi: int | None
     is_array: bool
     keywords: tuple[str, ...]
+    alone: tuple[str, ...]  # flags: keywords also taken, one alone in place of the flags
+    ordered: bool  # flags: read from files only in the order of ``keywords``
     namespace: str | None
     namespace_from: tuple[str, Mapping[str, str]] | None
     default: str | None
@@ -80,6 +84,8 @@ class AttributeSpec:
         dtype: str | None = None,
         arity: tuple[int, int | None] | None = None,
         keywords: Sequence[str] = (),
+        alone: Sequence[str] = (),
+        ordered: bool = False,
         namespace: str | None = None,
         namespace_from: tuple[str, Mapping[str, str]] | None = None,
         default: str | None = None,
@@ -99,6 +105,8 @@ class AttributeSpec:
         self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
         self.lo, self.hi = arity if arity is not None else (1, 1)
         self.keywords = tuple(keywords)
+        self.alone = tuple(alone)
+        self.ordered = ordered
         self.namespace = namespace
         # objname-like references: the namespace is named by another attribute's keyword
         self.namespace_from = namespace_from
@@ -113,7 +121,8 @@ class AttributeSpec:
         self.is_reference = kind == "ref" or namespace_from is not None
         self.direct = not self.is_reference and kind != "id" and not scope
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
-                                hi=self.hi, keywords=self.keywords, pattern=pattern)
+                                hi=self.hi, keywords=self.keywords, pattern=pattern,
+                                alone=self.alone, ordered=ordered)
 
     @property
     def url(self) -> str | None:
@@ -123,7 +132,8 @@ class AttributeSpec:
     def describe(self) -> str:
         """The attribute's MJCF type in words, e.g. ``real[3]`` or ``keyword: hinge|slide``."""
         if self.kind in ("keyword", "flags"):
-            return f"{self.kind}: {'|'.join(self.keywords)}"
+            alone = f", or alone: {'|'.join(self.alone)}" if self.alone else ""
+            return f"{self.kind}: {'|'.join(self.keywords)}{alone}"
         if self.kind in ("id", "ref"):
             return f"{self.kind}<{self.namespace}>"
         if self.namespace_from is not None:

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from codegen import ir, passes, render
-from codegen.facts import AttributeOverride, Facts, FactsError, load_facts, parse_facts
+from codegen.facts import AttributeOverride, EnumFact, Facts, FactsError, load_facts, parse_facts
 from codegen.grammar import parse_grammar
 from codegen.passes import normalize
 
@@ -143,18 +143,45 @@ def test_every_facts_table_is_parsed_into_typed_fields() -> None:
     )
 
 
+def test_flags_keys_of_an_attribute_entry() -> None:
+    facts = parse_facts(ENTRY + 'alone = ["jt", "unused"]\nordered = true\n', "f.toml")
+    assert facts.attributes == [AttributeOverride("a", "b", alone=("jt", "unused"), ordered=True,
+                                                  reason="r")]
+
+
+def test_repository_facts_type_input_as_flags_with_keywords_alone() -> None:
+    entries = {(o.element, o.name): o for o in load_facts().attributes}
+    for row in ("general", "pid", "dcmotor"):
+        entry = entries[(row, "input")]
+        assert (entry.alone, entry.ordered) == (("inputchart", "inputkeyword"), True)
+
+
+def test_enum_entries() -> None:
+    facts = parse_facts(ENUM + 'ctype = "mjtE"\ndoc = "d"\n' + ENUM.replace('"e"', '"f"'))
+    assert facts.enums == [EnumFact("e", (("a", "mjA"),), "mjtE", "d", "r"),
+                           EnumFact("f", (("a", "mjA"),), reason="r")]
+
+
+def test_repository_facts_give_inputbit_the_pressure_token() -> None:
+    inputbit = next(e for e in load_facts().enums if e.name == "inputbit")
+    assert [k for k, _ in inputbit.values] == ["pos", "vel", "ff", "voltage", "pressure"]
+    assert all(e.reason.strip() for e in load_facts().enums)
+
+
 def test_empty_facts() -> None:
     assert parse_facts("") == Facts()
 
 
 ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
+ENUM = '[[enum]]\nname = "e"\nvalues = [["a", "mjA"]]\nreason = "r"\n'
 
 
 @pytest.mark.parametrize(("text", "message"), [
     ("[root_children\n", "f.toml: Expected ']' at the end of a table declaration"),
     ("[root_childern]\nbody = \"worldbody\"\n",
-     ("f.toml: unknown table 'root_childern' (known tables: root_children, single, attribute, "
-      "directories, class_names, compose, attachment_sites, default_rows, language)")),
+     ("f.toml: unknown table 'root_childern' (known tables: root_children, single, enum, "
+      "attribute, directories, class_names, compose, attachment_sites, default_rows, "
+      "language)")),
     ("[[attribute_type]]\nelement = \"a\"\n", "f.toml: unknown table 'attribute_type'"),
     ("root_children = 3\n", "f.toml: [root_children]: expected a table"),
     ("[root_children]\nbody = 1\n", "f.toml: [root_children] body: expected a string, got 1"),
@@ -174,10 +201,27 @@ ENTRY = '[[attribute]]\nelement = "a"\nname = "b"\nreason = "r"\n'
     (ENTRY + "arity = [1, 2, 3]\n",
      "f.toml: [[attribute]] #1 arity: expected [lo, hi] or [lo] integers, got [1, 2, 3]"),
     (ENTRY + "required = 1\n", "f.toml: [[attribute]] #1 required: expected true or false, got 1"),
+    (ENTRY + 'alone = "jt"\n', "f.toml: [[attribute]] #1 alone: expected a list of strings"),
+    (ENTRY + "alone = []\n",
+     "f.toml: [[attribute]] #1 alone: expected a non-empty list of distinct enum names, got []"),
+    (ENTRY + 'alone = ["jt", "jt"]\n',
+     "f.toml: [[attribute]] #1 alone: expected a non-empty list of distinct enum names"),
+    (ENTRY + "ordered = 1\n", "f.toml: [[attribute]] #1 ordered: expected true or false, got 1"),
     (ENTRY + "doc = 2\n", "f.toml: [[attribute]] #1 doc: expected a string, got 2"),
     ('[[attribute]]\nelement = "a"\nname = "b"\nreason = 2\n',
      "f.toml: [[attribute]] #1 reason: expected a string, got 2"),
     (ENTRY + ENTRY, "f.toml: [[attribute]] #2: a second entry for a@b"),
+    ("enum = 1\n", "f.toml: [[enum]]: expected an array of tables ([[enum]] entries)"),
+    ('[[enum]]\nname = "e"\nreason = "r"\n', "f.toml: [[enum]] #1: missing key 'values'"),
+    (ENUM + 'ctyp = "x"\n', "f.toml: [[enum]] #1: unknown key 'ctyp'"),
+    (ENUM.replace('[["a", "mjA"]]', '["a"]'),
+     ("f.toml: [[enum]] #1 values: expected a non-empty list of [keyword, C constant] string "
+      "pairs, got ['a']")),
+    (ENUM.replace('[["a", "mjA"]]', "[]"), "f.toml: [[enum]] #1 values: expected a non-empty"),
+    (ENUM.replace('[["a", "mjA"]]', '[["a", ""]]'), "f.toml: [[enum]] #1 values: expected"),
+    (ENUM.replace('[["a", "mjA"]]', '[["a", "0"], ["a", "1"]]'),
+     "f.toml: [[enum]] #1 values: a keyword is listed twice in ['a', 'a']"),
+    (ENUM + ENUM, "f.toml: [[enum]] #2: a second entry for enum 'e'"),
     ('[directories]\n"mesh" = ["meshdir"]\n',
      'f.toml: [directories] mesh: expected a key "row@attribute"'),
     ('[directories]\n"mesh@file" = "meshdir"\n',
@@ -289,6 +333,68 @@ def test_override_naming_no_grammar_attribute_is_left_to_sync() -> None:
     assert normalized(facts) == normalized(Facts(root_children=FACTS.root_children))
     with pytest.raises(ValueError, match="joint@nope: row 'joint' has no such attribute"):
         passes.apply_overrides(normalized(facts), facts.attributes)
+
+
+FLAGS = AttributeOverride("joint", "type", kind="flags", alone=("unused",), ordered=True)
+
+
+def test_override_to_flags_taking_keywords_alone_reaches_the_projection() -> None:
+    schema = normalized(Facts(root_children=FACTS.root_children, attributes=[FLAGS]))
+    for row in ("joint", "default_joint"):
+        joint_type = schema.elements[row].attribute("type")
+        assert (joint_type.kind, joint_type.enum, joint_type.alone, joint_type.ordered) == (
+            "flags", "jt", ["unused"], True)
+    assert set(schema.enums) == {"jt", "unused"}  # an enum used only alone is kept
+    passes.check(schema)
+
+
+def test_a_kind_other_than_flags_forgets_alone_and_order() -> None:
+    schema = normalized(Facts(root_children=FACTS.root_children, attributes=[FLAGS]))
+    joint_type = schema.elements["joint"].attribute("type")
+    passes.apply_override(joint_type, AttributeOverride("joint", "type", kind="keyword"), schema)
+    assert (joint_type.kind, joint_type.enum, joint_type.alone, joint_type.ordered) == (
+        "keyword", "jt", None, False)
+
+
+@pytest.mark.parametrize(("override", "message"), [
+    (AttributeOverride("joint", "type", alone=("unused",)),
+     "only flags take keywords alone or in order, not a keyword attribute"),
+    (AttributeOverride("joint", "type", ordered=True),
+     "only flags take keywords alone or in order, not a keyword attribute"),
+    (AttributeOverride("joint", "type", kind="flags", alone=("nope",)),
+     "alone names undeclared enum 'nope'"),
+    (AttributeOverride("joint", "type", kind="flags", alone=("jt",)),
+     "keyword 'hinge' of enum 'jt' is also one of enum 'jt': a value would be ambiguous"),
+])
+def test_keywords_alone_errors(override: AttributeOverride, message: str) -> None:
+    with pytest.raises(ValueError) as info:
+        normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
+    assert str(info.value) == f"attribute override joint@type: {message}"
+
+
+def test_check_keywords_alone() -> None:
+    schema = normalized(Facts(root_children=FACTS.root_children, attributes=[FLAGS]))
+    schema.elements["default_joint"].attribute("type").kind = "keyword"
+    schema.elements["joint"].attribute("type").alone = ["unused", "gone"]
+    assert check_message(schema) == (
+        "2 schema problem(s):\n"
+        "  row 'joint': attribute 'type' uses missing enum 'gone'\n"
+        "  row 'default_joint': attribute 'type': only flags take keywords alone or in order, "
+        "not a keyword attribute")
+
+
+def test_enum_facts_replace_keywords_or_add_an_enum() -> None:
+    facts = Facts(root_children=FACTS.root_children,
+                  enums=[EnumFact("jt", (("hinge", "1"), ("slide", "2"), ("ball", "3")),
+                                  reason="r"),
+                         EnumFact("extra", (("x", "mjX"),), ctype="mjtX", doc="d", reason="r")],
+                  attributes=[AttributeOverride("joint", "type", kind="flags", alone=("extra",),
+                                                reason="r")])
+    schema = normalized(facts)
+    assert schema.enums["jt"] == ir.EnumDef("jt", [("hinge", "1"), ("slide", "2"),
+                                                    ("ball", "3")])
+    assert schema.enums["extra"] == ir.EnumDef("extra", [("x", "mjX")], "mjtX", "d")
+    assert schema.elements["default_joint"].attribute("type").alone == ["extra"]
 
 
 def test_override_to_int_sets_dtype() -> None:
@@ -435,6 +541,13 @@ def test_reference_grammar_normalizes() -> None:
     assert any(c.element == "worldbody" and c.single for c in out.elements["mujoco"].children)
     assert out.elements["default_equality"].projection_of is None
     assert out.elements["default_geom"].class_name == "DefaultGeom"
+    for row in ("general", "default_general", "pid", "default_pid", "dcmotor",
+                "default_dcmotor"):
+        servo_input = out.elements[row].attribute("input")
+        assert (servo_input.kind, servo_input.enum, servo_input.alone, servo_input.ordered) == (
+            "flags", "inputbit", ["inputchart", "inputkeyword"], True)
+    assert out.enums["inputkeyword"].keywords == ["none"]
+    assert out.enums["inputbit"].keywords == ["pos", "vel", "ff", "voltage", "pressure"]
 
 
 # ---------------------------------------------------------------------- naming facts

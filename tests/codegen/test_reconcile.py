@@ -9,7 +9,7 @@ from collections.abc import Mapping
 import pytest
 
 from codegen import ir, naming
-from codegen.facts import AttributeOverride, Facts
+from codegen.facts import AttributeOverride, EnumFact, Facts
 from codegen.probe import PROBE_VALUE, Outcome, Parser
 from codegen.reconcile import Report, describe, sync
 from codegen.wheel import Wheel, parse_print_schema, parse_reference
@@ -446,6 +446,44 @@ def test_override_without_a_kind_does_not_type_a_new_attribute() -> None:
     assert report.untyped == [SITE_NAME_UNTYPED]
 
 
+def test_flags_taking_keywords_alone_keep_their_enums() -> None:
+    # composite (the only user of enum comp) is gone from the wheel; flags taking comp's
+    # keywords alone keep it
+    facts = Facts(attributes=[AttributeOverride("joint", "type", kind="flags",
+                                                alone=("comp",), ordered=True)])
+    s, report = sync(schema(), wheel(), facts)
+    assert describe(s.elements["joint"].attribute("type")) == \
+        'flags<jointtype> or alone <comp> (ordered) = "hinge"'
+    assert describe(s.elements["default_joint"].attribute("type")) == \
+        'flags<jointtype> or alone <comp> (ordered) = "hinge"'
+    assert "comp" in s.enums and "comp" not in report.removed_enums
+    assert ('joint@type: keyword<jointtype> = "hinge" -> flags<jointtype> or alone <comp> '
+            '(ordered) = "hinge"  [facts.toml]') in report.changed_attributes
+    again, second = sync(s, wheel(), facts)
+    assert second.changed_attributes == [] and ir.dumps(again) == ir.dumps(s)
+    assert ir.loads(ir.dumps(s)).elements["joint"].attribute("type").alone == ["comp"]
+
+
+def test_enum_facts_add_enums_and_replace_keywords() -> None:
+    facts = Facts(enums=[
+        EnumFact("jointtype", (("hinge", "mjJNT_HINGE"), ("slide", "mjJNT_SLIDE")), reason="r"),
+        EnumFact("extra", (("x", "mjLIMITED_FALSE"),), ctype="mjtLimited", reason="r")],
+        attributes=[AttributeOverride("texture", "type", kind="flags", alone=("extra",))])
+    s, report = sync(schema(), wheel(), facts)
+    assert s.enums["jointtype"].values == [("hinge", "mjJNT_HINGE"), ("slide", "mjJNT_SLIDE")]
+    assert s.enums["jointtype"].ctype == "mjtJoint"  # left out: as the schema had it
+    assert s.enums["extra"] == ir.EnumDef("extra", [("x", "mjLIMITED_FALSE")], "mjtLimited")
+    assert "extra (mjtLimited): x  [facts.toml]" in report.added_enums
+    assert report.changed_enums == ["jointtype: - gone  [facts.toml]"]
+    again, second = sync(s, wheel(), facts)
+    assert ir.dumps(again) == ir.dumps(s)
+    assert second.added_enums == second.changed_enums == []
+    reordered = Facts(enums=[EnumFact("jointtype", (("slide", "mjJNT_SLIDE"),
+                                                    ("hinge", "mjJNT_HINGE")), reason="r")])
+    _, third = sync(s, wheel(), reordered)
+    assert third.changed_enums == ["jointtype: keyword order  [facts.toml]"]
+
+
 @pytest.mark.parametrize("override, message", [
     (AttributeOverride("joint", "nope", kind="string"),
      "schema/facts.toml [[attribute]] joint@nope: the synced schema has no such attribute"),
@@ -455,6 +493,8 @@ def test_override_without_a_kind_does_not_type_a_new_attribute() -> None:
      "attribute override site@name: ref attribute needs a namespace"),
     (AttributeOverride("joint", "type", kind="real"),
      "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
+    (AttributeOverride("joint", "type", kind="flags", alone=("nope",)),
+     "attribute override joint@type: alone names undeclared enum 'nope'"),
 ])
 def test_malformed_overrides(override: AttributeOverride, message: str) -> None:
     with pytest.raises(ValueError) as info:

@@ -119,8 +119,11 @@ def value_of(attribute: AttributeSpec, row: str = "") -> st.SearchStrategy[objec
     if kind == "bool":
         return st.one_of(st.booleans(), st.sampled_from(["true", "false", "TRUE", "False"]))
     if kind == "flags":
-        return st.lists(st.sampled_from(attribute.keywords), min_size=1, max_size=3,
-                        unique=True).map(lambda words: " ".join(words))
+        flags = st.lists(st.sampled_from(attribute.keywords), min_size=1, max_size=3,
+                         unique=True).map(lambda words: " ".join(words))
+        if attribute.alone:  # or one keyword alone (input="none"), in any case
+            return st.one_of(flags, st.sampled_from(attribute.alone).flatmap(_case))
+        return flags
     if kind == "chars":
         if attribute.pattern is not None:
             return st.from_regex(attribute.pattern, fullmatch=True)

@@ -203,6 +203,33 @@ def test_more_getters() -> None:
     assert_type(scratch.visual.global_, mjcf.Global)
 
 
+def test_flags_that_also_take_a_keyword_alone() -> None:
+    model = mjcf.RootElement()
+    model.worldbody.add_body(name="b").add_joint(name="j")
+    pid = model.actuator.add_pid(joint="j", input="none")
+    assert_type(pid.input, tuple[mjcf.Inputbit, ...] | mjcf.InputbitAlone | None)
+    pid.input = ("ff", "pos")
+    pid.input = "ff"
+    general = model.actuator.add_general(joint="j", input="expmap")
+    general.input = ("pos", "ff")
+    general.input = "expmap"
+    general.input = ["vel"]
+    general.input = "pressure"  # what MuJoCo writes for a <cylinder>
+    general.input = None
+    model.default.add_dcmotor(input="quat")
+    model.default.dcmotor.input = "voltage"
+    chart: mjcf.InputbitAlone = "quat"
+    tokens: list[mjcf.Inputbit] = ["pos", "vel"]
+    model.actuator.add_dcmotor(joint="j", motorconst=1, resistance=1, input=tokens).input = chart
+    assert_type(general.resolve("input"), tuple[mjcf.Inputbit, ...] | mjcf.InputbitAlone | None)
+    value = pid.input
+    if isinstance(value, str):
+        assert_type(value, Literal["expmap", "quat", "none"])
+    else:
+        assert_type(value, tuple[Literal["pos", "vel", "ff", "voltage", "pressure"], ...] | None)
+        assert value == ("ff",)
+
+
 def test_int_arrays_and_assets() -> None:
     model = mjcf.RootElement()
     mesh = model.asset.add_mesh(name="tri", vertex=(0, 0, 0, 1, 0, 0, 0, 1, 0),

@@ -358,6 +358,8 @@ class _Module:
                 return "True" if stored == "true" else "False"
             return _pycode.string(cast(str, stored))
         if kind == "flags":
+            if isinstance(stored, str):  # a keyword taken alone (input="none")
+                return _pycode.string(stored)
             words = cast(tuple[str, ...], stored)
             if len(words) == 1:
                 return _pycode.string(words[0])

@@ -20,6 +20,15 @@ geom.rgba = (1, 0, 0)  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
 geom.mass = "heavy"  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
 geom.condim = 3.5  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
 
+# flags that also take one keyword alone: a word of neither set, or one that goes alone
+model.worldbody.add_body().add_joint(name="j")
+pid = model.actuator.add_pid(joint="j")
+pid.input = "bogus"  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
+pid.input = ("pos", "expmap")  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
+pid.input = "pos ff"  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
+model.actuator.add_general(input="nnoe")  # E: mypy[arg-type] pyright[reportArgumentType]
+chart: mjcf.InputbitAlone = "pos"  # E: mypy[assignment] pyright[reportAssignmentType]
+
 # a getter returns what is stored: an array (not the tuple given), or None when unset
 fresh = body.add_geom()
 size: tuple[float, float] = fresh.size  # E: mypy[assignment] pyright[reportAssignmentType]
