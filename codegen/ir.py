@@ -104,6 +104,9 @@ class ElementDef:
     compose: str | None = None  # top-level sections: how an attached model's section joins
     attachable: bool = False  # a model can be attached here (a body-holder, or a posed element in one)
     default_row: str | None = None  # the <default> child row holding this element's defaults
+    # MuJoCo's reader ignores attributes it does not know here (no schema check: found by
+    # codegen.probe on the rows printSchema omits)
+    ignores_unknown: bool = False
 
     def attribute(self, name: str) -> AttributeDef:
         for a in self.attributes:
@@ -248,6 +251,8 @@ def dumps(schema: Schema) -> str:
                 head[key] = value
         if el.attachable:
             head["attachable"] = True
+        if el.ignores_unknown:
+            head["ignores_unknown"] = True
         if el.doc:
             head["doc"] = el.doc
         for key, value in head.items():
@@ -349,6 +354,7 @@ def loads(text: str) -> Schema:
             compose=cast("str | None", body.get("compose")),
             default_row=cast("str | None", body.get("default_row")),
             attachable=bool(body.get("attachable", False)),
+            ignores_unknown=bool(body.get("ignores_unknown", False)),
         )
     return Schema(cast(str, raw["mujoco_version"]), cast(str, raw["root"]), enums, elements,
                   _language_from_json(raw.get("language")))

@@ -29,6 +29,7 @@ from typing import Literal, cast
 from codegen import ir
 
 PROBE_VALUE = "typedmjcf_probe"
+UNKNOWN_NAME = "typedmjcf_no_such_attribute"  # tells whether the row's reader checks names
 # What the probed row holds, when it holds bodies: named, so that names the row changes
 # (replicate's suffixes) show in the saved model.
 _CONTENT = '<body name="b"><geom size="0.1"/></body>'
@@ -79,6 +80,7 @@ class Discovery:
     read: tuple[str, ...]
     refused: Mapping[str, tuple[str, ...]] = field(
         default_factory=dict[str, tuple[str, ...]])
+    ignores_unknown: bool = False  # a name no MJCF has loads without a word: it is ignored
 
 
 class ProbeError(ValueError):
@@ -120,7 +122,9 @@ def discover(site: Site, candidates: Iterable[str], parser: Parser) -> Discovery
             read.append(name)
         elif verdict == "refused":
             refused.setdefault(_first_line(outcome.error), []).append(name)
-    return Discovery(tuple(read), {k: tuple(v) for k, v in refused.items()})
+    nonsense = parser(site.model(UNKNOWN_NAME))
+    ignores_unknown = nonsense.error is None and nonsense.saved == baseline.saved
+    return Discovery(tuple(read), {k: tuple(v) for k, v in refused.items()}, ignores_unknown)
 
 
 # ------------------------------------------------------------------------ probe sites

@@ -351,6 +351,12 @@ class _Sync:
             self.report.notes.append(f"{row.name}: attributes not checked ({why})")
             return
         found = probe.discover(site, self.candidates, self.wheel.parser)
+        if row.ignores_unknown != found.ignores_unknown:
+            row.ignores_unknown = found.ignores_unknown
+            self.report.notes.append(
+                f"{row.name}: MuJoCo's reader now "
+                f"{'ignores' if found.ignores_unknown else 'refuses'} attributes it does not know")
+            self.touched.add(row.name)
         for attr in [a for a in row.attributes if a.name not in found.read]:
             self._remove_attribute(row, attr)
         missing = [n for n in found.read if all(a.name != n for a in row.attributes)]

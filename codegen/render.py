@@ -167,6 +167,8 @@ def _element_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> str:
         lines.append(f"compose={el.compose!r},")
     if el.attachable:
         lines.append("attachable=True,")
+    if el.ignores_unknown:
+        lines.append("ignores_unknown=True,")
     if el.default_row is not None:
         lines.append(f"defaults={schema.elements[el.default_row].tag!r},")
     return textwrap.indent("\n".join(lines), " " * 8)

@@ -2458,6 +2458,7 @@ class Frame(Element, Attachable):
         constraints=(('exclusive', (('quat',), ('axisangle',), ('xyaxes',), ('zaxis',), ('euler',))),),
         anchor='body-frame',
         attachable=True,
+        ignores_unknown=True,
     )
 
 
@@ -3825,6 +3826,7 @@ class Replicate(Element, Attachable):
         ),
         anchor='replicate',
         attachable=True,
+        ignores_unknown=True,
     )
 
 

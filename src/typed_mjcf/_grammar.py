@@ -192,6 +192,7 @@ class ElementSpec:
         "doc",
         "holds_bodies",
         "id_attribute",
+        "ignores_unknown",
         "name",
         "namespace",
         "order",
@@ -217,6 +218,7 @@ class ElementSpec:
     compose: Compose | None
     attachable: bool
     holds_bodies: bool
+    ignores_unknown: bool
     defaults_tag: str | None
 
     def __init__(
@@ -232,11 +234,14 @@ class ElementSpec:
         compose: Compose | None = None,
         attachable: bool = False,
         defaults: str | None = None,
+        ignores_unknown: bool = False,
     ) -> None:
         self.tag = tag
         self.name = tag if name is None else name
         self.compose = compose  # top-level sections: how an attached model's section joins
         self.attachable = attachable  # a model can be attached here
+        # MuJoCo's reader ignores attributes it does not know on this row
+        self.ignores_unknown = ignores_unknown
         self.defaults_tag = defaults  # the child of a <default> class holding our defaults
         self.attributes = tuple(attributes)
         self.by_key = {}

@@ -42,9 +42,10 @@ def test_classify(name: str, outcome: Outcome, verdict: probe.Verdict) -> None:
 
 
 def fake_parser(reads: Collection[str], stores: Collection[str] = (),
-                refuses: Collection[str] = ()) -> probe.Parser:
+                refuses: Collection[str] = (), checks_names: bool = False) -> probe.Parser:
     """A parser that rejects the probe value on ``reads``, keeps ``stores`` in the saved
-    model, refuses the element for ``refuses`` and ignores every other name."""
+    model, refuses the element for ``refuses`` and ignores every other name (or, when it
+    ``checks_names``, reports it as the schema check does)."""
 
     def parse(xml: str) -> Outcome:
         if "broken" in xml:
@@ -56,6 +57,8 @@ def fake_parser(reads: Collection[str], stores: Collection[str] = (),
                 return error("element cannot have attributes")
             if name in stores:
                 return Outcome(saved=f"<saved {name}/>")
+            if checks_names:
+                return error(f"Schema violation: unrecognized attribute: '{name}'")
         return Outcome(saved="<saved/>")
 
     return parse
@@ -69,7 +72,13 @@ def test_discover_keeps_candidate_order_and_skips_what_is_no_name() -> None:
     found = probe.discover(SITE, ["pos", "name", "bogus", "data =", "euler", "pos", "mocap",
                                   "user"], parser)
     assert found == Discovery(("pos", "name", "euler"),
-                              {"XML Error: element cannot have attributes": ("mocap", "user")})
+                              {"XML Error: element cannot have attributes": ("mocap", "user")},
+                              ignores_unknown=True)
+
+
+def test_discover_tells_whether_the_reader_checks_names() -> None:
+    checked = probe.discover(SITE, ["pos"], fake_parser(reads={"pos"}, checks_names=True))
+    assert checked == Discovery(("pos",), {}, ignores_unknown=False)
 
 
 def test_discover_needs_a_probe_model_that_loads() -> None:
@@ -166,20 +175,22 @@ CANDIDATES = ["bogus", "class", "childclass", "count", "name", "pos", "sep", "si
 
 def test_mujoco_frame(parser: probe.Parser) -> None:
     site = Site(("mujoco", "worldbody", "frame"), {}, True)
-    assert probe.discover(site, CANDIDATES, parser).read == ("class", "childclass", "name",
-                                                             "pos")
+    found = probe.discover(site, CANDIDATES, parser)
+    assert found.read == ("class", "childclass", "name", "pos")
+    assert found.ignores_unknown  # no schema check: a misspelt attribute loads silently
 
 
 def test_mujoco_replicate(parser: probe.Parser) -> None:
     site = Site(("mujoco", "worldbody", "replicate"), {"replicate": {"count": "1"}}, True)
     # sep is a string the reader keeps: it shows only in the names of the replicas
-    assert probe.discover(site, CANDIDATES, parser).read == ("class", "childclass", "count",
-                                                             "sep")
+    found = probe.discover(site, CANDIDATES, parser)
+    assert found.read == ("class", "childclass", "count", "sep")
+    assert found.ignores_unknown
 
 
 def test_mujoco_worldbody_reads_no_attribute(parser: probe.Parser) -> None:
     found = probe.discover(Site(("mujoco", "worldbody"), {}, True), CANDIDATES, parser)
-    assert found.read == ()
+    assert found.read == () and not found.ignores_unknown
     assert found.refused == {"XML Error: World body cannot have attributes":
                              ("childclass", "name", "pos")}
 
