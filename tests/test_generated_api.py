@@ -225,12 +225,14 @@ def test_replicate_and_frame_class_through_the_typed_api() -> None:
     assert first_column(model.compile(), "geom_size") == [0.3, 0.3, 0.3]
 
 
-def test_replicate_prefix_is_refused_as_mujoco_ignores_it() -> None:
+def test_replicate_prefix_loads_as_mujoco_reads_it_with_a_warning() -> None:
     """MuJoCo 4.0.0 does not read <replicate prefix> (nor any unknown replicate attribute):
-    the replicas are named as without it. typed-mjcf refuses what the parser does not read."""
+    the replicas are named as without it. typed-mjcf loads the file, warns, drops it."""
     text = CLASSED.replace('class="wide">\n      <body', 'class="wide" prefix="r">\n      <body')
     assert 'prefix="r"' in text
     compiled = mujoco.MjModel.from_xml_string(text)
     assert compiled.nbody == 3 and (compiled.body("b0").id, compiled.body("b1").id) == (1, 2)
-    with pytest.raises(mjcf.ParseError, match="<replicate> has no attribute 'prefix'"):
-        mjcf.from_xml_string(text)
+    with pytest.warns(mjcf.IgnoredAttributeWarning, match="<replicate> .* prefix='r'"):
+        model = mjcf.from_xml_string(text)
+    ours = model.compile()
+    assert ours.nbody == 3 and (ours.body("b0").id, ours.body("b1").id) == (1, 2)

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import os
 import stat
+import warnings
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Final, TypeAlias, cast
@@ -32,9 +33,11 @@ from typed_mjcf import _tree
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._sourcelines import start_line
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
     FileReadError,
+    IgnoredAttributeWarning,
     InvalidTypeError,
     InvalidValueError,
     MjcfError,
@@ -115,7 +118,7 @@ DEFAULT_OPTIONS: Final = ParseOptions()
 
 
 def source_line(node: XmlNode) -> int | None:
-    """The line ``node`` starts on in the text it was read from, if known."""
+    """The line libxml2 gives ``node``: where its start tag ends, if known."""
     line: object = node.sourceline  # lxml-stubs types it loosely
     return line if isinstance(line, int) else None
 
@@ -150,6 +153,7 @@ class _Context:
     included: dict[str, _Include] = field(default_factory=lambda: {})  # every file, how first read
     nesting: list[_Include] = field(default_factory=lambda: [])  # includes around the current one
     options: ParseOptions = field(default_factory=lambda: DEFAULT_OPTIONS)
+    texts: dict[str | None, bytes] = field(default_factory=lambda: {})  # each source read
 
     def shown(self, path: str | None) -> str:
         """A path as messages show it: relative to the main file's folder when inside it."""
@@ -163,6 +167,15 @@ class _Context:
             if not relative.startswith(os.pardir):
                 return relative
         return path
+
+    def line(self, node: XmlNode, source: str | None) -> int | None:
+        """The line ``node``'s start tag begins on in ``source``, if known."""
+        line = source_line(node)
+        text = self.texts.get(source)
+        tag: object = node.tag
+        if line is None or text is None or not isinstance(tag, str):
+            return line
+        return start_line(text, line, tag)
 
     def leave_include(self) -> None:
         self.nesting.pop()
@@ -231,6 +244,7 @@ def _read_xml(data: bytes, source: str | None, context: _Context, *,
             limits.max_bytes,
             "max_bytes"), source, None)
     context.bytes_read += len(data)
+    context.texts[source] = data
     _refuse_entity_declarations(data, source, context)
     depth_limit = min(limits.max_depth, _XML_READER_DEPTH)
     # Every element starts with "<" (entities are refused, so none expand into elements):
@@ -263,11 +277,11 @@ def _read_xml(data: bytes, source: str | None, context: _Context, *,
                 if depth > depth_limit:
                     raise context.error(_limit_message(
                         f"<{_name(node.tag)}> is nested {depth} deep", limits.max_depth,
-                        "max_depth"), source, source_line(node))
+                        "max_depth"), source, context.line(node, source))
                 if elements > limits.max_elements:
                     raise context.error(_limit_message(
                         f"the model has more than {elements - 1} elements",
-                        limits.max_elements, "max_elements"), source, source_line(node))
+                        limits.max_elements, "max_elements"), source, context.line(node, source))
         root = parser.close()
     except etree.XMLSyntaxError as error:
         if not error.lineno:
@@ -395,7 +409,7 @@ def _guarded(parse: Callable[[], ModelBase], source: str | None) -> ModelBase:
     """
     try:
         return parse()
-    except MjcfError:
+    except (MjcfError, Warning):  # a warning the caller's filters turned into an error
         raise
     except (RecursionError, MemoryError) as error:
         raise ParseError(f"the model is too large or too deeply nested to read "
@@ -412,7 +426,7 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     cls = root_class()
     if node.tag != cls.spec.tag:
         raise context.error(f"the root element is <{_name(node.tag)}>, expected <{cls.spec.tag}>",
-                            source, source_line(node))
+                            source, context.line(node, source))
     model = _tree.new_model(cls)
     _tree.set_base_dir(model, context.base_dir)
     _tree.memory_files(model).update(context.options.assets)
@@ -436,15 +450,19 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
         attribute = by_name.get(key)  # pyright: ignore[reportArgumentType]
         if attribute is None:
             known = list(by_name)
+            if element.spec.ignores_unknown:
+                _warn_ignored(element, _name(key), str(text), known, source,
+                              context.line(node, source))
+                continue
             raise context.error(
                 f"<{element.spec.tag}> has no attribute {_name(key)!r}"
-                f"{did_you_mean(_name(key), known)}", source, source_line(node))
+                f"{did_you_mean(_name(key), known)}", source, context.line(node, source))
         if attribute.direct and text:
             try:  # the common case, as _tree.assign_text does it
                 values[attribute.name] = attribute.codec.parse(str(text))
             except Rejected as rejected:
                 error = _tree.rejection(element, attribute, text, rejected)
-                raise context.error(str(error), source, source_line(node)) from None
+                raise context.error(str(error), source, context.line(node, source)) from None
             continue
         if attribute.kind == "id":
             try:
@@ -453,7 +471,7 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     name = escape_separators(name)
                 _tree.assign_name_text(element, attribute, name)
             except MjcfError as error:
-                raise context.error(str(error), source, source_line(node)) from None
+                raise context.error(str(error), source, context.line(node, source)) from None
             continue
         if attribute.namespace_from is not None:
             later = [] if later is None else later
@@ -462,6 +480,14 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
         _set_text(element, attribute, str(text), node, source, context)
     for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
+
+
+def _warn_ignored(element: Element, key: str, text: str, known: list[str],
+                  source: str | None, line: int | None) -> None:
+    where = f"{source}:{line}: " if source is not None else f"line {line}: " if line else ""
+    warnings.warn(IgnoredAttributeWarning(
+        f"{where}<{element.spec.tag}> ({element.path}) has no attribute {key}={text!r}"
+        f"{did_you_mean(key, known)}; MuJoCo ignores it, and so it is dropped"), stacklevel=2)
 
 
 def escape_separators(name: str) -> str:
@@ -478,9 +504,9 @@ def _set_text(element: Element, attribute: AttributeSpec, text: str, node: XmlNo
         _tree.assign_text(element, attribute, text, link=options.resolve_references)
     except Rejected as rejected:
         error = _tree.rejection(element, attribute, text, rejected)
-        raise context.error(str(error), source, source_line(node)) from None
+        raise context.error(str(error), source, context.line(node, source)) from None
     except MjcfError as error:
-        raise context.error(str(error), source, source_line(node)) from None
+        raise context.error(str(error), source, context.line(node, source)) from None
 
 
 # Children still to read into an element: (element, its remaining XML children, the file
@@ -527,11 +553,11 @@ class _Builder:
                 legal = list(parent.spec.children)
                 raise context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
-                    f"{did_you_mean(_name(tag), legal)}", source, source_line(child_node))
+                    f"{did_you_mean(_name(tag), legal)}", source, context.line(child_node, source))
             if depth >= max_depth:
                 raise context.error(_limit_message(
                     f"<{tag}> is nested {depth + 1} deep", max_depth, "max_depth"),
-                    source, source_line(child_node))
+                    source, context.line(child_node, source))
             existing = _tree.single_child(parent, tag) if child_spec.single else None
             if existing is not None:
                 # A repeated section: merge into the first.
@@ -557,7 +583,7 @@ class _Builder:
         if context.elements > context.limits.max_elements:
             raise context.error(_limit_message(
                 f"the model has more than {context.elements - 1} elements",
-                context.limits.max_elements, "max_elements"), source, source_line(node))
+                context.limits.max_elements, "max_elements"), source, context.line(node, source))
 
     def merge(self, section: Element, node: XmlNode,
               source: str | None) -> Callable[[], None] | None:
@@ -600,7 +626,8 @@ class _Builder:
                     f"for the whole model, but MuJoCo does not apply it to {section.tag} class "
                     f"{label} of an earlier <{section.tag}> section (a class keeps the values "
                     f"it inherited when it was defined); set {attribute} in that class, or "
-                    f"move it into the first <{section.tag}> section", source, source_line(node))
+                    f"move it into the first <{section.tag}> section", source,
+                    context.line(node, source))
                 context.nesting = saved
                 raise error
 
@@ -608,7 +635,8 @@ class _Builder:
 
     def include(self, frame: _Frame, node: XmlNode) -> None:
         parent, _, source, depth, top, _ = frame
-        context, line = self.context, source_line(node)
+        context = self.context
+        line = context.line(node, source)
         file = node.get("file")
         if not file:
             raise context.error("<include> needs a file attribute", source, line)

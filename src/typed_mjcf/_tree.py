@@ -45,6 +45,7 @@ import numpy as np
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import NameScope, NameTaken
+from typed_mjcf._sourcelines import file_start_line
 from typed_mjcf.errors import (
     ChildError,
     DuplicateIdentifierError,
@@ -578,16 +579,17 @@ def _init_model(model: ModelBase) -> None:
 class SourceMap:
     """Where a parsed model's elements were read (for messages that point into the files).
 
-    ``lines`` maps each element to its file (``None`` for text given in memory) and line,
-    in the order the parser read them; ``includes`` maps each included file to the file
+    ``lines`` maps each element to its file (``None`` for text given in memory) and the
+    line libxml2 gave it (where its start tag ends), in the order the parser read them; ``includes`` maps each included file to the file
     that included it and the element its contents were read into.
     """
 
-    __slots__ = ("includes", "lines")
+    __slots__ = ("includes", "lines", "texts")
 
     def __init__(self) -> None:
         self.lines: dict[Element, tuple[str | None, int | None]] = {}
         self.includes: dict[str, tuple[str | None, Element]] = {}
+        self.texts: dict[str, bytes | None] = {}  # files read again for messages
 
 
 def new_model(cls: type[ModelBase]) -> ModelBase:
@@ -1364,11 +1366,17 @@ def set_source_map(model: ModelBase, sources: SourceMap | None) -> None:
 
 
 def source_of(element: Element) -> tuple[str | None, int | None] | None:
-    """The file and line ``element`` was read from, if it was parsed (and is still in the
-    model it was read into)."""
+    """The file and line ``element`` was read from (the line its start tag begins on, for
+    elements read from a file), if it was parsed and is still in the model it was read into."""
     root = element._root
     sources = None if root is None else root._sources
-    return None if sources is None else sources.lines.get(element)
+    found = None if sources is None else sources.lines.get(element)
+    if sources is None or found is None:
+        return found
+    source, line = found
+    if source is None or line is None:
+        return found
+    return source, file_start_line(source, line, element.spec.tag, sources.texts)
 
 
 def single_child(element: Element, tag: str) -> Element | None:

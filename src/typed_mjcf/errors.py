@@ -80,6 +80,11 @@ class ExportError(MjcfError, ValueError):
     """The model cannot be written as MJCF (e.g. a reference to an unnamed element)."""
 
 
+class IgnoredAttributeWarning(UserWarning):
+    """A file gives an element an attribute MuJoCo's reader ignores on it (``<frame>`` and
+    ``<replicate>`` accept any attribute): it is dropped, as MuJoCo drops it."""
+
+
 def did_you_mean(word: str, candidates: Iterable[str]) -> str:
     """`` (did you mean 'x'?)`` for a close misspelling, else an empty string."""
     matches = difflib.get_close_matches(word.lower(), list(candidates), n=1, cutoff=0.6)

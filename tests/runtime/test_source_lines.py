@@ -95,3 +95,51 @@ def test_findings_name_their_element(tmp_path: Path) -> None:
     # the element is not part of a finding's identity or text
     assert str(finding) == f"{geom.path}: unresolved-reference: {finding.message}"
     assert finding == mjcf.Finding(finding.path, finding.rule, finding.message)
+
+
+SPREAD = """\
+<mujoco>
+  <!-- <geom
+       size="1"/> -->
+  <worldbody>
+    <geom name="a"
+          size="1"/><geom name="b" size="1"/>
+    <body
+        name="b1"
+        pos="0 0 1"><geom name="c"
+                          size="{size}" material="rde"/>
+    </body>
+  </worldbody>
+  <asset><material name="red"/></asset>
+</mujoco>
+"""
+
+
+def test_a_tag_over_several_lines_is_placed_on_the_line_it_begins(tmp_path: Path) -> None:
+    # libxml2 gives the line where a start tag ends; findings point at its "<"
+    main = tmp_path / "m.xml"
+    main.write_text(SPREAD.format(size="1"), encoding="utf-8")
+    model = mjcf.from_path(main)
+    a, b = model.worldbody.geom
+    body = model.find("body", "b1")
+    assert body is not None
+    assert _tree.source_of(a) == (str(main), 5)
+    assert _tree.source_of(b) == (str(main), 5)  # ends on a's last line: only order tells
+    assert _tree.source_of(body) == (str(main), 7)
+    assert _tree.source_of(body.geom[0]) == (str(main), 9)
+    (finding,) = model.validate()
+    assert finding.element is body.geom[0]
+
+
+def test_a_value_refused_at_load_names_the_line_its_tag_begins(tmp_path: Path) -> None:
+    main = tmp_path / "m.xml"
+    main.write_text(SPREAD.format(size="1x"), encoding="utf-8")
+    for read in (lambda: mjcf.from_path(main),
+                 lambda: mjcf.from_xml_string(main.read_text(encoding="utf-8"))):
+        try:
+            read()
+        except mjcf.ParseError as error:
+            assert error.line == 9, error
+            assert "1x" in str(error)
+        else:
+            raise AssertionError("the value was accepted")
