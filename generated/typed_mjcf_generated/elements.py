@@ -231,7 +231,6 @@ __all__ = [
     "InertialAttributes",
     "Inputbit",
     "InputbitAlone",
-    "Inputchart",
     "Insidesite",
     "InsidesiteAttributes",
     "Instance",
@@ -430,7 +429,7 @@ Camout: TypeAlias = Literal["rgb", "depth", "distance", "normal", "segmentation"
 Colorspace: TypeAlias = Literal["auto", "linear", "sRGB"]
 """The keywords of colorspace."""
 
-ConData: TypeAlias = Literal["found", "force", "torque", "dist", "pos", "normal", "tangent"]
+ConData: TypeAlias = Literal["found", "force", "torque", "dist", "pos", "normal", "tangent", "linvel", "angvel"]
 """The keywords of bitflags: keywords combine bitwise."""
 
 Cone: TypeAlias = Literal["pyramidal", "elliptic"]
@@ -489,9 +488,6 @@ Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 
 InputbitAlone: TypeAlias = Literal["expmap", "quat", "none"]
 """The keywords ``Inputbit`` flags also take, one alone in place of the flags (from inputchart, inputkeyword)."""
-
-Inputchart: TypeAlias = Literal["expmap", "quat"]
-"""The keywords of inputchart."""
 
 Integrator: TypeAlias = Literal["Euler", "RK4", "implicit", "implicitfast", "discrete"]
 """The keywords of integrator."""
@@ -1712,7 +1708,7 @@ class DefaultOrientation(Element):
             A('kp', 'real', anchor='actuator-orientation-kp'),
             A('kv', 'real', anchor='actuator-orientation-kv'),
             A('dampratio', 'real', anchor='actuator-orientation-dampratio'),
-            A('input', 'keyword', keywords=get_args(Inputchart), anchor='actuator-orientation-input'),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, anchor='actuator-orientation-input'),
         ),
         anchor='default-orientation',
     )
@@ -3590,7 +3586,7 @@ class Orientation(Element):
             A('kp', 'real'),
             A('kv', 'real'),
             A('dampratio', 'real'),
-            A('input', 'keyword', keywords=get_args(Inputchart)),
+            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True),
         ),
         anchor='actuator-orientation',
         defaults='orientation',
@@ -3790,7 +3786,7 @@ class Rangefinder(Element):
             A('user', 'real', arity=(0, None)),
             A('site', 'ref', namespace='site'),
             A('camera', 'ref', namespace='camera'),
-            A('data', 'flags', keywords=get_args(RayData), doc='ordering-checked'),
+            A('data', 'flags', keywords=get_args(RayData), ordered=True, doc='ordering-checked'),
         ),
         constraints=(('exclusive', (('site',), ('camera',))), ('oneof', (('site',), ('camera',)))),
         anchor='sensor-rangefinder',
@@ -3981,7 +3977,7 @@ class SensorContact(Element):
             A('subtree2', 'ref', namespace='body'),
             A('site', 'ref', namespace='site'),
             A('num', 'int'),
-            A('data', 'flags', keywords=get_args(ConData)),
+            A('data', 'flags', keywords=get_args(ConData), ordered=True),
             A('reduce', 'keyword', keywords=get_args(Reduce)),
         ),
         constraints=(('exclusive', (('geom1',), ('body1',), ('subtree1',), ('site',))), ('exclusive', (('geom2',), ('body2',), ('subtree2',)))),
@@ -6038,7 +6034,7 @@ class DefaultOrientationAttributes(TypedDict, total=False):
 
     dampratio: _t.Real | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
 
 class DefaultPairAttributes(TypedDict, total=False):
@@ -8130,7 +8126,7 @@ class OrientationAttributes(TypedDict, total=False):
 
     dampratio: _t.Real | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     dclass: _builtins.str | Default | None
 

@@ -226,7 +226,6 @@ __all__ = [
     "InertialAttributes",
     "Inputbit",
     "InputbitAlone",
-    "Inputchart",
     "Insidesite",
     "InsidesiteAttributes",
     "Instance",
@@ -425,7 +424,7 @@ Camout: TypeAlias = Literal["rgb", "depth", "distance", "normal", "segmentation"
 Colorspace: TypeAlias = Literal["auto", "linear", "sRGB"]
 """The keywords of colorspace."""
 
-ConData: TypeAlias = Literal["found", "force", "torque", "dist", "pos", "normal", "tangent"]
+ConData: TypeAlias = Literal["found", "force", "torque", "dist", "pos", "normal", "tangent", "linvel", "angvel"]
 """The keywords of bitflags: keywords combine bitwise."""
 
 Cone: TypeAlias = Literal["pyramidal", "elliptic"]
@@ -484,9 +483,6 @@ Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 
 InputbitAlone: TypeAlias = Literal["expmap", "quat", "none"]
 """The keywords ``Inputbit`` flags also take, one alone in place of the flags (from inputchart, inputkeyword)."""
-
-Inputchart: TypeAlias = Literal["expmap", "quat"]
-"""The keywords of inputchart."""
 
 Integrator: TypeAlias = Literal["Euler", "RK4", "implicit", "implicitfast", "discrete"]
 """The keywords of integrator."""
@@ -1982,7 +1978,7 @@ class Actuator(_Typed):
         kp: _t.Real | None = ...,
         kv: _t.Real | None = ...,
         dampratio: _t.Real | None = ...,
-        input: Inputchart | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
         dclass: _builtins.str | Default | None = ...,
     ) -> Orientation:
         """Add a ``<orientation>`` child and return it.
@@ -2022,7 +2018,7 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
             dampratio: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
-            input: one of: expmap, quat.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
 
@@ -9294,7 +9290,7 @@ class Default(_Typed):
         kp: _t.Real | None = ...,
         kv: _t.Real | None = ...,
         dampratio: _t.Real | None = ...,
-        input: Inputchart | None = ...,
+        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
     ) -> DefaultOrientation:
         """Add a ``<orientation>`` child and return it.
 
@@ -9323,7 +9319,7 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
             dampratio: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
-            input: one of: expmap, quat.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
 
@@ -13790,13 +13786,13 @@ class DefaultOrientation(_Typed):
     def dampratio(self, value: _t.Real | None) -> None: ...
 
     @property
-    def input(self) -> Inputchart | None:
-        """``input``: one of: expmap, quat.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
     @input.setter
-    def input(self, value: Inputchart | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -13854,7 +13850,7 @@ class DefaultOrientation(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> Inputchart | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -29004,13 +29000,13 @@ class Orientation(_Typed):
     def dampratio(self, value: _t.Real | None) -> None: ...
 
     @property
-    def input(self) -> Inputchart | None:
-        """``input``: one of: expmap, quat.
+    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
     @input.setter
-    def input(self, value: Inputchart | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -29100,7 +29096,7 @@ class Orientation(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> Inputchart | None:
+    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -33941,7 +33937,7 @@ class Sensor(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-site
             num: int.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
-            data: any of: found, force, torque, dist, pos, normal, tangent.
+            data: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
             reduce: one of: none, mindist, maxforce, netforce.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
@@ -34639,7 +34635,7 @@ class SensorContact(_Typed):
 
     @property
     def data(self) -> tuple[ConData, ...] | None:
-        """``data``: any of: found, force, torque, dist, pos, normal, tangent.
+        """``data``: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
         """
@@ -41574,7 +41570,7 @@ class DefaultOrientationAttributes(TypedDict, total=False):
 
     dampratio: _t.Real | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
 
 class DefaultPairAttributes(TypedDict, total=False):
@@ -43666,7 +43662,7 @@ class OrientationAttributes(TypedDict, total=False):
 
     dampratio: _t.Real | None
 
-    input: Inputchart | None
+    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
 
     dclass: _builtins.str | Default | None
 

@@ -121,6 +121,15 @@ CASES: dict[str, str] = {
     "input-repeated-token": doc(WORLD, '<actuator><pid joint="j" input="pos pos"/></actuator>'),
     "input-none-in-upper-case": doc(WORLD, '<actuator><general joint="j" input="NONE"/>'
                                            '</actuator>'),
+    # --- data= of <contact> and <rangefinder>: flags read in enum order only ----------------
+    "contact-data-out-of-order": doc(WORLD, '<sensor><contact body1="b" data="force found"/>'
+                                            '</sensor>'),
+    "contact-data-velocities-swapped": doc(WORLD, '<sensor><contact body1="b" '
+                                                  'data="angvel linvel"/></sensor>'),
+    "rangefinder-data-out-of-order": doc('<worldbody><site name="s"/></worldbody><sensor>'
+                                         '<rangefinder site="s" data="depth dist"/></sensor>'),
+    "rangefinder-data-repeated": doc('<worldbody><site name="s"/></worldbody><sensor>'
+                                     '<rangefinder site="s" data="dist dist"/></sensor>'),
 }
 
 # What MuJoCo says for each case (the first line of its error, after "XML Error: ").
@@ -192,6 +201,10 @@ MESSAGES: dict[str, str] = {
     'input-two-charts': 'invalid keyword',
     'input-repeated-token': 'duplicate keyword',
     'input-none-in-upper-case': 'invalid keyword',
+    'contact-data-out-of-order': 'data attributes must be in order',
+    'contact-data-velocities-swapped': 'data attributes must be in order',
+    'rangefinder-data-out-of-order': 'data attributes must be in order',
+    'rangefinder-data-repeated': 'duplicate keyword',
 }
 
 _RANGES = ("the schema carries no numeric ranges: MuJoCo's grammar file has min=/max=/"
@@ -290,6 +303,15 @@ ACCEPTED: dict[str, str] = {
                                              '</actuator>'),
     "dcmotor-input-none": doc(WORLD, '<actuator><dcmotor joint="j" motorconst="1" '
                                      'resistance="1" input="none"/></actuator>'),
+    # <orientation> has <general>'s input reader (the grammar file says chart keywords only)
+    "orientation-input-vel": doc('<worldbody><body><joint type="ball"/><geom size="0.1"/>'
+                                 '<site name="s"/><site name="r"/></body></worldbody><actuator>'
+                                 '<orientation site="s" refsite="r" input="vel"/></actuator>'),
+    # MuJoCo 4.0.0's contact sensor reports velocities (the grammar file lacks them)
+    "contact-data-velocities": doc(WORLD, '<sensor><contact body1="b" '
+                                          'data="found force linvel angvel"/></sensor>'),
+    "rangefinder-data-all": doc('<worldbody><site name="s"/></worldbody><sensor><rangefinder '
+                                'site="s" data="dist dir origin point normal depth"/></sensor>'),
     # input= takes a chart keyword, none or servo tokens on each of general, pid, dcmotor
     # (the compiler decides which a kind of actuator can use)
     "general-input-none": doc(WORLD, '<actuator><general joint="j" input="none"/></actuator>'),
