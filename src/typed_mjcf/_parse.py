@@ -484,10 +484,10 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
 
 def _warn_ignored(element: Element, key: str, text: str, known: list[str],
                   source: str | None, line: int | None) -> None:
-    where = f"{source}:{line}: " if source is not None else f"line {line}: " if line else ""
     warnings.warn(IgnoredAttributeWarning(
-        f"{where}<{element.spec.tag}> ({element.path}) has no attribute {key}={text!r}"
-        f"{did_you_mean(key, known)}; MuJoCo ignores it, and so it is dropped"), stacklevel=2)
+        f"<{element.spec.tag}> ({element.path}) has no attribute {key}={text!r}"
+        f"{did_you_mean(key, known)}; MuJoCo ignores it, and so it is dropped",
+        source, line, element.path), stacklevel=2)
 
 
 def escape_separators(name: str) -> str:

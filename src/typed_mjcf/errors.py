@@ -52,12 +52,7 @@ class ParseError(MjcfError, ValueError):
     def __init__(self, message: str, source: str | None = None, line: int | None = None) -> None:
         self.source = source
         self.line = line
-        where = ""
-        if source is not None:
-            where = f"{source}:{line}: " if line is not None else f"{source}: "
-        elif line is not None:
-            where = f"line {line}: "
-        super().__init__(where + message)
+        super().__init__(_where(source, line) + message)
 
 
 class FileReadError(ParseError, OSError):
@@ -83,6 +78,23 @@ class ExportError(MjcfError, ValueError):
 class IgnoredAttributeWarning(UserWarning):
     """A file gives an element an attribute MuJoCo's reader ignores on it (``<frame>`` and
     ``<replicate>`` accept any attribute): it is dropped, as MuJoCo drops it."""
+
+    source: str | None  # the file (None: text given in memory)
+    line: int | None
+    path: str  # the element's path in the model
+    detail: str  # the message without its location
+
+    def __init__(self, detail: str, source: str | None = None, line: int | None = None,
+                 path: str = "") -> None:
+        self.source, self.line, self.path, self.detail = source, line, path, detail
+        super().__init__(_where(source, line) + detail)
+
+
+def _where(source: str | None, line: int | None) -> str:
+    """``file:line: `` (or what of it is known) to start a message with."""
+    if source is not None:
+        return f"{source}:{line}: " if line is not None else f"{source}: "
+    return f"line {line}: " if line is not None else ""
 
 
 def did_you_mean(word: str, candidates: Iterable[str]) -> str:

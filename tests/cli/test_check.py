@@ -124,3 +124,37 @@ def test_progress_shows_only_on_a_terminal_for_several_files() -> None:
     assert not Progress(1, stream=Terminal()).enabled
     assert not Progress(2, stream=io.StringIO()).enabled
     assert Progress(1, enabled=True, stream=io.StringIO()).enabled
+
+
+IGNORED = """\
+<mujoco>
+  <worldbody>
+    <replicate count="2" offset="1 0 0"
+               prefix="p_">
+      <geom name="g" size="0.1"/>
+    </replicate>
+  </worldbody>
+</mujoco>
+"""
+
+
+def test_an_attribute_mujoco_ignores_is_a_warning(capsys: pytest.CaptureFixture[str]) -> None:
+    Path("m.xml").write_text(IGNORED, encoding="utf-8")
+    assert main(["check", "m.xml"]) == 0
+    assert capsys.readouterr().out.splitlines() == [
+        ("m.xml:3: ignored-attribute (warning): worldbody/replicate[0]: <replicate> "
+         "(worldbody/replicate[0]) has no attribute prefix='p_'; MuJoCo ignores it, and so it is "
+         "dropped"),
+        "checked 1 file: 0 errors, 1 warning",
+    ]
+    assert main(["check", "--strict", "m.xml"]) == 1
+
+
+def test_other_commands_say_what_they_drop_on_stderr(capsys: pytest.CaptureFixture[str]) -> None:
+    Path("m.xml").write_text(IGNORED, encoding="utf-8")
+    assert main(["to-python", "m.xml"]) == 0
+    captured = capsys.readouterr()
+    assert "prefix" not in captured.out
+    assert captured.err == ("typed-mjcf: warning: m.xml:3: <replicate> (worldbody/replicate[0]) "
+                            "has no attribute prefix='p_'; MuJoCo ignores it, and so it is "
+                            "dropped\n")

@@ -193,3 +193,15 @@ def test_a_doctype_stays_unless_it_declares_something(
     assert main(["fmt", str(declaring)]) == 2
     assert "the DOCTYPE declares an internal subset" in capsys.readouterr().err
     assert declaring.read_text(encoding="utf-8") == text
+
+
+def test_fmt_keeps_an_attribute_mujoco_ignores(tmp_path: Path,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    model = tmp_path / "m.xml"
+    model.write_text('<mujoco><worldbody><frame zz="1" pos="0 0 1.0"><geom size=".1"/></frame>'
+                     '</worldbody></mujoco>', encoding="utf-8")
+    assert main(["fmt", str(model)]) == 0
+    assert model.read_text(encoding="utf-8") == (
+        '<mujoco>\n  <worldbody>\n    <frame pos="0 0 1" zz="1">\n      <geom size="0.1"/>\n'
+        '    </frame>\n  </worldbody>\n</mujoco>\n')
+    assert capsys.readouterr().err == ""  # nothing is dropped, so nothing to warn about

@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import os
 import sys
+import warnings
 from collections.abc import Iterable, Iterator
 from typing import Final, TextIO, TypeVar
 
 from typed_mjcf import _tree
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._tree import Element
-from typed_mjcf.errors import MjcfError, ParseError
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import from_path
 
 OK: Final = 0
@@ -54,14 +55,31 @@ def parse_error_text(error: ParseError) -> str:
     return one_line(message)
 
 
-def load(path: str) -> RootElement:
-    """Parse an MJCF file; raise :class:`BadInput` with a one-line message if it cannot be."""
+def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None) -> RootElement:
+    """Parse an MJCF file; raise :class:`BadInput` with a one-line message if it cannot be.
+
+    Attributes MuJoCo ignores (and the model drops) go to ``ignored`` when it is given, else
+    to stderr as ``typed-mjcf: warning: FILE:LINE: ...``.
+    """
     try:
-        return from_path(path)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", IgnoredAttributeWarning)
+            model = from_path(path)
     except ParseError as error:
         raise BadInput(parse_error_text(error)) from None
     except MjcfError as error:  # pragma: no cover - from_path raises only ParseError
         raise BadInput(f"{shown(path)}: {one_line(str(error))}") from None
+    for record in caught:
+        if not isinstance(record.message, IgnoredAttributeWarning):  # pragma: no cover
+            warnings.warn_explicit(record.message, record.category, record.filename,
+                                   record.lineno)
+        elif ignored is not None:
+            ignored.append(record.message)
+        else:
+            found = record.message
+            print(f"typed-mjcf: warning: {location(found.source, found.line)}: {found.detail}",
+                  file=sys.stderr)
+    return model
 
 
 def source_of(element: Element) -> tuple[str | None, int | None]:

@@ -28,7 +28,7 @@ from typed_mjcf.cli._common import (
     shown,
     source_of,
 )
-from typed_mjcf.errors import MjcfError
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError
 
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
@@ -135,9 +135,12 @@ def _count(n: int, noun: str) -> str:
 
 def check_file(path: str, compile_model: bool = False) -> list[Report]:
     """The findings for one model file; raises :class:`BadInput` if it cannot be read."""
-    model = load(path)
-    reports = [_report(f.element, f.rule, f.severity, f.path, f.message, path)
-               for f in model.validate()]
+    ignored: list[IgnoredAttributeWarning] = []
+    model = load(path, ignored)
+    reports = [Report(shown(w.source if w.source is not None else path), w.line,
+                      "ignored-attribute", "warning", w.path, w.detail) for w in ignored]
+    reports += [_report(f.element, f.rule, f.severity, f.path, f.message, path)
+                for f in model.validate()]
     if compile_model and not any(r.severity == "error" for r in reports):
         problem = compile_problem(model, path)
         if problem is not None:

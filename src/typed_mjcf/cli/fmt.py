@@ -163,7 +163,7 @@ def _replace(path: str, text: str) -> None:
 def format_model(path: str, seen: set[str] | None = None) -> list[Formatted]:
     """The canonical text of a model's file and of every file it includes (each once, also
     across calls sharing ``seen``); raises :class:`BadInput` if one cannot be read."""
-    model = load(path)
+    model = load(path, ignored=[])  # fmt keeps what MuJoCo ignores, as written
     seen = set() if seen is None else seen
     sources = _tree.source_map(model)
     assert sources is not None
@@ -271,7 +271,10 @@ class _Printer:
             return "".join(f' {key}="{escape(str(value))}"' for key, value in node.attrib.items())
         texts: list[tuple[int, str, str]] = []
         for key, value in node.attrib.items():
-            attribute = row.by_name[str(key)]
+            attribute = row.by_name.get(str(key))
+            if attribute is None:  # one MuJoCo ignores on this row: kept, after the others
+                texts.append((len(row.attributes) + len(texts), str(key), str(value)))
+                continue
             try:
                 text = canonical_text(attribute, str(value))
             except Rejected:  # pragma: no cover - the model was read already
