@@ -189,11 +189,11 @@ def format_file(path: str, context: ElementSpec | None = None) -> Formatted:
     except OSError as problem:  # pragma: no cover - the model was read already
         raise BadInput(f"{shown(path)}: cannot read the file: {problem.strerror}") from None
     try:
-        tree = etree.fromstring(data, _PARSER).getroottree()
+        root = etree.fromstring(data, _PARSER)
     except etree.XMLSyntaxError as problem:  # pragma: no cover - the model was read already
         raise BadInput(f"{location(path, problem.lineno)}: malformed XML: {problem.msg}") from None
     declared = _DECLARATION.match(data.removeprefix(b"\xef\xbb\xbf").lstrip()) is not None
-    return Formatted(path, data, _Printer(path, context).document(tree, declared))
+    return Formatted(path, data, _Printer(path, context).document(root, declared))
 
 
 class _Printer:
@@ -203,10 +203,10 @@ class _Printer:
         self.path = path
         self.context = context
 
-    def document(self, tree: etree._ElementTree,  # pyright: ignore[reportPrivateUsage]
-                 declared: bool) -> str:
-        """The file's text; ``declared``: it starts with an XML declaration."""
-        root = tree.getroot()
+    def document(self, root: XmlElement, declared: bool) -> str:
+        """The text of the file whose root element is ``root``; ``declared``: it starts with an
+        XML declaration."""
+        tree = root.getroottree()
         info = tree.docinfo
         head: list[str] = []
         if declared:
@@ -349,10 +349,9 @@ def _text(text: str) -> str:
 
 def _other(node: XmlElement) -> str:
     """A comment, processing instruction or ``<include>``, as written (on a line of its own)."""
-    if isinstance(node, etree._Comment):  # pyright: ignore[reportPrivateUsage]
-        return f"<!--{node.text or ''}-->"
-    if isinstance(node, etree._ProcessingInstruction):  # pyright: ignore[reportPrivateUsage]
-        return f"<?{node.target} {node.text or ''}?>" if node.text else f"<?{node.target}?>"
+    tag: object = node.tag  # a comment's or instruction's is lxml's factory, not a string
+    if not isinstance(tag, str):
+        return etree.tostring(node, encoding="unicode", with_tail=False)
     attributes = "".join(f' {key}="{escape(str(value))}"' for key, value in node.attrib.items())
     return f"<{_tag(node)}{attributes}/>"
 
