@@ -12,9 +12,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Final, Literal
+from typing import TYPE_CHECKING, Final, Literal
 
 from typed_mjcf._codecs import Codec, make_codec
+
+if TYPE_CHECKING:
+    from typed_mjcf._tree import Element
 
 DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 
@@ -160,7 +163,7 @@ class ChildSpec:
     single: bool
     card: str
     index: int
-    cls: type | None  # the generated class, once every class exists
+    cls: type[Element]  # the generated class, set once every class exists
 
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
                  py_name: str | None = None) -> None:
@@ -170,7 +173,6 @@ class ChildSpec:
         self.single = single
         self.card = card
         self.index = 0
-        self.cls = None
 
 
 Constraint = tuple[str, tuple[tuple[str, ...], ...]]

@@ -249,9 +249,12 @@ def _read_xml(data: bytes, source: str | None, context: _Context, *,
             remove_comments=True, remove_pis=True, huge_tree=True)
     depth, elements = 0, context.elements
     try:
-        # Fed in chunks: libxml2's push parser does not recurse, however deep the nesting.
-        for start in range(0, max(len(data), 1), _CHUNK):
-            parser.feed(data[start:start + _CHUNK])
+        # libxml2's push parser does not recurse, however deep the nesting. Text watched
+        # for its elements is fed in chunks, to stop as soon as a limit is passed; other text
+        # in one call (a slice of all of a bytes object is that object: nothing is copied).
+        chunk = _CHUNK if watch else max(len(data), 1)
+        for start in range(0, max(len(data), 1), chunk):
+            parser.feed(data[start:start + chunk])
             if not isinstance(parser, etree.XMLPullParser):
                 continue
             for event, node in parser.read_events():  # stop as soon as a limit is passed
@@ -432,36 +435,52 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
     by_name = element.spec.by_name
     values = _tree.values(element)
     later: list[tuple[AttributeSpec, str]] | None = None
-    for key, text in node.attrib.items():
-        attribute = by_name.get(key)  # pyright: ignore[reportArgumentType]
-        if attribute is None:
-            known = list(by_name)
-            raise context.error(
-                f"<{element.spec.tag}> has no attribute {_name(key)!r}"
-                f"{did_you_mean(_name(key), known)}", source, source_line(node))
-        if attribute.direct and text:
+    for key, text in node.items():
+        attribute = by_name.get(key)
+        if attribute is not None and attribute.direct and text:
             try:  # the common case, as _tree.assign_text does it
-                values[attribute.name] = attribute.codec.parse(str(text))
+                values[key] = attribute.codec.parse(text)
             except Rejected as rejected:
-                error = _tree.rejection(element, attribute, text, rejected)
-                raise context.error(str(error), source, source_line(node)) from None
+                raise _rejected(element, attribute, text, rejected, node, source,
+                                context) from None
             continue
-        if attribute.kind == "id":
-            try:
-                name = str(text)
-                if context.options.escape_separators:
-                    name = escape_separators(name)
-                _tree.assign_name_text(element, attribute, name)
-            except MjcfError as error:
-                raise context.error(str(error), source, source_line(node)) from None
-            continue
-        if attribute.namespace_from is not None:
-            later = [] if later is None else later
-            later.append((attribute, str(text)))
-            continue
-        _set_text(element, attribute, str(text), node, source, context)
+        later = _set_other(element, attribute, key, text, node, source, context, later)
     for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
+
+
+def _rejected(element: Element, attribute: AttributeSpec, text: str, rejected: Rejected,
+              node: XmlNode, source: str | None, context: _Context) -> ParseError:
+    error = _tree.rejection(element, attribute, text, rejected)
+    return context.error(str(error), source, source_line(node))
+
+
+def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text: str,
+               node: XmlNode, source: str | None, context: _Context,
+               later: list[tuple[AttributeSpec, str]] | None,
+               ) -> list[tuple[AttributeSpec, str]] | None:
+    """Read an attribute that is not a plain value: a name, a reference, an empty value;
+    references whose namespace another attribute names are added to ``later``."""
+    if attribute is None:
+        known = list(element.spec.by_name)
+        raise context.error(
+            f"<{element.spec.tag}> has no attribute {_name(key)!r}"
+            f"{did_you_mean(_name(key), known)}", source, source_line(node))
+    if attribute.kind == "id":
+        try:
+            name = text
+            if context.options.escape_separators:
+                name = escape_separators(name)
+            _tree.assign_name_text(element, attribute, name)
+        except MjcfError as error:
+            raise context.error(str(error), source, source_line(node)) from None
+        return later
+    if attribute.namespace_from is not None:
+        later = [] if later is None else later
+        later.append((attribute, text))
+        return later
+    _set_text(element, attribute, text, node, source, context)
+    return later
 
 
 def escape_separators(name: str) -> str:
@@ -502,16 +521,21 @@ class _Builder:
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
         context, stack, lines = self.context, self.stack, self.sources.lines
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
+        new_child, assign_name = _tree.new_child, _tree.assign_name_text
+        escape = context.options.escape_separators
         self.count(node, source, 1)  # the root
         stack.append((root, iter(node), source, 1, root, None))
-        while stack:
-            frame = stack[-1]
-            parent, nodes, source, depth, top, on_exit = frame
+        # the frame on top of the stack, unpacked: reloaded whenever the stack changes
+        parent, nodes, source, depth, top, on_exit = stack[-1]
+        while True:
             child_node = next(nodes, None)
             if child_node is None:
                 stack.pop()
                 if on_exit is not None:
                     on_exit()
+                if not stack:
+                    return
+                parent, nodes, source, depth, top, on_exit = stack[-1]
                 continue
             tag: object = child_node.tag
             if not isinstance(tag, str):
@@ -520,7 +544,8 @@ class _Builder:
             if context.elements > max_elements:
                 self.count(child_node, source)
             if tag == INCLUDE:
-                self.include(frame, child_node)
+                self.include(stack[-1], child_node)
+                parent, nodes, source, depth, top, on_exit = stack[-1]
                 continue
             child_spec = parent.spec.children.get(tag)
             if child_spec is None:
@@ -532,15 +557,43 @@ class _Builder:
                 raise context.error(_limit_message(
                     f"<{tag}> is nested {depth + 1} deep", max_depth, "max_depth"),
                     source, source_line(child_node))
-            existing = _tree.single_child(parent, tag) if child_spec.single else None
-            if existing is not None:
-                # A repeated section: merge into the first.
-                check = self.merge(existing, child_node, source)
-                stack.append((existing, iter(child_node), source, depth + 1, existing, check))
-                continue
-            child = _tree.new_child(parent, child_spec)
+            if child_spec.single:
+                existing = _tree.single_child(parent, tag)
+                if existing is not None:
+                    # A repeated section: merge into the first.
+                    check = self.merge(existing, child_node, source)
+                    stack.append((existing, iter(child_node), source, depth + 1, existing,
+                                  check))
+                    parent, nodes, source, depth, top, on_exit = stack[-1]
+                    continue
+            values: dict[str, object] = {}
+            child = new_child(parent, child_spec, values)
             lines[child] = (source, child_node.sourceline)
-            _set_attributes(child, child_node, source, context)
+            items = child_node.items()
+            if items:  # _set_attributes, inline: most of a parse is this loop
+                by_name = child.spec.by_name
+                later: list[tuple[AttributeSpec, str]] | None = None
+                for key, text in items:
+                    attribute = by_name.get(key)
+                    if attribute is not None and text:
+                        if attribute.direct:
+                            try:
+                                values[key] = attribute.codec.parse(text)
+                            except Rejected as rejected:
+                                raise _rejected(child, attribute, text, rejected, child_node,
+                                                source, context) from None
+                            continue
+                        if attribute.kind == "id" and not escape:
+                            try:
+                                assign_name(child, attribute, text)
+                            except MjcfError as error:
+                                raise context.error(str(error), source,
+                                                    source_line(child_node)) from None
+                            continue
+                    later = _set_other(child, attribute, key, text, child_node, source,
+                                       context, later)
+                for attribute, text in later or ():
+                    _set_text(child, attribute, text, child_node, source, context)
             child_top = child
             if tag == parent.spec.tag:
                 child_top = top
@@ -549,6 +602,7 @@ class _Builder:
                     self.nested.append((child, top))  # a class of a section that may repeat
             if len(child_node):
                 stack.append((child, iter(child_node), source, depth + 1, child_top, None))
+                parent, nodes, source, depth, top, on_exit = stack[-1]
 
     def count(self, node: XmlNode, source: str | None, elements: int = 0) -> None:
         """Count ``elements`` more (or check the count); refuse past ``max_elements``."""
