@@ -31,6 +31,7 @@ class AttributeSpec:
     __slots__ = (
         "alone",
         "anchor",
+        "as_is",
         "codec",
         "default",
         "direct",
@@ -49,6 +50,7 @@ class AttributeSpec:
         "namespace_from",
         "ordered",
         "pattern",
+        "plain_text",
         "py_name",
         "required",
         "scope",
@@ -77,6 +79,8 @@ class AttributeSpec:
     codec: Codec
     is_reference: bool  # names another element (a fixed or an attribute-given namespace)
     direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
+    plain_text: bool  # direct, and written by its codec alone (not a file)
+    as_is: bool
 
     def __init__(
         self,
@@ -123,6 +127,9 @@ class AttributeSpec:
         self.index = 0  # position in the row, set by ElementSpec
         self.is_reference = kind == "ref" or namespace_from is not None
         self.direct = not self.is_reference and kind != "id" and not scope
+        self.plain_text = self.direct and kind != "file"
+        # a text stored for it is written as it is (plain output, names of the model written)
+        self.as_is = self.plain_text or kind == "id" or self.is_reference
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern,
                                 alone=self.alone, ordered=ordered)
@@ -150,6 +157,12 @@ class AttributeSpec:
 
     def __repr__(self) -> str:
         return f"<attribute {self.name!r}: {self.describe()}>"
+
+
+# How an export writes the attributes of an element that sets a given set of them: their
+# names in grammar order; each name with its attribute and whether a text stored for it is
+# written as it is (in plain output); the template of their `` name="%s"``.
+WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
 
 
 class ChildSpec:
@@ -198,6 +211,7 @@ class ElementSpec:
         "name",
         "namespace",
         "order",
+        "plans",
         "references",
         "scope_attribute",
         "tag",
@@ -209,6 +223,8 @@ class ElementSpec:
     by_key: dict[str, AttributeSpec]
     by_name: dict[str, AttributeSpec]
     order: dict[str, int]  # XML attribute name -> grammar position
+    # an element's attribute names as its values hold them -> how an export writes them
+    plans: dict[tuple[str, ...], WritePlan]
     children: dict[str, ChildSpec]
     id_attribute: AttributeSpec | None
     scope_attribute: AttributeSpec | None
@@ -249,6 +265,7 @@ class ElementSpec:
         self.by_key = {}
         self.by_name = {}
         self.order = {}
+        self.plans = {}
         self.id_attribute = None
         self.scope_attribute = None
         for i, attribute in enumerate(self.attributes):

@@ -439,7 +439,7 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
         attribute = by_name.get(key)
         if attribute is not None and attribute.direct and text:
             try:  # the common case, as _tree.assign_text does it
-                values[key] = attribute.codec.parse(text)
+                values[attribute.name] = attribute.codec.parse(text)
             except Rejected as rejected:
                 raise _rejected(element, attribute, text, rejected, node, source,
                                 context) from None
@@ -578,7 +578,7 @@ class _Builder:
                     if attribute is not None and text:
                         if attribute.direct:
                             try:
-                                values[key] = attribute.codec.parse(text)
+                                values[attribute.name] = attribute.codec.parse(text)
                             except Rejected as rejected:
                                 raise _rejected(child, attribute, text, rejected, child_node,
                                                 source, context) from None
