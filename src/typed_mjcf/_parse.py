@@ -419,8 +419,8 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     model = _tree.new_model(cls)
     _tree.set_base_dir(model, context.base_dir)
     _tree.memory_files(model).update(context.options.assets)
-    sources = _tree.SourceMap()
-    sources.lines[model] = (source, node.sourceline)
+    sources = _tree.SourceMap(source)
+    sources.add(model, source, node.sourceline)
     _tree.set_source_map(model, sources)
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
@@ -519,7 +519,9 @@ class _Builder:
         self.hierarchies: dict[int, _Hierarchy] = {}  # by id(section): repeated hierarchies
 
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
-        context, stack, lines = self.context, self.stack, self.sources.lines
+        context, stack = self.context, self.stack
+        # where each element was read (SourceMap.add, inline)
+        line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, assign_name = _tree.new_child, _tree.assign_name_text
         escape = context.options.escape_separators
@@ -568,7 +570,9 @@ class _Builder:
                     continue
             values: dict[str, object] = {}
             child = new_child(parent, child_spec, values)
-            lines[child] = (source, child_node.sourceline)
+            line_of[child] = child_node.sourceline
+            if source is not main:
+                files[child] = source
             items = child_node.items()
             if items:  # _set_attributes, inline: most of a parse is this loop
                 by_name = child.spec.by_name

@@ -597,13 +597,56 @@ class SourceMap:
     ``lines`` maps each element to its file (``None`` for text given in memory) and line,
     in the order the parser read them; ``includes`` maps each included file to the file
     that included it and the element its contents were read into.
+
+    The map holds each element's line, and its file only if it is not the main one: no
+    (file, line) pair is made per element (the collector would scan each once a parse ends).
     """
 
-    __slots__ = ("includes", "lines")
+    __slots__ = ("files", "includes", "line_of", "main")
 
-    def __init__(self) -> None:
-        self.lines: dict[Element, tuple[str | None, int | None]] = {}
+    def __init__(self, main: str | None = None) -> None:
+        self.main = main  # the file (or text) the model was read from
+        self.line_of: dict[Element, int | None] = {}  # every element, in reading order
+        self.files: dict[Element, str | None] = {}  # the elements read from another file
         self.includes: dict[str, tuple[str | None, Element]] = {}
+
+    def add(self, element: Element, source: str | None, line: int | None) -> None:
+        """Record that ``element`` was read at ``source:line``."""
+        self.line_of[element] = line
+        if source is not self.main:
+            self.files[element] = source
+
+    def get(self, element: Element) -> tuple[str | None, int | None] | None:
+        """Where ``element`` was read, if it was."""
+        if element not in self.line_of:
+            return None
+        return self.files.get(element, self.main), self.line_of[element]
+
+    @property
+    def lines(self) -> Mapping[Element, tuple[str | None, int | None]]:
+        """Every element read, in reading order, with its file and line."""
+        return _Lines(self)
+
+
+class _Lines(Mapping[Element, tuple[str | None, int | None]]):
+    """A :class:`SourceMap`'s elements with their file and line, as a read-only mapping."""
+
+    __slots__ = ("_sources",)
+
+    def __init__(self, sources: SourceMap) -> None:
+        self._sources = sources
+
+    def __getitem__(self, element: Element) -> tuple[str | None, int | None]:
+        found = self._sources.get(element)
+        if found is None:
+            raise KeyError(element)
+        return found
+
+    def __iter__(self) -> Iterator[Element]:
+        return iter(self._sources.line_of)
+
+    def __len__(self) -> int:
+        return len(self._sources.line_of)
 
 
 def new_model(cls: type[ModelBase]) -> ModelBase:
@@ -1388,7 +1431,7 @@ def source_of(element: Element) -> tuple[str | None, int | None] | None:
     model it was read into)."""
     root = element._root
     sources = None if root is None else root._sources
-    return None if sources is None else sources.lines.get(element)
+    return None if sources is None else sources.get(element)
 
 
 def single_child(element: Element, tag: str) -> Element | None:
