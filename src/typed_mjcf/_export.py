@@ -110,6 +110,8 @@ class Writer:
         self.keyframe_sections: list[tuple[ModelBase, Element]] = []
         self._flat_names: dict[tuple[int, str], str] | None = None
         self.targets: dict[int, str] = {}  # the text of each element references link to
+        # the scope whose elements' texts are written as stored (plain output; else none)
+        self.plain_scope = scope if self.plain and not skip_attributes else None
         # names this export gives unnamed elements that references link to
         self.given_names: dict[int, str] = _names_to_give(top, scope)
         if self.composed:
@@ -201,18 +203,20 @@ class Writer:
         plan = spec.plans.get(key)
         if plan is None:
             plan = write_plan(spec, key)
-        if not self.plain or self.skip or _tree.scope_of(element) is not self.top_scope or (
+        if _tree.scope_of(element) is not self.plain_scope or (
                 self.given_names and id(element) in self.given_names):
             return self.escaped_attribute_text(element, stored, plan[0])
         texts: list[str] = []
         append = texts.append
-        fmt = self.fmt
+        fmt, targets = self.fmt, self.targets
         for name, attribute, as_is in plan[1]:
             value = stored[name]
             if as_is and type(value) is str:
                 append(value)
             elif attribute.plain_text:
                 append(attribute.codec.write(value, fmt))
+            elif id(value) in targets:  # a link to an element already written to
+                append(targets[id(value)])
             else:
                 text = self.value(element, attribute, value)
                 if text is None:  # not written (a link to a removed element)

@@ -529,6 +529,7 @@ class _Builder:
         stack.append((root, iter(node), source, 1, root, None))
         # the frame on top of the stack, unpacked: reloaded whenever the stack changes
         parent, nodes, source, depth, top, on_exit = stack[-1]
+        child_specs, parent_tag = parent.spec.children, parent.spec.tag
         while True:
             child_node = next(nodes, None)
             if child_node is None:
@@ -538,6 +539,7 @@ class _Builder:
                 if not stack:
                     return
                 parent, nodes, source, depth, top, on_exit = stack[-1]
+                child_specs, parent_tag = parent.spec.children, parent.spec.tag
                 continue
             tag: object = child_node.tag
             if not isinstance(tag, str):
@@ -548,10 +550,11 @@ class _Builder:
             if tag == INCLUDE:
                 self.include(stack[-1], child_node)
                 parent, nodes, source, depth, top, on_exit = stack[-1]
+                child_specs, parent_tag = parent.spec.children, parent.spec.tag
                 continue
-            child_spec = parent.spec.children.get(tag)
+            child_spec = child_specs.get(tag)
             if child_spec is None:
-                legal = list(parent.spec.children)
+                legal = list(child_specs)
                 raise context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
                     f"{did_you_mean(_name(tag), legal)}", source, source_line(child_node))
@@ -567,6 +570,7 @@ class _Builder:
                     stack.append((existing, iter(child_node), source, depth + 1, existing,
                                   check))
                     parent, nodes, source, depth, top, on_exit = stack[-1]
+                    child_specs, parent_tag = parent.spec.children, parent.spec.tag
                     continue
             values: dict[str, object] = {}
             child = new_child(parent, child_spec, values)
@@ -599,14 +603,15 @@ class _Builder:
                 for attribute, text in later or ():
                     _set_text(child, attribute, text, child_node, source, context)
             child_top = child
-            if tag == parent.spec.tag:
+            if tag == parent_tag:
                 child_top = top
-                above = top.parent
+                above = _tree.parent_of(top)
                 if above is not None and above.spec.children[top.spec.tag].single:
                     self.nested.append((child, top))  # a class of a section that may repeat
             if len(child_node):
                 stack.append((child, iter(child_node), source, depth + 1, child_top, None))
                 parent, nodes, source, depth, top, on_exit = stack[-1]
+                child_specs, parent_tag = parent.spec.children, parent.spec.tag
 
     def count(self, node: XmlNode, source: str | None, elements: int = 0) -> None:
         """Count ``elements`` more (or check the count); refuse past ``max_elements``."""

@@ -1454,10 +1454,10 @@ def new_child(parent: Element, child_spec: ChildSpec,
         _place(parent, child, child_spec, None)
         return child
     children = parent._children
-    if type(children) is tuple:
-        _set_children(parent, [child])
+    if isinstance(children, list):
+        children.append(child)
     else:
-        cast(list[Element], children).append(child)
+        _set_children(parent, [child])
     return child
 
 
