@@ -524,7 +524,9 @@ class _Builder:
         line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, assign_name = _tree.new_child, _tree.assign_name_text
+        assign_text = _tree.assign_text
         escape = context.options.escape_separators
+        link = context.options.resolve_references
         self.count(node, source, 1)  # the root
         stack.append((root, iter(node), source, 1, root, None))
         # the frame on top of the stack, unpacked: reloaded whenever the stack changes
@@ -591,9 +593,20 @@ class _Builder:
                                 raise _rejected(child, attribute, text, rejected, child_node,
                                                 source, context) from None
                             continue
-                        if attribute.kind == "id" and not escape:
+                        kind = attribute.kind
+                        if kind == "id" and not escape:
                             try:
                                 assign_name(child, attribute, text)
+                            except MjcfError as error:
+                                raise context.error(str(error), source,
+                                                    source_line(child_node)) from None
+                            continue
+                        if kind == "ref" and attribute.namespace_from is None and not escape:
+                            try:  # _set_text, inline
+                                assign_text(child, attribute, text, link)
+                            except Rejected as rejected:
+                                raise _rejected(child, attribute, text, rejected, child_node,
+                                                source, context) from None
                             except MjcfError as error:
                                 raise context.error(str(error), source,
                                                     source_line(child_node)) from None
