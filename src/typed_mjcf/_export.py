@@ -394,16 +394,13 @@ class Writer:
         newline = "\n" if pretty_print else ""
         indents = INDENTS if pretty_print else _NO_INDENTS
         deepest = len(indents) - 1  # deeper levels are indented as much
-        # an element to open, or the text that closes one
-        stack: list[tuple[Element | str, int]] = [(element, depth)]
-        pop, push = stack.pop, stack.append
+        # the open elements: their children still to write, and their closing text
+        stack: list[tuple[Iterator[Element], str]] = []
         attribute_text, values, children_of = self.attribute_text, _tree.values, _tree.children
         given_names = self.given_names
-        while stack:
-            current, level = pop()
-            if isinstance(current, str):
-                append(current)
-                continue
+        current, level = element, depth
+        spaces = indents[min(deepest, level)]
+        while True:
             tag = current.spec.tag
             stored = values(current)
             # (an element without attributes may still get a name from this export)
@@ -411,17 +408,25 @@ class Writer:
             attrs = attribute_text(current, stored) if named else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
-            spaces = indents[min(deepest, level)]
             children = written_children(current) if children_of(current) else None
             if children:
                 append(f"{spaces}<{tag}{attrs}>{newline}")
-                push((f"{spaces}</{tag}>{newline}", level))
+                stack.append((iter(children), f"{spaces}</{tag}>{newline}"))
                 level += 1
-                for child in reversed(children):
-                    push((child, level))
+                spaces = indents[min(deepest, level)]
             else:
                 append(f"{spaces}<{tag}{attrs}/>{newline}")
-        return "".join(parts)
+            # the next element: the next child of the innermost element still open
+            while stack:
+                following = next(stack[-1][0], None)
+                if following is not None:
+                    current = following
+                    break
+                append(stack.pop()[1])
+                level -= 1
+                spaces = indents[min(deepest, level)]
+            else:
+                return "".join(parts)
 
     def track(self, element: Element) -> None:
         """Note which model a joint, actuator or mocap body of a composed model came from."""
