@@ -907,13 +907,14 @@ _set_singles = _slot_writer("_singles")
 _set_attached = _slot_writer("_attached")
 
 
-def _create(cls: type[Element], parent: Element) -> Element:
+def _create(cls: type[Element], parent: Element,
+            values: dict[str, object] | None = None) -> Element:
     """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
-    children)."""
+    children), with ``values`` (empty, for a caller that fills it) as its values."""
     # made as a _Blank (its slots written directly, past Element.__setattr__), then given
     # its class: about three times faster than writing each slot through its descriptor
     element = _new_blank(_Blank)
-    element._values = {}
+    element._values = {} if values is None else values
     element._children = _NO_CHILDREN
     element._parent = parent
     element._root = parent._root
@@ -1447,9 +1448,7 @@ def new_child(parent: Element, child_spec: ChildSpec,
               values: dict[str, object] | None = None) -> Element:
     """A new child of ``parent``, last among its children; ``values`` (empty) becomes its
     values dict, for a caller that fills it (the parser)."""
-    child = _create(child_spec.cls, parent)
-    if values is not None:
-        _set_values(child, values)
+    child = _create(child_spec.cls, parent, values)
     if child_spec.single:
         _place(parent, child, child_spec, None)
         return child
