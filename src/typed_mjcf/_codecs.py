@@ -46,6 +46,17 @@ _FLOAT = r"[-+]?(?:\d{1,20}(?:\.\d*)?|\.\d+)(?:[eE](?:-\d{1,2}|\+?\d))?"
 _INTEGER = r"[-+]?\d{1,9}"  # at most nine digits: always within 32 bits
 FLOAT32_MAX: Final = float(np.finfo(np.float32).max)
 
+# Texts a codec has checked, to accept again without checking: models repeat the same few
+# values ("0 0 1") many times. Bounded, so that reading many distinct values costs no memory.
+_CHECKED_TEXTS: Final = 2048  # per codec
+_CHECKED_LENGTH: Final = 64  # characters; longer texts are checked each time
+
+
+def remember(checked: set[str], text: str) -> None:
+    """Note that ``text`` passed a codec's check (if there is room, and it is short)."""
+    if len(checked) < _CHECKED_TEXTS and len(text) <= _CHECKED_LENGTH:
+        checked.add(text)
+
 
 class Rejected(Exception):
     """A value the attribute cannot take, with what it expected."""
@@ -243,6 +254,9 @@ class BoolCodec(Codec):
         raise _type_rejected("a bool")
 
     def parse(self, text: str) -> object:
+        exact = _TRUE_FALSE.get(text)  # spelt exactly as MuJoCo reads it: the common case
+        if exact is not None:
+            return exact
         found = self.accept(text)
         _check_spelling(text, "true" if found else "false")
         return found
@@ -331,19 +345,23 @@ class IntCodec(Codec):
 class RealCodec(Codec):
     """One number. Text from a file is checked by converting it, and kept."""
 
-    __slots__ = ("single",)
+    __slots__ = ("checked", "single")
     lazy = True
 
     def __init__(self, single: bool) -> None:
         self.single = single
+        self.checked: set[str] = set()
 
     def accept(self, value: object) -> object:
         return to_float(value)
 
     def parse(self, text: str) -> object:
+        if text in self.checked:
+            return text
         value = text_to_float(text)
         if self.single:
             check_float32(value, text)
+        remember(self.checked, text)
         return text
 
     def read(self, stored: object) -> object:
@@ -410,7 +428,8 @@ def _frozen(array: Array) -> Array:
 class ArrayCodec(Codec):
     """A list of numbers of a fixed or bounded length, stored as a read-only numpy array."""
 
-    __slots__ = ("dtype", "expected", "hi", "is_int", "lo", "pattern", "plain_types", "single")
+    __slots__ = ("checked", "dtype", "expected", "hi", "is_int", "lo", "pattern", "plain_types",
+                 "single")
     lazy = True
 
     def __init__(self, kind: str, dtype: str, lo: int, hi: int | None) -> None:
@@ -424,6 +443,7 @@ class ArrayCodec(Codec):
         low, high = max(lo - 1, 0), "" if hi is None else str(max(hi - 1, 0))
         repeat = f"(?:\\s+{number}){{{low},{high}}}"
         self.pattern = re.compile(f"\\s*{number}{repeat}\\s*" if hi != 0 else r"\s*", re.ASCII)
+        self.checked: set[str] = set()
 
     def accept(self, value: object) -> object:
         kind = type(value)
@@ -451,7 +471,10 @@ class ArrayCodec(Codec):
         return array
 
     def parse(self, text: str) -> object:
+        if text in self.checked:
+            return text
         if self.pattern.fullmatch(text) is not None:
+            remember(self.checked, text)
             return text
         array = self.from_text(text)
         self._check_length(array.shape[0])
@@ -543,11 +566,12 @@ def _check_spelling(text: str, keyword: str) -> None:
 
 
 class KeywordCodec(Codec):
-    __slots__ = ("keywords", "listing", "lookup", "takes_bool")
+    __slots__ = ("exact", "keywords", "listing", "lookup", "takes_bool")
 
     def __init__(self, keywords: tuple[str, ...]) -> None:
         self.keywords = keywords
         self.lookup = {k.lower(): k for k in keywords}
+        self.exact = frozenset(self.lookup.values())  # what parse() takes as it is
         self.takes_bool = "true" in self.lookup and "false" in self.lookup
         self.listing = ", ".join(repr(k) for k in keywords)
 
@@ -562,6 +586,8 @@ class KeywordCodec(Codec):
         return found
 
     def parse(self, text: str) -> object:
+        if text in self.exact:  # spelt as the grammar spells it: the common case
+            return text
         found = cast(str, self.accept(text))
         _check_spelling(text, found)
         return found

@@ -20,16 +20,16 @@ import functools
 import os
 from collections import deque
 from collections.abc import Callable, Iterator
-from typing import cast
+from typing import Final, cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._files import absolute_file, element_file_stem, is_skin_file, name_files
-from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._grammar import AttributeSpec, ElementSpec, WritePlan
 from typed_mjcf._merge import combine, rule_of
 from typed_mjcf._names import NameScope
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
-from typed_mjcf._xmltext import Chunk, Node, escape, indent
+from typed_mjcf._xmltext import MARKUP, MAX_INDENT, Chunk, Node, escape, indent
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import ExportError
 
@@ -109,6 +109,9 @@ class Writer:
         # composed models: each model's keyframe section, for combining (left out here)
         self.keyframe_sections: list[tuple[ModelBase, Element]] = []
         self._flat_names: dict[tuple[int, str], str] | None = None
+        self.targets: dict[int, str] = {}  # the text of each element references link to
+        # the scope whose elements' texts are written as stored (plain output; else none)
+        self.plain_scope = scope if self.plain and not skip_attributes else None
         # names this export gives unnamed elements that references link to
         self.given_names: dict[int, str] = _names_to_give(top, scope)
         if self.composed:
@@ -163,13 +166,9 @@ class Writer:
 
     def names(self, element: Element) -> list[str]:
         """The names of the attributes to write, in grammar order."""
-        stored = _tree.values(element)
+        names = grammar_order(element.spec, _tree.values(element))
         skip = self.skip
-        names = [name for name in stored if name not in skip] if skip else list(stored)
-        # sort the few attributes set rather than scan every attribute the grammar has
-        if len(names) > 1:
-            names.sort(key=element.spec.order.__getitem__)
-        return names
+        return [name for name in names if name not in skip] if skip else list(names)
 
     def given_name(self, element: Element) -> str:
         """`` name="..."`` for an unnamed element this export names."""
@@ -196,24 +195,55 @@ class Writer:
 
     def attribute_text(self, element: Element, stored: dict[str, object]) -> str:
         """`` name="value"`` for each of ``element``'s ``stored`` values (this loop is most
-        of an export's time). Text kept as read and plain strings need no formatting, and
-        what a number codec writes no escaping."""
+        of an export's time). In plain output, texts stored as read are written as they
+        are, into the template of the element's set of attributes, and escaped only if the
+        result shows something to escape (one check per element rather than per value)."""
+        spec = element.spec
+        key = tuple(stored)
+        plan = spec.plans.get(key)
+        if plan is None:
+            plan = write_plan(spec, key)
+        if _tree.scope_of(element) is not self.plain_scope or (
+                self.given_names and id(element) in self.given_names):
+            return self.escaped_attribute_text(element, stored, plan[0])
+        texts: list[str] = []
+        append = texts.append
+        fmt, targets = self.fmt, self.targets
+        for name, attribute, as_is in plan[1]:
+            value = stored[name]
+            if as_is and type(value) is str:
+                append(value)
+            elif attribute.plain_text:
+                append(attribute.codec.write(value, fmt))
+            elif id(value) in targets:  # a link to an element already written to
+                append(targets[id(value)])
+            else:
+                text = self.value(element, attribute, value)
+                if text is None:  # not written (a link to a removed element)
+                    return self.escaped_attribute_text(element, stored, plan[0])
+                append(text)
+        out = plan[2] % tuple(texts)
+        if out.count('"') != 2 * len(texts) or MARKUP.search(out) is not None:
+            return self.escaped_attribute_text(element, stored, plan[0])
+        return out
+
+    def escaped_attribute_text(self, element: Element, stored: dict[str, object],
+                               names: tuple[str, ...]) -> str:
+        """:meth:`attribute_text` value by value (``names``: ``stored``'s in grammar order),
+        each text escaped: for output that is not plain, and values that need escaping."""
         by_name = element.spec.by_name
         plain = self.plain and _tree.scope_of(element) is self.top_scope
         parts: list[str] = []
         if self.given_names and id(element) in self.given_names:
             parts.append(f' {self.given_name(element)}')
-        names = list(stored)
         skip = self.skip
-        if skip:
-            names = [name for name in names if name not in skip]
-        if len(names) > 1:  # sort the few set rather than scan every attribute of the row
-            names.sort(key=element.spec.order.__getitem__)
         fmt = self.fmt
         for name in names:
+            if skip and name in skip:
+                continue
             value = stored[name]
             attribute = by_name[name]
-            if attribute.direct and attribute.kind != "file":
+            if attribute.plain_text:
                 if type(value) is str:  # text (or numbers as read: they may hold tabs)
                     text = value if plain else attribute.codec.write(value, fmt)
                     parts.append(f' {name}="{escape(text)}"')
@@ -235,7 +265,11 @@ class Writer:
         if isinstance(value, Element):
             if _tree.model_of(value) is None:
                 return None
-            return self.reference(element, attribute, value)
+            # the same for every reference to that element: worked out once per export
+            text = self.targets.get(id(value))
+            if text is None:
+                text = self.targets[id(value)] = self.reference(element, attribute, value)
+            return text
         if kind == "file":
             if self.file_namer is not None:
                 return self.file_namer(element, attribute)
@@ -358,35 +392,41 @@ class Writer:
         parts: list[str] = []
         append = parts.append
         newline = "\n" if pretty_print else ""
-        indent_of = indent if pretty_print else _no_indent
-        # an element to open, or the text that closes one
-        stack: list[tuple[Element | str, int]] = [(element, depth)]
-        pop, push = stack.pop, stack.append
-        attribute_text = self.attribute_text
+        indents = INDENTS if pretty_print else _NO_INDENTS
+        deepest = len(indents) - 1  # deeper levels are indented as much
+        # the open elements: their children still to write, and their closing text
+        stack: list[tuple[Iterator[Element], str]] = []
+        attribute_text, values, children_of = self.attribute_text, _tree.values, _tree.children
         given_names = self.given_names
-        while stack:
-            current, level = pop()
-            if isinstance(current, str):
-                append(current)
-                continue
+        current, level = element, depth
+        spaces = indents[min(deepest, level)]
+        while True:
             tag = current.spec.tag
-            stored = _tree.values(current)
+            stored = values(current)
             # (an element without attributes may still get a name from this export)
             named = stored or (given_names and id(current) in given_names)
             attrs = attribute_text(current, stored) if named else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
-            spaces = indent_of(level)
-            children = written_children(current) if _tree.children(current) else None
+            children = written_children(current) if children_of(current) else None
             if children:
                 append(f"{spaces}<{tag}{attrs}>{newline}")
-                push((f"{spaces}</{tag}>{newline}", level))
+                stack.append((iter(children), f"{spaces}</{tag}>{newline}"))
                 level += 1
-                for child in reversed(children):
-                    push((child, level))
+                spaces = indents[min(deepest, level)]
             else:
                 append(f"{spaces}<{tag}{attrs}/>{newline}")
-        return "".join(parts)
+            # the next element: the next child of the innermost element still open
+            while stack:
+                following = next(stack[-1][0], None)
+                if following is not None:
+                    current = following
+                    break
+                append(stack.pop()[1])
+                level -= 1
+                spaces = indents[min(deepest, level)]
+            else:
+                return "".join(parts)
 
     def track(self, element: Element) -> None:
         """Note which model a joint, actuator or mocap body of a composed model came from."""
@@ -486,8 +526,34 @@ class Writer:
             self.merge_attributes(sub, child)
 
 
-def _no_indent(level: int) -> str:
-    return ""
+# The indentation of each level, up to the deepest (see _xmltext.indent).
+INDENTS: Final = tuple(indent(level) for level in range(MAX_INDENT // 2 + 2))
+_NO_INDENTS: Final = ("",)
+
+
+_PLANS_PER_ROW: Final = 256  # sets of attributes whose plan a row keeps (see below)
+
+
+def write_plan(spec: ElementSpec, key: tuple[str, ...]) -> WritePlan:
+    """How to write an element of ``spec`` whose values have the names ``key`` (in their
+    order). The elements of a row mostly set one of a few sets of attributes: each set's
+    plan is kept (for that many sets) rather than sorted for each element."""
+    plan = spec.plans.get(key)
+    if plan is not None:
+        return plan
+    by_name = spec.by_name
+    # the grammar's own strings (values are stored under them): looked up by identity
+    names = tuple(sorted((by_name[name].name for name in key), key=spec.order.__getitem__))
+    plan = (names, tuple((name, by_name[name], by_name[name].as_is) for name in names),
+            "".join(f' {name}="%s"' for name in names))
+    if len(spec.plans) < _PLANS_PER_ROW:
+        spec.plans[key] = plan
+    return plan
+
+
+def grammar_order(spec: ElementSpec, stored: dict[str, object]) -> tuple[str, ...]:
+    """The names of ``stored`` (an element's values) in the order of ``spec``'s grammar."""
+    return write_plan(spec, tuple(stored))[0]
 
 
 @functools.cache

@@ -12,9 +12,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Final, Literal
+from typing import TYPE_CHECKING, Final, Literal
 
 from typed_mjcf._codecs import Codec, make_codec
+
+if TYPE_CHECKING:
+    from typed_mjcf._tree import Element
 
 DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 
@@ -28,6 +31,7 @@ class AttributeSpec:
     __slots__ = (
         "alone",
         "anchor",
+        "as_is",
         "codec",
         "default",
         "direct",
@@ -46,6 +50,7 @@ class AttributeSpec:
         "namespace_from",
         "ordered",
         "pattern",
+        "plain_text",
         "py_name",
         "required",
         "scope",
@@ -74,6 +79,8 @@ class AttributeSpec:
     codec: Codec
     is_reference: bool  # names another element (a fixed or an attribute-given namespace)
     direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
+    plain_text: bool  # direct, and written by its codec alone (not a file)
+    as_is: bool
 
     def __init__(
         self,
@@ -120,6 +127,9 @@ class AttributeSpec:
         self.index = 0  # position in the row, set by ElementSpec
         self.is_reference = kind == "ref" or namespace_from is not None
         self.direct = not self.is_reference and kind != "id" and not scope
+        self.plain_text = self.direct and kind != "file"
+        # a text stored for it is written as it is (plain output, names of the model written)
+        self.as_is = self.plain_text or kind == "id" or self.is_reference
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern,
                                 alone=self.alone, ordered=ordered)
@@ -149,6 +159,12 @@ class AttributeSpec:
         return f"<attribute {self.name!r}: {self.describe()}>"
 
 
+# How an export writes the attributes of an element that sets a given set of them: their
+# names in grammar order; each name with its attribute and whether a text stored for it is
+# written as it is (in plain output); the template of their `` name="%s"``.
+WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
+
+
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once."""
 
@@ -160,7 +176,7 @@ class ChildSpec:
     single: bool
     card: str
     index: int
-    cls: type | None  # the generated class, once every class exists
+    cls: type[Element]  # the generated class, set once every class exists
 
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
                  py_name: str | None = None) -> None:
@@ -170,7 +186,6 @@ class ChildSpec:
         self.single = single
         self.card = card
         self.index = 0
-        self.cls = None
 
 
 Constraint = tuple[str, tuple[tuple[str, ...], ...]]
@@ -196,6 +211,7 @@ class ElementSpec:
         "name",
         "namespace",
         "order",
+        "plans",
         "references",
         "scope_attribute",
         "tag",
@@ -207,6 +223,8 @@ class ElementSpec:
     by_key: dict[str, AttributeSpec]
     by_name: dict[str, AttributeSpec]
     order: dict[str, int]  # XML attribute name -> grammar position
+    # an element's attribute names as its values hold them -> how an export writes them
+    plans: dict[tuple[str, ...], WritePlan]
     children: dict[str, ChildSpec]
     id_attribute: AttributeSpec | None
     scope_attribute: AttributeSpec | None
@@ -247,6 +265,7 @@ class ElementSpec:
         self.by_key = {}
         self.by_name = {}
         self.order = {}
+        self.plans = {}
         self.id_attribute = None
         self.scope_attribute = None
         for i, attribute in enumerate(self.attributes):

@@ -263,9 +263,12 @@ def _read_xml(data: bytes, source: str | None, context: _Context, *,
             remove_comments=True, remove_pis=True, huge_tree=True)
     depth, elements = 0, context.elements
     try:
-        # Fed in chunks: libxml2's push parser does not recurse, however deep the nesting.
-        for start in range(0, max(len(data), 1), _CHUNK):
-            parser.feed(data[start:start + _CHUNK])
+        # libxml2's push parser does not recurse, however deep the nesting. Text watched
+        # for its elements is fed in chunks, to stop as soon as a limit is passed; other text
+        # in one call (a slice of all of a bytes object is that object: nothing is copied).
+        chunk = _CHUNK if watch else max(len(data), 1)
+        for start in range(0, max(len(data), 1), chunk):
+            parser.feed(data[start:start + chunk])
             if not isinstance(parser, etree.XMLPullParser):
                 continue
             for event, node in parser.read_events():  # stop as soon as a limit is passed
@@ -430,8 +433,8 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     model = _tree.new_model(cls)
     _tree.set_base_dir(model, context.base_dir)
     _tree.memory_files(model).update(context.options.assets)
-    sources = _tree.SourceMap()
-    sources.lines[model] = (source, node.sourceline)
+    sources = _tree.SourceMap(source)
+    sources.add(model, source, node.sourceline)
     _tree.set_source_map(model, sources)
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
@@ -441,45 +444,80 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
 
 def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
-    """Read ``node``'s attributes into ``element``; references whose namespace another
-    attribute names (``objname`` by ``objtype``) are read last."""
+    """Read ``node``'s attributes into ``element``."""
+    _read_attributes(element, node.items(), _tree.values(element), node, source, context,
+                     not context.options.escape_separators)
+
+
+def _read_attributes(element: Element, items: list[tuple[str, str]], values: dict[str, object],
+                     node: XmlNode, source: str | None, context: _Context, plain: bool) -> None:
+    """Read ``items``, ``node``'s attributes, into ``element`` (whose values are ``values``);
+    references whose namespace another attribute names (``objname`` by ``objtype``) are read
+    last. Most of a parse is this loop: plain values, names and references take a short path
+    (``plain``: names are not escaped), the rest is :func:`_set_other`."""
     by_name = element.spec.by_name
-    values = _tree.values(element)
     later: list[tuple[AttributeSpec, str]] | None = None
-    for key, text in node.attrib.items():
-        attribute = by_name.get(key)  # pyright: ignore[reportArgumentType]
-        if attribute is None:
-            known = list(by_name)
-            if element.spec.ignores_unknown:
-                _warn_ignored(element, _name(key), str(text), known, source,
-                              context.line(node, source))
+    for key, text in items:
+        attribute = by_name.get(key)
+        if attribute is not None and text:
+            if attribute.direct:
+                try:  # the common case, as _tree.assign_text does it
+                    values[attribute.name] = attribute.codec.parse(text)
+                except Rejected as rejected:
+                    raise _rejected(element, attribute, text, rejected, node, source,
+                                    context) from None
                 continue
-            raise context.error(
-                f"<{element.spec.tag}> has no attribute {_name(key)!r}"
-                f"{did_you_mean(_name(key), known)}", source, context.line(node, source))
-        if attribute.direct and text:
-            try:  # the common case, as _tree.assign_text does it
-                values[attribute.name] = attribute.codec.parse(str(text))
-            except Rejected as rejected:
-                error = _tree.rejection(element, attribute, text, rejected)
-                raise context.error(str(error), source, context.line(node, source)) from None
-            continue
-        if attribute.kind == "id":
-            try:
-                name = str(text)
-                if context.options.escape_separators:
-                    name = escape_separators(name)
-                _tree.assign_name_text(element, attribute, name)
-            except MjcfError as error:
-                raise context.error(str(error), source, context.line(node, source)) from None
-            continue
-        if attribute.namespace_from is not None:
-            later = [] if later is None else later
-            later.append((attribute, str(text)))
-            continue
-        _set_text(element, attribute, str(text), node, source, context)
+            kind = attribute.kind
+            if plain and kind == "id":
+                try:
+                    _tree.assign_name_text(element, attribute, text)
+                except MjcfError as error:
+                    raise context.error(str(error), source, context.line(node, source)) from None
+                continue
+            if plain and kind == "ref" and attribute.namespace_from is None:
+                _set_text(element, attribute, text, node, source, context)
+                continue
+        later = _set_other(element, attribute, key, text, node, source, context, later)
     for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
+
+
+def _rejected(element: Element, attribute: AttributeSpec, text: str, rejected: Rejected,
+              node: XmlNode, source: str | None, context: _Context) -> ParseError:
+    error = _tree.rejection(element, attribute, text, rejected)
+    return context.error(str(error), source, context.line(node, source))
+
+
+def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text: str,
+               node: XmlNode, source: str | None, context: _Context,
+               later: list[tuple[AttributeSpec, str]] | None,
+               ) -> list[tuple[AttributeSpec, str]] | None:
+    """Read an attribute that is not a plain value: a name, a reference, an empty value, one
+    the row lacks; references whose namespace another attribute names are added to
+    ``later``."""
+    if attribute is None:
+        known = list(element.spec.by_name)
+        if element.spec.ignores_unknown:
+            _warn_ignored(element, _name(key), text, known, source, context.line(node, source))
+            return later
+        raise context.error(
+            f"<{element.spec.tag}> has no attribute {_name(key)!r}"
+            f"{did_you_mean(_name(key), known)}", source, context.line(node, source))
+    if attribute.kind == "id":
+        try:
+            name = text
+            if context.options.escape_separators:
+                name = escape_separators(name)
+            _tree.assign_name_text(element, attribute, name)
+        except MjcfError as error:
+            raise context.error(str(error), source, context.line(node, source)) from None
+        return later
+    if attribute.namespace_from is not None:
+        later = [] if later is None else later
+        later.append((attribute, text))
+        return later
+    _set_text(element, attribute, text, node, source, context)
+    return later
 
 
 def _warn_ignored(element: Element, key: str, text: str, known: list[str],
@@ -526,18 +564,27 @@ class _Builder:
         self.hierarchies: dict[int, _Hierarchy] = {}  # by id(section): repeated hierarchies
 
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
-        context, stack, lines = self.context, self.stack, self.sources.lines
+        context, stack = self.context, self.stack
+        # where each element was read (SourceMap.add, inline)
+        line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
+        new_child, read_attributes = _tree.new_child, _read_attributes
+        plain = not context.options.escape_separators
         self.count(node, source, 1)  # the root
         stack.append((root, iter(node), source, 1, root, None))
-        while stack:
-            frame = stack[-1]
-            parent, nodes, source, depth, top, on_exit = frame
+        # the frame on top of the stack, unpacked: reloaded whenever the stack changes
+        parent, nodes, source, depth, top, on_exit = stack[-1]
+        child_specs, parent_tag = parent.spec.children, parent.spec.tag
+        while True:
             child_node = next(nodes, None)
             if child_node is None:
                 stack.pop()
                 if on_exit is not None:
                     on_exit()
+                if not stack:
+                    return
+                parent, nodes, source, depth, top, on_exit = stack[-1]
+                child_specs, parent_tag = parent.spec.children, parent.spec.tag
                 continue
             tag: object = child_node.tag
             if not isinstance(tag, str):
@@ -546,11 +593,13 @@ class _Builder:
             if context.elements > max_elements:
                 self.count(child_node, source)
             if tag == INCLUDE:
-                self.include(frame, child_node)
+                self.include(stack[-1], child_node)
+                parent, nodes, source, depth, top, on_exit = stack[-1]
+                child_specs, parent_tag = parent.spec.children, parent.spec.tag
                 continue
-            child_spec = parent.spec.children.get(tag)
+            child_spec = child_specs.get(tag)
             if child_spec is None:
-                legal = list(parent.spec.children)
+                legal = list(child_specs)
                 raise context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
                     f"{did_you_mean(_name(tag), legal)}", source, context.line(child_node, source))
@@ -558,23 +607,34 @@ class _Builder:
                 raise context.error(_limit_message(
                     f"<{tag}> is nested {depth + 1} deep", max_depth, "max_depth"),
                     source, context.line(child_node, source))
-            existing = _tree.single_child(parent, tag) if child_spec.single else None
-            if existing is not None:
-                # A repeated section: merge into the first.
-                check = self.merge(existing, child_node, source)
-                stack.append((existing, iter(child_node), source, depth + 1, existing, check))
-                continue
-            child = _tree.new_child(parent, child_spec)
-            lines[child] = (source, child_node.sourceline)
-            _set_attributes(child, child_node, source, context)
+            if child_spec.single:
+                existing = _tree.single_child(parent, tag)
+                if existing is not None:
+                    # A repeated section: merge into the first.
+                    check = self.merge(existing, child_node, source)
+                    stack.append((existing, iter(child_node), source, depth + 1, existing,
+                                  check))
+                    parent, nodes, source, depth, top, on_exit = stack[-1]
+                    child_specs, parent_tag = parent.spec.children, parent.spec.tag
+                    continue
+            values: dict[str, object] = {}
+            child = new_child(parent, child_spec, values)
+            line_of[child] = child_node.sourceline
+            if source is not main:
+                files[child] = source
+            items = child_node.items()
+            if items:
+                read_attributes(child, items, values, child_node, source, context, plain)
             child_top = child
-            if tag == parent.spec.tag:
+            if tag == parent_tag:
                 child_top = top
-                above = top.parent
+                above = _tree.parent_of(top)
                 if above is not None and above.spec.children[top.spec.tag].single:
                     self.nested.append((child, top))  # a class of a section that may repeat
             if len(child_node):
                 stack.append((child, iter(child_node), source, depth + 1, child_top, None))
+                parent, nodes, source, depth, top, on_exit = stack[-1]
+                child_specs, parent_tag = parent.spec.children, parent.spec.tag
 
     def count(self, node: XmlNode, source: str | None, elements: int = 0) -> None:
         """Count ``elements`` more (or check the count); refuse past ``max_elements``."""

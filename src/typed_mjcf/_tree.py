@@ -44,7 +44,7 @@ import numpy as np
 
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
-from typed_mjcf._names import NameScope, NameTaken
+from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._sourcelines import file_start_line
 from typed_mjcf.errors import (
     ChildError,
@@ -68,6 +68,8 @@ DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (als
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
+# object.__new__ of a _Blank, seen as the Element it becomes (see _create)
+_new_blank = cast("Callable[[type[_Blank]], Element]", object.__new__)
 
 
 def element_class(class_name: str) -> type[Element]:
@@ -113,8 +115,9 @@ def _short(value: object, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-class Element:
-    """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
+class _Layout:
+    """What every element stores (see :class:`Element`), in a class of its own so that
+    elements can be made as a :class:`_Blank` and given their class once filled in."""
 
     __slots__ = (
         "__weakref__",
@@ -126,7 +129,6 @@ class Element:
         "_singles",
         "_values",
     )
-    spec: ClassVar[ElementSpec]
 
     _values: dict[str, object]
     _children: list[Element] | tuple[()]  # () until the first child: fewer objects for the GC
@@ -135,6 +137,20 @@ class Element:
     _scope: NameScope  # where this element's name lives and its references resolve
     _singles: dict[str, Element] | None
     _attached: ModelBase | None  # on attachment frames: the model attached there
+
+
+class _Blank(_Layout):
+    """An element being made: the same layout as every element class, without
+    :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
+
+    __slots__ = ()
+
+
+class Element(_Layout):
+    """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
+
+    __slots__ = ()
+    spec: ClassVar[ElementSpec]
 
     # ------------------------------------------------------------------ class set-up
 
@@ -580,16 +596,60 @@ class SourceMap:
     """Where a parsed model's elements were read (for messages that point into the files).
 
     ``lines`` maps each element to its file (``None`` for text given in memory) and the
-    line libxml2 gave it (where its start tag ends), in the order the parser read them; ``includes`` maps each included file to the file
-    that included it and the element its contents were read into.
+    line libxml2 gave it (where its start tag ends), in the order the parser read them;
+    ``includes`` maps each included file to the file that included it and the element its
+    contents were read into.
+
+    The map holds each element's line, and its file only if it is not the main one: no
+    (file, line) pair is made per element (the collector would scan each once a parse ends).
     """
 
-    __slots__ = ("includes", "lines", "texts")
+    __slots__ = ("files", "includes", "line_of", "main", "texts")
 
-    def __init__(self) -> None:
-        self.lines: dict[Element, tuple[str | None, int | None]] = {}
+    def __init__(self, main: str | None = None) -> None:
+        self.main = main  # the file (or text) the model was read from
+        self.line_of: dict[Element, int | None] = {}  # every element, in reading order
+        self.files: dict[Element, str | None] = {}  # the elements read from another file
         self.includes: dict[str, tuple[str | None, Element]] = {}
         self.texts: dict[str, bytes | None] = {}  # files read again for messages
+
+    def add(self, element: Element, source: str | None, line: int | None) -> None:
+        """Record that ``element`` was read at ``source:line``."""
+        self.line_of[element] = line
+        if source is not self.main:
+            self.files[element] = source
+
+    def get(self, element: Element) -> tuple[str | None, int | None] | None:
+        """Where ``element`` was read, if it was."""
+        if element not in self.line_of:
+            return None
+        return self.files.get(element, self.main), self.line_of[element]
+
+    @property
+    def lines(self) -> Mapping[Element, tuple[str | None, int | None]]:
+        """Every element read, in reading order, with its file and line."""
+        return _Lines(self)
+
+
+class _Lines(Mapping[Element, tuple[str | None, int | None]]):
+    """A :class:`SourceMap`'s elements with their file and line, as a read-only mapping."""
+
+    __slots__ = ("_sources",)
+
+    def __init__(self, sources: SourceMap) -> None:
+        self._sources = sources
+
+    def __getitem__(self, element: Element) -> tuple[str | None, int | None]:
+        found = self._sources.get(element)
+        if found is None:
+            raise KeyError(element)
+        return found
+
+    def __iter__(self) -> Iterator[Element]:
+        return iter(self._sources.line_of)
+
+    def __len__(self) -> int:
+        return len(self._sources.line_of)
 
 
 def new_model(cls: type[ModelBase]) -> ModelBase:
@@ -771,7 +831,7 @@ def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
         def add_child(self: Element, **kwargs: object) -> Element:  # the hot path of a build
             if self._attached is not None:
                 _check_frame_child(self, child_spec)
-            child = _create(cast("type[Element]", child_spec.cls), self)
+            child = _create(child_spec.cls, self)
             if kwargs:
                 child._init_attributes(kwargs)
             children = self._children
@@ -838,7 +898,7 @@ class _Slot(Protocol):
 def _slot_writer(name: str) -> Callable[[Element, object], None]:
     """Writes one of Element's slots past Element.__setattr__ (which exists to turn unknown
     names into helpful errors, and would slow every write of the tree)."""
-    return cast(_Slot, Element.__dict__[name]).__set__
+    return cast(_Slot, _Layout.__dict__[name]).__set__
 
 
 _set_values = _slot_writer("_values")
@@ -850,17 +910,22 @@ _set_singles = _slot_writer("_singles")
 _set_attached = _slot_writer("_attached")
 
 
-def _create(cls: type[E], parent: Element) -> E:
-    """A new element of ``cls`` under ``parent`` (not yet among its children)."""
-    element = _new_object(cls)
-    _set_values(element, {})
-    _set_children(element, _NO_CHILDREN)
-    _set_parent(element, parent)
-    _set_root(element, parent._root)
+def _create(cls: type[Element], parent: Element,
+            values: dict[str, object] | None = None) -> Element:
+    """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
+    children), with ``values`` (empty, for a caller that fills it) as its values."""
+    # made as a _Blank (its slots written directly, past Element.__setattr__), then given
+    # its class: about three times faster than writing each slot through its descriptor
+    element = _new_blank(_Blank)
+    element._values = {} if values is None else values
+    element._children = _NO_CHILDREN
+    element._parent = parent
+    element._root = parent._root
     attached = parent._attached
-    _set_scope(element, parent._scope if attached is None else attached._scope)
-    _set_singles(element, None)
-    _set_attached(element, None)
+    element._scope = parent._scope if attached is None else attached._scope
+    element._singles = None
+    element._attached = None
+    element.__class__ = cls
     return element
 
 
@@ -1370,7 +1435,7 @@ def source_of(element: Element) -> tuple[str | None, int | None] | None:
     elements read from a file), if it was parsed and is still in the model it was read into."""
     root = element._root
     sources = None if root is None else root._sources
-    found = None if sources is None else sources.lines.get(element)
+    found = None if sources is None else sources.get(element)
     if sources is None or found is None:
         return found
     source, line = found
@@ -1388,15 +1453,19 @@ def read_value(element: Element, attribute: AttributeSpec) -> object:
     return _read(element, attribute)
 
 
-def new_child(parent: Element, child_spec: ChildSpec) -> Element:
-    """A new child of ``parent``, last among its children."""
-    child = _create(cast("type[Element]", child_spec.cls), parent)
+def new_child(parent: Element, child_spec: ChildSpec,
+              values: dict[str, object] | None = None) -> Element:
+    """A new child of ``parent``, last among its children; ``values`` (empty) becomes its
+    values dict, for a caller that fills it (the parser)."""
+    child = _create(child_spec.cls, parent, values)
     if child_spec.single:
         _place(parent, child, child_spec, None)
-    elif type(parent._children) is tuple:
-        _set_children(parent, [child])
+        return child
+    children = parent._children
+    if isinstance(children, list):
+        children.append(child)
     else:
-        cast(list[Element], parent._children).append(child)
+        _set_children(parent, [child])
     return child
 
 
@@ -1417,7 +1486,13 @@ def assign_name_text(element: Element, attribute: AttributeSpec, text: str) -> N
     if attribute.name in values or not text:
         assign_text(element, attribute, text)  # a repeated section renames: the general path
         return
-    _claim(element, attribute, text)
+    scope = element._scope
+    table = scope.tables.get(attribute.namespace or "")
+    if (table is not None and text not in table and element._root is not None
+            and not scope.waiting and SEPARATOR not in text and text not in _RESERVED_NAMES):
+        table[text] = element  # what _claim does for a new plain name (most of a parse)
+    else:
+        _claim(element, attribute, text)
     values[attribute.name] = text
 
 
@@ -1429,6 +1504,13 @@ def assign_text(element: Element, attribute: AttributeSpec, text: str,
     if not text:
         element._unset(attribute)  # an empty value: MuJoCo reads it as absent
         return
+    namespace = attribute.namespace
+    if link and namespace is not None and attribute.kind == "ref":
+        table = element._scope.tables.get(namespace)
+        found = None if table is None else table.get(text)
+        if isinstance(found, Element):  # names an element already: as _resolve and _store do
+            element._values[attribute.name] = found
+            return
     stored = attribute.codec.parse(text)
     if attribute.is_reference:
         if not link:

@@ -12,6 +12,7 @@ import re
 from collections.abc import Callable, Iterator
 
 _SPECIAL = re.compile('[&<>"\n\r\t]')
+MARKUP = re.compile("[&<>\n\r\t]")  # what escaping changes, but the double quote
 _ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;",
                           "\n": "&#10;", "\r": "&#13;", "\t": "&#9;"})
 

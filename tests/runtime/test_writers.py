@@ -106,3 +106,34 @@ def test_deep_models_are_indented_like_libxml2(composed: bool) -> None:
     assert text.strip() == ours.strip()
     assert max(len(line) - len(line.lstrip()) for line in text.splitlines()) == 60
     assert len(text) < 300_000  # 2,000 levels of 2 spaces each would be over 4 million
+
+
+TRICKY_TEXTS = ['a&b', 'a<b>c', 'say "hi"', "it's", "two\nlines", "tab\there", "cr\rhere",
+                "naïve ∞ 日本", "100%", "%s %d %(x)s", "&amp;", "plain"]
+
+
+@pytest.mark.parametrize("text", TRICKY_TEXTS)
+def test_every_text_is_escaped_as_xml_needs_whatever_path_writes_it(text: str) -> None:
+    """Plain output writes an element's texts into a template and escapes only when the
+    result shows markup; the text must read back the same either way."""
+    model = mjcf.RootElement(model=text)
+    body = model.worldbody.add_body(name=text.replace("/", ""), pos=(0, 0, 1))
+    body.add_geom(name="g", size=(0.1,), material=text)
+    model.custom.add_text(name="t", data=text)
+    parsed = mjcf.from_xml_string(model.to_xml_string())
+    for source in (model, parsed):
+        for pretty in (True, False):
+            written = element_text(source, Format(), pretty_print=pretty)
+            assert written == serialize(Writer(source).element(source, None), pretty)
+            root = etree.fromstring(written.encode())
+            assert root.get("model") == text
+            xml_body = root.find("worldbody/body")
+            assert xml_body is not None
+            assert xml_body.get("name") == text
+            assert xml_body.get("pos") == "0 0 1"
+            xml_geom = xml_body.find("geom")
+            assert xml_geom is not None
+            assert xml_geom.get("material") == text
+            xml_text = root.find("custom/text")
+            assert xml_text is not None
+            assert xml_text.get("data") == text
