@@ -12,6 +12,8 @@ import pytest
 from typed_mjcf.cli import main
 from typed_mjcf.cli._common import Progress
 
+from ..runtime.test_ignored_attributes import MODEL as IGNORED
+
 MODEL = """\
 <mujoco>
   <include file="parts.xml"/>
@@ -126,26 +128,17 @@ def test_progress_shows_only_on_a_terminal_for_several_files() -> None:
     assert Progress(1, enabled=True, stream=io.StringIO()).enabled
 
 
-IGNORED = """\
-<mujoco>
-  <worldbody>
-    <replicate count="2" offset="1 0 0"
-               prefix="p_">
-      <geom name="g" size="0.1"/>
-    </replicate>
-  </worldbody>
-</mujoco>
-"""
-
 
 def test_an_attribute_mujoco_ignores_is_a_warning(capsys: pytest.CaptureFixture[str]) -> None:
     Path("m.xml").write_text(IGNORED, encoding="utf-8")
     assert main(["check", "m.xml"]) == 0
+    dropped = "MuJoCo ignores it, and so it is dropped"
     assert capsys.readouterr().out.splitlines() == [
         ("m.xml:3: ignored-attribute (warning): worldbody/replicate[0]: <replicate> "
-         "(worldbody/replicate[0]) has no attribute prefix='p_'; MuJoCo ignores it, and so it is "
-         "dropped"),
-        "checked 1 file: 0 errors, 1 warning",
+         f"(worldbody/replicate[0]) has no attribute prefix='p_'; {dropped}"),
+        ("m.xml:7: ignored-attribute (warning): worldbody/frame[0]: <frame> "
+         f"(worldbody/frame[0]) has no attribute bogus='x'; {dropped}"),
+        "checked 1 file: 0 errors, 2 warnings",
     ]
     assert main(["check", "--strict", "m.xml"]) == 1
 
@@ -154,7 +147,11 @@ def test_other_commands_say_what_they_drop_on_stderr(capsys: pytest.CaptureFixtu
     Path("m.xml").write_text(IGNORED, encoding="utf-8")
     assert main(["to-python", "m.xml"]) == 0
     captured = capsys.readouterr()
-    assert "prefix" not in captured.out
-    assert captured.err == ("typed-mjcf: warning: m.xml:3: <replicate> (worldbody/replicate[0]) "
-                            "has no attribute prefix='p_'; MuJoCo ignores it, and so it is "
-                            "dropped\n")
+    assert "prefix" not in captured.out and "bogus" not in captured.out
+    dropped = "MuJoCo ignores it, and so it is dropped"
+    assert captured.err.splitlines() == [
+        ("typed-mjcf: warning: m.xml:3: <replicate> (worldbody/replicate[0]) has no attribute "
+         f"prefix='p_'; {dropped}"),
+        ("typed-mjcf: warning: m.xml:7: <frame> (worldbody/frame[0]) has no attribute "
+         f"bogus='x'; {dropped}"),
+    ]
