@@ -40,7 +40,9 @@ values: exclusive or required attributes, required children, references that nam
   FILE:LINE: RULE: ELEMENT PATH: MESSAGE
 
 with "(warning)" after the rule for warnings (legal, but probably not meant), then a summary
-line. --compile also compiles each model that has no errors with MuJoCo.
+line. An attribute MuJoCo's reader ignores (on <frame> and <replicate>, which accept any) is
+an ignored-attribute warning. --compile also compiles each model that has no errors with
+MuJoCo.
 
 exit status: 0 no errors (warnings allowed, unless --strict), 1 errors found, 2 a file
 cannot be read as MJCF (its one-line error names the file and line; other files are still
