@@ -19,6 +19,7 @@ where it is known.
 
 from __future__ import annotations
 
+import inspect
 import os
 import stat
 import warnings
@@ -525,7 +526,22 @@ def _warn_ignored(element: Element, key: str, text: str, known: list[str],
     warnings.warn(IgnoredAttributeWarning(
         f"<{element.spec.tag}> ({element.path}) has no attribute {key}={text!r}"
         f"{did_you_mean(key, known)}; MuJoCo ignores it, and so it is dropped",
-        source, line, element.path), stacklevel=2)
+        source, line, element.path), stacklevel=_outside_package())
+
+
+_PACKAGE_DIR: Final = os.path.dirname(os.path.abspath(__file__)) + os.sep
+
+
+def _outside_package() -> int:
+    """The ``stacklevel`` of the first caller outside typed-mjcf (the user's ``from_path``
+    line), for :func:`warnings.warn`."""
+    here = inspect.currentframe()
+    frame = None if here is None else here.f_back  # the function that warns
+    level = 1
+    while frame is not None and frame.f_code.co_filename.startswith(_PACKAGE_DIR):
+        frame = frame.f_back
+        level += 1
+    return level
 
 
 def escape_separators(name: str) -> str:

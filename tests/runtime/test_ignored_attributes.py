@@ -33,6 +33,7 @@ def test_an_attribute_mujoco_ignores_loads_with_a_warning_and_is_dropped(tmp_pat
     with pytest.warns(mjcf.IgnoredAttributeWarning) as caught:
         model = mjcf.from_path(path)
     messages = [str(warning.message) for warning in caught]
+    assert {warning.filename for warning in caught} == {__file__}  # the line that loaded it
     dropped = "MuJoCo ignores it, and so it is dropped"
     assert messages == [
         f"{path}:3: <replicate> (worldbody/replicate[0]) has no attribute prefix='p_'; {dropped}",
