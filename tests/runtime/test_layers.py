@@ -143,8 +143,6 @@ def test_the_generator_knows_the_runtime_public_names() -> None:
     renames children (``attach_``) and refuses attributes by this list."""
     public = {name for cls in (mjcf.Element, mjcf.ModelRoot, mjcf.Body)
               for name in dir(cls) if not name.startswith("_")}
-    generated = {name for cls in mjcf.Element.__subclasses__() for name in []}
-    del generated
     runtime = {name for name in public
                if not any(name == a.py_name or name == "dclass"
                           for cls in (mjcf.Body, mjcf.RootElement) for a in cls.spec.attributes)
