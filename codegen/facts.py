@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 import tomllib
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Literal, TypeVar, cast
 
@@ -190,13 +190,7 @@ def _enums(value: object, where: str) -> list[EnumFact]:
 
 
 def _enum(value: object, where: str) -> EnumFact:
-    entry = _table(value, where)
-    unknown = sorted(set(entry) - _ENUM_KEYS)
-    if unknown:
-        raise FactsError(f"{where}: unknown key {unknown[0]!r}")
-    for key in ("name", "values", "reason"):
-        if key not in entry:
-            raise FactsError(f"{where}: missing key {key!r}")
+    entry = _keyed_table(value, where, _ENUM_KEYS, ("name", "values", "reason"))
     return EnumFact(
         name=_str(entry["name"], f"{where} name"),
         values=_enum_values(entry["values"], f"{where} values"),
@@ -250,13 +244,7 @@ class _LanguageTable:
 
 def _language(value: object, where: str) -> _LanguageTable:
     """``[language]``: the IR's language facts and the typed references."""
-    table = _table(value, where)
-    unknown = sorted(set(table) - _LANGUAGE_KEYS)
-    if unknown:
-        raise FactsError(f"{where}: unknown key {unknown[0]!r}")
-    missing = sorted(_LANGUAGE_KEYS - set(table))
-    if missing:
-        raise FactsError(f"{where}: missing key {missing[0]!r}")
+    table = _keyed_table(value, where, _LANGUAGE_KEYS, sorted(_LANGUAGE_KEYS))
     attach = _table(table["attach"], f"{where} attach")
     extra = sorted(set(attach) ^ set(_ATTACH_KEYS))
     if extra:
@@ -327,6 +315,20 @@ def _table(value: object, where: str) -> dict[str, object]:
     return {str(k): v for k, v in cast(dict[object, object], value).items()}
 
 
+def _keyed_table(value: object, where: str, allowed: frozenset[str],
+                 required: Iterable[str]) -> dict[str, object]:
+    """A table with only ``allowed`` keys and every ``required`` one (the first offender in
+    sorted order is named)."""
+    table = _table(value, where)
+    unknown = sorted(set(table) - allowed)
+    if unknown:
+        raise FactsError(f"{where}: unknown key {unknown[0]!r}")
+    missing = [key for key in required if key not in table]
+    if missing:
+        raise FactsError(f"{where}: missing key {missing[0]!r}")
+    return table
+
+
 def _str(value: object, where: str) -> str:
     if not isinstance(value, str):
         raise FactsError(f"{where}: expected a string, got {value!r}")
@@ -374,13 +376,7 @@ _OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride)
 
 
 def _override(value: object, where: str) -> AttributeOverride:
-    entry = _table(value, where)
-    unknown = sorted(set(entry) - _OVERRIDE_KEYS)
-    if unknown:
-        raise FactsError(f"{where}: unknown key {unknown[0]!r}")
-    for key in ("element", "name", "reason"):
-        if key not in entry:
-            raise FactsError(f"{where}: missing key {key!r}")
+    entry = _keyed_table(value, where, _OVERRIDE_KEYS, ("element", "name", "reason"))
 
     def opt_str(key: str) -> str | None:
         return _str(entry[key], f"{where} {key}") if key in entry else None
