@@ -7,7 +7,6 @@ from __future__ import annotations
 import copy
 import io
 import os
-import struct
 import zipfile
 from pathlib import Path
 
@@ -17,25 +16,12 @@ import pytest
 
 import typed_mjcf as mjcf
 
+from ..runtime.test_io import box_stl
 from . import harness
 
 ASSETS = harness.mjcf_folder()
 TEST_MODEL = None if ASSETS is None else ASSETS / "test_assets" / "test_model.xml"
 needs_assets = pytest.mark.skipif(ASSETS is None, reason="dm_control is not installed")
-
-
-def box_stl(size: float) -> bytes:
-    s = size
-    corners = [(x, y, z) for x in (-s, s) for y in (-s, s) for z in (-s, s)]
-    faces = [(0, 1, 3), (0, 3, 2), (4, 6, 7), (4, 7, 5), (0, 4, 5), (0, 5, 1),
-             (2, 3, 7), (2, 7, 6), (0, 2, 6), (0, 6, 4), (1, 5, 7), (1, 7, 3)]
-    data = b"\0" * 80 + struct.pack("<I", len(faces))
-    for face in faces:
-        data += struct.pack("<3f", 0, 0, 0)
-        for i in face:
-            data += struct.pack("<3f", *corners[i])
-        data += b"\0\0"
-    return data
 
 
 def mesh_model(name: str, contents: bytes) -> mjcf.RootElement:
@@ -137,15 +123,21 @@ def test_polymorphic_references_of_attached_models_are_scoped() -> None:
 # 4. find and find_all anywhere
 
 
-@needs_assets
-def test_find_anywhere_and_nameless_assets() -> None:
-    assert ASSETS is not None
+def _test_model_with_its_copy_attached() -> tuple[mjcf.RootElement, mjcf.RootElement,
+                                                   mjcf.Element]:
+    """dm_control's test model ("model") with a copy of itself ("submodel") attached."""
     assert TEST_MODEL is not None
     model = mjcf.from_path(TEST_MODEL)
     model.model = "model"
     sub = copy.copy(model)
     sub.model = "submodel"
-    frame = model.attach(sub)
+    return model, sub, model.attach(sub)
+
+
+@needs_assets
+def test_find_anywhere_and_nameless_assets() -> None:
+    assert ASSETS is not None
+    model, _, frame = _test_model_with_its_copy_attached()
     b_0 = model.find("body", "b_0")
     b_1 = model.find("body", "b_1")
     assert b_0 is not None and b_1 is not None
@@ -163,12 +155,7 @@ def test_find_anywhere_and_nameless_assets() -> None:
 
 @needs_assets
 def test_views_include_attachments() -> None:
-    assert TEST_MODEL is not None
-    model = mjcf.from_path(TEST_MODEL)
-    model.model = "model"
-    sub = copy.copy(model)
-    sub.model = "submodel"
-    frame = model.attach(sub)
+    model, sub, frame = _test_model_with_its_copy_attached()
     actuators = model.actuator.get_children()
     assert all(a in actuators for a in sub.actuator.get_children())
     assert 'name="submodel/b_0_0"' in model.actuator.to_xml_string()
