@@ -446,38 +446,26 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
 def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
-    _read_attributes(element, node.items(), _tree.values(element), node, source, context,
-                     not context.options.escape_separators)
+    _read_attributes(element, node.items(), _tree.values(element), node, source, context)
 
 
 def _read_attributes(element: Element, items: list[tuple[str, str]], values: dict[str, object],
-                     node: XmlNode, source: str | None, context: _Context, plain: bool) -> None:
+                     node: XmlNode, source: str | None, context: _Context) -> None:
     """Read ``items``, ``node``'s attributes, into ``element`` (whose values are ``values``);
     references whose namespace another attribute names (``objname`` by ``objtype``) are read
-    last. Most of a parse is this loop: plain values, names and references take a short path
-    (``plain``: names are not escaped), the rest is :func:`_set_other`."""
+    last. Most of a parse is this loop: plain values are stored here, the rest is
+    :func:`_set_other`."""
     by_name = element.spec.by_name
     later: list[tuple[AttributeSpec, str]] | None = None
     for key, text in items:
         attribute = by_name.get(key)
-        if attribute is not None and text:
-            if attribute.direct:
-                try:  # the common case, as _tree.assign_text does it
-                    values[attribute.name] = attribute.codec.parse(text)
-                except Rejected as rejected:
-                    raise _rejected(element, attribute, text, rejected, node, source,
-                                    context) from None
-                continue
-            kind = attribute.kind
-            if plain and kind == "id":
-                try:
-                    _tree.assign_name_text(element, attribute, text)
-                except MjcfError as error:
-                    raise context.error(str(error), source, context.line(node, source)) from None
-                continue
-            if plain and kind == "ref" and attribute.namespace_from is None:
-                _set_text(element, attribute, text, node, source, context)
-                continue
+        if attribute is not None and attribute.direct and text:
+            try:  # the common case, as _tree.assign_text does it
+                values[attribute.name] = attribute.codec.parse(text)
+            except Rejected as rejected:
+                raise _rejected(element, attribute, text, rejected, node, source,
+                                context) from None
+            continue
         later = _set_other(element, attribute, key, text, node, source, context, later)
     for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
@@ -557,8 +545,7 @@ def _set_text(element: Element, attribute: AttributeSpec, text: str, node: XmlNo
     try:
         _tree.assign_text(element, attribute, text, link=options.resolve_references)
     except Rejected as rejected:
-        error = _tree.rejection(element, attribute, text, rejected)
-        raise context.error(str(error), source, context.line(node, source)) from None
+        raise _rejected(element, attribute, text, rejected, node, source, context) from None
     except MjcfError as error:
         raise context.error(str(error), source, context.line(node, source)) from None
 
@@ -581,11 +568,10 @@ class _Builder:
 
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
         context, stack = self.context, self.stack
-        # where each element was read (SourceMap.add, inline)
+        # where each element was read (SourceMap.add, inline: it is per element)
         line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, read_attributes = _tree.new_child, _read_attributes
-        plain = not context.options.escape_separators
         self.count(node, source, 1)  # the root
         stack.append((root, iter(node), source, 1, root, None))
         # the frame on top of the stack, unpacked: reloaded whenever the stack changes
@@ -640,7 +626,7 @@ class _Builder:
                 files[child] = source
             items = child_node.items()
             if items:
-                read_attributes(child, items, values, child_node, source, context, plain)
+                read_attributes(child, items, values, child_node, source, context)
             child_top = child
             if tag == parent_tag:
                 child_top = top
