@@ -48,10 +48,12 @@ class ParseError(MjcfError, ValueError):
 
     source: str | None  # the file (or description) the text came from
     line: int | None
+    detail: str  # the message without its location
 
     def __init__(self, message: str, source: str | None = None, line: int | None = None) -> None:
         self.source = source
         self.line = line
+        self.detail = message
         super().__init__(_where(source, line) + message)
 
 

@@ -47,12 +47,9 @@ def one_line(text: str) -> str:
 
 def parse_error_text(error: ParseError) -> str:
     """A parse error as ``file:line: message``, the file as messages show it."""
-    message = str(error)
     if error.source is not None:
-        prefix = f"{error.source}:{error.line}: " if error.line is not None else f"{error.source}: "
-        message = message.removeprefix(prefix)
-        return f"{location(error.source, error.line)}: {one_line(message)}"
-    return one_line(message)
+        return f"{location(error.source, error.line)}: {one_line(error.detail)}"
+    return one_line(str(error))
 
 
 def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None) -> RootElement:
