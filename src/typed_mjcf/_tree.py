@@ -834,7 +834,7 @@ def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
             child = _create(child_spec.cls, self)
             if kwargs:
                 child._init_attributes(kwargs)
-            children = self._children
+            children = self._children  # _append, inline: once per element built
             if type(children) is tuple:
                 _set_children(self, [child])
             else:
@@ -1461,11 +1461,11 @@ def new_child(parent: Element, child_spec: ChildSpec,
     if child_spec.single:
         _place(parent, child, child_spec, None)
         return child
-    children = parent._children
-    if isinstance(children, list):
-        children.append(child)
-    else:
+    children = parent._children  # _append, inline: once per element parsed (a call: +3%)
+    if type(children) is tuple:
         _set_children(parent, [child])
+    else:
+        cast(list[Element], children).append(child)
     return child
 
 
