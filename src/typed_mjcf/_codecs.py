@@ -325,10 +325,10 @@ def text_to_float(text: str) -> float:
     return value
 
 
-def check_float32(value: float, text: str) -> None:
-    """Refuse a finite number too large for a float32 (MuJoCo: "number is too large")."""
-    if abs(value) > FLOAT32_MAX and not math.isinf(value) or (
-            math.isinf(value) and "inf" not in text.lower()):
+def check_float32(value: float) -> None:
+    """Refuse a finite number too large for a float32 (MuJoCo: "number is too large"); an
+    infinity reaches here only spelled as one (:func:`text_to_float`), and is kept."""
+    if math.isfinite(value) and abs(value) > FLOAT32_MAX:
         raise Rejected("a number within the range of a float32")
 
 
@@ -360,7 +360,7 @@ class RealCodec(Codec):
             return text
         value = text_to_float(text)
         if self.single:
-            check_float32(value, text)
+            check_float32(value)
         remember(self.checked, text)
         return text
 
@@ -519,9 +519,9 @@ class ArrayCodec(Codec):
                 return np.array([to_int(p) for p in parts], dtype=self.dtype)
             doubles = np.array([text_to_float(p) for p in parts], dtype=np.float64)
         if self.single:
-            for value, part in zip(doubles.tolist(), parts, strict=True):
+            for value in doubles.tolist():
                 if not -FLOAT32_MAX <= value <= FLOAT32_MAX:
-                    check_float32(value, part)
+                    check_float32(value)
             return _doubles_to_float32(doubles, parts)
         return doubles
 
