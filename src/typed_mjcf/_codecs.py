@@ -691,16 +691,14 @@ def make_codec(kind: str, *, dtype: str | None, is_array: bool, lo: int, hi: int
     key = (kind, dtype, is_array, lo, hi, keywords, pattern, alone, ordered)
     codec = _SHARED.get(key)
     if codec is None:
-        if kind == "flags":
-            codec = FlagsCodec(keywords, alone, ordered)
-        else:
-            codec = _new_codec(kind, dtype, is_array, lo, hi, keywords, pattern)
-        _SHARED[key] = codec
+        codec = _SHARED[key] = _new_codec(kind, dtype, is_array, lo, hi, keywords, pattern,
+                                          alone, ordered)
     return codec
 
 
 def _new_codec(kind: str, dtype: str | None, is_array: bool, lo: int, hi: int | None,
-               keywords: tuple[str, ...], pattern: str | None) -> Codec:
+               keywords: tuple[str, ...], pattern: str | None, alone: tuple[str, ...],
+               ordered: bool) -> Codec:
     if is_array and kind in ("int", "real"):
         return ArrayCodec(kind, dtype or "double", lo, hi)
     if kind == "int":
@@ -711,6 +709,8 @@ def _new_codec(kind: str, dtype: str | None, is_array: bool, lo: int, hi: int | 
         return BoolCodec()
     if kind == "keyword":
         return KeywordCodec(keywords)
+    if kind == "flags":
+        return FlagsCodec(keywords, alone, ordered)
     if kind == "id":
         return IdentifierCodec()
     if kind == "ref":
