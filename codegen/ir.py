@@ -147,7 +147,7 @@ class LanguageDef:
     body: str = "body"
     frame: str = "frame"
     replicate: str = "replicate"
-    joints: list[str] = field(default_factory=lambda: [])
+    joints: list[str] = field(default_factory=lambda: [])  # rows (declaration names)
     freejoint: str = "freejoint"
     free_type: str = "free"
     joint_type: str = "type"

@@ -134,6 +134,8 @@ def finish(schema: ir.Schema, facts: Facts) -> None:
     mark_default_rows(schema, facts.default_rows)
     mark_composition(schema, facts.compose, facts.attachment_sites)
     schema.language = copy.deepcopy(facts.language)
+    for name in schema.language.joints:  # rows, not tags (<equality><joint> is no joint)
+        _row(schema, name, f"[language] joints {name}")
     mark_typed_references(schema, facts.typed_references)
 
 

@@ -104,6 +104,10 @@ class Writer:
         self.pending: deque[ModelBase] = deque()  # attached models whose sections follow
         # the model of each joint, actuator and mocap body, in document order (composed)
         self.joint_owners: list[ModelBase] = []
+        # the body each joint moves, by its place among the bodies written (MuJoCo numbers
+        # joints body by body: a body's joints come before its children's, wherever written)
+        self.joint_bodies: list[int] = []
+        self.body_numbers: dict[int, int] = {}
         self.actuator_owners: list[ModelBase] = []
         self.mocap_owners: list[ModelBase] = []
         # composed models: each model's keyframe section, for combining (left out here)
@@ -435,12 +439,18 @@ class Writer:
         if namespace is None or model is None:
             return
         facts = grammar_facts()
-        if element.spec.tag in facts.joints:
+        if element.spec.name in facts.joints:
             self.joint_owners.append(model)
+            body = element.parent
+            while body is not None and body.spec.tag != facts.body:  # frames are transparent
+                body = body.parent
+            self.joint_bodies.append(-1 if body is None else self.body_numbers.get(id(body), -1))
         elif namespace == facts.actuator_namespace:
             self.actuator_owners.append(model)
-        elif element.spec.tag == facts.body and _tree.values(element).get(facts.mocap) is True:
-            self.mocap_owners.append(model)
+        elif element.spec.tag == facts.body:
+            self.body_numbers[id(element)] = len(self.body_numbers)
+            if _tree.values(element).get(facts.mocap) is True:
+                self.mocap_owners.append(model)
 
     def attachment(self, frame: Node, model: ModelBase) -> list[_Task]:
         """The attached model's bodies, to be written inside its frame; its other sections

@@ -351,7 +351,7 @@ class GrammarFacts:
     body: str  # the tag of bodies (attachment frames are bodies)
     frame: str  # the tag of <frame>, transparent in the kinematic tree
     replicate: str  # the tag of <replicate>
-    joints: frozenset[str]  # tags of joints
+    joints: frozenset[str]  # rows (declaration names) of joints: what adds to qpos
     freejoint: str  # the tag of a free joint (so is a joint whose type is free_type)
     free_type: str
     joint_type: str  # the joint attribute naming its kind

@@ -88,8 +88,8 @@ def _slots(m: mujoco.MjModel, owners: list[ModelBase], part: ModelBase,
         return [(int(m.jnt_qposadr[j]), QPOS_SIZE[int(m.jnt_type[j])]) for j in mine]
     if kind == keys.qvel:
         return [(int(m.jnt_dofadr[j]), DOF_SIZE[int(m.jnt_type[j])]) for j in mine]
-    if kind == keys.ctrl:
-        return [(a, 1) for a in mine]
+    if kind == keys.ctrl:  # an actuator may take several controls (pid, orientation)
+        return [(int(m.actuator_ctrladr[a]), int(m.actuator_ctrlnum[a])) for a in mine]
     if kind == keys.act:
         return [(int(m.actuator_actadr[a]), int(m.actuator_actnum[a])) for a in mine
                 if m.actuator_actnum[a] > 0]
@@ -115,12 +115,18 @@ def _place(key: _Key, kind: str, slots: list[tuple[int, int]], values: Vector,
 def combine_keyframes(writer: Writer, node: Node, m: mujoco.MjModel) -> None:
     """Add the whole-model keys to ``node``, the root the writer wrote (without keys)."""
     keys_facts = grammar_facts().keyframe
-    owners = {keys_facts.qpos: writer.joint_owners, keys_facts.qvel: writer.joint_owners,
+    # MuJoCo numbers joints body by body, bodies in document order (a stable sort)
+    order = sorted(range(len(writer.joint_owners)), key=writer.joint_bodies.__getitem__)
+    joint_owners = [writer.joint_owners[i] for i in order]
+    owners = {keys_facts.qpos: joint_owners, keys_facts.qvel: joint_owners,
               keys_facts.ctrl: writer.actuator_owners, keys_facts.act: writer.actuator_owners,
               keys_facts.mpos: writer.mocap_owners, keys_facts.mquat: writer.mocap_owners}
-    if len(writer.joint_owners) != m.njnt or len(writer.actuator_owners) != m.nu:
-        raise ExportError("cannot combine the keyframes of attached models whose joints or "
-                          "actuators MuJoCo expands (e.g. inside <replicate>)")
+    if len(writer.joint_owners) != m.njnt or len(writer.actuator_owners) != m.nactuator:
+        raise ExportError(f"cannot combine the keyframes of attached models: MuJoCo makes "
+                          f"{m.njnt} joints and {m.nactuator} actuators of the text, which "
+                          f"has {len(writer.joint_owners)} and {len(writer.actuator_owners)} "
+                          f"(joints or actuators MuJoCo adds itself, e.g. inside "
+                          f"<replicate>, a <flexcomp> or an <attach> element)")
     keys: dict[str, _Key] = {}
     sections = writer.keyframe_sections
     for part, section in sections:
@@ -157,3 +163,8 @@ def _combine(key: Element, part: ModelBase, combined: _Key,
             assert isinstance(value, np.ndarray)
             _place(combined, name, _slots(m, owners[name], part, name),
                    np.asarray(value, dtype=np.float64), key.path)
+        elif attribute is not key.spec.id_attribute:  # a state vector not combined here
+            raise ExportError(f"{key.path}: cannot combine {name} with the keyframes of the "
+                              f"models attached to it (only "
+                              f"{', '.join(sorted(owners))} and {time_name} combine); "
+                              f"remove it from the key")

@@ -41,7 +41,7 @@ def get_freejoint(element: Element) -> Element | None:
         if child.spec.tag == facts.freejoint:
             return child
         joint_type = child.spec.by_name.get(facts.joint_type)
-        if child.spec.tag in facts.joints and joint_type is not None and (
+        if child.spec.name in facts.joints and joint_type is not None and (
                 _tree.read_value(child, joint_type) == facts.free_type):
             return child
     return None
@@ -54,4 +54,4 @@ def get_frame_freejoint(frame: Element) -> Element | None:
 
 def get_frame_joints(frame: Element) -> list[Element]:
     """The joints of an attachment frame (what makes the attached model move)."""
-    return [child for child in _tree.children(frame) if child.spec.tag in grammar_facts().joints]
+    return [child for child in _tree.children(frame) if child.spec.name in grammar_facts().joints]

@@ -294,10 +294,11 @@ def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> Non
     """Rules of the kinematic tree: what the world body and replicates may hold."""
     facts = grammar_facts()
     tag = element.spec.tag
-    if tag in facts.joints and owner == "in_world":
+    joint = element.spec.name in facts.joints
+    if joint and owner == "in_world":
         state.add(order, element, "world-body",
                   f"the world body cannot have joints: move the <{tag}> into a <body>")
-    elif tag in facts.joints and owner == "in_replicate":
+    elif joint and owner == "in_replicate":
         state.add(order, element, "replicate-joint",
                   f"a <{tag}> cannot be a direct child of <replicate> (frames do not count): "
                   f"wrap it in a <body>")
