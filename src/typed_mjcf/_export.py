@@ -304,7 +304,8 @@ class Writer:
             if flat is not None and is_skin_file(element, attribute):
                 return flat  # its bones are renamed: only get_assets() has that file
             text = absolute_file(_tree.scope_model(scope), attribute, text)
-        if flat is not None and flat != os.path.basename(text.replace("\\", "/")):
+        if flat is not None and flat.casefold() != os.path.basename(
+                text.replace("\\", "/")).casefold():  # (MuJoCo matches case-insensitively)
             return flat
         return text
 

@@ -2,10 +2,14 @@
 
 Every file attribute (a path, or an in-memory :class:`~typed_mjcf.Asset`) gets one flat,
 readable name: the file's own name, or the element's name for in-memory contents, with a
-numeric suffix only when two different files would collide (also when the names differ only
-in case, as they would collide on a case-insensitive file system). Names are made safe to
-write into a folder: no path separators, no leading dots, no characters or device names
-Windows refuses (see :func:`safe_file_name`).
+numeric suffix only when two files with different contents would collide. Names collide as
+MuJoCo's in-memory loader sees them: it finds a file by its base name alone, whatever folder
+the text names, and ignores case (``MjModel.from_xml_string(xml, assets)`` refuses two keys
+``a/cube.stl`` and ``b/Cube.stl``; measured with MuJoCo 4.0.0). Two files with one base name
+and the same contents (a mesh copied into two folders) share one name, so the text can keep
+naming both as its source does. Names are made safe to write into a folder: no path
+separators, no leading dots, no characters or device names Windows refuses (see
+:func:`safe_file_name`).
 
 An MJCF file the model uses (an ``<asset><model file=...>``) is itself rewritten to find its
 own files under their flat names: :func:`collect_files` takes the function that does it.
@@ -14,6 +18,8 @@ own files under their flat names: :func:`collect_files` takes the function that 
 from __future__ import annotations
 
 import errno
+import functools
+import hashlib
 import os
 import re
 import stat
@@ -25,7 +31,7 @@ from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._skin import scope_bone_names
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import InvalidValueError
+from typed_mjcf.errors import InvalidValueError, MjcfError
 
 
 @dataclass
@@ -40,6 +46,27 @@ class CollectedFiles:
     uses: list[tuple[ModelBase, Element, AttributeSpec, object, str, str]] = field(
         default_factory=lambda: [])
     directory_attributes: frozenset[str] = frozenset()
+    # how to read the contents of the file each name was first given to (files whose
+    # contents may be shared: not MJCF files, nor skins whose bones are renamed)
+    readers: dict[str, Callable[[], bytes]] = field(default_factory=lambda: {})
+    digests: dict[object, str | None] = field(default_factory=lambda: {})  # key -> SHA-256
+
+    def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
+        """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
+        if key not in self.digests:
+            try:
+                self.digests[key] = hashlib.sha256(read()).hexdigest()
+            except MjcfError:  # unreadable: told apart by its path, as before reading
+                self.digests[key] = None
+        return self.digests[key]
+
+    def same_contents(self, name: str, key: object, read: Callable[[], bytes]) -> bool:
+        """Whether the file named ``name`` holds the same bytes as the file ``key``."""
+        first = self.readers.get(name)
+        if first is None:
+            return False
+        mine = self.digest(key, read)
+        return mine is not None and mine == self.digest(self.keys.get(name), first)
 
     def name_of(self, element: Element, attribute: AttributeSpec) -> str:
         """The flat name of the file ``element``'s ``attribute`` holds."""
@@ -129,20 +156,28 @@ def split_name(name: str) -> tuple[str, str]:
     return name[:dot], name[dot:]
 
 
-def unique_name(name: str, key: object, collected: CollectedFiles) -> str:
+def unique_name(name: str, key: object, collected: CollectedFiles,
+                read: Callable[[], bytes] | None = None) -> str:
     """``name``, or ``name`` with a numeric suffix when another file (``key`` tells files
     apart: a path, or in-memory contents) has it already, or a name differing in case only
-    (they would collide on a case-insensitive file system)."""
+    (MuJoCo's in-memory loader and case-insensitive file systems would mix them up). With
+    ``read`` (the file's contents, read only when its name is taken), a file with the same
+    contents as the one that has the name shares it."""
     stem, extension = split_name(name)
     candidate, n = name, 1
     while True:
         taken = collected.folded.get(candidate.casefold())
         if taken is None or (taken == candidate and collected.keys.get(candidate) == key):
             break
+        if read is not None and collected.same_contents(taken, key, read):
+            return taken
         n += 1
         candidate = f"{stem}-{n}{extension}"
     collected.folded[candidate.casefold()] = candidate
-    collected.keys[candidate] = key
+    if candidate not in collected.keys:
+        collected.keys[candidate] = key
+        if read is not None:
+            collected.readers[candidate] = read
     return candidate
 
 
@@ -170,16 +205,23 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
             value = stored.get(attribute.name)
             if value is None:
                 continue
+            read: Callable[[], bytes] | None
             if isinstance(value, Asset):
                 stem = value.name or element_stem(element)
                 name = safe_file_name(stem, value.extension)
                 key: object = (value.digest, value.extension)
+                read = functools.partial(bytes, value.contents)
             else:
                 assert isinstance(value, str)
                 path = resolve_path(model, attribute, value, folders)
                 name, key = safe_file_name(*split_name(os.path.basename(path))), path
+                # an MJCF file is rewritten for its own folder: its contents are not shared
+                read = None if is_model_file_name(path) else functools.partial(
+                    _contents, element, attribute, value, model, folders)
             scoped = prefix if prefix and is_skin_file(element, attribute) else ""
-            name = unique_name(name, (key, scoped) if scoped else key, collected)
+            if scoped:  # its bones are renamed for its scope: its contents are its own
+                key, read = (key, scoped), None
+            name = unique_name(name, key, collected, read)
             collected.names[(id(element), attribute.name)] = name
             collected.uses.append((model, element, attribute, value, name, scoped))
     collected.directory_attributes = collected.directory_attributes | frozenset(directories)
@@ -216,6 +258,12 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
             contents = scope_bone_names(contents, scoped, element.path)
         collected.files[name] = contents
     return collected
+
+
+def _contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
+              folders: dict[str, str]) -> bytes:
+    """A file's contents, read as :func:`collect_files` reads it."""
+    return _read(element, attribute, value, model, folders, _tree.memory_files(model))[0]
 
 
 def _read(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,

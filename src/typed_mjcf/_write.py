@@ -84,6 +84,7 @@ def rewrite_model_file(path: str, contents: bytes, collected: CollectedFiles,
         return contents
     submodel = parse_path(path)
     sub_collected = CollectedFiles(files=collected.files, folded=collected.folded,
-                                   keys=collected.keys)
+                                   keys=collected.keys, readers=collected.readers,
+                                   digests=collected.digests)
     collect_files(submodel, rewrite_model_file, sub_collected, models)
     return element_text(submodel, DEFAULT_FORMAT, True, sub_collected).encode("utf-8")
