@@ -278,6 +278,13 @@ class Writer:
             if self.file_namer is not None:
                 return self.file_namer(element, attribute)
             return self.file_text(element, attribute, value)
+        if attribute.name_list is not None:  # names, each scoped like a reference
+            text = attribute.codec.write(value, self.fmt)
+            scope = _tree.scope_of(element)
+            if scope is self.top_scope:
+                return text
+            prefix = self.prefix(scope)
+            return " ".join(prefix + name for name in text.split())
         if kind == "id" or attribute.is_reference:
             text = cast(str, value)
             scope = _tree.scope_of(element)

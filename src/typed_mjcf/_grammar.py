@@ -50,6 +50,7 @@ class AttributeSpec:
         "namespace_from",
         "ordered",
         "pattern",
+        "name_list",
         "plain_text",
         "py_name",
         "required",
@@ -79,7 +80,8 @@ class AttributeSpec:
     codec: Codec
     is_reference: bool  # names another element (a fixed or an attribute-given namespace)
     direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
-    plain_text: bool  # direct, and written by its codec alone (not a file)
+    plain_text: bool  # direct, and written by its codec alone (not a file, nor names)
+    name_list: str | None  # a text listing names of this namespace (a <flex>'s bodies)
     as_is: bool
 
     def __init__(
@@ -128,11 +130,18 @@ class AttributeSpec:
         self.is_reference = kind == "ref" or namespace_from is not None
         self.direct = not self.is_reference and kind != "id" and not scope
         self.plain_text = self.direct and kind != "file"
+        self.name_list = None  # set by the language's facts (see mark_name_list)
         # a text stored for it is written as it is (plain output, names of the model written)
         self.as_is = self.plain_text or kind == "id" or self.is_reference
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern,
                                 alone=self.alone, ordered=ordered)
+
+    def mark_name_list(self, namespace: str) -> None:
+        """This text lists names of ``namespace``: an attached model's are scoped when
+        written, so it is not written by its codec alone."""
+        self.name_list = namespace
+        self.plain_text = False
 
     @property
     def url(self) -> str | None:

@@ -95,6 +95,10 @@ def finish_grammar(facts: GrammarFacts) -> None:
     _RESERVED_NAMES.add(facts.world_body)
     for cls in _CLASSES.values():
         cls.spec.holds_bodies = facts.body in cls.spec.children
+        for attribute in cls.spec.attributes:
+            namespace = facts.name_lists.get(f"{cls.spec.tag}@{attribute.name}")
+            if namespace is not None:
+                attribute.mark_name_list(namespace)
         for child in cls.spec.children.values():
             child.cls = _CLASSES[child.class_name]
     document_adders()
