@@ -1,0 +1,134 @@
+"""Whole-model keyframes of composed models: what counts as a joint or an actuator, where
+each part's values go, and what cannot be combined (said, never dropped)."""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+import pytest
+
+import typed_mjcf as mjcf
+
+from .robots import site
+
+
+def gripper(key: str | None = None) -> mjcf.RootElement:
+    """Two fingers coupled by an <equality><joint> and a fixed tendon (both name joints)."""
+    keyframe = f"<keyframe>{key}</keyframe>" if key else ""
+    return mjcf.from_xml_string(f"""
+<mujoco model="hand">
+  <worldbody>
+    <body name="f1"><joint name="j1"/><geom size=".01"/></body>
+    <body name="f2"><joint name="j2"/><geom size=".01"/></body>
+  </worldbody>
+  <tendon><fixed name="t"><joint joint="j1" coef="1"/><joint joint="j2" coef="1"/></fixed></tendon>
+  <equality><joint joint1="j1" joint2="j2"/></equality>
+  <actuator><general name="grip" tendon="t"/></actuator>
+  {keyframe}
+</mujoco>""")
+
+
+def arm(extra_bodies: str = "", key: str = '<key name="home" qpos="1 2" ctrl="3"/>'
+        ) -> mjcf.RootElement:
+    return mjcf.from_xml_string(f"""
+<mujoco model="arm">
+  <worldbody>
+    <body name="b"><joint name="b1"/><geom size=".1"/>
+      <body name="c"><joint name="c1"/><geom size=".1"/><site name="tip"/></body>
+    </body>
+    {extra_bodies}
+  </worldbody>
+  <actuator><motor name="m" joint="b1"/></actuator>
+  <keyframe>{key}</keyframe>
+</mujoco>""")
+
+
+def test_an_equality_joint_is_not_a_joint() -> None:
+    """Issue 28: a parent with a key and an attached model with an <equality><joint> (and a
+    fixed tendon's <joint>s) composed, exported and compiled."""
+    model = arm()
+    site(model, "tip").attach(gripper())
+    m = model.compile()
+    assert (m.njnt, m.nkey) == (4, 1)
+    np.testing.assert_array_equal(m.key_qpos[0], [1, 2, 0, 0])
+    np.testing.assert_array_equal(m.key_ctrl[0], [3, 0])
+    assert 'qpos="1 2 0 0"' in model.to_xml_string()
+
+
+def test_actuators_taking_several_controls() -> None:
+    """A <pid> takes two controls and an <orientation> three (MuJoCo 4.0.0): a part's ctrl
+    goes to its actuators' controls, whatever their number."""
+    hand = mjcf.from_xml_string("""
+<mujoco model="wrist">
+  <worldbody><body name="w"><joint name="ball" type="ball"/><geom size=".02"/>
+    <body name="v"><joint name="h"/><geom size=".02"/></body></body></worldbody>
+  <actuator>
+    <orientation name="o" joint="ball" kp="5"/>
+    <pid name="p" joint="h" kp="1" ki="1"/>
+  </actuator>
+  <keyframe><key name="home" ctrl="1 2 3 4 5" act="6"/></keyframe>
+</mujoco>""")
+    model = arm()
+    site(model, "tip").attach(hand)
+    m = model.compile()
+    assert (m.nactuator, m.nu, m.na) == (3, 6, 1)
+    np.testing.assert_array_equal(m.key_ctrl[0], [3, 1, 2, 3, 4, 5])
+    np.testing.assert_array_equal(m.key_act[0], [6])
+
+
+def test_joints_are_numbered_body_by_body() -> None:
+    """A body's joint written after its child body still comes first in qpos (MuJoCo numbers
+    joints body by body); the attached model's joints follow the body they hang from."""
+    model = mjcf.from_xml_string("""
+<mujoco model="arm">
+  <worldbody>
+    <body name="b">
+      <body name="c"><joint name="c1"/><geom size=".1"/><site name="tip"/></body>
+      <joint name="b1"/><geom size=".1"/>
+    </body>
+  </worldbody>
+  <keyframe><key name="home" qpos="1 2"/></keyframe>
+</mujoco>""")
+    alone = model.compile()
+    site(model, "tip").attach(gripper('<key name="home" qpos="3 4"/>'))
+    m = model.compile()
+    assert [m.joint(i).name for i in range(m.njnt)] == ["b1", "c1", "hand/j1", "hand/j2"]
+    assert [alone.joint(i).name for i in range(alone.njnt)] == ["b1", "c1"]
+    np.testing.assert_array_equal(m.key_qpos[0], [1, 2, 3, 4])
+
+
+def test_the_parents_joints_after_the_attachment_keep_their_values() -> None:
+    """The parent's joints that follow the attached model in qpos keep the parent key's values
+    (MjSpec.attach in MuJoCo 4.0.0 keeps the key's vector as it was and pads it: there the
+    value of d1 lands on a gripper joint)."""
+    model = arm(extra_bodies='<body name="d"><joint name="d1"/><geom size=".1"/></body>',
+                key='<key name="home" qpos="1 2 5" ctrl="3"/>')
+    site(model, "tip").attach(gripper())
+    m = model.compile()
+    assert [m.joint(i).name for i in range(m.njnt)] == ["b1", "c1", "hand/j1", "hand/j2", "d1"]
+    np.testing.assert_array_equal(m.key_qpos[0], [1, 2, 0, 0, 5])
+
+
+def test_a_keys_plastic_state_is_refused_not_dropped() -> None:
+    hand = gripper('<key name="home" plastic="0.1"/>')
+    hand.find("joint", "j1").springyield = 0.5  # type: ignore[union-attr]
+    model = arm()
+    site(model, "tip").attach(hand)
+    with pytest.raises(mjcf.ExportError, match=r"keyframe/key\[home\].*cannot combine plastic"):
+        model.to_xml_string()
+
+
+def test_joints_mujoco_makes_itself_are_refused_with_a_reason() -> None:
+    """A <replicate> copies its joints: the keys cannot be placed, and the error says why."""
+    copies = mjcf.from_xml_string("""
+<mujoco model="row">
+  <worldbody><replicate count="2" offset="0.1 0 0">
+    <body name="p"><joint name="s" type="slide"/><geom size=".01"/></body>
+  </replicate></worldbody>
+</mujoco>""")
+    model = arm()
+    site(model, "tip").attach(copies)
+    with pytest.raises(mjcf.ExportError, match=r"MuJoCo makes 4 joints and 1 actuators of the "
+                                               r"text, which has 3 and 1"):
+        model.compile()
+    assert mujoco.MjModel.from_xml_string(arm().to_xml_string()).nkey == 1
