@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf._tree import element_classes, grammar_facts
 
 from .robots import site
 
@@ -111,7 +112,9 @@ def test_the_parents_joints_after_the_attachment_keep_their_values() -> None:
 
 def test_a_keys_plastic_state_is_refused_not_dropped() -> None:
     hand = gripper('<key name="home" plastic="0.1"/>')
-    hand.find("joint", "j1").springyield = 0.5  # type: ignore[union-attr]
+    joint = hand.find("joint", "j1")
+    assert isinstance(joint, mjcf.Joint)
+    joint.springyield = 0.5
     model = arm()
     site(model, "tip").attach(hand)
     with pytest.raises(mjcf.ExportError, match=r"keyframe/key\[home\].*cannot combine plastic"):
@@ -132,3 +135,13 @@ def test_joints_mujoco_makes_itself_are_refused_with_a_reason() -> None:
                                                r"text, which has 3 and 1"):
         model.compile()
     assert mujoco.MjModel.from_xml_string(arm().to_xml_string()).nkey == 1
+
+
+def test_the_rows_counted_as_joints_are_the_joint_namespace() -> None:
+    """The `joints` fact names rows: the tag <joint> is also an equality, a fixed tendon's
+    part and a default, none of which adds to qpos."""
+    rows = {cls.spec.name: cls.spec for cls in element_classes().values()}
+    joint_rows = {name for name, spec in rows.items() if spec.namespace == "joint"}
+    assert grammar_facts().joints == joint_rows
+    assert {spec.name for spec in rows.values() if spec.tag == "joint"} - joint_rows == {
+        "equality_joint", "fixed_joint", "default_joint"}
