@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import io
 import json
-from typing import cast
 from pathlib import Path
+from typing import cast
 
 import pytest
 from pytest import approx
@@ -92,8 +92,8 @@ def test_json(capsys: pytest.CaptureFixture[str]) -> None:
         "path": "worldbody/geom[0]",
         "message": "<geom> has no attribute 'sise' (did you mean 'size'?)"}
     assert document["unreadable"] == [
-        "malformed.xml:3: malformed XML: Opening and ending tag mismatch: worldbody line 2 and "
-        "mujoco, line 3, column 10"]
+        ("malformed.xml:3: malformed XML: Opening and ending tag mismatch: worldbody line 2 and "
+         "mujoco, line 3, column 10")]
 
 
 MISTAKES = """\

@@ -16,9 +16,8 @@ import pytest
 import typed_mjcf as mjcf
 from typed_mjcf.cli import _pycode, main
 from typed_mjcf.cli._common import BadInput
-from typed_mjcf.cli.to_python import to_python
-
 from typed_mjcf.cli.diff import diff_models
+from typed_mjcf.cli.to_python import to_python
 
 from ..runtime.model_compare import file_differences, model_differences
 from .corpus import compiled, corpus_params, module_name
