@@ -25,20 +25,20 @@ _ATTRIBUTE: Final = re.compile(rb"(\s*)([^\s=/>]+)\s*=\s*(\"[^\"]*\"|'[^']*')")
 @dataclass(frozen=True)
 class Written:
     """One attribute as written: its ``name="value"`` text, the spaces before it when it is
-    on the line of the attribute before it, or the column the author's line starts at
-    relative to the tag's ``<`` when the author put it on a new line."""
+    on the line of the attribute before it, or, when the author put it on a new line, the
+    whitespace that line starts with beyond the tag's own indentation (``broken_at``)."""
 
     text: str
     space: str = " "
-    broken_at: int | None = None
+    broken_at: str | None = None
 
 
 @dataclass(frozen=True)
 class StartTag:
-    """One start tag as written: its column (``None`` when something else is before it on its
-    line), its attributes, the spaces before ``>``."""
+    """One start tag as written: the whitespace before it on its line (``None`` when
+    something else is before it there), its attributes, the spaces before ``>``."""
 
-    column: int | None
+    lead: str | None
     attributes: list[Written]
     closing_space: str = ""
 
@@ -49,8 +49,8 @@ def start_tags(data: bytes) -> list[StartTag]:
     for match in _TOKEN.finditer(data):
         if match.group(1) is None:
             continue
-        line_start = data.rfind(b"\n", 0, match.start()) + 1
-        column = match.start() - line_start
+        before = data[data.rfind(b"\n", 0, match.start()) + 1:match.start()]
+        lead = _spaces(before, "") if not before.strip() else None
         attributes: list[Written] = []
         inside = match.group(2)
         end = 0
@@ -59,15 +59,23 @@ def start_tags(data: bytes) -> list[StartTag]:
             end = attribute.end()
             text = f"{name.decode('utf-8', 'replace')}={value.decode('utf-8', 'replace')}"
             if b"\n" in space:
-                attributes.append(Written(text, broken_at=len(space) - space.rfind(b"\n")
-                                          - 1 - column))
+                attributes.append(Written(text, broken_at=_beyond(
+                    _spaces(space[space.rfind(b"\n") + 1:], ""), lead or "")))
             else:
                 attributes.append(Written(text, _spaces(space)))
         rest = inside[end:].rstrip(b"/")
-        alone = not data[line_start:match.start()].strip()
-        tags.append(StartTag(column if alone else None, attributes,
-                             "" if b"\n" in rest else _spaces(rest, "")))
+        tags.append(StartTag(lead, attributes, "" if b"\n" in rest else _spaces(rest, "")))
     return tags
+
+
+def _beyond(line_lead: str, tag_lead: str) -> str:
+    """A continuation line's whitespace beyond the tag's (as written when it starts with the
+    tag's; else as spaces past the tag's width, tabs counted as one), at least two spaces."""
+    if line_lead.startswith(tag_lead) and len(line_lead) > len(tag_lead):
+        extra = line_lead[len(tag_lead):]
+    else:
+        extra = " " * (len(line_lead) - len(tag_lead))
+    return extra if len(extra.expandtabs(4)) >= 2 else "  "
 
 
 def _spaces(space: bytes, least: str = " ") -> str:
@@ -76,18 +84,20 @@ def _spaces(space: bytes, least: str = " ") -> str:
     return text if text and not text.strip() else least
 
 
-def indent_unit(tags: list[StartTag]) -> int:
-    """The file's indentation step: the column of the root's first child (2 when it is
-    not a plausible step: the child on the root's line, or indented by tabs)."""
-    column = tags[1].column if len(tags) > 1 else None
-    return column if column is not None and 1 <= column <= 8 else 2
+def indent_unit(tags: list[StartTag]) -> str:
+    """The file's indentation step: the whitespace before the root's first child (two spaces
+    when it is not a plausible step: the child on the root's line, or deeper than 8)."""
+    lead = tags[1].lead if len(tags) > 1 else None
+    if lead and (set(lead) == {"\t"} and len(lead) <= 2 or set(lead) == {" "} and len(lead) <= 8):
+        return lead
+    return "  "
 
 
 def lay_out(indent: str, opening: str, attributes: list[Written], closing: str,
             width: int = WIDTH) -> list[str]:
     """The lines of a start tag: ``indent + opening`` (``<tag``), then each attribute, after
-    the spaces written before it, or on a new line where the author broke the tag (at the
-    author's column relative to the tag, at least two spaces in) or where the next one would
+    the spaces written before it, or on a new line where the author broke the tag (with the
+    author's whitespace beyond the tag's indentation) or where the next one would
     pass ``width`` (aligned with the tag's first attribute, or four spaces in if that is
     far), then ``closing``."""
     align = len(opening) + 1 if len(indent) + len(opening) + 1 <= width // 2 else 4
@@ -95,7 +105,7 @@ def lay_out(indent: str, opening: str, attributes: list[Written], closing: str,
     for written in attributes:
         text = written.text
         if written.broken_at is not None:
-            lines.append(indent + " " * max(written.broken_at, 2) + text)
+            lines.append(indent + written.broken_at + text)
             continue
         line = lines[-1]
         current = line.rsplit("\n", 1)[-1]  # a value written across lines: its last line

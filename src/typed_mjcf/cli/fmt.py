@@ -243,16 +243,17 @@ class _Printer:
     element's in document order), or in the canonical form (``written`` is ``None``)."""
 
     def __init__(self, path: str, context: ElementSpec | None,
-                 written: Iterator[StartTag] | None = None, unit: int = 2,
+                 written: Iterator[StartTag] | None = None, unit: str = "  ",
                  width: int = WIDTH) -> None:
         self.path = path
         self.context = context
         self.written = written
-        self.unit = unit  # spaces per level
+        self.unit = unit  # the whitespace of one level
         self.width = width if width > 0 else sys.maxsize  # where start tags break
 
     def indent(self, level: int) -> str:
-        return " " * (self.unit * level) if self.unit * level <= MAX_INDENT else " " * MAX_INDENT
+        depth = min(level, MAX_INDENT // len(self.unit.expandtabs(4)))  # as the exporter stops
+        return self.unit * depth
 
     def start_tag(self, spaces: str, tag: str, closing: str) -> list[str]:
         """The next start tag as written, laid out at ``spaces``."""
