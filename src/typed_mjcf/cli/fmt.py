@@ -232,8 +232,8 @@ def _as_written(head: bytes) -> str | None:
     if match is None:
         return None
     encoding = _ENCODING.search(match.group())
-    if encoding is not None and encoding.group(1).lower().replace("_", "-") not in (b"utf-8",
-                                                                                     b"utf8"):
+    if encoding is not None and encoding.group(1).lower().replace(b"_", b"-") not in (
+            b"utf-8", b"utf8"):
         return None
     return match.group().decode("ascii", "replace")
 
