@@ -86,6 +86,8 @@ __all__ = [
     "Datatype",
     "Dcmotor",
     "DcmotorAttributes",
+    "DcmotorInput",
+    "DcmotorInputAlone",
     "Default",
     "DefaultAdhesion",
     "DefaultAdhesionAttributes",
@@ -301,6 +303,8 @@ __all__ = [
     "Passthrough",
     "Pid",
     "PidAttributes",
+    "PidInput",
+    "PidInputAlone",
     "Pin",
     "PinAttributes",
     "Plugin",
@@ -345,6 +349,7 @@ __all__ = [
     "SensorPluginAttributes",
     "Site",
     "SiteAttributes",
+    "SiteType",
     "Size",
     "SizeAttributes",
     "Skin",
@@ -444,6 +449,12 @@ Coordinate: TypeAlias = Literal["local", "global"]
 Datatype: TypeAlias = Literal["real", "positive", "axis", "quaternion"]
 """The keywords of datatype."""
 
+DcmotorInput: TypeAlias = Literal["pos", "vel", "ff", "voltage"]
+"""The keywords of dcmotor_input."""
+
+DcmotorInputAlone: TypeAlias = Literal["expmap", "quat", "none"]
+"""The keywords ``DcmotorInput`` flags also take, one alone in place of the flags (from inputchart, inputkeyword)."""
+
 Dyn: TypeAlias = Literal["none", "integrator", "filter", "filterexact", "muscle", "dcmotor", "pid", "user"]
 """The keywords of dyn."""
 
@@ -519,6 +530,12 @@ MeshInertia: TypeAlias = Literal["convex", "legacy", "exact", "shell"]
 Passthrough: TypeAlias = Literal["none", "textures"]
 """The keywords of passthrough."""
 
+PidInput: TypeAlias = Literal["pos", "vel", "ff"]
+"""The keywords of pid_input."""
+
+PidInputAlone: TypeAlias = Literal["expmap", "quat"]
+"""The keywords ``PidInput`` flags also take, one alone in place of the flags (from inputchart)."""
+
 Projection: TypeAlias = Literal["perspective", "orthographic"]
 """The keywords of projection."""
 
@@ -533,6 +550,9 @@ Scaling: TypeAlias = Literal["similar", "geometry"]
 
 Section: TypeAlias = Literal["circle", "box"]
 """The keywords of section."""
+
+SiteType: TypeAlias = Literal["sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
+"""The keywords of sitetype."""
 
 Solver: TypeAlias = Literal["PGS", "CG", "Newton"]
 """The keywords of solver."""
@@ -1195,7 +1215,7 @@ class Dcmotor(Element):
             A('controller', 'real', arity=(1, 6)),
             A('thermal', 'real', arity=(1, 6)),
             A('lugre', 'real', arity=(1, 5)),
-            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, doc='token subset, or the none keyword'),
+            A('input', 'flags', keywords=get_args(DcmotorInput), alone=get_args(DcmotorInputAlone), ordered=True, doc='token subset, or the none keyword'),
         ),
         anchor='actuator-dcmotor',
         defaults='dcmotor',
@@ -1379,7 +1399,7 @@ class DefaultDcmotor(Element):
             A('controller', 'real', arity=(1, 6), anchor='actuator-dcmotor-controller'),
             A('thermal', 'real', arity=(1, 6), anchor='actuator-dcmotor-thermal'),
             A('lugre', 'real', arity=(1, 5), anchor='actuator-dcmotor-lugre'),
-            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, anchor='actuator-dcmotor-input', doc='token subset, or the none keyword'),
+            A('input', 'flags', keywords=get_args(DcmotorInput), alone=get_args(DcmotorInputAlone), ordered=True, anchor='actuator-dcmotor-input', doc='token subset, or the none keyword'),
         ),
         anchor='default-dcmotor',
     )
@@ -1766,7 +1786,7 @@ class DefaultPid(Element):
             A('ki', 'real', anchor='actuator-pid-ki'),
             A('imax', 'real', anchor='actuator-pid-imax'),
             A('slewmax', 'real', anchor='actuator-pid-slewmax'),
-            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True, anchor='actuator-pid-input'),
+            A('input', 'flags', keywords=get_args(PidInput), alone=get_args(PidInputAlone), ordered=True, anchor='actuator-pid-input'),
         ),
         anchor='default-pid',
     )
@@ -1811,7 +1831,7 @@ class DefaultSite(Element):
         'site',
         'default_site',
         attributes=(
-            A('type', 'keyword', keywords=get_args(GeomType), default='sphere', anchor='body-site-type'),
+            A('type', 'keyword', keywords=get_args(SiteType), default='sphere', anchor='body-site-type'),
             A('group', 'int', anchor='body-site-group'),
             A('pos', 'real', arity=(3, 3), default='0 0 0', anchor='body-site-pos', doc='saved in the mesh-corrected frame'),
             A('quat', 'real', arity=(4, 4), default='1 0 0 0', anchor='body-site-quat'),
@@ -3658,7 +3678,7 @@ class Pid(Element):
             A('ki', 'real'),
             A('imax', 'real'),
             A('slewmax', 'real'),
-            A('input', 'flags', keywords=get_args(Inputbit), alone=get_args(InputbitAlone), ordered=True),
+            A('input', 'flags', keywords=get_args(PidInput), alone=get_args(PidInputAlone), ordered=True),
         ),
         anchor='actuator-pid',
         defaults='pid',
@@ -4019,7 +4039,7 @@ class Site(Element, Attachable):
         attributes=(
             A('name', 'id', namespace='site'),
             A('class', 'ref', py_name='class_', namespace='default'),
-            A('type', 'keyword', keywords=get_args(GeomType), default='sphere'),
+            A('type', 'keyword', keywords=get_args(SiteType), default='sphere'),
             A('group', 'int'),
             A('pos', 'real', arity=(3, 3), default='0 0 0', doc='saved in the mesh-corrected frame'),
             A('quat', 'real', arity=(4, 4), default='1 0 0 0'),
@@ -5438,7 +5458,7 @@ class DcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None
 
     dclass: _builtins.str | Default | None
 
@@ -5624,7 +5644,7 @@ class DefaultDcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None
 
 
 class DefaultEqualityAttributes(TypedDict, total=False):
@@ -6106,7 +6126,7 @@ class DefaultPidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: PidInput | Collection[PidInput] | PidInputAlone | None
 
 
 class DefaultPositionAttributes(TypedDict, total=False):
@@ -6152,7 +6172,7 @@ class DefaultPositionAttributes(TypedDict, total=False):
 class DefaultSiteAttributes(TypedDict, total=False):
     """The attributes of ``DefaultSite`` as keyword arguments (``add()``, ``**kwargs``)."""
 
-    type: GeomType | None
+    type: SiteType | None
 
     group: _t.Integer | None
 
@@ -8230,7 +8250,7 @@ class PidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: PidInput | Collection[PidInput] | PidInputAlone | None
 
     dclass: _builtins.str | Default | None
 
@@ -8546,7 +8566,7 @@ class SiteAttributes(TypedDict, total=False):
 
     class_: _builtins.str | Default | None
 
-    type: GeomType | None
+    type: SiteType | None
 
     group: _t.Integer | None
 

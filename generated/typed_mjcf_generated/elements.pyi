@@ -81,6 +81,8 @@ __all__ = [
     "Datatype",
     "Dcmotor",
     "DcmotorAttributes",
+    "DcmotorInput",
+    "DcmotorInputAlone",
     "Default",
     "DefaultAdhesion",
     "DefaultAdhesionAttributes",
@@ -296,6 +298,8 @@ __all__ = [
     "Passthrough",
     "Pid",
     "PidAttributes",
+    "PidInput",
+    "PidInputAlone",
     "Pin",
     "PinAttributes",
     "Plugin",
@@ -340,6 +344,7 @@ __all__ = [
     "SensorPluginAttributes",
     "Site",
     "SiteAttributes",
+    "SiteType",
     "Size",
     "SizeAttributes",
     "Skin",
@@ -439,6 +444,12 @@ Coordinate: TypeAlias = Literal["local", "global"]
 Datatype: TypeAlias = Literal["real", "positive", "axis", "quaternion"]
 """The keywords of datatype."""
 
+DcmotorInput: TypeAlias = Literal["pos", "vel", "ff", "voltage"]
+"""The keywords of dcmotor_input."""
+
+DcmotorInputAlone: TypeAlias = Literal["expmap", "quat", "none"]
+"""The keywords ``DcmotorInput`` flags also take, one alone in place of the flags (from inputchart, inputkeyword)."""
+
 Dyn: TypeAlias = Literal["none", "integrator", "filter", "filterexact", "muscle", "dcmotor", "pid", "user"]
 """The keywords of dyn."""
 
@@ -514,6 +525,12 @@ MeshInertia: TypeAlias = Literal["convex", "legacy", "exact", "shell"]
 Passthrough: TypeAlias = Literal["none", "textures"]
 """The keywords of passthrough."""
 
+PidInput: TypeAlias = Literal["pos", "vel", "ff"]
+"""The keywords of pid_input."""
+
+PidInputAlone: TypeAlias = Literal["expmap", "quat"]
+"""The keywords ``PidInput`` flags also take, one alone in place of the flags (from inputchart)."""
+
 Projection: TypeAlias = Literal["perspective", "orthographic"]
 """The keywords of projection."""
 
@@ -528,6 +545,9 @@ Scaling: TypeAlias = Literal["similar", "geometry"]
 
 Section: TypeAlias = Literal["circle", "box"]
 """The keywords of section."""
+
+SiteType: TypeAlias = Literal["sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
+"""The keywords of sitetype."""
 
 Solver: TypeAlias = Literal["PGS", "CG", "Newton"]
 """The keywords of solver."""
@@ -2061,7 +2081,7 @@ class Actuator(_Typed):
         ki: _t.Real | None = ...,
         imax: _t.Real | None = ...,
         slewmax: _t.Real | None = ...,
-        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
+        input: PidInput | Collection[PidInput] | PidInputAlone | None = ...,
         dclass: _builtins.str | Default | None = ...,
     ) -> Pid:
         """Add a ``<pid>`` child and return it.
@@ -2135,7 +2155,7 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             slewmax: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+            input: any of: pos, vel, ff; or alone one of: expmap, quat.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
 
@@ -2514,7 +2534,7 @@ class Actuator(_Typed):
         controller: Reals1To6 | None = ...,
         thermal: Reals1To6 | None = ...,
         lugre: Reals1To5 | None = ...,
-        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
+        input: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None = ...,
         dclass: _builtins.str | Default | None = ...,
     ) -> Dcmotor:
         """Add a ``<dcmotor>`` child and return it.
@@ -2582,8 +2602,8 @@ class Actuator(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             lugre: double[1..5] (1 to 5 values).
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
-                Token subset, or the none keyword.
+            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none. Token
+                subset, or the none keyword.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
 
@@ -5119,7 +5139,7 @@ class Body(_Typed, _Attachable):
         *,
         name: _builtins.str | None = ...,
         class_: _builtins.str | Default | None = ...,
-        type: GeomType | None = ...,
+        type: SiteType | None = ...,
         group: _t.Integer | None = ...,
         pos: Reals3 | None = ...,
         quat: Reals4 | None = ...,
@@ -5144,8 +5164,8 @@ class Body(_Typed, _Attachable):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
             class_: reference to namespace ``default``.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
-            type: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf.
-                Default: "sphere".
+            type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default:
+                "sphere".
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             group: int.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
@@ -8086,15 +8106,15 @@ class Dcmotor(_Typed):
     def lugre(self, value: Reals1To5 | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+    def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
 
         Token subset, or the none keyword.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None: ...
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -8254,7 +8274,7 @@ class Dcmotor(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
+    def resolve(self, name: Literal["input"]) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -8584,7 +8604,7 @@ class Default(_Typed):
     def add_site(
         self,
         *,
-        type: GeomType | None = ...,
+        type: SiteType | None = ...,
         group: _t.Integer | None = ...,
         pos: Reals3 | None = ...,
         quat: Reals4 | None = ...,
@@ -8604,8 +8624,8 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-site
 
         Args:
-            type: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf.
-                Default: "sphere".
+            type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default:
+                "sphere".
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             group: int.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
@@ -9354,7 +9374,7 @@ class Default(_Typed):
         ki: _t.Real | None = ...,
         imax: _t.Real | None = ...,
         slewmax: _t.Real | None = ...,
-        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
+        input: PidInput | Collection[PidInput] | PidInputAlone | None = ...,
     ) -> DefaultPid:
         """Add a ``<pid>`` child and return it.
 
@@ -9407,7 +9427,7 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
             slewmax: double.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+            input: any of: pos, vel, ff; or alone one of: expmap, quat.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
 
@@ -9686,7 +9706,7 @@ class Default(_Typed):
         controller: Reals1To6 | None = ...,
         thermal: Reals1To6 | None = ...,
         lugre: Reals1To5 | None = ...,
-        input: Inputbit | Collection[Inputbit] | InputbitAlone | None = ...,
+        input: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None = ...,
     ) -> DefaultDcmotor:
         """Add a ``<dcmotor>`` child and return it.
 
@@ -9733,8 +9753,8 @@ class Default(_Typed):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
             lugre: double[1..5] (1 to 5 values).
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
-                Token subset, or the none keyword.
+            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none. Token
+                subset, or the none keyword.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
 
@@ -10994,15 +11014,15 @@ class DefaultDcmotor(_Typed):
     def lugre(self, value: Reals1To5 | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+    def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none.
 
         Token subset, or the none keyword.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None: ...
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -11105,7 +11125,7 @@ class DefaultDcmotor(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
+    def resolve(self, name: Literal["input"]) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -14198,13 +14218,13 @@ class DefaultPid(_Typed):
     def slewmax(self, value: _t.Real | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+    def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None: ...
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -14322,7 +14342,7 @@ class DefaultPid(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
+    def resolve(self, name: Literal["input"]) -> tuple[PidInput, ...] | PidInputAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -14601,13 +14621,13 @@ class DefaultSite(_Typed):
     spec: ClassVar[_S]
 
     @property
-    def type(self) -> GeomType | None:
-        """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default: "sphere".
+    def type(self) -> SiteType | None:
+        """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default: "sphere".
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
         """
     @type.setter
-    def type(self, value: GeomType | None) -> None: ...
+    def type(self, value: SiteType | None) -> None: ...
 
     @property
     def group(self) -> _builtins.int | None:
@@ -14733,7 +14753,7 @@ class DefaultSite(_Typed):
     def user(self, value: RealsAny | None) -> None: ...
 
     @overload
-    def resolve(self, name: Literal["type"]) -> GeomType:
+    def resolve(self, name: Literal["type"]) -> SiteType:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -19896,7 +19916,7 @@ class Frame(_Typed, _Attachable):
         *,
         name: _builtins.str | None = ...,
         class_: _builtins.str | Default | None = ...,
-        type: GeomType | None = ...,
+        type: SiteType | None = ...,
         group: _t.Integer | None = ...,
         pos: Reals3 | None = ...,
         quat: Reals4 | None = ...,
@@ -19921,8 +19941,8 @@ class Frame(_Typed, _Attachable):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
             class_: reference to namespace ``default``.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
-            type: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf.
-                Default: "sphere".
+            type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default:
+                "sphere".
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             group: int.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
@@ -29597,13 +29617,13 @@ class Pid(_Typed):
     def slewmax(self, value: _t.Real | None) -> None: ...
 
     @property
-    def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none.
+    def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None: ...
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -29778,7 +29798,7 @@ class Pid(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None:
+    def resolve(self, name: Literal["input"]) -> tuple[PidInput, ...] | PidInputAlone | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -31089,7 +31109,7 @@ class Replicate(_Typed, _Attachable):
         *,
         name: _builtins.str | None = ...,
         class_: _builtins.str | Default | None = ...,
-        type: GeomType | None = ...,
+        type: SiteType | None = ...,
         group: _t.Integer | None = ...,
         pos: Reals3 | None = ...,
         quat: Reals4 | None = ...,
@@ -31114,8 +31134,8 @@ class Replicate(_Typed, _Attachable):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
             class_: reference to namespace ``default``.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
-            type: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf.
-                Default: "sphere".
+            type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default:
+                "sphere".
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             group: int.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
@@ -34940,13 +34960,13 @@ class Site(_Typed, _Attachable):
     def class_(self, value: _builtins.str | Default | None) -> None: ...
 
     @property
-    def type(self) -> GeomType | None:
-        """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default: "sphere".
+    def type(self) -> SiteType | None:
+        """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default: "sphere".
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
         """
     @type.setter
-    def type(self, value: GeomType | None) -> None: ...
+    def type(self, value: SiteType | None) -> None: ...
 
     @property
     def group(self) -> _builtins.int | None:
@@ -35089,7 +35109,7 @@ class Site(_Typed, _Attachable):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["type"]) -> GeomType:
+    def resolve(self, name: Literal["type"]) -> SiteType:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -39914,7 +39934,7 @@ class Worldbody(_Typed, _Attachable):
         *,
         name: _builtins.str | None = ...,
         class_: _builtins.str | Default | None = ...,
-        type: GeomType | None = ...,
+        type: SiteType | None = ...,
         group: _t.Integer | None = ...,
         pos: Reals3 | None = ...,
         quat: Reals4 | None = ...,
@@ -39939,8 +39959,8 @@ class Worldbody(_Typed, _Attachable):
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
             class_: reference to namespace ``default``.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
-            type: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf.
-                Default: "sphere".
+            type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf. Default:
+                "sphere".
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
             group: int.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
@@ -40974,7 +40994,7 @@ class DcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None
 
     dclass: _builtins.str | Default | None
 
@@ -41160,7 +41180,7 @@ class DefaultDcmotorAttributes(TypedDict, total=False):
 
     lugre: Reals1To5 | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None
 
 
 class DefaultEqualityAttributes(TypedDict, total=False):
@@ -41642,7 +41662,7 @@ class DefaultPidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: PidInput | Collection[PidInput] | PidInputAlone | None
 
 
 class DefaultPositionAttributes(TypedDict, total=False):
@@ -41688,7 +41708,7 @@ class DefaultPositionAttributes(TypedDict, total=False):
 class DefaultSiteAttributes(TypedDict, total=False):
     """The attributes of ``DefaultSite`` as keyword arguments (``add()``, ``**kwargs``)."""
 
-    type: GeomType | None
+    type: SiteType | None
 
     group: _t.Integer | None
 
@@ -43766,7 +43786,7 @@ class PidAttributes(TypedDict, total=False):
 
     slewmax: _t.Real | None
 
-    input: Inputbit | Collection[Inputbit] | InputbitAlone | None
+    input: PidInput | Collection[PidInput] | PidInputAlone | None
 
     dclass: _builtins.str | Default | None
 
@@ -44082,7 +44102,7 @@ class SiteAttributes(TypedDict, total=False):
 
     class_: _builtins.str | Default | None
 
-    type: GeomType | None
+    type: SiteType | None
 
     group: _t.Integer | None
 

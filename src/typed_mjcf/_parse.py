@@ -37,6 +37,7 @@ from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._sourcelines import start_line
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
+    DuplicateIdentifierError,
     FileReadError,
     IgnoredAttributeWarning,
     InvalidTypeError,
@@ -93,6 +94,18 @@ DEFAULT_LIMITS: Final = ParseLimits()
 
 
 @dataclass(frozen=True, slots=True)
+class Problem:
+    """A mistake a collecting parse read past (see ``ParseOptions.on_problem``): ``rule``
+    says which kind (``unknown-attribute``, ``invalid-value``, ``duplicate-name``,
+    ``illegal-child``), ``path`` is the element's, ``error`` the ParseError a strict parse
+    raises, with its file and line."""
+
+    rule: str
+    path: str
+    error: ParseError
+
+
+@dataclass(frozen=True, slots=True)
 class ParseOptions:
     """What a parse does besides reading the grammar (dm_control's parser arguments).
 
@@ -100,12 +113,18 @@ class ParseOptions:
     included MJCF files and every file attribute before the disk; ``escape_separators``: a
     ``/`` in a name read from the file becomes ``\\/`` (dm_control's escaping; by default
     names keep their ``/``); ``resolve_references``: link references to their elements
-    (else they stay names until ``model.resolve_references()``).
+    (else they stay names until ``model.resolve_references()``); ``on_problem``: when
+    given, a mistake in one attribute or element (a misspelt attribute, a value the grammar
+    refuses, a name already taken, a child the parent cannot have) is passed to it as a
+    :class:`Problem` and read past, the attribute (or the child and what is inside it) left
+    out, instead of stopping the parse; what cannot be read past (malformed XML, a missing
+    include, a limit) still raises.
     """
 
     assets: Mapping[str, bytes] = field(default_factory=lambda: {})
     escape_separators: bool = False
     resolve_references: bool = True
+    on_problem: Callable[[Problem], None] | None = None
 
     def asset(self, file: str) -> bytes | None:
         """A file's contents from ``assets``: by the path as written, else by its name."""
@@ -180,6 +199,13 @@ class _Context:
 
     def leave_include(self) -> None:
         self.nesting.pop()
+
+    def refuse(self, rule: str, path: str, error: ParseError) -> None:
+        """Raise ``error``, or pass it on and go on when the parse collects problems."""
+        on_problem = self.options.on_problem
+        if on_problem is None:
+            raise error from None
+        on_problem(Problem(rule, path, error))
 
     def error(self, message: str, source: str | None, line: int | None,
               kind: type[ParseError] = ParseError) -> ParseError:
@@ -463,8 +489,8 @@ def _read_attributes(element: Element, items: list[tuple[str, str]], values: dic
             try:  # the common case, as _tree.assign_text does it
                 values[attribute.name] = attribute.codec.parse(text)
             except Rejected as rejected:
-                raise _rejected(element, attribute, text, rejected, node, source,
-                                context) from None
+                context.refuse("invalid-value", element.path, _rejected(
+                    element, attribute, text, rejected, node, source, context))
             continue
         later = _set_other(element, attribute, key, text, node, source, context, later)
     for attribute, text in later or ():
@@ -489,9 +515,10 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
         if element.spec.ignores_unknown:
             _warn_ignored(element, _name(key), text, known, source, context.line(node, source))
             return later
-        raise context.error(
+        context.refuse("unknown-attribute", element.path, context.error(
             f"<{element.spec.tag}> has no attribute {_name(key)!r}"
-            f"{did_you_mean(_name(key), known)}", source, context.line(node, source))
+            f"{did_you_mean(_name(key), known)}", source, context.line(node, source)))
+        return later
     if attribute.kind == "id":
         try:
             name = text
@@ -499,7 +526,10 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
                 name = escape_separators(name)
             _tree.assign_name_text(element, attribute, name)
         except MjcfError as error:
-            raise context.error(str(error), source, context.line(node, source)) from None
+            rule = "duplicate-name" if isinstance(error, DuplicateIdentifierError) else \
+                "invalid-value"
+            context.refuse(rule, element.path, context.error(
+                str(error), source, context.line(node, source)))
         return later
     if attribute.namespace_from is not None:
         later = [] if later is None else later
@@ -545,9 +575,11 @@ def _set_text(element: Element, attribute: AttributeSpec, text: str, node: XmlNo
     try:
         _tree.assign_text(element, attribute, text, link=options.resolve_references)
     except Rejected as rejected:
-        raise _rejected(element, attribute, text, rejected, node, source, context) from None
+        context.refuse("invalid-value", element.path,
+                       _rejected(element, attribute, text, rejected, node, source, context))
     except MjcfError as error:
-        raise context.error(str(error), source, context.line(node, source)) from None
+        context.refuse("invalid-value", element.path,
+                       context.error(str(error), source, context.line(node, source)))
 
 
 # Children still to read into an element: (element, its remaining XML children, the file
@@ -602,9 +634,10 @@ class _Builder:
             child_spec = child_specs.get(tag)
             if child_spec is None:
                 legal = list(child_specs)
-                raise context.error(
+                context.refuse("illegal-child", parent.path, context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
-                    f"{did_you_mean(_name(tag), legal)}", source, context.line(child_node, source))
+                    f"{did_you_mean(_name(tag), legal)}", source, context.line(child_node, source)))
+                continue  # read past: the child and what is inside it are left out
             if depth >= max_depth:
                 raise context.error(_limit_message(
                     f"<{tag}> is nested {depth + 1} deep", max_depth, "max_depth"),

@@ -6,9 +6,13 @@ from __future__ import annotations
 import io
 import json
 from pathlib import Path
+from typing import cast
 
 import pytest
+from pytest import approx
 
+import typed_mjcf as mjcf
+from typed_mjcf._parse import ParseOptions, Problem, parse_path
 from typed_mjcf.cli import main
 from typed_mjcf.cli._common import Progress
 
@@ -75,15 +79,81 @@ def test_warnings_alone_pass_unless_strict(capsys: pytest.CaptureFixture[str]) -
 def test_json(capsys: pytest.CaptureFixture[str]) -> None:
     Path("broken.xml").write_text("<mujoco><worldbody><geom sise='1'/></worldbody></mujoco>",
                                   encoding="utf-8")
-    assert main(["check", "--format", "json", _model(), "broken.xml"]) == 2
+    Path("malformed.xml").write_text("<mujoco>\n<worldbody>\n</mujoco>\n", encoding="utf-8")
+    assert main(["check", "--format", "json", _model(), "broken.xml", "malformed.xml"]) == 2
     document = json.loads(capsys.readouterr().out)
-    assert document["summary"] == {"files": 2, "errors": 2, "warnings": 1, "unreadable": 1}
+    assert document["summary"] == {"files": 3, "errors": 3, "warnings": 1, "unreadable": 1}
     assert document["findings"][1] == {
         "file": "m.xml", "line": 7, "rule": "unresolved-reference", "severity": "error",
         "path": "worldbody/geom[0]",
         "message": "material='rde' names no material in the model (did you mean 'red'?)"}
+    assert document["findings"][3] == {
+        "file": "broken.xml", "line": 1, "rule": "unknown-attribute", "severity": "error",
+        "path": "worldbody/geom[0]",
+        "message": "<geom> has no attribute 'sise' (did you mean 'size'?)"}
     assert document["unreadable"] == [
-        "broken.xml:1: <geom> has no attribute 'sise' (did you mean 'size'?)"]
+        ("malformed.xml:3: malformed XML: Opening and ending tag mismatch: worldbody line 2 and "
+         "mujoco, line 3, column 10")]
+
+
+MISTAKES = """\
+<mujoco>
+  <worldbody>
+    <body name="arm">
+      <geom name="upper" szie="0.1"/>
+      <geom name="fore" size="0.1 0.2 0.3 0.4"/>
+      <geom name="upper" size="0.1"/>
+      <site type="plane"/>
+      <body name="hand"><gem size="1"/><geom size="1" rgba="1 0 0 1"/></body>
+      <geom size="0.1" material="stel"/>
+    </body>
+  </worldbody>
+  <asset><material name="steel"/></asset>
+</mujoco>
+"""
+
+
+def test_every_mistake_of_a_file_is_found_at_its_line(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """A misspelt attribute, a wrong array length, a duplicate name, a keyword the tag does
+    not take, a child the parent cannot have and a reference to nothing: six findings, not
+    one unreadable file."""
+    Path("mistakes.xml").write_text(MISTAKES, encoding="utf-8")
+    assert main(["check", "mistakes.xml"]) == 1
+    lines = capsys.readouterr().out.splitlines()
+    assert [line.split(": ")[:3] for line in lines[:-1]] == [
+        ["mistakes.xml:4", "unknown-attribute", "worldbody/body[arm]/geom[upper]"],
+        ["mistakes.xml:5", "invalid-value", "worldbody/body[arm]/geom[fore]"],
+        ["mistakes.xml:6", "duplicate-name", "worldbody/body[arm]/geom[2]"],
+        ["mistakes.xml:7", "invalid-value", "worldbody/body[arm]/site[0]"],
+        ["mistakes.xml:8", "illegal-child", "worldbody/body[arm]/body[hand]"],
+        ["mistakes.xml:9", "unresolved-reference", "worldbody/body[arm]/geom[3]"],
+    ]
+    assert "'szie' (did you mean 'size'?)" in lines[0]
+    assert "expected 1 to 3 numbers, got 4" in lines[1]
+    assert "unique in namespace 'geom'" in lines[2]
+    assert "invalid type='plane' on <site>" in lines[3]
+    assert "<gem> is not a legal child of <body>" in lines[4]
+    assert lines[-1] == "checked 1 file: 6 errors, 0 warnings"
+
+
+def test_a_collecting_parse_leaves_out_only_what_is_wrong() -> None:
+    """The parse check uses keeps the rest of the element: the misspelt attribute and the
+    refused values are left out, the element and its other values stay; the strict parse
+    (``from_path``) still stops at the first mistake."""
+    Path("mistakes.xml").write_text(MISTAKES, encoding="utf-8")
+    problems: list[Problem] = []
+    model = cast(mjcf.RootElement,
+                 parse_path("mistakes.xml", options=ParseOptions(on_problem=problems.append)))
+    assert [p.rule for p in problems] == ["unknown-attribute", "invalid-value",
+                                          "duplicate-name", "invalid-value", "illegal-child"]
+    arm = model.worldbody.body[0]
+    assert [(g.name, g.size) for g in arm.geom][:3] == [("upper", None), ("fore", None),
+                                                       (None, approx([0.1]))]
+    assert arm.site[0].type is None and [g.rgba for g in arm.body[0].geom] == [
+        approx([1, 0, 0, 1])]
+    with pytest.raises(mjcf.ParseError, match="has no attribute 'szie'"):
+        mjcf.from_path("mistakes.xml")
 
 
 def test_compile_reports_mujocos_error_at_the_element(capsys: pytest.CaptureFixture[str]) -> None:

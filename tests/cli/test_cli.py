@@ -40,8 +40,13 @@ def _files(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     Path("good.xml").write_text(GOOD, encoding="utf-8")
 
 
+# what check reads past and reports as a finding (exit 1), not as an unreadable file
+CHECK_FINDS = {"schema.xml"}
+
+
 def _commands(name: str) -> list[list[str]]:
-    return [["to-python", name], ["check", name], ["check", "--compile", name], ["fmt", name],
+    checks = [] if name in CHECK_FINDS else [["check", name], ["check", "--compile", name]]
+    return [["to-python", name], *checks, ["fmt", name],
             ["fmt", "--check", name], ["diff", name, "good.xml"], ["diff", "good.xml", name]]
 
 
@@ -53,11 +58,18 @@ def test_bad_input_is_one_line_and_exit_2(name: str, capsys: pytest.CaptureFixtu
         assert err == f"typed-mjcf {command[0]}: {EXPECTED[name]}\n", command
 
 
+def test_check_reports_a_schema_error_as_a_finding(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check", "schema.xml"]) == 1
+    assert capsys.readouterr().out.splitlines() == [
+        ("schema.xml:3: unknown-attribute: worldbody/geom[0]: <geom> has no attribute 'sise' "
+         "(did you mean 'size'?)"), "checked 1 file: 1 error, 0 warnings"]
+
+
 def test_other_files_are_still_processed(capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["check", "schema.xml", "good.xml"]) == 2
+    assert main(["check", "malformed.xml", "good.xml"]) == 2
     captured = capsys.readouterr()
     assert captured.out == "checked 2 files: 0 errors, 0 warnings, 1 file not readable\n"
-    assert main(["fmt", "schema.xml", "good.xml"]) == 2
+    assert main(["fmt", "--canonical", "schema.xml", "good.xml"]) == 2  # good.xml: to "1"
     assert capsys.readouterr().out.splitlines() == [
         "reformatted good.xml", "1 file reformatted, 0 files already formatted"]
     assert Path("schema.xml").read_text(encoding="utf-8") == BAD["schema.xml"]
@@ -65,10 +77,10 @@ def test_other_files_are_still_processed(capsys: pytest.CaptureFixture[str]) -> 
 
 def test_no_traceback_from_the_command_line() -> None:
     """The real process: ``python -m typed_mjcf`` prints the one line and exits 2."""
-    result = subprocess.run([sys.executable, "-m", "typed_mjcf", "check", "schema.xml"],
+    result = subprocess.run([sys.executable, "-m", "typed_mjcf", "check", "malformed.xml"],
                             capture_output=True, text=True, check=False)
     assert result.returncode == 2
-    assert result.stderr == f"typed-mjcf check: {EXPECTED['schema.xml']}\n"
+    assert result.stderr == f"typed-mjcf check: {EXPECTED['malformed.xml']}\n"
     assert "Traceback" not in result.stdout + result.stderr
 
 

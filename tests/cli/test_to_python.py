@@ -4,6 +4,7 @@ would write it, and is laid out as black and ruff lay it out."""
 from __future__ import annotations
 
 import math
+import re
 import runpy
 import subprocess
 import sys
@@ -15,12 +16,22 @@ import pytest
 import typed_mjcf as mjcf
 from typed_mjcf.cli import _pycode, main
 from typed_mjcf.cli._common import BadInput
+from typed_mjcf.cli.diff import diff_models
 from typed_mjcf.cli.to_python import to_python
 
 from ..runtime.model_compare import file_differences, model_differences
 from .corpus import compiled, corpus_params, module_name
 
 SEPARATORS = "dm_control/mjcf/test_assets/model_with_separators.xml"  # names hold '/'
+
+
+# Models with two files of one name in different folders: to_xml_string() writes the
+# second as get_assets() keys it ("cube-2.stl"), a change of the exporter (issue 28, asset
+# naming), not of to-python, whose model names them as the source does. Once the exporter
+# names them as the source does, this test fails for them: remove them from here.
+FLAT_NAME_CLASHES = {"dm_control/mjcf/test_assets/model_with_assets.xml",
+                     "dm_control/mjcf/test_assets/model_with_assetdir.xml"}
+_RENAMED = re.compile(r': file "[^"]+" -> "[^"/]+-\d+\.\w+"  \[')
 
 
 def _build(code: str, file: Path) -> mjcf.RootElement:
@@ -46,6 +57,15 @@ def test_the_code_rebuilds_the_model(ident: str, path: Path, tmp_path: Path) -> 
     assert file_differences(expected, str(path.parent), actual, built.get_assets()) == []
     too_long = [line for line in code.splitlines() if len(line) > _pycode.WIDTH]
     assert too_long == []
+    # what the README promises: `typed-mjcf diff original.xml rebuilt.xml` shows nothing
+    rebuilt = tmp_path / "rebuilt.xml"
+    rebuilt.write_text(built.to_xml_string(), encoding="utf-8")
+    assert diff_models(model, built) == []
+    exported = diff_models(model, mjcf.from_path(rebuilt))
+    if ident in FLAT_NAME_CLASHES:  # to_xml_string's naming, not to-python's: see there
+        assert exported and all(_RENAMED.search(line) for line in exported), exported
+    else:
+        assert exported == []
 
 
 CARTPOLE = """\
@@ -111,7 +131,7 @@ MODEL_DIR = HERE / "model"
 
 def build() -> mjcf.RootElement:
     """The model, built as cartpole.xml describes it."""
-    model = mjcf.RootElement(model="cart-pole")
+    model = mjcf.RootElement(model="cart-pole", model_dir=str(MODEL_DIR))
 
     add_parts(model)
 
@@ -143,7 +163,7 @@ def add_parts(model: mjcf.RootElement) -> None:
     """The elements parts.xml adds."""
     asset = model.asset
     asset.add_material(name="self", rgba=(0.7, 0.5, 0.3, 1))
-    asset.add_mesh(name="box", file=MODEL_DIR / "box.obj")
+    asset.add_mesh(name="box", file="box.obj")
 
 
 if __name__ == "__main__":
@@ -168,7 +188,8 @@ def test_running_the_module_prints_the_model(tmp_path: Path) -> None:
     assert main(["to-python", str(source), "-o", str(module)]) == 0
     printed = subprocess.run([sys.executable, str(module)], capture_output=True, text=True,
                              check=True, cwd="/").stdout
-    again = mjcf.from_xml_string(printed)
+    assert 'file="box.obj"' in printed  # as the source names it ...
+    again = mjcf.from_xml_string(printed, model_dir=source.parent)  # ... from its folder
     assert again.find("joint", "slider") is not None
     assert again.compile().nmesh == 1  # the mesh was found from another folder
 

@@ -151,9 +151,12 @@ def test_flags_keys_of_an_attribute_entry() -> None:
 
 def test_repository_facts_type_input_as_flags_with_keywords_alone() -> None:
     entries = {(o.element, o.name): o for o in load_facts().attributes}
-    for row in ("general", "pid", "dcmotor"):
+    expected = {"general": ("inputbit", ("inputchart", "inputkeyword")),
+                "pid": ("pid_input", ("inputchart",)),  # a pid compiles with no none
+                "dcmotor": ("dcmotor_input", ("inputchart", "inputkeyword"))}
+    for row, (enum, alone) in expected.items():
         entry = entries[(row, "input")]
-        assert (entry.alone, entry.ordered) == (("inputchart", "inputkeyword"), True)
+        assert (entry.enum, entry.alone, entry.ordered) == (enum, alone, True), row
 
 
 def test_enum_entries() -> None:
@@ -541,11 +544,15 @@ def test_reference_grammar_normalizes() -> None:
     assert any(c.element == "worldbody" and c.single for c in out.elements["mujoco"].children)
     assert out.elements["default_equality"].projection_of is None
     assert out.elements["default_geom"].class_name == "DefaultGeom"
-    for row in ("general", "default_general", "pid", "default_pid", "dcmotor",
-                "default_dcmotor"):
-        servo_input = out.elements[row].attribute("input")
-        assert (servo_input.kind, servo_input.enum, servo_input.alone, servo_input.ordered) == (
-            "flags", "inputbit", ["inputchart", "inputkeyword"], True)
+    servos = {"general": ("inputbit", ["inputchart", "inputkeyword"]),
+              "pid": ("pid_input", ["inputchart"]),
+              "dcmotor": ("dcmotor_input", ["inputchart", "inputkeyword"])}
+    for tag, (enum, alone) in servos.items():
+        for row in (tag, f"default_{tag}"):
+            servo_input = out.elements[row].attribute("input")
+            assert (servo_input.kind, servo_input.enum, servo_input.alone,
+                    servo_input.ordered) == ("flags", enum, alone, True), row
+    assert out.elements["site"].attribute("type").enum == "sitetype"
     assert out.enums["inputkeyword"].keywords == ["none"]
     assert out.enums["inputbit"].keywords == ["pos", "vel", "ff", "voltage", "pressure"]
 

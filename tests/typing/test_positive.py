@@ -206,8 +206,8 @@ def test_more_getters() -> None:
 def test_flags_that_also_take_a_keyword_alone() -> None:
     model = mjcf.RootElement()
     model.worldbody.add_body(name="b").add_joint(name="j")
-    pid = model.actuator.add_pid(joint="j", input="none")
-    assert_type(pid.input, tuple[mjcf.Inputbit, ...] | mjcf.InputbitAlone | None)
+    pid = model.actuator.add_pid(joint="j", input="quat")
+    assert_type(pid.input, tuple[mjcf.PidInput, ...] | mjcf.PidInputAlone | None)
     pid.input = ("ff", "pos")
     pid.input = "ff"
     general = model.actuator.add_general(joint="j", input="expmap")
@@ -218,15 +218,15 @@ def test_flags_that_also_take_a_keyword_alone() -> None:
     general.input = None
     model.default.add_dcmotor(input="quat")
     model.default.dcmotor.input = "voltage"
-    chart: mjcf.InputbitAlone = "quat"
-    tokens: list[mjcf.Inputbit] = ["pos", "vel"]
+    chart: mjcf.DcmotorInputAlone = "quat"
+    tokens: list[mjcf.DcmotorInput] = ["pos", "vel"]
     model.actuator.add_dcmotor(joint="j", motorconst=1, resistance=1, input=tokens).input = chart
     assert_type(general.resolve("input"), tuple[mjcf.Inputbit, ...] | mjcf.InputbitAlone | None)
     value = pid.input
     if isinstance(value, str):
-        assert_type(value, Literal["expmap", "quat", "none"])
+        assert_type(value, Literal["expmap", "quat"])
     else:
-        assert_type(value, tuple[Literal["pos", "vel", "ff", "voltage", "pressure"], ...] | None)
+        assert_type(value, tuple[Literal["pos", "vel", "ff"], ...] | None)
         assert value == ("ff",)
 
 

@@ -6,10 +6,11 @@ import os
 import sys
 import warnings
 from collections.abc import Iterable, Iterator
-from typing import Final, TextIO, TypeVar
+from typing import Final, TextIO, TypeVar, cast
 
 from typed_mjcf import _tree
 from typed_mjcf._generated.elements import RootElement
+from typed_mjcf._parse import ParseOptions, Problem, parse_path
 from typed_mjcf._tree import Element
 from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import from_path
@@ -52,16 +53,23 @@ def parse_error_text(error: ParseError) -> str:
     return one_line(str(error))
 
 
-def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None) -> RootElement:
+def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None,
+         problems: list[Problem] | None = None) -> RootElement:
     """Parse an MJCF file; raise :class:`BadInput` with a one-line message if it cannot be.
 
     Attributes MuJoCo ignores (and the model drops) go to ``ignored`` when it is given, else
-    to stderr as ``typed-mjcf: warning: FILE:LINE: ...``.
+    to stderr as ``typed-mjcf: warning: FILE:LINE: ...``. With ``problems``, mistakes the
+    parser can read past (a bad value, a misspelt attribute, ...) go there and are left out
+    of the model, instead of making the file unreadable.
     """
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", IgnoredAttributeWarning)
-            model = from_path(path)
+            if problems is None:
+                model = from_path(path)
+            else:
+                options = ParseOptions(on_problem=problems.append)
+                model = cast(RootElement, parse_path(path, options=options))
     except ParseError as error:
         raise BadInput(parse_error_text(error)) from None
     except MjcfError as error:  # pragma: no cover - from_path raises only ParseError

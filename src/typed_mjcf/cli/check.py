@@ -14,6 +14,7 @@ from lxml import etree
 
 from typed_mjcf._export import iter_written
 from typed_mjcf._generated.elements import RootElement
+from typed_mjcf._parse import Problem
 from typed_mjcf._tree import Element
 from typed_mjcf._write import vfs_text
 from typed_mjcf.cli._common import (
@@ -33,9 +34,12 @@ from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
 DESCRIPTION = """\
-Read each model (its includes too), then check what MuJoCo's grammar forbids beyond single
-values: exclusive or required attributes, required children, references that name nothing
-(with a did-you-mean), default classes, ... Each finding is printed as
+Read each model (its includes too) and report every mistake in it: misspelt attributes,
+values the grammar refuses (a wrong array length, a keyword the tag does not take), names
+already taken, children a parent cannot have (each read past, so one file shows them all),
+then what MuJoCo's grammar forbids beyond single values: exclusive or required attributes,
+required children, references that name nothing (with a did-you-mean), default classes, ...
+Each finding is printed as
 
   FILE:LINE: RULE: ELEMENT PATH: MESSAGE
 
@@ -45,8 +49,8 @@ an ignored-attribute warning. --compile also compiles each model that has no err
 MuJoCo.
 
 exit status: 0 no errors (warnings allowed, unless --strict), 1 errors found, 2 a file
-cannot be read as MJCF (its one-line error names the file and line; other files are still
-checked)."""
+cannot be read as MJCF at all (not XML, not a model, a missing include: its one-line error
+names the file and line; other files are still checked)."""
 
 # MuJoCo ends its messages with the element's line in the text it read: "Element name 'arm',
 # id 1, line 22" (compile errors) or "Element 'include', line 7" (XML errors).
@@ -138,9 +142,11 @@ def _count(n: int, noun: str) -> str:
 def check_file(path: str, compile_model: bool = False) -> list[Report]:
     """The findings for one model file; raises :class:`BadInput` if it cannot be read."""
     ignored: list[IgnoredAttributeWarning] = []
-    model = load(path, ignored)
-    reports = [Report(shown(w.source if w.source is not None else path), w.line,
-                      "ignored-attribute", "warning", w.path, w.detail) for w in ignored]
+    problems: list[Problem] = []
+    model = load(path, ignored, problems)
+    reports = [_problem_report(problem, path) for problem in problems]
+    reports += [Report(shown(w.source if w.source is not None else path), w.line,
+                       "ignored-attribute", "warning", w.path, w.detail) for w in ignored]
     reports += [_report(f.element, f.rule, f.severity, f.path, f.message, path)
                 for f in model.validate()]
     if compile_model and not any(r.severity == "error" for r in reports):
@@ -148,6 +154,15 @@ def check_file(path: str, compile_model: bool = False) -> list[Report]:
         if problem is not None:
             reports.append(problem)
     return reports
+
+
+def _problem_report(problem: Problem, file: str) -> Report:
+    """A mistake the parser read past, at its file and line (its element path in front of
+    the message moves to the report's path)."""
+    error = problem.error
+    message = one_line(error.detail).removeprefix(f"{problem.path}: ")
+    return Report(shown(error.source if error.source is not None else file), error.line,
+                  problem.rule, "error", problem.path, message)
 
 
 def _report(element: Element | None, rule: str, severity: str, path: str, message: str,

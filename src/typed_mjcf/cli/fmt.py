@@ -1,12 +1,16 @@
-"""``typed-mjcf fmt``: rewrite MJCF files in the canonical form, keeping what a person wrote.
+"""``typed-mjcf fmt``: lay MJCF files out consistently, changing as little as it can.
 
-The canonical form is what typed-mjcf's exporter writes with ``canonical=True`` (attributes in
-grammar order, numbers in the shortest text that reads back exactly, keywords in their grammar
-spelling, two spaces of indentation, no empty attributes or empty once-only sections), with
-the file's own structure kept: elements stay where they are (repeated sections are not
-merged), comments, processing instructions and stray text (MuJoCo ignores text) stay in place,
-and ``<include>`` elements stay ``<include>`` elements. A model's included files are formatted
-with it, each in the context it is included in.
+By default fmt keeps what the author wrote: attributes in their order and spelling (numbers,
+keywords, quotes aside: values are written in double quotes), start tags broken across lines
+where the author broke them, elements where they are (repeated sections are not merged),
+comments, processing instructions, stray text (MuJoCo ignores text) and ``<include>``
+elements. It indents by two spaces per level, writes one element per line, keeps at most one
+blank line in a row, and breaks a start tag longer than 100 characters before the attribute
+that passes the width (aligned with its first attribute). ``--canonical`` writes instead what
+typed-mjcf's exporter writes with ``canonical=True`` (attributes in grammar order, numbers in
+the shortest text that reads back exactly, keywords in their grammar spelling, no empty
+attributes or empty once-only sections, one line per start tag), keeping the same structure.
+A model's included files are formatted with it, each in the context it is included in.
 """
 
 from __future__ import annotations
@@ -18,6 +22,7 @@ import re
 import shutil
 import sys
 import tempfile
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from lxml import etree
@@ -26,7 +31,7 @@ from typed_mjcf import _tree
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import ElementSpec
 from typed_mjcf._parse import INCLUDE, root_class
-from typed_mjcf._xmltext import escape, indent
+from typed_mjcf._xmltext import MAX_INDENT, escape
 from typed_mjcf.cli._common import (
     BAD_INPUT,
     FOUND,
@@ -38,25 +43,35 @@ from typed_mjcf.cli._common import (
     location,
     shown,
 )
+from typed_mjcf.cli._starttags import WIDTH, StartTag, indent_unit, lay_out, start_tags
 from typed_mjcf.cli._values import canonical_text
 from typed_mjcf.types import XmlElement
 
 NAME = "fmt"
-HELP = "rewrite MJCF files in the canonical form (comments and includes kept)"
+HELP = "lay MJCF files out consistently, changing as little as it can (comments kept)"
 DESCRIPTION = """\
-Rewrite MJCF files in the canonical form: attributes in MuJoCo's grammar order, numbers in
-the shortest form that reads back exactly ("0.10" -> "0.1", "1.0" -> "1"), keywords in their
-grammar spelling, two-space indentation; empty attributes and empty once-only sections
-(<compiler/>) are dropped. Everything else is kept as written: element order, repeated
-sections, comments, <include> elements, and text inside elements (MJCF has none and MuJoCo
-ignores it, but fmt does not drop it). The files a model includes are formatted too, each in
-the place it is included. The result compiles to the same model, and formatting it again
-changes nothing.
+Lay MJCF files out consistently: two-space indentation, one element per line, at most one
+blank line in a row, start tags longer than 100 characters broken before the attribute that
+passes the width. What the author wrote is kept: attribute order and spelling ("0.10" stays
+"0.10"), where a start tag was broken across lines, element order, repeated sections,
+comments, <include> elements, and text inside elements (MJCF has none and MuJoCo ignores
+it, but fmt does not drop it).
+
+--canonical writes the canonical form instead (what to_xml_string(canonical=True) writes):
+attributes in MuJoCo's grammar order, numbers in the shortest form that reads back exactly
+("0.10" -> "0.1", "1.0" -> "1"), keywords in their grammar spelling, one line per start tag;
+empty attributes and empty once-only sections (<compiler/>) are dropped.
+
+The files a model includes are formatted too, each in the place it is included. The result
+compiles to the same model, and formatting it again changes nothing.
 
 exit status: 0 formatted (or nothing to change), 1 with --check: some file would change,
 2 a file cannot be read as MJCF (other files are still formatted)."""
 
 _DECLARATION = re.compile(rb"<\?xml\s")
+# a declaration fmt may keep as written: it says nothing of the encoding, or says UTF-8
+_PLAIN_DECLARATION = re.compile(rb"<\?xml\s[^>]*?\?>")
+_ENCODING = re.compile(rb"encoding\s*=\s*[\"']([^\"']*)[\"']")
 _PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
                           remove_comments=False, remove_pis=False, huge_tree=True)
 
@@ -68,6 +83,12 @@ def arguments(parser: argparse.ArgumentParser) -> None:
                         help="write nothing; list the files that would change (exit 1 if any)")
     parser.add_argument("--diff", action="store_true",
                         help="write nothing; show the changes as a unified diff")
+    parser.add_argument("--width", type=int, default=WIDTH, metavar="N",
+                        help=f"break start tags longer than N characters (default {WIDTH}; "
+                             "0: never break a tag the author did not break)")
+    parser.add_argument("--canonical", action="store_true",
+                        help="write the canonical form: attributes in grammar order, numbers "
+                             "in the shortest exact form, one line per start tag")
     parser.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                         help="show progress on stderr (default: for several files, on a "
                              "terminal)")
@@ -96,7 +117,7 @@ def run(args: argparse.Namespace) -> int:
     progress = Progress(len(files), args.progress)
     for file in progress.each(files, "formatting"):
         try:
-            results = format_model(file, seen)
+            results = format_model(file, seen, canonical=args.canonical, width=args.width)
             for result in results:
                 if result.changed and write:
                     _replace(result.path, result.after)
@@ -160,9 +181,11 @@ def _replace(path: str, text: str) -> None:
 # ---------------------------------------------------------------------------- formatting
 
 
-def format_model(path: str, seen: set[str] | None = None) -> list[Formatted]:
-    """The canonical text of a model's file and of every file it includes (each once, also
-    across calls sharing ``seen``); raises :class:`BadInput` if one cannot be read."""
+def format_model(path: str, seen: set[str] | None = None, canonical: bool = False,
+                 width: int = WIDTH) -> list[Formatted]:
+    """The formatted text (the canonical text with ``canonical``) of a model's file and of
+    every file it includes (each once, also across calls sharing ``seen``); raises
+    :class:`BadInput` if one cannot be read."""
     model = load(path, ignored=[])  # fmt keeps what MuJoCo ignores, as written
     seen = set() if seen is None else seen
     sources = _tree.source_map(model)
@@ -176,13 +199,15 @@ def format_model(path: str, seen: set[str] | None = None) -> list[Formatted]:
         if file in seen:
             continue
         seen.add(file)
-        results.append(format_file(file, context))
+        results.append(format_file(file, context, canonical, width))
     return results
 
 
-def format_file(path: str, context: ElementSpec | None = None) -> Formatted:
-    """The canonical text of one file; ``context`` is the row its top-level elements belong
-    to when it is included (its root ``<mujoco>`` then stands for the including element)."""
+def format_file(path: str, context: ElementSpec | None = None, canonical: bool = False,
+                width: int = WIDTH) -> Formatted:
+    """The formatted (or canonical) text of one file; ``context`` is the row its top-level
+    elements belong to when it is included (its root ``<mujoco>`` then stands for the
+    including element)."""
     try:
         with open(path, "rb") as f:
             data = f.read()
@@ -192,24 +217,60 @@ def format_file(path: str, context: ElementSpec | None = None) -> Formatted:
         root = etree.fromstring(data, _PARSER)
     except etree.XMLSyntaxError as problem:  # pragma: no cover - the model was read already
         raise BadInput(f"{location(path, problem.lineno)}: malformed XML: {problem.msg}") from None
-    declared = _DECLARATION.match(data.removeprefix(b"\xef\xbb\xbf").lstrip()) is not None
-    return Formatted(path, data, _Printer(path, context).document(root, declared))
+    head = data.removeprefix(b"\xef\xbb\xbf").lstrip()
+    declared = _DECLARATION.match(head) is not None
+    if canonical:
+        return Formatted(path, data, _Printer(path, context).document(root, declared))
+    tags = start_tags(data)
+    printer = _Printer(path, context, iter(tags), indent_unit(tags), width)
+    return Formatted(path, data, printer.document(root, declared, _as_written(head)))
+
+
+def _as_written(head: bytes) -> str | None:
+    """The file's XML declaration as written, when fmt's UTF-8 output keeps it true."""
+    match = _PLAIN_DECLARATION.match(head)
+    if match is None:
+        return None
+    encoding = _ENCODING.search(match.group())
+    if encoding is not None and encoding.group(1).lower().replace(b"_", b"-") not in (
+            b"utf-8", b"utf8"):
+        return None
+    return match.group().decode("ascii", "replace")
 
 
 class _Printer:
-    """Writes one file's tree in the canonical form."""
+    """Writes one file's tree: as the author wrote its start tags (``written``, each
+    element's in document order), or in the canonical form (``written`` is ``None``)."""
 
-    def __init__(self, path: str, context: ElementSpec | None) -> None:
+    def __init__(self, path: str, context: ElementSpec | None,
+                 written: Iterator[StartTag] | None = None, unit: str = "  ",
+                 width: int = WIDTH) -> None:
         self.path = path
         self.context = context
+        self.written = written
+        self.unit = unit  # the whitespace of one level
+        self.width = width if width > 0 else sys.maxsize  # where start tags break
 
-    def document(self, root: XmlElement, declared: bool) -> str:
+    def indent(self, level: int) -> str:
+        depth = min(level, MAX_INDENT // len(self.unit.expandtabs(4)))  # as the exporter stops
+        return self.unit * depth
+
+    def start_tag(self, spaces: str, tag: str, closing: str) -> list[str]:
+        """The next start tag as written, laid out at ``spaces``."""
+        assert self.written is not None
+        written = next(self.written)
+        return lay_out(spaces, f"<{tag}", written.attributes, written.closing_space + closing,
+                       self.width)
+
+    def document(self, root: XmlElement, declared: bool, declaration: str | None = None) -> str:
         """The text of the file whose root element is ``root``; ``declared``: it starts with an
-        XML declaration."""
+        XML declaration (``declaration``, as written, when it can stay so)."""
         tree = root.getroottree()
         info = tree.docinfo
         head: list[str] = []
-        if declared:
+        if declaration is not None:
+            head.append(declaration)
+        elif declared:
             head.append(f'<?xml version="{info.xml_version}" encoding="utf-8"?>')
         subset = info.internalDTD
         if subset is not None and (any(True for _ in subset.iterelements())
@@ -237,29 +298,45 @@ class _Printer:
         while stack:
             item = stack.pop()
             if isinstance(item, str):
-                out.append(item)
+                if item.startswith(_SAME_LINE):  # a comment the author wrote after a tag
+                    out[-1] += " " + item[len(_SAME_LINE):]
+                else:
+                    out.append(item)
                 continue
             current, row, level, is_included_root = item
-            spaces = indent(level)
+            spaces = self.indent(level)
             tag = _tag(current)
-            start = f"<{tag}{self.attributes(current, row, is_included_root)}"
+            if tag == INCLUDE:  # as written (MuJoCo reads it before the grammar applies)
+                if self.written is None:
+                    out.append(f"{spaces}{_other(current)}")
+                else:
+                    out += self.start_tag(spaces, tag, "/>")
+                continue
             children_row = self.context if is_included_root and self.context else row
             inside = _inside(current)
             kept = _blank_lines([child for child in inside if isinstance(child, str)
-                                 or not self.is_empty(child, children_row)])
+                                 or not self.is_empty(child, children_row)],
+                                at_ends=self.written is not None)
+            closing = ">" if kept else "/>"
+            if self.written is None:
+                start = f"<{tag}{self.attributes(current, row, is_included_root)}"
+                out.append(f"{spaces}{start}{closing}")
+            else:
+                out += self.start_tag(spaces, tag, closing)
             if not kept:
-                out.append(f"{spaces}{start}/>")
                 continue
-            out.append(f"{spaces}{start}>")
             stack.append(f"{spaces}</{tag}>")
-            inner = indent(level + 1)
+            inner = self.indent(level + 1)
             for child in reversed(kept):
                 if child is _BLANK:
                     stack.append("")
                 elif isinstance(child, str):
                     stack.append(f"{inner}{_text(child)}")
-                elif not isinstance(child.tag, str) or child.tag == INCLUDE:
-                    stack.append(f"{inner}{_other(child)}")
+                elif not isinstance(child.tag, str):
+                    same_line = self.written is not None and _after_on_its_line(child)
+                    stack.append(f"{_SAME_LINE if same_line else inner}{_other(child)}")
+                elif child.tag == INCLUDE:
+                    stack.append((child, children_row, level + 1, False))
                 else:
                     stack.append((child, _child_row(children_row, child.tag), level + 1, False))
         return out
@@ -286,8 +363,9 @@ class _Printer:
         return "".join(f' {name}="{escape(text)}"' for _, name, text in texts)
 
     def is_empty(self, node: XmlElement, parent_row: ElementSpec) -> bool:
-        """A once-only section with nothing to say (what the exporter leaves out too)."""
-        if not isinstance(node.tag, str) or node.tag == INCLUDE:
+        """A once-only section with nothing to say (what the exporter leaves out too; only
+        the canonical form leaves it out)."""
+        if self.written is not None or not isinstance(node.tag, str) or node.tag == INCLUDE:
             return False
         child = parent_row.children[node.tag]
         if not child.single or any(value for value in node.attrib.values()):
@@ -301,6 +379,23 @@ def _child_row(row: ElementSpec, tag: str) -> ElementSpec:
 
 
 _BLANK = "\n"  # a blank line the author left between two things (kept, one at most)
+
+
+_SAME_LINE = "\0"  # before a comment to write on the line before (XML text has no NUL)
+
+
+def _after_on_its_line(node: XmlElement) -> bool:
+    """Whether the author wrote ``node`` (a comment) on the line of what comes before it:
+    the end of the sibling before it, or its parent's start tag."""
+    before = node.getprevious()
+    parent = node.getparent()
+    if before is not None:
+        between = before.tail
+    elif parent is not None:
+        between = parent.text
+    else:  # pragma: no cover - a comment outside the root is written on its own line
+        return False
+    return between is not None and "\n" not in between and not between.strip()
 
 
 def _inside(node: XmlElement) -> list[XmlElement | str]:
@@ -330,15 +425,18 @@ def _add_text(inside: list[XmlElement | str], text: str | None) -> None:
         inside.append(_BLANK)
 
 
-def _blank_lines(items: list[XmlElement | str]) -> list[XmlElement | str]:
-    """At most one blank line in a row, none first or last."""
+def _blank_lines(items: list[XmlElement | str],
+                 at_ends: bool = False) -> list[XmlElement | str]:
+    """At most one blank line in a row, none first or last (unless ``at_ends``)."""
     kept: list[XmlElement | str] = []
     for item in items:
-        if item is _BLANK and (not kept or kept[-1] is _BLANK):
+        if item is _BLANK and ((not kept and not at_ends) or (kept and kept[-1] is _BLANK)):
             continue
         kept.append(item)
-    while kept and kept[-1] is _BLANK:
+    while kept and kept[-1] is _BLANK and not at_ends:
         kept.pop()
+    if kept and all(item is _BLANK for item in kept):  # nothing but a blank line inside
+        kept = []
     return kept
 
 

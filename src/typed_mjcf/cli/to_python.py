@@ -11,8 +11,9 @@ attributes are reached through their properties (``model.worldbody``).
 
 Numbers are written as the file spells them, the way a person would type them (``0.1``,
 ``2e-6``, ``(0, 0, 1)``), except where Python's double would not round to the same ``float``
-MuJoCo reads. Files are found through ``MODEL_DIR``, the model file's folder relative to the
-module's (``HERE``), with ``meshdir`` and the like applied.
+MuJoCo reads. File paths are written as the file writes them; the model is built with
+``model_dir=str(MODEL_DIR)``, the model file's folder relative to the module's (``HERE``), so
+they (and ``meshdir`` and the like) mean what they meant in the file.
 """
 
 from __future__ import annotations
@@ -30,7 +31,6 @@ import numpy as np
 from typed_mjcf import _tree
 from typed_mjcf._codecs import ArrayCodec, KeywordCodec, make_codec, to_float
 from typed_mjcf._export import iter_written
-from typed_mjcf._files import compiler_folders, resolve_path
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
@@ -50,9 +50,11 @@ file as a function of its own. Values are written as a person would type them (0
 0.10000000149011612; tuples for arrays). The code is formatted (lines of at most 100
 characters) and passes mypy --strict and pyright's strict mode; running it prints the model.
 
-Files the model uses (meshes, textures, ...) are found from the folder of the output file
-(without -o, the current folder): MODEL_DIR / "meshes/arm.stl", where MODEL_DIR is the
-model's folder relative to it.
+Paths of the files the model uses (meshes, textures, ...) are written as the model writes
+them (file="arm.stl" under meshdir="meshes" stays so), and the model is built with
+model_dir=str(MODEL_DIR), MODEL_DIR being the model's folder relative to the output file's
+folder (without -o, the current folder): exported again, the model names its files as the
+original did.
 
 A model whose element names hold "/" cannot be written: typed-mjcf's Python API keeps "/"
 for the names of attached models.
@@ -128,7 +130,6 @@ class _Module:
         self.sources = sources
         self.main = cast(str, sources.lines[model][0])
         self.base = os.path.dirname(self.main)
-        self.folders = compiler_folders(model)
         self.needs: set[str] = set()  # imports: "math", "Path"
         self.functions: dict[str, _Function] = {}
         self.reserved = {"mjcf", "math", "Path", _HERE, _MODEL_DIR, "build"}
@@ -280,6 +281,8 @@ class _Module:
             lines = ["def build() -> mjcf.RootElement:",
                      f'{indent}"""The model, built as {source} describes it."""']
             arguments = self.arguments(function, self.model)
+            if self.uses_files():  # paths stay as written, relative to the model's folder
+                arguments.append(("model_dir", self.model_dir_argument()))
             lines += _pycode.call(indent, param, "mjcf.RootElement", arguments)
         else:
             kind = f"mjcf.{type(function.param).__name__}"
@@ -416,14 +419,21 @@ class _Module:
         return [self.number(float(x)) for x in array.tolist()]
 
     def file(self, element: Element, attribute: AttributeSpec, stored: object) -> str:
-        """``MODEL_DIR / "path"``: where MuJoCo finds the file (``meshdir`` and the like
-        applied), from the module's folder."""
+        """The path as the file writes it (relative to the model's folder, ``meshdir`` and
+        the like applying as in the file): the model is built with ``model_dir``."""
         if isinstance(stored, Asset):  # pragma: no cover - parsed models hold paths
             raise BadInput(f"{where(element)}: {attribute.name} holds an in-memory file")
-        path = resolve_path(self.model, attribute, cast(str, stored), self.folders)
+        return _pycode.string(cast(str, stored))
+
+    def uses_files(self) -> bool:
+        """Whether an element of the model names a file (the model then needs its folder)."""
+        return any(element.spec.by_name[name].kind == "file"
+                   for element in self.sources.lines for name in _tree.values(element))
+
+    def model_dir_argument(self) -> str:
+        """``str(MODEL_DIR)``: the folder the model's relative paths start from."""
         self.needs.add("Path")
-        folder = _HERE if self.model_dir() == "." else _MODEL_DIR
-        return f"{folder} / {_pycode.string(_relative(path, self.base))}"
+        return f"str({_HERE if self.model_dir() == '.' else _MODEL_DIR})"
 
     def model_dir(self) -> str:
         """The model file's folder, relative to the module's."""

@@ -15,6 +15,9 @@ body.add_joint(nme="shoulder")  # E: mypy[call-arg] pyright[reportCallIssue]
 body.add_geom(type="capsul")  # E: mypy[arg-type] pyright[reportArgumentType]
 body.add_joint(type="hinged")  # E: mypy[arg-type] pyright[reportArgumentType]
 model.add_compiler(angle="radians")  # E: mypy[arg-type] pyright[reportArgumentType]
+# a keyword of a list another tag shares that MuJoCo refuses on this tag (a site is no plane)
+body.add_site(type="plane")  # E: mypy[arg-type] pyright[reportArgumentType]
+body.add_site().type = "hfield"  # E: mypy[assignment] pyright[reportAttributeAccessIssue]
 
 # a keyword-valued boolean ("false" / "true" / "auto", or a bool) given another word
 body.add_joint(limited="yes")  # E: mypy[arg-type] pyright[reportArgumentType]
