@@ -45,7 +45,7 @@ import numpy as np
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
-from typed_mjcf._sourcelines import file_start_line
+from typed_mjcf._sourcelines import SourceText, file_start_line
 from typed_mjcf.errors import (
     ChildError,
     DuplicateIdentifierError,
@@ -611,7 +611,7 @@ class SourceMap:
         self.line_of: dict[Element, int | None] = {}  # every element, in reading order
         self.files: dict[Element, str | None] = {}  # the elements read from another file
         self.includes: dict[str, tuple[str | None, Element]] = {}
-        self.texts: dict[str, bytes | None] = {}  # files read again for messages
+        self.texts: dict[str, SourceText | None] = {}  # files read again for messages
 
     def add(self, element: Element, source: str | None, line: int | None) -> None:
         """Record that ``element`` was read at ``source:line``."""
