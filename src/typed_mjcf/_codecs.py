@@ -154,6 +154,19 @@ class Codec:
         return cast(str, stored)
 
 
+# What XML 1.0 can hold (its Char production): a string with anything else (NUL, most control
+# characters, U+FFFE, U+FFFF, a lone surrogate) could not be written to a file and read back.
+_NOT_XML: Final = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+
+
+def check_xml_text(value: str, what: str = "text") -> None:
+    """Refuse a string that XML cannot hold; ``what`` names what was expected."""
+    bad = _NOT_XML.search(value)
+    if bad is not None:
+        raise Rejected(f"{what} that XML can hold (U+{ord(bad.group()):04X} at offset "
+                       f"{bad.start()} is not an XML character)")
+
+
 class StringCodec(Codec):
     __slots__ = ("pattern",)
 
@@ -165,6 +178,7 @@ class StringCodec(Codec):
             raise _type_rejected("a string")
         if not value:
             raise Rejected("a non-empty string")
+        check_xml_text(value)
         if self.pattern is not None and self.pattern.fullmatch(value) is None:
             raise Rejected(f"text matching {self.pattern.pattern!r}")
         return value
@@ -182,6 +196,7 @@ class CharsCodec(StringCodec):
             raise _type_rejected("a string")
         if not (self.lo <= len(value) and (self.hi is None or len(value) <= self.hi)):
             raise Rejected(f"{count_text(self.lo, self.hi)} characters")
+        check_xml_text(value)
         if self.pattern is not None and self.pattern.fullmatch(value) is None:
             raise Rejected(f"text matching {self.pattern.pattern!r}")
         return value
@@ -201,6 +216,7 @@ class IdentifierCodec(Codec):
         if "/" in value:
             raise Rejected("a name without '/' (it separates the scopes of attached models; "
                            "names read from files may have one)")
+        check_xml_text(value, "a name")
         return value
 
     def parse(self, text: str) -> object:
@@ -217,6 +233,7 @@ class ReferenceCodec(Codec):
             raise _type_rejected("a name or an element")
         if not value:
             raise Rejected("a non-empty name")
+        check_xml_text(value, "a name")
         return value
 
 
@@ -232,6 +249,7 @@ class FileCodec(Codec):
             raise _type_rejected("a file path or a typed_mjcf.Asset")
         if not value:
             raise Rejected("a non-empty file path")
+        check_xml_text(value, "a file path")
         return value
 
 
