@@ -669,6 +669,7 @@ class ActuatorPlugin(Element):
         children=(
             C('config', 'Config'),
         ),
+        constraints=(('oneof', (('plugin',), ('instance',))),),
         anchor='actuator-plugin',
     )
 
@@ -2137,7 +2138,7 @@ class ExtensionPlugin(Element):
         'plugin',
         'extension_plugin',
         attributes=(
-            A('plugin', 'string'),
+            A('plugin', 'string', required=True),
         ),
         children=(
             C('instance', 'Instance'),
@@ -3393,7 +3394,7 @@ class Model(Element):
         'model',
         attributes=(
             A('name', 'id', namespace='model'),
-            A('file', 'file'),
+            A('file', 'file', required=True),
             A('content_type', 'string'),
         ),
         anchor='asset-model',
@@ -3694,6 +3695,7 @@ class Plugin(Element):
         children=(
             C('config', 'Config'),
         ),
+        constraints=(('oneof', (('plugin',), ('instance',))),),
         anchor='body-plugin',
     )
 
@@ -4006,6 +4008,7 @@ class SensorPlugin(Element):
         children=(
             C('config', 'Config'),
         ),
+        constraints=(('oneof', (('plugin',), ('instance',))),),
         anchor='sensor-plugin',
     )
 

@@ -4151,7 +4151,7 @@ class AssetSection(_Typed):
         Args:
             name: name declared in namespace ``model``.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
-            file: file.
+            file: file. Required.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
             content_type: string.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
@@ -16942,7 +16942,7 @@ class Extension(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin
 
         Args:
-            plugin: string.
+            plugin: string. Required.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
         """
 
@@ -16969,7 +16969,7 @@ class ExtensionPlugin(_Typed):
 
     @property
     def plugin(self) -> _builtins.str | None:
-        """``plugin``: string.
+        """``plugin``: string. Required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
         """
@@ -27290,7 +27290,7 @@ class Model(_Typed):
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
-        """``file``: file.
+        """``file``: file. Required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
         """
