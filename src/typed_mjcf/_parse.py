@@ -11,7 +11,9 @@ passed, and the typed tree is built without recursion, so a deeply nested docume
 ``<include>`` elements are expanded in place, wherever they appear, so document order (and
 so qpos layout) is kept. As in MuJoCo, an included file's path is relative to the folder of
 the main model file (not of the file that includes it), and a file may be included once.
-Repeated once-only sections (two ``<asset>`` blocks, say) merge, as they do in MuJoCo.
+Repeated top-level sections (two ``<asset>`` blocks, say) merge, as they do in MuJoCo; a
+once-only child repeated in one element (two ``<joint>`` in one ``<default>``) is refused, as
+MuJoCo refuses it.
 
 Every failure is a :class:`~typed_mjcf.ParseError` (a ``ValueError``) with the file and line
 where it is known.
@@ -26,7 +28,7 @@ import stat
 import warnings
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
-from typing import Final, TypeAlias, cast
+from typing import Final, Protocol, TypeAlias, cast
 
 import numpy as np
 from lxml import etree
@@ -466,8 +468,14 @@ def attributes_of(node: XmlNode) -> list[tuple[str, str]]:
     """``node.items()`` in time linear in their number (XPath lists them in one pass)."""
     if len(node.attrib) <= _MANY_ATTRIBUTES:
         return node.items()
-    found = cast("list[etree._ElementUnicodeResult]", node.xpath("@*"))
-    return [(str(value.attrname), str(value)) for value in found]
+    found = cast("list[_XPathAttribute]", node.xpath("@*"))
+    return [(value.attrname, str(value)) for value in found]
+
+
+class _XPathAttribute(Protocol):
+    """An attribute's value as XPath gives it: a string that knows its attribute's name."""
+
+    attrname: str
 
 
 def _read_attributes(element: Element, items: list[tuple[str, str]], values: dict[str, object],
