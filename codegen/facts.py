@@ -24,8 +24,10 @@ _DTYPES: dict[str, ir.DType] = {"double": "double", "float": "float", "int": "in
 _KINDS: dict[str, ir.AttrKind] = {k: k for k in ir.ATTR_KINDS}
 _T = TypeVar("_T")
 # The top-level tables of facts.toml, in the file's order.
-TABLES = ("root_children", "single", "enum", "attribute", "directories", "class_names",
-          "compose", "attachment_sites", "default_rows", "language")
+TABLES = ("root_children", "single", "enum", "attribute", "constraint", "directories",
+          "class_names", "compose", "attachment_sites", "default_rows", "language")
+_CONSTRAINT_KINDS: dict[str, ir.ConstraintKind] = {
+    "exclusive": "exclusive", "together": "together", "requires": "requires", "oneof": "oneof"}
 
 
 class FactsError(ValueError):
@@ -70,6 +72,17 @@ class EnumFact:
 
 
 @dataclasses.dataclass(frozen=True)
+class ConstraintFact:
+    """One ``[[constraint]]`` entry: a presence constraint over a row's attributes that the
+    grammar file does not state (added to the row's own)."""
+
+    element: str  # declaration name of the row
+    kind: ir.ConstraintKind
+    bundles: tuple[tuple[str, ...], ...]  # attribute names, each bundle complete together
+    reason: str = ""  # why the entry exists (required in facts.toml); documentation only
+
+
+@dataclasses.dataclass(frozen=True)
 class Facts:
     """The tables of ``schema/facts.toml``; see the comments there for what each means."""
 
@@ -80,6 +93,7 @@ class Facts:
     enums: list[EnumFact] = dataclasses.field(default_factory=list[EnumFact])
     attributes: list[AttributeOverride] = dataclasses.field(
         default_factory=list[AttributeOverride])
+    constraints: list[ConstraintFact] = dataclasses.field(default_factory=list[ConstraintFact])
     # (row, file attribute) -> the <compiler> attributes naming its folder, in order
     directories: dict[tuple[str, str], list[str]] = dataclasses.field(
         default_factory=dict[tuple[str, str], list[str]])
@@ -123,6 +137,7 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
         single=read("single", _string_lists, {}),
         enums=read("enum", _enums, []),
         attributes=read("attribute", _overrides, []),
+        constraints=read("constraint", _constraints, []),
         directories=read("directories", _directories, {}),
         class_names=read("class_names", _strings, {}),
         compose=read("compose", _compose, {}),
@@ -137,7 +152,7 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
 
 
 def _header(table: str) -> str:
-    return f"[[{table}]]" if table in ("enum", "attribute") else f"[{table}]"
+    return f"[[{table}]]" if table in ("enum", "attribute", "constraint") else f"[{table}]"
 
 
 def _strings(value: object, where: str) -> dict[str, str]:
@@ -173,6 +188,29 @@ def _overrides(value: object, where: str) -> list[AttributeOverride]:
                              f"{entry.element}@{entry.name}")
         entries.append(entry)
     return entries
+
+_CONSTRAINT_KEYS = frozenset(f.name for f in dataclasses.fields(ConstraintFact))
+
+
+def _constraints(value: object, where: str) -> list[ConstraintFact]:
+    if not isinstance(value, list):
+        raise FactsError(f"{where}: expected an array of tables ([[constraint]] entries)")
+    entries: list[ConstraintFact] = []
+    for i, raw in enumerate(cast(list[object], value)):
+        at = f"{where} #{i + 1}"
+        entry = _keyed_table(raw, at, _CONSTRAINT_KEYS, ("element", "kind", "bundles", "reason"))
+        bundles = tuple(tuple(_str_list(b, f"{at} bundles")) for b in
+                        (cast(list[object], entry["bundles"])
+                         if isinstance(entry["bundles"], list) else [None]))
+        if len(bundles) < 2 or not all(bundles):
+            raise FactsError(f"{at} bundles: expected two or more non-empty lists of attribute "
+                             f"names, got {entry['bundles']!r}")
+        entries.append(ConstraintFact(
+            element=_str(entry["element"], f"{at} element"),
+            kind=_choice(entry["kind"], _CONSTRAINT_KINDS, f"{at} kind"),
+            bundles=bundles, reason=_str(entry["reason"], f"{at} reason")))
+    return entries
+
 
 _ENUM_KEYS = frozenset(f.name for f in dataclasses.fields(EnumFact))
 

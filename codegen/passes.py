@@ -12,7 +12,7 @@ import re
 from collections.abc import Iterable, Mapping
 
 from codegen import ir, naming
-from codegen.facts import AttributeOverride, EnumFact, Facts
+from codegen.facts import AttributeOverride, ConstraintFact, EnumFact, Facts
 
 DEFAULT_ROW = "default"  # the <default> class row; its children are per-tag settings
 PROJECTION_PREFIX = "default_"  # rows valid only inside <default>
@@ -29,6 +29,7 @@ def normalize(schema: ir.Schema, facts: Facts) -> ir.Schema:
     # adds, which sync types (and where an entry that names nothing is an error).
     declared = set(out.elements)
     apply_overrides(out, overrides_on(out, facts.attributes))
+    add_constraints(out, facts.constraints)
     project_defaults(out)
     apply_overrides(out, [o for o in overrides_on(out, facts.attributes)
                           if o.element not in declared])
@@ -81,6 +82,21 @@ def mark_single(schema: ir.Schema, single: Mapping[str, Iterable[str]]) -> None:
             if child is None:
                 raise ValueError(f"single: row {parent!r} has no child tag {tag!r}")
             child.single = True
+
+
+def add_constraints(schema: ir.Schema, facts: Iterable[ConstraintFact]) -> None:
+    """Add each ``[[constraint]]`` to its row (once: normalizing twice is harmless)."""
+    for fact in facts:
+        row = schema.elements.get(fact.element)
+        if row is None:
+            raise ValueError(f"constraint: no row {fact.element!r}")
+        names = {a.name for a in row.attributes}
+        unknown = [n for b in fact.bundles for n in b if n not in names]
+        if unknown:
+            raise ValueError(f"constraint on {fact.element!r}: no attribute {unknown[0]!r}")
+        constraint = ir.ConstraintDef(fact.kind, [list(b) for b in fact.bundles])
+        if constraint not in row.constraints:
+            row.constraints.append(constraint)
 
 
 def overrides_on(schema: ir.Schema, overrides: Iterable[AttributeOverride],

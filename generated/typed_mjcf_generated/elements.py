@@ -689,6 +689,7 @@ class ActuatorPlugin(Element):
         children=(
             C('config', 'Config'),
         ),
+        constraints=(('oneof', (('plugin',), ('instance',))),),
         anchor='actuator-plugin',
     )
 
@@ -2157,7 +2158,7 @@ class ExtensionPlugin(Element):
         'plugin',
         'extension_plugin',
         attributes=(
-            A('plugin', 'string'),
+            A('plugin', 'string', required=True),
         ),
         children=(
             C('instance', 'Instance'),
@@ -3413,7 +3414,7 @@ class Model(Element):
         'model',
         attributes=(
             A('name', 'id', namespace='model'),
-            A('file', 'file'),
+            A('file', 'file', required=True),
             A('content_type', 'string'),
         ),
         anchor='asset-model',
@@ -3714,6 +3715,7 @@ class Plugin(Element):
         children=(
             C('config', 'Config'),
         ),
+        constraints=(('oneof', (('plugin',), ('instance',))),),
         anchor='body-plugin',
     )
 
@@ -4026,6 +4028,7 @@ class SensorPlugin(Element):
         children=(
             C('config', 'Config'),
         ),
+        constraints=(('oneof', (('plugin',), ('instance',))),),
         anchor='sensor-plugin',
     )
 

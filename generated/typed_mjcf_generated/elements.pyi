@@ -4171,7 +4171,7 @@ class AssetSection(_Typed):
         Args:
             name: name declared in namespace ``model``.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
-            file: file.
+            file: file. Required.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
             content_type: string.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
@@ -16962,7 +16962,7 @@ class Extension(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin
 
         Args:
-            plugin: string.
+            plugin: string. Required.
                 https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
         """
 
@@ -16989,7 +16989,7 @@ class ExtensionPlugin(_Typed):
 
     @property
     def plugin(self) -> _builtins.str | None:
-        """``plugin``: string.
+        """``plugin``: string. Required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
         """
@@ -27310,7 +27310,7 @@ class Model(_Typed):
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
-        """``file``: file.
+        """``file``: file. Required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
         """

@@ -24,7 +24,7 @@ from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
 from typed_mjcf._write import collect, element_text
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import InvalidValueError, did_you_mean
+from typed_mjcf.errors import InvalidTypeError, InvalidValueError, did_you_mean
 
 if TYPE_CHECKING:
     import mujoco
@@ -103,6 +103,9 @@ class Element(_tree.Element):
         """The element named ``identifier`` in ``namespace`` inside this element, or ``None``.
         O(1) per scope: ``find("joint", "arm/elbow")`` looks in the model attached as
         ``arm``."""
+        if not isinstance(identifier, str):  # pyright: ignore[reportUnnecessaryIsInstance]
+            raise InvalidTypeError(f"{self.path}: find() identifier must be a str, got "
+                                   f"{identifier!r}")
         if namespace == ATTACHMENT_FRAME:
             attached = self.enter_model(identifier)
             found: object = None if attached is None else _tree.frame_of(attached)
@@ -354,6 +357,9 @@ def named_after_file(element: _tree.Element, namespace: str, name: str) -> _tree
 
 def _check_namespace(namespace: str) -> None:
     known = _namespaces()
+    if not isinstance(namespace, str):  # pyright: ignore[reportUnnecessaryIsInstance]
+        raise InvalidTypeError(f"a namespace must be a str, got {namespace!r}; namespaces: "
+                               f"{', '.join(sorted(known))}")
     if namespace not in known:
         raise InvalidValueError(
             f"{namespace!r} is not a valid namespace{did_you_mean(namespace, known)}; "

@@ -48,8 +48,8 @@ def compile_model(model: ModelBase) -> mujoco.MjModel:
     xml, collected = _text(model)
     try:
         return mujoco.MjModel.from_xml_string(xml, collected.files)
-    except ValueError as error:
-        raise _mujoco_error(model, str(error), collected) from None
+    except (ValueError, RuntimeError) as error:  # (RuntimeError: a C++ exception it did not
+        raise _mujoco_error(model, str(error), collected) from None  # expect)
 
 
 def to_spec(model: ModelBase) -> mujoco.MjSpec:
@@ -59,7 +59,7 @@ def to_spec(model: ModelBase) -> mujoco.MjSpec:
     xml, collected = _text(model)
     try:
         return mujoco.MjSpec.from_string(xml, assets=collected.files)
-    except ValueError as error:
+    except (ValueError, RuntimeError) as error:
         raise _mujoco_error(model, str(error), collected) from None
 
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 import os
 import re
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from fractions import Fraction
 from typing import Final, SupportsFloat, SupportsIndex, cast
 
@@ -154,6 +154,19 @@ class Codec:
         return cast(str, stored)
 
 
+# What XML 1.0 can hold (its Char production): a string with anything else (NUL, most control
+# characters, U+FFFE, U+FFFF, a lone surrogate) could not be written to a file and read back.
+_NOT_XML: Final = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+
+
+def check_xml_text(value: str, what: str = "text") -> None:
+    """Refuse a string that XML cannot hold; ``what`` names what was expected."""
+    bad = _NOT_XML.search(value)
+    if bad is not None:
+        raise Rejected(f"{what} that XML can hold (U+{ord(bad.group()):04X} at offset "
+                       f"{bad.start()} is not an XML character)")
+
+
 class StringCodec(Codec):
     __slots__ = ("pattern",)
 
@@ -165,6 +178,7 @@ class StringCodec(Codec):
             raise _type_rejected("a string")
         if not value:
             raise Rejected("a non-empty string")
+        check_xml_text(value)
         if self.pattern is not None and self.pattern.fullmatch(value) is None:
             raise Rejected(f"text matching {self.pattern.pattern!r}")
         return value
@@ -182,6 +196,7 @@ class CharsCodec(StringCodec):
             raise _type_rejected("a string")
         if not (self.lo <= len(value) and (self.hi is None or len(value) <= self.hi)):
             raise Rejected(f"{count_text(self.lo, self.hi)} characters")
+        check_xml_text(value)
         if self.pattern is not None and self.pattern.fullmatch(value) is None:
             raise Rejected(f"text matching {self.pattern.pattern!r}")
         return value
@@ -201,6 +216,7 @@ class IdentifierCodec(Codec):
         if "/" in value:
             raise Rejected("a name without '/' (it separates the scopes of attached models; "
                            "names read from files may have one)")
+        check_xml_text(value, "a name")
         return value
 
     def parse(self, text: str) -> object:
@@ -217,6 +233,7 @@ class ReferenceCodec(Codec):
             raise _type_rejected("a name or an element")
         if not value:
             raise Rejected("a non-empty name")
+        check_xml_text(value, "a name")
         return value
 
 
@@ -232,6 +249,7 @@ class FileCodec(Codec):
             raise _type_rejected("a file path or a typed_mjcf.Asset")
         if not value:
             raise Rejected("a non-empty file path")
+        check_xml_text(value, "a file path")
         return value
 
 
@@ -420,6 +438,25 @@ def _doubles_to_float32(doubles: Float64Array, parts: list[str]) -> Float32Array
     return singles
 
 
+_PIECE: Final = 1 << 20  # characters of a long number list converted at a time
+_PIECE_NUMBERS: Final = 1 << 16  # numbers of a long array written at a time
+
+
+def _pieces(text: str) -> Iterator[str]:
+    """``text`` in pieces of about :data:`_PIECE` characters, each cut after whitespace."""
+    start, length = 0, len(text)
+    while start < length:
+        end = start + _PIECE
+        if end < length:
+            cut = _SPACE.search(text, end)  # the words are kept whole
+            end = length if cut is None else cut.end()
+        yield text[start:end]
+        start = end
+
+
+_SPACE: Final = re.compile(r"\s", re.ASCII)
+
+
 def _frozen(array: Array) -> Array:
     array.flags.writeable = False  # read back as it is stored: changes go through assignment
     return array
@@ -441,7 +478,10 @@ class ArrayCodec(Codec):
         self.expected = f"{count_text(lo, hi)} {'integers' if self.is_int else 'numbers'}"
         number = _INTEGER if self.is_int else _FLOAT if self.single else _DOUBLE
         low, high = max(lo - 1, 0), "" if hi is None else str(max(hi - 1, 0))
-        repeat = f"(?:\\s+{number}){{{low},{high}}}"
+        # Possessive ("}+"): the engine keeps no backtracking state per number (a plain
+        # repeat costs ~600 bytes a number: 14 GB for a 60 MB list). It accepts the same
+        # texts: a number never ends inside a word, so giving one back cannot help a match.
+        repeat = f"(?:\\s+{number}){{{low},{high}}}+"
         self.pattern = re.compile(f"\\s*{number}{repeat}\\s*" if hi != 0 else r"\s*", re.ASCII)
         self.checked: set[str] = set()
 
@@ -492,6 +532,13 @@ class ArrayCodec(Codec):
                 return stored
             stored = self.from_text(stored)
         array = cast(Array, stored)
+        if array.shape[0] <= _PIECE_NUMBERS:
+            return self._write_numbers(array, fmt)
+        # a piece at a time: a number as a Python float and then as text costs ~100 bytes
+        return " ".join([self._write_numbers(array[i:i + _PIECE_NUMBERS], fmt)
+                         for i in range(0, array.shape[0], _PIECE_NUMBERS)])
+
+    def _write_numbers(self, array: Array, fmt: Format) -> str:
         if self.is_int:
             return " ".join(map(str, array.tolist()))
         if fmt.plain and not self.single:
@@ -503,7 +550,22 @@ class ArrayCodec(Codec):
             raise Rejected(f"{self.expected}, got {n}")
 
     def from_text(self, text: str) -> Array:
-        parts = text.split()
+        if len(text) <= _PIECE:
+            return self._from_parts(text.split(), text)
+        # A long list is converted a piece at a time: a word of text as a Python string
+        # costs ten times its characters, a number in an array eight bytes.
+        arrays: list[Array] = []
+        count = 0
+        for piece in _pieces(text):
+            parts = piece.split()
+            count += len(parts)
+            if self.hi is not None and count > self.hi:
+                raise Rejected(f"{self.expected}, got at least {count}")
+            arrays.append(self._from_parts(parts, piece))
+        return np.concatenate(arrays) if arrays else self._from_parts([], "")
+
+    def _from_parts(self, parts: list[str], text: str) -> Array:
+        """The numbers ``parts``, the words of ``text``."""
         if self.hi is not None and len(parts) > self.hi:  # refuse before converting millions
             raise Rejected(f"{self.expected}, got {len(parts)}")
         try:  # C-level conversion; on any trouble, the per-item path says what was wrong
@@ -519,9 +581,10 @@ class ArrayCodec(Codec):
                 return np.array([to_int(p) for p in parts], dtype=self.dtype)
             doubles = np.array([text_to_float(p) for p in parts], dtype=np.float64)
         if self.single:
-            for value in doubles.tolist():
-                if not -FLOAT32_MAX <= value <= FLOAT32_MAX:
-                    check_float32(value)
+            if not np.isfinite(doubles).all() or np.abs(doubles).max(initial=0.0) > FLOAT32_MAX:
+                for value in doubles.tolist():
+                    if not -FLOAT32_MAX <= value <= FLOAT32_MAX:
+                        check_float32(value)
             return _doubles_to_float32(doubles, parts)
         return doubles
 

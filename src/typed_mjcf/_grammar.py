@@ -177,13 +177,14 @@ WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], 
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once."""
 
-    __slots__ = ("card", "class_name", "cls", "index", "py_name", "single", "tag")
+    __slots__ = ("card", "class_name", "cls", "index", "once", "py_name", "single", "tag")
 
     tag: str
     py_name: str
     class_name: str
     single: bool
     card: str
+    once: bool
     index: int
     cls: type[Element]  # the generated class, set once every class exists
 
@@ -194,6 +195,8 @@ class ChildSpec:
         self.class_name = class_name
         self.single = single
         self.card = card
+        # at most once in one XML element ("?" or "!"): MuJoCo refuses a second
+        self.once = card in ("?", "!")
         self.index = 0
 
 

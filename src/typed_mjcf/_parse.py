@@ -11,7 +11,9 @@ passed, and the typed tree is built without recursion, so a deeply nested docume
 ``<include>`` elements are expanded in place, wherever they appear, so document order (and
 so qpos layout) is kept. As in MuJoCo, an included file's path is relative to the folder of
 the main model file (not of the file that includes it), and a file may be included once.
-Repeated once-only sections (two ``<asset>`` blocks, say) merge, as they do in MuJoCo.
+Repeated top-level sections (two ``<asset>`` blocks, say) merge, as they do in MuJoCo; a
+once-only child repeated in one element (two ``<joint>`` in one ``<default>``) is refused, as
+MuJoCo refuses it.
 
 Every failure is a :class:`~typed_mjcf.ParseError` (a ``ValueError``) with the file and line
 where it is known.
@@ -21,11 +23,12 @@ from __future__ import annotations
 
 import inspect
 import os
+import re
 import stat
 import warnings
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
-from typing import Final, TypeAlias, cast
+from typing import Final, Protocol, TypeAlias, cast
 
 import numpy as np
 from lxml import etree
@@ -34,7 +37,7 @@ from typed_mjcf import _tree
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._sourcelines import start_line
+from typed_mjcf._sourcelines import SourceText
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
     DuplicateIdentifierError,
@@ -58,6 +61,13 @@ _Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
 # XML reader (tinyxml2) stops at 500.
 _XML_READER_DEPTH: Final = 2048
 _CHUNK: Final = 1 << 16  # bytes fed to the streaming parser at a time
+# lxml reads an element's attributes (items()) by looking each up by name: time quadratic in
+# their number (100,000 took minutes). A text whose every stretch without "<" is shorter than
+# this holds no start tag with more than a few hundred attributes (a "<" never appears in a
+# tag); others are read through attributes_of().
+_LONG_TAG: Final = re.compile(rb"<[^<]{4096}")
+_MANY_ATTRIBUTES: Final = 64
+_SUGGESTED: Final = 100  # ignored attributes given a "did you mean" in one parse
 
 
 @dataclass(frozen=True, slots=True)
@@ -173,7 +183,9 @@ class _Context:
     included: dict[str, _Include] = field(default_factory=lambda: {})  # every file, how first read
     nesting: list[_Include] = field(default_factory=lambda: [])  # includes around the current one
     options: ParseOptions = field(default_factory=lambda: DEFAULT_OPTIONS)
-    texts: dict[str | None, bytes] = field(default_factory=lambda: {})  # each source read
+    texts: dict[str | None, SourceText] = field(default_factory=lambda: {})  # each source read
+    long_tags: bool = False  # a text read may hold a start tag with many attributes
+    ignored: int = 0  # attributes dropped with an IgnoredAttributeWarning
 
     def shown(self, path: str | None) -> str:
         """A path as messages show it: relative to the main file's folder when inside it."""
@@ -195,7 +207,7 @@ class _Context:
         tag: object = node.tag
         if line is None or text is None or not isinstance(tag, str):
             return line
-        return start_line(text, line, tag)
+        return text.start_line(line, tag)
 
     def leave_include(self) -> None:
         self.nesting.pop()
@@ -271,7 +283,9 @@ def _read_xml(data: bytes, source: str | None, context: _Context, *,
             limits.max_bytes,
             "max_bytes"), source, None)
     context.bytes_read += len(data)
-    context.texts[source] = data
+    context.texts[source] = SourceText(data)
+    if not context.long_tags and _LONG_TAG.search(data) is not None:
+        context.long_tags = True
     _refuse_entity_declarations(data, source, context)
     depth_limit = min(limits.max_depth, _XML_READER_DEPTH)
     # Every element starts with "<" (entities are refused, so none expand into elements):
@@ -472,7 +486,22 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
 def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
-    _read_attributes(element, node.items(), _tree.values(element), node, source, context)
+    items = attributes_of(node) if context.long_tags else node.items()
+    _read_attributes(element, items, _tree.values(element), node, source, context)
+
+
+def attributes_of(node: XmlNode) -> list[tuple[str, str]]:
+    """``node.items()`` in time linear in their number (XPath lists them in one pass)."""
+    if len(node.attrib) <= _MANY_ATTRIBUTES:
+        return node.items()
+    found = cast("list[_XPathAttribute]", node.xpath("@*"))
+    return [(value.attrname, str(value)) for value in found]
+
+
+class _XPathAttribute(Protocol):
+    """An attribute's value as XPath gives it: a string that knows its attribute's name."""
+
+    attrname: str
 
 
 def _read_attributes(element: Element, items: list[tuple[str, str]], values: dict[str, object],
@@ -513,6 +542,9 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
     if attribute is None:
         known = list(element.spec.by_name)
         if element.spec.ignores_unknown:
+            context.ignored += 1
+            if context.ignored > _SUGGESTED:  # a suggestion costs ~0.1 ms: bound the total
+                known = []
             _warn_ignored(element, _name(key), text, known, source, context.line(node, source))
             return later
         context.refuse("unknown-attribute", element.path, context.error(
@@ -541,10 +573,12 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
 
 def _warn_ignored(element: Element, key: str, text: str, known: list[str],
                   source: str | None, line: int | None) -> None:
+    path = element.path
+    suggestion = did_you_mean(key, known) if known else ""
     warnings.warn(IgnoredAttributeWarning(
-        f"<{element.spec.tag}> ({element.path}) has no attribute {key}={text!r}"
-        f"{did_you_mean(key, known)}; MuJoCo ignores it, and so it is dropped",
-        source, line, element.path), stacklevel=_outside_package())
+        f"<{element.spec.tag}> ({path}) has no attribute {key}={_name(repr(text))}"
+        f"{suggestion}; MuJoCo ignores it, and so it is dropped",
+        source, line, path), stacklevel=_outside_package())
 
 
 _PACKAGE_DIR: Final = os.path.dirname(os.path.abspath(__file__)) + os.sep
@@ -597,6 +631,11 @@ class _Builder:
         self.stack: list[_Frame] = []
         self.nested: list[tuple[Element, Element]] = []  # (class, its section), not counted
         self.hierarchies: dict[int, _Hierarchy] = {}  # by id(section): repeated hierarchies
+        # Once-only children may repeat only in a repeated section (MuJoCo reads each on its
+        # own): how many times each element was merged into, and that count for its parent
+        # when a child was read (missing: 0).
+        self.merged: dict[Element, int] = {}
+        self.read_in: dict[Element, int] = {}
 
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
         context, stack = self.context, self.stack
@@ -604,6 +643,8 @@ class _Builder:
         line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, read_attributes = _tree.new_child, _read_attributes
+        long_tags = context.long_tags  # (read again after an include)
+        merged = self.merged
         self.count(node, source, 1)  # the root
         stack.append((root, iter(node), source, 1, root, None))
         # the frame on top of the stack, unpacked: reloaded whenever the stack changes
@@ -628,6 +669,7 @@ class _Builder:
                 self.count(child_node, source)
             if tag == INCLUDE:
                 self.include(stack[-1], child_node)
+                long_tags = context.long_tags
                 parent, nodes, source, depth, top, on_exit = stack[-1]
                 child_specs, parent_tag = parent.spec.children, parent.spec.tag
                 continue
@@ -645,6 +687,8 @@ class _Builder:
             if child_spec.single:
                 existing = _tree.single_child(parent, tag)
                 if existing is not None:
+                    if child_spec.once:
+                        self.repeat(parent, existing, child_node, source)
                     # A repeated section: merge into the first.
                     check = self.merge(existing, child_node, source)
                     stack.append((existing, iter(child_node), source, depth + 1, existing,
@@ -654,10 +698,12 @@ class _Builder:
                     continue
             values: dict[str, object] = {}
             child = new_child(parent, child_spec, values)
+            if merged and parent in merged:
+                self.read_in[child] = merged[parent]
             line_of[child] = child_node.sourceline
             if source is not main:
                 files[child] = source
-            items = child_node.items()
+            items = attributes_of(child_node) if long_tags else child_node.items()
             if items:
                 read_attributes(child, items, values, child_node, source, context)
             child_top = child
@@ -680,11 +726,32 @@ class _Builder:
                 f"the model has more than {context.elements - 1} elements",
                 context.limits.max_elements, "max_elements"), source, context.line(node, source))
 
+    def repeat(self, parent: Element, existing: Element, node: XmlNode,
+               source: str | None) -> None:
+        """Refuse a second once-only child ``node`` of ``parent`` in one XML element (MuJoCo
+        refuses it: "unique element found 2 times"); one in a repeated section is read."""
+        occurrence = self.merged.get(parent, 0)
+        if self.read_in.get(existing, 0) != occurrence:
+            self.read_in[existing] = occurrence
+            return
+        context, tag = self.context, existing.spec.tag
+        first, line = self.sources.get(existing) or (None, None)
+        text = context.texts.get(first)
+        if text is not None and line is not None:
+            line = text.start_line(line, tag)
+        where = ("" if line is None else
+                 f" (the first is at {context.shown(first)}:{line})" if first != source else
+                 f" (the first is on line {line})")
+        raise context.error(
+            f"a second <{tag}> in {parent.path}{where}: MuJoCo allows one <{tag}> in "
+            f"<{parent.spec.tag}> and refuses the file", source, context.line(node, source))
+
     def merge(self, section: Element, node: XmlNode,
               source: str | None) -> Callable[[], None] | None:
         """Merge a repeated once-only section's attributes into the first one; return the
         check to run once its children are read too (see :class:`_Hierarchy`)."""
         context = self.context
+        self.merged[section] = self.merged.get(section, 0) + 1
         if section.spec.tag not in section.spec.children:
             _set_attributes(section, node, source, context)
             return None

@@ -34,6 +34,7 @@ from typing import (
     NoReturn,
     Protocol,
     Self,
+    SupportsIndex,
     TypeAlias,
     TypeVar,
     cast,
@@ -45,7 +46,7 @@ import numpy as np
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
-from typed_mjcf._sourcelines import file_start_line
+from typed_mjcf._sourcelines import SourceText, file_start_line
 from typed_mjcf.errors import (
     ChildError,
     DuplicateIdentifierError,
@@ -486,6 +487,33 @@ class Element(_Layout):
 
     # ------------------------------------------------------------------ copies
 
+    def __reduce_ex__(self, protocol: SupportsIndex) -> tuple[object, ...]:
+        """Pickled without recursion, however deep the tree: an element's state leaves out
+        its parent and children, and the top of its tree (the model, or a removed subtree)
+        lists every element below it, with its parent, in document order."""
+        names = _PICKLED_MODEL if isinstance(self, ModelBase) else _PICKLED
+        state = {name: object.__getattribute__(self, name) for name in names}
+        if self._parent is None:
+            state[_TREE] = [(element, element._parent) for element in self.iter_elements()
+                            if element is not self]
+        elif self._root is None:  # in a removed subtree: its top holds the tree
+            top = self._parent
+            while top._parent is not None:
+                top = top._parent
+            state[_TOP] = top
+        return _unpickled, (type(self),), state
+
+    def __setstate__(self, state: dict[str, object]) -> None:
+        tree = cast("list[tuple[Element, Element]]", state.pop(_TREE, ()))
+        state.pop(_TOP, None)
+        for name, value in state.items():
+            object.__setattr__(self, name, value)
+        for element, parent in tree:
+            if not parent._children:
+                object.__setattr__(parent, "_children", [])
+            cast(list[Element], parent._children).append(element)
+            object.__setattr__(element, "_parent", parent)
+
     def __copy__(self) -> Self:
         return self.__deepcopy__({})
 
@@ -550,6 +578,20 @@ class Element(_Layout):
 # ---------------------------------------------------------------------------- the model root
 
 
+_TREE: Final = "tree"  # in a pickled top element's state: (element, parent) below it
+_TOP: Final = "top"  # in a pickled removed element's state: the top of its subtree
+# what a pickled element's state holds: every slot but the tree's links
+_PICKLED: Final = tuple(sorted(set(_Layout.__slots__) - {"__weakref__", "_children", "_parent"}))
+
+
+def _unpickled(cls: type[Element]) -> Element:
+    """A blank element of ``cls``, for pickle to fill in (its links come from the top)."""
+    element = cls.__new__(cls)
+    object.__setattr__(element, "_children", ())
+    object.__setattr__(element, "_parent", None)
+    return element
+
+
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
@@ -580,6 +622,9 @@ class ModelBase(Element):
         clone = cast(Self, _copy_model(self, memo))
         _remap_links(clone, memo)
         return clone
+
+
+_PICKLED_MODEL: Final = _PICKLED + ModelBase.__slots__
 
 
 def _init_model(model: ModelBase) -> None:
@@ -615,7 +660,7 @@ class SourceMap:
         self.line_of: dict[Element, int | None] = {}  # every element, in reading order
         self.files: dict[Element, str | None] = {}  # the elements read from another file
         self.includes: dict[str, tuple[str | None, Element]] = {}
-        self.texts: dict[str, bytes | None] = {}  # files read again for messages
+        self.texts: dict[str, SourceText | None] = {}  # files read again for messages
 
     def add(self, element: Element, source: str | None, line: int | None) -> None:
         """Record that ``element`` was read at ``source:line``."""
@@ -967,8 +1012,9 @@ def _place(parent: Element, child: Element, child_spec: ChildSpec, position: int
             position = _grammar_position(parent, child_spec)
     if position is None:
         children.append(child)
-    else:
-        children.insert(position, child)
+    else:  # clamped as list.insert clamps, also past what a C index holds (10**30)
+        n = len(children)
+        children.insert(max(-n - 1, min(position, n)), child)
 
 
 def _grammar_position(parent: Element, child_spec: ChildSpec) -> int:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import hashlib
 import os
 
+from typed_mjcf.errors import InvalidTypeError, InvalidValueError
+
 
 class Asset:
     """File contents held in memory, usable wherever MJCF takes a file.
@@ -22,9 +24,17 @@ class Asset:
 
     def __init__(self, contents: bytes | str, extension: str, name: str | None = None) -> None:
         if isinstance(contents, str):
-            contents = contents.encode("utf-8")
+            try:
+                contents = contents.encode("utf-8")
+            except UnicodeEncodeError as error:  # a lone surrogate
+                raise InvalidValueError(f"Asset contents: {error}") from None
+        elif isinstance(contents, bytearray | memoryview):
+            contents = bytes(contents)
         if not isinstance(contents, bytes):  # pyright: ignore[reportUnnecessaryIsInstance]
-            raise TypeError(f"Asset contents must be bytes or str, got {type(contents).__name__}")
+            raise InvalidTypeError(
+                f"Asset contents must be bytes or str, got {type(contents).__name__}")
+        _check_part("extension", extension, allow_none=False)
+        _check_part("name", name, allow_none=True)
         if not extension.startswith("."):
             extension = "." + extension
         self.contents = contents
@@ -50,3 +60,13 @@ class Asset:
     def __repr__(self) -> str:
         label = f"{self.name}{self.extension}" if self.name else self.extension
         return f"Asset({label!r}, {len(self.contents)} bytes, sha1={self.digest[:10]})"
+
+
+def _check_part(what: str, value: object, *, allow_none: bool) -> None:
+    """Refuse an extension or name that is not a string (the export makes any string a safe
+    file name)."""
+    if value is None and allow_none:
+        return
+    if not isinstance(value, str):
+        expected = "a str or None" if allow_none else "a str"
+        raise InvalidTypeError(f"Asset {what} must be {expected}, got {value!r}")

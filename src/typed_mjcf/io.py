@@ -38,6 +38,14 @@ def _folder(base_dir: object, what: str) -> str | None:
     return folder
 
 
+def _model(model: object) -> ModelBase:
+    """``model`` if it is a model's root, else the library's error."""
+    if not isinstance(model, ModelBase):
+        raise InvalidTypeError(f"mjcf_model must be a model (typed_mjcf.RootElement), got "
+                               f"{type(model).__name__}")
+    return model
+
+
 def _options(assets: Mapping[str, bytes] | None, escape_separators: bool,
              resolve_references: bool) -> ParseOptions:
     if assets is not None and not isinstance(assets, Mapping):  # pyright: ignore[reportUnnecessaryIsInstance]
@@ -178,7 +186,7 @@ def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
         raise InvalidTypeError(f"out_file_name must be a str, got {type(out_file_name).__name__}")
     if not isinstance(overwrite, bool):  # pyright: ignore[reportUnnecessaryIsInstance]
         raise InvalidTypeError(f"overwrite must be a bool, got {type(overwrite).__name__}")
-    return export(mjcf_model, folder, out_file_name, overwrite=overwrite)
+    return export(_model(mjcf_model), folder, out_file_name, overwrite=overwrite)
 
 
 def export_with_assets_as_zip(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
@@ -188,7 +196,7 @@ def export_with_assets_as_zip(mjcf_model: ModelBase, out_dir: str | os.PathLike[
     folder = _folder(out_dir, "out_dir")
     if folder is None:
         raise InvalidTypeError("out_dir must be a path (str or os.PathLike), got None")
-    return write_zip(mjcf_model, folder, model_name)
+    return write_zip(_model(mjcf_model), folder, model_name)
 
 
 __all__ = ["ParseLimits", "export_with_assets", "export_with_assets_as_zip", "from_file",

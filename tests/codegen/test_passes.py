@@ -183,8 +183,8 @@ ENUM = '[[enum]]\nname = "e"\nvalues = [["a", "mjA"]]\nreason = "r"\n'
     ("[root_children\n", "f.toml: Expected ']' at the end of a table declaration"),
     ("[root_childern]\nbody = \"worldbody\"\n",
      ("f.toml: unknown table 'root_childern' (known tables: root_children, single, enum, "
-      "attribute, directories, class_names, compose, attachment_sites, default_rows, "
-      "language)")),
+      "attribute, constraint, directories, class_names, compose, attachment_sites, "
+      "default_rows, language)")),
     ("[[attribute_type]]\nelement = \"a\"\n", "f.toml: unknown table 'attribute_type'"),
     ("root_children = 3\n", "f.toml: [root_children]: expected a table"),
     ("[root_children]\nbody = 1\n", "f.toml: [root_children] body: expected a string, got 1"),

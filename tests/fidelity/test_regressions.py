@@ -237,7 +237,7 @@ KNOWN_GAPS: dict[str, str] = {
     "frame-scale-two-values": "arity 1..3 in the schema; the parser takes 1 or 3 values",
     "compiler-coordinate-global": "a grammar keyword the parser no longer accepts",
     "fixed-joint-coef": _REQUIRED, "pulley-divisor": _REQUIRED, "user-sensor-dim": _REQUIRED,
-    "extension-plugin-plugin": _REQUIRED, "plugin-config-value": _REQUIRED,
+    "plugin-config-value": _REQUIRED,
     "material-layer-texture": _REQUIRED, "builtin-mesh-params": _REQUIRED,
     "numeric-size-or-data": _REQUIRED, "text-data": _REQUIRED,
     "dcmotor-constants": _REQUIRED,

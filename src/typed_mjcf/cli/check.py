@@ -29,6 +29,7 @@ from typed_mjcf.cli._common import (
     shown,
     source_of,
 )
+from typed_mjcf.cli._isolated import MujocoCrashed, compile_in_child
 from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError
 
 NAME = "check"
@@ -178,8 +179,6 @@ def _report(element: Element | None, rule: str, severity: str, path: str, messag
 def compile_problem(model: RootElement, file: str) -> Report | None:
     """MuJoCo's error compiling the model (or reading its files), at the element it names,
     or ``None``."""
-    import mujoco  # the heaviest import: only for --compile
-
     try:
         xml, collected = vfs_text(model)
     except MjcfError as problem:  # a file the model names cannot be read
@@ -187,10 +186,12 @@ def compile_problem(model: RootElement, file: str) -> Report | None:
         element = _element_at_path(model, message.split(": ", 1)[0]) or model
         return _report(element, "compile", "error", element.path,
                        message.split(": ", 1)[-1], file)
-    try:
-        mujoco.MjModel.from_xml_string(xml, collected.files)
-    except ValueError as problem:
-        message = str(problem).strip()
+    try:  # in a child process: a crash in MuJoCo is a finding, not the end of the command
+        error = compile_in_child(xml, collected.files)
+    except MujocoCrashed as crash:
+        return _report(model, "compile", "error", model.path, str(crash), file)
+    if error is not None:
+        message = error.strip()
         element = model
         match = _MUJOCO_LINE.search(message)
         if match is not None:  # the line is in the text MuJoCo read: point into the file
