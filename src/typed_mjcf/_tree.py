@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import inspect
 import os
+import weakref
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
@@ -42,7 +43,9 @@ from typing import (
 
 import numpy as np
 
-from typed_mjcf._codecs import Rejected
+from typed_mjcf._codecs import ArrayCodec, Rejected
+from typed_mjcf._compat import STATE as _COMPAT
+from typed_mjcf._debuginfo import RECORDER as _RECORDER
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._sourcelines import file_start_line
@@ -65,7 +68,8 @@ _Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscript
 _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
-_RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
+_RESERVED_NAMES: set[str] = set()
+_UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none  # names a body may not take (the world body's)
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
@@ -234,6 +238,9 @@ class Element(_Layout):
             # Only reached when normal lookup fails: an attribute the grammar doesn't have.
             if name.startswith("__"):
                 raise AttributeError(name)
+            alias = _python_name(self.spec, name)
+            if alias is not None:  # dm_control's spelling: getattr(visual, "global")
+                return getattr(self, alias)
             raise self._unknown_attribute(name)
 
         def __setattr__(self, name: str, value: object) -> None:
@@ -271,6 +278,8 @@ class Element(_Layout):
 
     def _assign(self, attribute: AttributeSpec, value: object) -> None:
         """Set one attribute from a Python value (``None`` or ``""`` unsets it)."""
+        if _RECORDER[0] is not None:
+            _RECORDER[0](self, (attribute.name,), False)
         if value is None or (type(value) is str and not value):
             self._unset(attribute)
             return
@@ -395,6 +404,8 @@ class Element(_Layout):
             assert isinstance(name, str)
             _claim(self, attribute, name)
             values[attribute.name] = name
+        if _RECORDER[0] is not None:
+            _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
 
     def _init_named(self, pairs: list[tuple[AttributeSpec, object]]) -> None:
         """References and the model's name, for :meth:`_init_attributes` (references after
@@ -561,10 +572,15 @@ class ModelBase(Element):
     def __init__(self, model: str | None = None, *, model_dir: str | None = None,
                  assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None:
         _init_model(self)
+        if _RECORDER[0] is not None:
+            _RECORDER[0](self, None, True)
         if model_dir is not None:
             self._base_dir = os.fspath(model_dir)
         if assets is not None:
             self._files.update(assets)
+        if model is None and _COMPAT[0] and not kwargs.get(
+                self.spec.scope_attribute.py_name if self.spec.scope_attribute else ""):
+            model = _UNNAMED_MODEL  # dm_control names every model
         if model is not None:
             scope_attribute = self.spec.scope_attribute
             if scope_attribute is not None:
@@ -665,7 +681,7 @@ def new_model(cls: type[ModelBase]) -> ModelBase:
 class Attribute:
     """Reads and writes one attribute on elements of a generated class."""
 
-    __slots__ = ("codec", "lazy", "name", "reference", "spec")
+    __slots__ = ("array", "codec", "lazy", "name", "reference", "spec")
 
     def __init__(self, spec: AttributeSpec) -> None:
         self.spec = spec
@@ -673,6 +689,7 @@ class Attribute:
         self.codec = spec.codec
         self.lazy = spec.codec.lazy
         self.reference = spec.is_reference
+        self.array = isinstance(spec.codec, ArrayCodec)
 
     @overload
     def __get__(self, obj: None, owner: type[object] | None = None) -> Attribute: ...
@@ -685,6 +702,8 @@ class Attribute:
         if stored is None:
             return None
         if self.lazy:  # numbers kept as read, arrays (read-only views)
+            if self.array and _COMPAT[0]:
+                return _writable_array(obj, self.spec, stored)
             return self.codec.read(stored)
         if self.reference:
             return _read_reference(obj, self.spec, stored)
@@ -718,6 +737,8 @@ class SingleChild:
         existing = obj._single(self.child.tag)
         if existing is not None:
             return existing
+        if _COMPAT[0] and on_demand(obj.spec):
+            return None  # dm_control: a body's <inertial> is None until added
         return obj._add_child(self.child, None, {})
 
     def __set__(self, obj: Element, value: object) -> None:
@@ -746,7 +767,10 @@ class ChildList:
     def __get__(self, obj: Element | None, owner: type[object] | None = None) -> object:
         if obj is None:
             return self
-        return ElementList[Element](obj, self.child.tag)
+        tag = self.child.tag
+        if _COMPAT[0] and tag == grammar_facts().freejoint:  # dm_control: one, or None
+            return next((c for c in obj._children if c.spec.tag == tag), None)
+        return ElementList[Element](obj, tag)
 
     def __set__(self, obj: Element, value: object) -> None:
         raise IllegalChildError(
@@ -809,6 +833,18 @@ class ElementList(Sequence[E_co], Generic[E_co]):
 
     def __repr__(self) -> str:
         return repr(self._items())
+
+    def clear(self) -> None:
+        """Remove every child of this list from the model (dm_control's ``clear()``)."""
+        for child in self._items():
+            child.remove()
+
+    def remove(self, element: Element) -> None:
+        """Remove ``element``, one of this list's children, from the model."""
+        if not any(child is element for child in self._items()):
+            raise ChildError(f"{self._owner.path}: {element!r} is not one of its "
+                             f"<{self._tag}> children")
+        element.remove()
 
 
 # ---------------------------------------------------------------------------- add_<tag>
@@ -926,6 +962,8 @@ def _create(cls: type[Element], parent: Element,
     element._singles = None
     element._attached = None
     element.__class__ = cls
+    if _RECORDER[0] is not None:
+        _RECORDER[0](element, None, True)
     return element
 
 
@@ -1196,7 +1234,8 @@ def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: N
     while stack:
         original, clone_parent, clone_scope = stack.pop()
         clone = _new_object(type(original))
-        _set_values(clone, {key: value for key, value in original._values.items()})
+        _set_values(clone, {key: value for key, value in original._values.items()}
+                    if not _COMPAT[0] else _copied_values(original._values))
         _set_children(clone, _NO_CHILDREN)
         _set_parent(clone, clone_parent)
         _set_root(clone, root)
@@ -1562,3 +1601,99 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
         for section in children(model):
             if not section.spec.holds_bodies:
                 yield from walk(list(children(section)))
+
+
+# ---------------------------------------------------------------------------- dm_control's behaviour
+# What ``install_as_dm_control_mjcf()`` switches on (``_compat``): arrays read as writable
+# arrays, edited in place as dm_control's are, and checked again whenever the model is
+# written or validated (:func:`check_arrays`), so an invalid value never goes unnoticed.
+
+# the arrays handed out for in-place edits: element -> {XML name: the stored array}
+_HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, np.ndarray[tuple[int], np.dtype[np.generic]]]] = (
+    weakref.WeakKeyDictionary())
+
+
+def _python_name(spec: ElementSpec, name: str) -> str | None:
+    """The Python name of a child or attribute that ``name`` spells as MJCF does, where the
+    two differ (``global`` is ``global_``)."""
+    child = spec.children.get(name)
+    if child is not None and child.py_name != name:
+        return child.py_name
+    attribute = spec.by_name.get(name)
+    if attribute is not None and attribute.py_name != name:
+        return attribute.py_name
+    return None
+
+
+def on_demand(spec: ElementSpec) -> bool:
+    """Whether ``spec``'s once-only children exist only once added, as in dm_control (whose
+    schema marks them ``on_demand``): those of the rows that hold bodies (``<inertial>``)."""
+    return spec.holds_bodies
+
+
+def _writable_array(element: Element, attribute: AttributeSpec, stored: object) -> object:
+    """The stored array itself, writable: changes made in place are the element's."""
+    owned = _HANDED_OUT.get(element)
+    if owned is not None and owned.get(attribute.name) is stored:
+        return stored
+    array = np.array(attribute.codec.read(stored))  # a copy of its own, writable
+    element._values[attribute.name] = array
+    if owned is None:
+        _HANDED_OUT[element] = owned = {}
+    owned[attribute.name] = array
+    return array
+
+
+def _copied_values(values: dict[str, object]) -> dict[str, object]:
+    """An element's values for its copy: arrays copied, since they may be edited in place."""
+    return {key: value.copy() if type(value) is np.ndarray else value
+            for key, value in values.items()}
+
+
+def check_arrays(model: ModelBase) -> None:
+    """Check again every array of ``model`` (and the models attached to it) handed out for
+    in-place edits: an edit that made it invalid raises the error assigning it would."""
+    if not _HANDED_OUT:
+        return
+    models: set[int] = set()
+    pending: list[ModelBase] = [model]
+    while pending:
+        current = pending.pop()
+        models.add(id(current))
+        pending += attached_models(current)
+    for element, arrays in list(_HANDED_OUT.items()):
+        if element._root is None or id(element._root) not in models:
+            continue
+        for name, array in arrays.items():
+            if element._values.get(name) is not array:
+                continue
+            attribute = element.spec.by_name[name]
+            try:
+                attribute.codec.accept(array)
+            except Rejected as rejected:
+                raise element._reject(attribute, array, rejected) from None
+
+
+def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
+    """The error for ``name``, none of ``element``'s attributes."""
+    return element._unknown_attribute(name)
+
+
+def unnamed_identifier(element: Element) -> str | None:
+    """dm_control's name for an unnamed element of a namespace: ``/unnamed_<namespace>_<i>``,
+    ``i`` its position among its model's elements of that namespace (attached models'
+    left out), to follow its scope's prefix (``/`` for the outermost model)."""
+    namespace = element.spec.namespace
+    root = element._root
+    if namespace is None or element.spec.id_attribute is None or root is None:
+        return None
+    index = 0
+    for other in iter_composed(root, False):
+        if other is element:
+            return f"/unnamed_{namespace}_{index}"
+        parent = other._parent
+        if other.spec.namespace == namespace and not isinstance(parent, ModelBase) and not (
+                parent is not None and parent._attached is not None
+                and other._scope is not parent._scope):  # a frame's own are not counted
+            index += 1
+    return None
