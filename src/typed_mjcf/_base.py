@@ -16,8 +16,8 @@ from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model, to_spec
 from typed_mjcf._codecs import Format
 from typed_mjcf._compat import dm_control_behaviour
-from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._compose import attach, attached_children, detach, include_copy
+from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._defaults import resolve
 from typed_mjcf._files import file_stem
 from typed_mjcf._names import NameScope

@@ -26,4 +26,14 @@ def set_dm_control_behaviour(on: bool) -> bool:
     return previous
 
 
-STATE: Final = _STATE  # for the hot paths of the tree: ``STATE[0]`` without a call
+STATE: Final = _STATE
+
+# dm_control's schema puts some kinds in one namespace of its own (its names for unnamed
+# elements count them together: //unnamed_contact_0 for a <pair> or an <exclude>)
+_DM_CONTROL_NAMESPACES: Final = {"pair": "contact", "exclude": "contact", "flex": "deformable",
+                                 "skin": "deformable"}
+
+
+def dm_control_namespace(namespace: str) -> str:
+    """The name of ``namespace`` in dm_control's schema."""
+    return _DM_CONTROL_NAMESPACES.get(namespace, namespace)  # for the hot paths of the tree: ``STATE[0]`` without a call

@@ -24,7 +24,7 @@ from typing import Final, cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
-from typed_mjcf._compat import dm_control_behaviour
+from typed_mjcf._compat import dm_control_behaviour, dm_control_namespace
 from typed_mjcf._files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._grammar import AttributeSpec, ElementSpec, WritePlan
 from typed_mjcf._merge import combine, rule_of
@@ -666,6 +666,7 @@ def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:
                 if _tree.element_name(element) is None:
                     given[id(element)] = ""  # the attached scope's prefix: the frame's name
                 continue
+            namespace = dm_control_namespace(namespace)
             index = counts.get(namespace, 0)
             counts[namespace] = index + 1
             if _tree.element_name(element) is None:

@@ -45,6 +45,7 @@ import numpy as np
 
 from typed_mjcf._codecs import ArrayCodec, Rejected
 from typed_mjcf._compat import STATE as _COMPAT
+from typed_mjcf._compat import dm_control_namespace
 from typed_mjcf._debuginfo import RECORDER as _RECORDER
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
@@ -316,6 +317,8 @@ class Element(_Layout):
         values[attribute.name] = stored
         if type(stored) is str and attribute.is_reference:
             _wait(self, attribute, stored)
+        if _COMPAT[0] and attribute.kind == "file":
+            _name_after_file(self)
 
     def _unset(self, attribute: AttributeSpec) -> None:
         old = self._values.pop(attribute.name, None)
@@ -406,6 +409,8 @@ class Element(_Layout):
             values[attribute.name] = name
         if _RECORDER[0] is not None:
             _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
+        if _COMPAT[0] and identifier is None:
+            _name_after_file(self)
 
     def _init_named(self, pairs: list[tuple[AttributeSpec, object]]) -> None:
         """References and the model's name, for :meth:`_init_attributes` (references after
@@ -1688,12 +1693,41 @@ def unnamed_identifier(element: Element) -> str | None:
     if namespace is None or element.spec.id_attribute is None or root is None:
         return None
     index = 0
+    kind = dm_control_namespace(namespace)
     for other in iter_composed(root, False):
         if other is element:
-            return f"/unnamed_{namespace}_{index}"
+            return f"/unnamed_{kind}_{index}"
         parent = other._parent
-        if other.spec.namespace == namespace and not isinstance(parent, ModelBase) and not (
+        if dm_control_namespace(other.spec.namespace or "") == kind and not isinstance(parent, ModelBase) and not (
                 parent is not None and parent._attached is not None
                 and other._scope is not parent._scope):  # a frame's own are not counted
             index += 1
     return None
+
+
+def _name_after_file(element: Element) -> None:
+    """dm_control names an unnamed mesh (texture, ...) after its file's stem, as MuJoCo
+    does: the name is the element's, so references find it and ``mesh.name`` reads it."""
+    namespace = element.spec.namespace
+    attribute = grammar_facts().named_after_file.get(namespace or "")
+    id_attribute = element.spec.id_attribute
+    if attribute is None or id_attribute is None or id_attribute.name in element._values:
+        return
+    file = element._values.get(attribute)
+    stem = file if isinstance(file, str) else getattr(file, "name", None)
+    if not isinstance(stem, str) or not stem:
+        return
+    stem = os.path.basename(stem.replace("\\", "/"))
+    if "." in stem.lstrip("."):
+        stem = stem.rsplit(".", 1)[0]
+    if stem and element._root is not None and element._scope.lookup(
+            cast(str, id_attribute.namespace), stem) is None:
+        element._store(id_attribute, stem)
+
+
+def name_after_files(model: ModelBase) -> None:
+    """Name every unnamed element of ``model`` that MuJoCo names after its file (see
+    :func:`_name_after_file`): dm_control's parser does."""
+    for element in model.iter_elements():
+        if element.spec.namespace in grammar_facts().named_after_file:
+            _name_after_file(element)

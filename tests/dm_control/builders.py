@@ -34,7 +34,7 @@ def builder(name: str) -> Callable[[Callable[[], Any]], Callable[[], Any]]:
     return register
 
 
-def _define() -> None:  # noqa: C901 - one short function per builder
+def _define() -> None:
     from dm_control.entities.manipulators.kinova import jaco_arm, jaco_hand
     from dm_control.entities.props import duplo, position_detector
     from dm_control.entities.props import primitive as entity_primitive
@@ -150,7 +150,7 @@ def _fields(model: Any) -> dict[str, Any]:
 
     out: dict[str, Any] = {}
     for field in dir(model):
-        if field.startswith("_") or field.startswith("name_") or field in (
+        if field.startswith(("_", "name_")) or field in (
                 "names", "paths", "text_data", "text_adr", "text_size"):
             continue
         value = getattr(model, field, None)

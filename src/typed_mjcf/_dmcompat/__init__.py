@@ -12,7 +12,7 @@ import importlib
 import importlib.util
 import sys
 import types
-from collections.abc import Iterator
+from collections.abc import Generator
 from contextlib import contextmanager
 from typing import Final
 
@@ -65,7 +65,7 @@ def install() -> None:
 
 
 @contextmanager
-def installed() -> Iterator[None]:
+def installed() -> Generator[None]:
     """``install()`` while the block runs; everything as it was afterwards (for tests that
     run dm_control's code beside code that uses dm_control's own mjcf)."""
     saved = {name: sys.modules.get(name) for name in modules()}

@@ -11,8 +11,8 @@ instrumented with ``<!--pymjcfdebug:...-->`` comments and its full dump are not 
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterator
-from typing import Any, NamedTuple
+from collections.abc import Generator
+from typing import NamedTuple
 
 from typed_mjcf import _debuginfo
 from typed_mjcf._debuginfo import StackTraceEntry
@@ -22,7 +22,7 @@ _FULL_DUMP_DIR: list[str] = [""]
 
 
 class ElementDebugInfo(NamedTuple):
-    element: Any
+    element: object
     init_stack: list[StackTraceEntry]
     attribute_stacks: dict[str, list[StackTraceEntry]]
 
@@ -55,7 +55,7 @@ def get_current_stack_trace() -> list[StackTraceEntry]:
 
 
 @contextlib.contextmanager
-def freeze_current_stack_trace() -> Iterator[None]:
+def freeze_current_stack_trace() -> Generator[None]:
     """While the block runs, what is made or set is recorded with the stack of its start."""
     if not debug_mode():
         yield

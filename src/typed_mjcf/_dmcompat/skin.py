@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Callable
-from typing import Any, NamedTuple
+from typing import NamedTuple, TypeAlias
 
 import numpy as np
 
@@ -13,49 +13,57 @@ from typed_mjcf._skin import NAME_BYTES
 
 MAX_BODY_NAME_LENGTH = NAME_BYTES
 
+Floats: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.float32]]
+Ints: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
+
 
 class Bone(NamedTuple):
     """One bone: the body it follows (an element), its bind pose and its vertices."""
 
-    body: Any  # whatever body_getter gave: an element with a full_identifier
-    bindpos: np.ndarray[Any, np.dtype[np.float32]]
-    bindquat: np.ndarray[Any, np.dtype[np.float32]]
-    vertex_ids: np.ndarray[Any, np.dtype[np.int32]]
-    vertex_weights: np.ndarray[Any, np.dtype[np.float32]]
+    body: object  # what body_getter gave: an element (written by its full_identifier)
+    bindpos: Floats
+    bindquat: Floats
+    vertex_ids: Ints
+    vertex_weights: Floats
 
 
 class Skin(NamedTuple):
     """A skin file's contents."""
 
-    vertices: np.ndarray[Any, np.dtype[np.float32]]
-    texcoords: np.ndarray[Any, np.dtype[np.float32]]
-    faces: np.ndarray[Any, np.dtype[np.int32]]
+    vertices: Floats
+    texcoords: Floats
+    faces: Ints
     bones: list[Bone]
 
 
-def parse(contents: bytes, body_getter: Callable[[str], Any]) -> Skin:
+def parse(contents: bytes, body_getter: Callable[[str], object]) -> Skin:
     """Read a skin file; each bone's body is ``body_getter(name)``."""
     nvertex, ntexcoord, nface, nbone = struct.unpack_from("<iiii", contents, 0)
     offset = 16
 
-    def take(dtype: type[np.generic], count: int) -> np.ndarray[Any, Any]:
+    def floats(count: int) -> Floats:
         nonlocal offset
-        array = np.frombuffer(contents, dtype, count, offset).copy()
+        array = np.frombuffer(contents, np.float32, count, offset).copy()
         offset += 4 * count
         return array
 
-    vertices = take(np.float32, 3 * nvertex).reshape(-1, 3)
-    texcoords = take(np.float32, 2 * ntexcoord).reshape(-1, 2)
-    faces = take(np.int32, 3 * nface).reshape(-1, 3)
+    def ints(count: int) -> Ints:
+        nonlocal offset
+        array = np.frombuffer(contents, np.int32, count, offset).copy()
+        offset += 4 * count
+        return array
+
+    vertices = floats(3 * nvertex).reshape(-1, 3)
+    texcoords = floats(2 * ntexcoord).reshape(-1, 2)
+    faces = ints(3 * nface).reshape(-1, 3)
     bones: list[Bone] = []
     for _ in range(nbone):
         name = contents[offset:offset + NAME_BYTES].split(b"\0", 1)[0].decode("utf-8")
         offset += NAME_BYTES
-        bindpos, bindquat = take(np.float32, 3), take(np.float32, 4)
+        bindpos, bindquat = floats(3), floats(4)
         (count,) = struct.unpack_from("<i", contents, offset)
         offset += 4
-        bones.append(Bone(body_getter(name), bindpos, bindquat, take(np.int32, count),
-                          take(np.float32, count)))
+        bones.append(Bone(body_getter(name), bindpos, bindquat, ints(count), floats(count)))
     return Skin(vertices, texcoords, faces, bones)
 
 
@@ -67,7 +75,7 @@ def serialize(skin: Skin) -> bytes:
              np.asarray(skin.texcoords, np.float32).tobytes(),
              np.asarray(skin.faces, np.int32).tobytes()]
     for bone in skin.bones:
-        name = str(bone.body.full_identifier).encode("utf-8")
+        name = str(getattr(bone.body, "full_identifier")).encode("utf-8")  # noqa: B009 - any object with one
         if len(name) > NAME_BYTES:
             raise ValueError(f"the body name {name.decode()!r} is longer than the "
                              f"{NAME_BYTES} bytes a skin file allows")
