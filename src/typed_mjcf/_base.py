@@ -112,6 +112,11 @@ class Element(_tree.Element):
                 return parent.prefixed_identifier(prefix_root)
             unnamed = _tree.unnamed_identifier(self)
             return None if unnamed is None else (prefix or "/") + unnamed
+        if name is not None and dm_control_behaviour():
+            parent = self.parent
+            if parent is not None and _tree.attached_at(parent) is not None and (
+                    _tree.scope_of(parent) is not scope):  # a frame's own: dm_control's name
+                return f"{parent.prefixed_identifier(prefix_root)}{name}/"
         return None if name is None else prefix + name
 
     def get_attribute_xml_string(self, attribute_name: str,

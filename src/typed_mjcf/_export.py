@@ -152,7 +152,7 @@ class Writer:
                 raise ExportError(f"{element.path}: {attribute.py_name} refers to "
                                   f"{target.path}, which has no name and is not written here")
         try:
-            return self.prefix(scope) + name
+            return self.prefix(scope) + name + _frame_child_suffix(target)
         except ExportError:
             raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
                               f"which is not part of this model") from None
@@ -283,6 +283,8 @@ class Writer:
             if kind == "ref" and attribute.namespace == grammar_facts().class_namespace and (
                     text == grammar_facts().main_class):
                 return self.main_class(scope)
+            if kind == "id":
+                return self.prefix(scope) + text + _frame_child_suffix(element)
             return self.prefix(scope) + text
         return attribute.codec.write(value, self.fmt)
 
@@ -646,6 +648,18 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
         taken.add((id(scope), namespace, name))
         given[key] = name
     return given
+
+
+def _frame_child_suffix(element: Element) -> str:
+    """dm_control's names of an attachment frame's own children end in ``/``
+    (``arm/root_x/``): with its behaviour on, ``/`` for them, else nothing."""
+    if not dm_control_behaviour():
+        return ""
+    parent = element.parent
+    if parent is None or _tree.attached_at(parent) is None or (
+            _tree.scope_of(parent) is _tree.scope_of(element)):
+        return ""
+    return "/"
 
 
 def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:

@@ -199,13 +199,19 @@ def test_unnamed_elements_have_dm_controls_identifiers(dm: None) -> None:
     inner.add_geom(size=(0.1,))
     frame = model.worldbody.attach(other)
     slide = frame.add_joint(type="slide")
+    named = frame.add_joint(name="root_x", type="slide")
+    model.actuator.add_position(joint=named)
     assert inner.full_identifier == "other//unnamed_body_0"
     assert slide.full_identifier == frame.full_identifier == "other/"
+    assert named.full_identifier == "other/root_x/"
     compiled = mujoco.MjModel.from_xml_string(model.to_xml_string(), model.get_assets())
     for element, kind in ((body, mujoco.mjtObj.mjOBJ_BODY), (joint, mujoco.mjtObj.mjOBJ_JOINT),
-                          (inner, mujoco.mjtObj.mjOBJ_BODY), (slide, mujoco.mjtObj.mjOBJ_JOINT)):
+                          (inner, mujoco.mjtObj.mjOBJ_BODY), (slide, mujoco.mjtObj.mjOBJ_JOINT),
+                          (named, mujoco.mjtObj.mjOBJ_JOINT)):
         name = element.full_identifier
         assert name is not None and mujoco.mj_name2id(compiled, kind, name) >= 0, name
+    assert compiled.actuator_trnid[1, 0] == mujoco.mj_name2id(
+        compiled, mujoco.mjtObj.mjOBJ_JOINT, "other/root_x/")
     assert str(joint) == "<joint/>"  # its own tag makes no name up, as dm_control's str()
 
 

@@ -25,8 +25,6 @@ SPELLING = ("the XML is written without dm_control's class=\"/\" on every elemen
             "classes that apply are the same), and an attachment frame keeps its model's "
             "defaults with childclass=\"<model>/\" where dm_control writes a class on "
             "each of the model's elements (README: output)")
-FRAME_JOINT_NAMES = ("an attachment frame's named joints are scope/name, dm_control's "
-                     "scope/name/ (README: output)")
 MESSAGES = ("error messages are worded differently (the exception classes are dm_control's) "
             "(README: errors)")
 
@@ -39,10 +37,9 @@ DIFFERENCES: dict[str, str] = {
     "element_test.ElementTest.testActuatorReordering": NO_PHYSICS,
     "element_test.ElementTest.testParseModelWithNamelessAssets": NO_PHYSICS,
     "element_test.ElementTest.testAttach": MESSAGES,
-    "element_test.ElementTest.testAttachmentFrameChildReference": FRAME_JOINT_NAMES,
+    "element_test.ElementTest.testAttachmentFrameChildReference": SPELLING,
     "element_test.ElementTest.testAttachmentFrames": SPELLING,
     "element_test.ElementTest.testDefaultIdentifier": SPELLING,
-    "element_test.ElementTest.testDuplicateAttachmentFrameJointIdentifiers": FRAME_JOINT_NAMES,
     "element_test.ElementTest.testSetAndGetAttributes": MESSAGES,
     "debugging_test.DebuggingTest.test_full_debug_dump": NO_PHYSICS,
     "debugging_test.DebuggingTest.test_physics_error_message_in_debug_mode": NO_PHYSICS,
