@@ -70,12 +70,14 @@ def freeze(stack: Stack | None) -> Stack | None:
 
 def _record(element: object, names: tuple[str, ...] | None, creating: bool) -> None:
     record = _RECORDS.get(element)
-    if record is None or (names is None and creating):
-        _RECORDS[element] = record = _Record(current_stack())
-    if names is not None:
-        stack = record.init if creating else current_stack()
-        for name in names:
-            record.attributes[name] = stack
+    if names is None:  # made now
+        _RECORDS[element] = _Record(current_stack())
+        return
+    if record is None:  # made before debug mode was on: where is unknown
+        _RECORDS[element] = record = _Record([])
+    stack = record.init if creating else current_stack()
+    for name in names:
+        record.attributes[name] = stack
 
 
 def set_recording(on: bool) -> None:

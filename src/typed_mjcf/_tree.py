@@ -69,8 +69,8 @@ _Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscript
 _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
-_RESERVED_NAMES: set[str] = set()
-_UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none  # names a body may not take (the world body's)
+_RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
+_UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
@@ -583,13 +583,12 @@ class ModelBase(Element):
             self._base_dir = os.fspath(model_dir)
         if assets is not None:
             self._files.update(assets)
-        if model is None and _COMPAT[0] and not kwargs.get(
-                self.spec.scope_attribute.py_name if self.spec.scope_attribute else ""):
+        scope_attribute = self.spec.scope_attribute
+        if model is None and _COMPAT[0] and scope_attribute is not None and not kwargs.get(
+                scope_attribute.py_name):
             model = _UNNAMED_MODEL  # dm_control names every model
-        if model is not None:
-            scope_attribute = self.spec.scope_attribute
-            if scope_attribute is not None:
-                kwargs = {scope_attribute.py_name: model, **kwargs}
+        if model is not None and scope_attribute is not None:
+            kwargs = {scope_attribute.py_name: model, **kwargs}
         self._init_attributes(kwargs)
 
     def __deepcopy__(self, memo: dict[int, object]) -> Self:
@@ -1611,11 +1610,11 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
 # ---------------------------------------------------------------------------- dm_control's behaviour
 # What ``install_as_dm_control_mjcf()`` switches on (``_compat``): arrays read as writable
 # arrays, edited in place as dm_control's are, and checked again whenever the model is
-# written or validated (:func:`check_arrays`), so an invalid value never goes unnoticed.
+# written (:func:`check_arrays`), so an invalid value never goes unnoticed.
 
 # the arrays handed out for in-place edits: element -> {XML name: the stored array}
-_HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, np.ndarray[tuple[int], np.dtype[np.generic]]]] = (
-    weakref.WeakKeyDictionary())
+_Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
+_HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
 
 
 def _python_name(spec: ElementSpec, name: str) -> str | None:
