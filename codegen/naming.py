@@ -10,10 +10,12 @@ import keyword
 RESERVED = frozenset({
     "add", "all_children", "attach", "attach_model", "attached_model", "attachment_frame",
     "base_dir", "commit_defaults", "compile", "detach", "enter_model", "enter_scope", "find", "find_all",
-    "full_identifier", "get_assets", "get_attachment_frame", "get_attributes",
-    "get_children", "get_frame_freejoint", "get_frame_joints", "get_freejoint",
+    "full_identifier", "get_assets", "get_attachment_frame", "get_attribute_xml_string",
+    "get_attributes", "get_children", "get_frame_freejoint", "get_frame_joints",
+    "get_freejoint", "get_init_stack", "get_last_modified_stacks_for_all_attributes",
     "include_copy", "insert", "is_removed", "is_same_as", "iter_elements", "iter_exported",
-    "namescope", "namespaces", "parent", "parent_model", "paste", "path", "remove", "resolve",
+    "namescope", "namespaces", "parent", "parent_model", "paste", "path", "prefixed_identifier",
+    "remove", "resolve",
     "resolve_references", "root", "root_model", "set_attributes", "spec", "tag", "to_spec",
     "to_xml", "to_xml_string", "validate",
 })

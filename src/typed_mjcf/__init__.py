@@ -91,3 +91,7 @@ __all__ = [
     "get_freejoint",
 ]
 __all__ += _elements.__all__
+
+from typed_mjcf._dmcompat import install as install_as_dm_control_mjcf
+
+__all__ += ["install_as_dm_control_mjcf"]

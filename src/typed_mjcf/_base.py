@@ -15,14 +15,16 @@ from lxml import etree
 from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model, to_spec
 from typed_mjcf._codecs import Format
+from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._compose import attach, attached_children, detach, include_copy
+from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._defaults import resolve
 from typed_mjcf._files import file_stem
 from typed_mjcf._names import NameScope
 from typed_mjcf._traversal import commit_defaults
 from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
-from typed_mjcf._write import collect, element_text
+from typed_mjcf._write import attribute_text, collect, element_text
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidTypeError, InvalidValueError, did_you_mean
 
@@ -57,7 +59,14 @@ class Element(_tree.Element):
     def get_children(self, tag: str | None = None) -> list[Element]:
         """The children, in document order (only those with ``tag`` if given). An
         attachment frame's include the attached model's bodies (and the rest of its world
-        body); a top-level section of a composed model, the attached models' sections'."""
+        body); a top-level section of a composed model, the attached models' sections'.
+
+        With dm_control's behaviour on, a once-only child's tag gives that child itself
+        (``None`` if it does not exist), as dm_control's ``get_children`` does."""
+        if tag is not None and dm_control_behaviour():
+            child_spec = self.spec.children.get(tag)
+            if child_spec is not None and child_spec.single:
+                return cast("list[Element]", getattr(self, child_spec.py_name))
         own = _tree.children_with_tag(self, tag)
         return cast("list[Element]", own + [e for e in attached_children(self)
                                             if tag is None or e.spec.tag == tag])
@@ -79,18 +88,51 @@ class Element(_tree.Element):
     @property
     def full_identifier(self) -> str | None:
         """The name this element has in the outermost model it is part of (its scope's
-        prefix and its name, ``arm/elbow``); ``None`` for an unnamed element."""
+        prefix and its name, ``arm/elbow``); ``None`` for an unnamed element (with
+        dm_control's behaviour on, dm_control's name for it: ``//unnamed_geom_0``)."""
+        return self.prefixed_identifier(None)
+
+    def prefixed_identifier(self, prefix_root: NameScope | None) -> str | None:
+        """The element's name as seen from the model of scope ``prefix_root`` (the
+        outermost model when ``None``), as :attr:`full_identifier` gives it."""
         scope = _tree.scope_of(self)
-        prefix = scope.prefix()
+        prefix = scope.prefix(prefix_root)
         if isinstance(self, ModelRoot) and _tree.model_of(self) is self:
             return prefix
         attached = _tree.attached_at(self)
         if attached is not None:
-            return f"{_tree.scope_of(self).prefix()}{_tree.scope_of(attached).name}/"
+            return f"{prefix}{_tree.scope_of(attached).name}/"
         if self.spec.holds_bodies and isinstance(self.parent, ModelRoot):  # the world body
             return prefix or grammar_facts().world_body
         name = _tree.element_name(self)
+        if name is None and dm_control_behaviour():
+            parent = self.parent
+            if parent is not None and _tree.attached_at(parent) is not None and (
+                    _tree.scope_of(parent) is not scope):  # a frame's own: the frame's name
+                return parent.prefixed_identifier(prefix_root)
+            unnamed = _tree.unnamed_identifier(self)
+            return None if unnamed is None else (prefix or "/") + unnamed
+        if name is not None and dm_control_behaviour():
+            parent = self.parent
+            if parent is not None and _tree.attached_at(parent) is not None and (
+                    _tree.scope_of(parent) is not scope):  # a frame's own: dm_control's name
+                return f"{parent.prefixed_identifier(prefix_root)}{name}/"
         return None if name is None else prefix + name
+
+    def get_attribute_xml_string(self, attribute_name: str,
+                                 prefix_root: NameScope | None = None, *,
+                                 precision: int | None = None,
+                                 zero_threshold: float = 0.0) -> str | None:
+        """One attribute's value as the XML text writes it (``None`` when unset); names
+        as seen from ``prefix_root``'s model (dm_control's ``get_attribute_xml_string``)."""
+        attribute = self.spec.by_key.get(attribute_name) or self.spec.by_name.get(
+            attribute_name)
+        if attribute is None:
+            raise _tree.unknown_attribute(self, attribute_name)
+        if attribute.name not in _tree.values(self):
+            return None
+        return attribute_text(self, attribute.name, Format(precision, zero_threshold, False),
+                              prefix_root)
 
     @property
     def attached_model(self) -> ModelRoot | None:
@@ -209,6 +251,16 @@ class Element(_tree.Element):
     def __str__(self) -> str:
         """The element's own tag, e.g. ``<joint type="hinge"/>`` (``...`` for children)."""
         return self.to_xml_string(self_only=True, pretty_print=False)
+
+    # ------------------------------------------------------------------ debug mode
+
+    def get_init_stack(self) -> list[StackTraceEntry]:
+        """Where this element was made, in dm_control's debug mode (empty otherwise)."""
+        return init_stack(self)
+
+    def get_last_modified_stacks_for_all_attributes(self) -> dict[str, list[StackTraceEntry]]:
+        """Where each attribute (by XML name) was last set, in dm_control's debug mode."""
+        return attribute_stacks(self, tuple(a.name for a in self.spec.attributes))
 
     # ------------------------------------------------------------------ defaults
 

@@ -24,6 +24,7 @@ from typing import Final, cast
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
+from typed_mjcf._compat import dm_control_behaviour, dm_control_namespace
 from typed_mjcf._files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._grammar import AttributeSpec, ElementSpec, WritePlan
 from typed_mjcf._merge import combine, rule_of
@@ -155,7 +156,7 @@ class Writer:
                 raise ExportError(f"{element.path}: {attribute.py_name} refers to "
                                   f"{target.path}, which has no name and is not written here")
         try:
-            return self.prefix(scope) + name
+            return self.prefix(scope) + name + _frame_child_suffix(target)
         except ExportError:
             raise ExportError(f"{element.path}: {attribute.py_name} refers to {target.path}, "
                               f"which is not part of this model") from None
@@ -293,6 +294,8 @@ class Writer:
             if kind == "ref" and attribute.namespace == grammar_facts().class_namespace and (
                     text == grammar_facts().main_class):
                 return self.main_class(scope)
+            if kind == "id":
+                return self.prefix(scope) + text + _frame_child_suffix(element)
             return self.prefix(scope) + text
         return attribute.codec.write(value, self.fmt)
 
@@ -355,13 +358,17 @@ class Writer:
             inner = merging or (spec.compose == "attributes" and isinstance(
                 current.parent, ModelBase))
             pending: list[_Task] = []
+            attached = _tree.attached_at(current)
+            frame_class = None if attached is None else self.frame_class(current, attached)
             for child in written_children(current):
                 if self.composed and child.spec.compose == "keyframes" and isinstance(
                         current, ModelBase):
                     self.keyframe_sections.append((current, child))
                     continue
+                if frame_class is not None and id(child) not in self.hosts:
+                    node.children.append(self.chunk(child, frame_class(child)))
+                    continue
                 pending.append((child, node, inner))
-            attached = _tree.attached_at(current)
             if attached is not None:
                 pending += self.attachment(node, attached)
             for task in reversed(pending):
@@ -387,6 +394,7 @@ class Writer:
         """The element alone: its start tag, ``...`` for its children (dm_control's
         ``self_only``)."""
         stored = _tree.values(element)
+        self.given_names.pop(id(element), None)  # as dm_control's str(): no name made up
         attrs = self.attribute_text(element, stored) if stored else ""
         tag = element.spec.tag
         if _tree.children(element) or _tree.attached_at(element) is not None:
@@ -459,6 +467,31 @@ class Writer:
             self.body_numbers[id(element)] = len(self.body_numbers)
             if _tree.values(element).get(facts.mocap) is True:
                 self.mocap_owners.append(model)
+
+    def frame_class(self, frame: Element,
+                    model: ModelBase) -> Callable[[Element], dict[str, str] | None] | None:
+        """For an attachment frame whose ``childclass`` gives the attached model's bodies
+        their model's defaults: what each of the frame's own children (a joint added to the
+        frame, say) must write to keep the defaults of the model the frame is in, as in
+        dm_control: ``class`` naming the class that applies at the frame there."""
+        if not has_defaults(model):
+            return None
+        facts = grammar_facts()
+        text = self.main_class(_tree.scope_of(frame))
+        ancestor = frame.parent
+        while ancestor is not None:
+            childclass = ancestor.spec.by_name.get(facts.childclass)
+            stored = _tree.values(ancestor).get(facts.childclass)
+            if childclass is not None and stored is not None:
+                text = self.value(ancestor, childclass, stored) or text
+                break
+            ancestor = ancestor.parent
+
+        def extra(child: Element) -> dict[str, str] | None:
+            classed = facts.dclass in child.spec.by_name
+            return {facts.dclass: text} if classed and facts.dclass not in _tree.values(
+                child) else None
+        return extra
 
     def attachment(self, frame: Node, model: ModelBase) -> list[_Task]:
         """The attached model's bodies, to be written inside its frame; its other sections
@@ -601,6 +634,10 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
             frame = _tree.frame_of(_tree.scope_model(scope))
             if frame is not None and _tree.element_name(frame) is None:
                 given[id(frame)] = f"{scope.name}/"
+    if dm_control_behaviour():
+        _dm_control_names(top_scope, given)
+        return given
+    for scope in top_scope.scopes():
         for target in scope.unnamed_targets:
             assert isinstance(target, Element)
             if _tree.element_name(target) is None and not target.is_removed:
@@ -629,6 +666,43 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
         taken.add((id(scope), namespace, name))
         given[key] = name
     return given
+
+
+def _frame_child_suffix(element: Element) -> str:
+    """dm_control's names of an attachment frame's own children end in ``/``
+    (``arm/root_x/``): with its behaviour on, ``/`` for them, else nothing."""
+    if not dm_control_behaviour():
+        return ""
+    parent = element.parent
+    if parent is None or _tree.attached_at(parent) is None or (
+            _tree.scope_of(parent) is _tree.scope_of(element)):
+        return ""
+    return "/"
+
+
+def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:
+    """dm_control's names for every unnamed element of a namespace: ``unnamed_<kind>_<i>``
+    after ``/`` (``//`` in the model written), ``i`` its position among its model's elements
+    of that kind; an attachment frame's own children take the frame's name."""
+    for scope in top_scope.scopes():
+        counts: dict[str, int] = {}
+        lead = "/" if scope is top_scope else ""
+        for element in _tree.iter_composed(_tree.scope_model(scope), False):
+            namespace = element.spec.namespace
+            parent = element.parent
+            if (namespace is None or element.spec.id_attribute is None
+                    or isinstance(parent, ModelBase) or id(element) in given):
+                continue
+            if parent is not None and _tree.attached_at(parent) is not None and (
+                    _tree.scope_of(element) is not _tree.scope_of(parent)):
+                if _tree.element_name(element) is None:
+                    given[id(element)] = ""  # the attached scope's prefix: the frame's name
+                continue
+            namespace = dm_control_namespace(namespace)
+            index = counts.get(namespace, 0)
+            counts[namespace] = index + 1
+            if _tree.element_name(element) is None:
+                given[id(element)] = f"{lead}/unnamed_{namespace}_{index}"
 
 
 def _file_names_of_attached(top_scope: NameScope) -> dict[int, str]:

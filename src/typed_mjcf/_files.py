@@ -27,6 +27,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from typed_mjcf import _tree
+from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._skin import scope_bone_names
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
@@ -206,10 +207,14 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
             if value is None:
                 continue
             read: Callable[[], bytes] | None
-            if isinstance(value, Asset):
+            if dm_control_behaviour():  # dm_control's names: <stem>-<sha1 of contents>
+                name = _hashed_name(model, element, attribute, value, folders)
+                key: object = name
+                read = None
+            elif isinstance(value, Asset):
                 stem = value.name or element_stem(element)
                 name = safe_file_name(stem, value.extension)
-                key: object = (value.digest, value.extension)
+                key = (value.digest, value.extension)
                 read = functools.partial(bytes, value.contents)
             else:
                 assert isinstance(value, str)
@@ -228,6 +233,21 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     for attached in _tree.attached_models(model):  # each resolves files in its own folders
         name_files(attached, collected, f"{prefix}{_tree.scope_of(attached).name}/")
     return collected
+
+
+def _hashed_name(model: ModelBase, element: Element, attribute: AttributeSpec, value: object,
+                 folders: dict[str, str]) -> str:
+    """dm_control's flat name of a file: its stem (an in-memory asset's name, if it has
+    one), ``-`` and the SHA-1 of its contents, and its extension."""
+    if isinstance(value, Asset):
+        contents, stem, extension = value.contents, value.name or "", value.extension
+    else:
+        assert isinstance(value, str)
+        contents, path = _read(element, attribute, value, model, folders,
+                               _tree.memory_files(model))
+        stem, extension = split_name(os.path.basename(path))
+    digest = hashlib.sha1(contents, usedforsecurity=False).hexdigest()
+    return safe_file_name(f"{stem}-{digest}" if stem else digest, extension)
 
 
 def collect_files(model: ModelBase, model_file: ModelFileWriter,

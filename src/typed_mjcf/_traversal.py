@@ -47,11 +47,23 @@ def get_freejoint(element: Element) -> Element | None:
     return None
 
 
-def get_frame_freejoint(frame: Element) -> Element | None:
-    """The free joint of an attachment frame, if it has one."""
-    return get_freejoint(frame)
+def get_frame_freejoint(model: Element) -> Element | None:
+    """The free joint of an attached model's attachment frame (or of a frame), if any.
+
+    As dm_control's, this takes the attached model; a frame itself is taken too."""
+    frame = _frame(model)
+    return None if frame is None else get_freejoint(frame)
 
 
-def get_frame_joints(frame: Element) -> list[Element]:
-    """The joints of an attachment frame (what makes the attached model move)."""
+def get_frame_joints(model: Element) -> list[Element]:
+    """The joints of an attached model's attachment frame (or of a frame): what makes the
+    attached model move. As dm_control's, this takes the attached model; a frame too."""
+    frame = _frame(model)
+    if frame is None:
+        return []
     return [child for child in _tree.children(frame) if child.spec.name in grammar_facts().joints]
+
+
+def _frame(element: Element) -> Element | None:
+    """The attachment frame of a model (``None`` if it is not attached), or ``element``."""
+    return _tree.frame_of(element) if isinstance(element, ModelBase) else element

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import inspect
 import os
+import weakref
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
@@ -43,7 +44,10 @@ from typing import (
 
 import numpy as np
 
-from typed_mjcf._codecs import Rejected
+from typed_mjcf._codecs import ArrayCodec, Rejected
+from typed_mjcf._compat import STATE as _COMPAT
+from typed_mjcf._compat import dm_control_namespace
+from typed_mjcf._debuginfo import RECORDER as _RECORDER
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._sourcelines import SourceText, file_start_line
@@ -67,6 +71,7 @@ _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
+_UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
@@ -239,6 +244,9 @@ class Element(_Layout):
             # Only reached when normal lookup fails: an attribute the grammar doesn't have.
             if name.startswith("__"):
                 raise AttributeError(name)
+            alias = _python_name(self.spec, name)
+            if alias is not None:  # dm_control's spelling: getattr(visual, "global")
+                return getattr(self, alias)
             raise self._unknown_attribute(name)
 
         def __setattr__(self, name: str, value: object) -> None:
@@ -276,6 +284,8 @@ class Element(_Layout):
 
     def _assign(self, attribute: AttributeSpec, value: object) -> None:
         """Set one attribute from a Python value (``None`` or ``""`` unsets it)."""
+        if _RECORDER[0] is not None:
+            _RECORDER[0](self, (attribute.name,), False)
         if value is None or (type(value) is str and not value):
             self._unset(attribute)
             return
@@ -312,6 +322,8 @@ class Element(_Layout):
         values[attribute.name] = stored
         if type(stored) is str and attribute.is_reference:
             _wait(self, attribute, stored)
+        if _COMPAT[0] and attribute.kind == "file":
+            _name_after_file(self)
 
     def _unset(self, attribute: AttributeSpec) -> None:
         old = self._values.pop(attribute.name, None)
@@ -400,6 +412,10 @@ class Element(_Layout):
             assert isinstance(name, str)
             _claim(self, attribute, name)
             values[attribute.name] = name
+        if _RECORDER[0] is not None:
+            _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
+        if _COMPAT[0] and identifier is None:
+            _name_after_file(self)
 
     def _init_named(self, pairs: list[tuple[AttributeSpec, object]]) -> None:
         """References and the model's name, for :meth:`_init_attributes` (references after
@@ -607,14 +623,18 @@ class ModelBase(Element):
     def __init__(self, model: str | None = None, *, model_dir: str | None = None,
                  assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None:
         _init_model(self)
+        if _RECORDER[0] is not None:
+            _RECORDER[0](self, None, True)
         if model_dir is not None:
             self._base_dir = os.fspath(model_dir)
         if assets is not None:
             self._files.update(assets)
-        if model is not None:
-            scope_attribute = self.spec.scope_attribute
-            if scope_attribute is not None:
-                kwargs = {scope_attribute.py_name: model, **kwargs}
+        scope_attribute = self.spec.scope_attribute
+        if model is None and _COMPAT[0] and scope_attribute is not None and not kwargs.get(
+                scope_attribute.py_name):
+            model = _UNNAMED_MODEL  # dm_control names every model
+        if model is not None and scope_attribute is not None:
+            kwargs = {scope_attribute.py_name: model, **kwargs}
         self._init_attributes(kwargs)
 
     def __deepcopy__(self, memo: dict[int, object]) -> Self:
@@ -714,7 +734,7 @@ def new_model(cls: type[ModelBase]) -> ModelBase:
 class Attribute:
     """Reads and writes one attribute on elements of a generated class."""
 
-    __slots__ = ("codec", "lazy", "name", "reference", "spec")
+    __slots__ = ("array", "codec", "lazy", "name", "reference", "spec")
 
     def __init__(self, spec: AttributeSpec) -> None:
         self.spec = spec
@@ -722,6 +742,7 @@ class Attribute:
         self.codec = spec.codec
         self.lazy = spec.codec.lazy
         self.reference = spec.is_reference
+        self.array = isinstance(spec.codec, ArrayCodec)
 
     @overload
     def __get__(self, obj: None, owner: type[object] | None = None) -> Attribute: ...
@@ -734,6 +755,8 @@ class Attribute:
         if stored is None:
             return None
         if self.lazy:  # numbers kept as read, arrays (read-only views)
+            if self.array and _COMPAT[0]:
+                return _writable_array(obj, self.spec, stored)
             return self.codec.read(stored)
         if self.reference:
             return _read_reference(obj, self.spec, stored)
@@ -767,6 +790,8 @@ class SingleChild:
         existing = obj._single(self.child.tag)
         if existing is not None:
             return existing
+        if _COMPAT[0] and on_demand(obj.spec):
+            return None  # dm_control: a body's <inertial> is None until added
         return obj._add_child(self.child, None, {})
 
     def __set__(self, obj: Element, value: object) -> None:
@@ -795,7 +820,10 @@ class ChildList:
     def __get__(self, obj: Element | None, owner: type[object] | None = None) -> object:
         if obj is None:
             return self
-        return ElementList[Element](obj, self.child.tag)
+        tag = self.child.tag
+        if _COMPAT[0] and tag == grammar_facts().freejoint:  # dm_control: one, or None
+            return next((c for c in obj._children if c.spec.tag == tag), None)
+        return ElementList[Element](obj, tag)
 
     def __set__(self, obj: Element, value: object) -> None:
         raise IllegalChildError(
@@ -858,6 +886,18 @@ class ElementList(Sequence[E_co], Generic[E_co]):
 
     def __repr__(self) -> str:
         return repr(self._items())
+
+    def clear(self) -> None:
+        """Remove every child of this list from the model (dm_control's ``clear()``)."""
+        for child in self._items():
+            child.remove()
+
+    def remove(self, element: Element) -> None:
+        """Remove ``element``, one of this list's children, from the model."""
+        if not any(child is element for child in self._items()):
+            raise ChildError(f"{self._owner.path}: {element!r} is not one of its "
+                             f"<{self._tag}> children")
+        element.remove()
 
 
 # ---------------------------------------------------------------------------- add_<tag>
@@ -975,6 +1015,8 @@ def _create(cls: type[Element], parent: Element,
     element._singles = None
     element._attached = None
     element.__class__ = cls
+    if _RECORDER[0] is not None:
+        _RECORDER[0](element, None, True)
     return element
 
 
@@ -1246,7 +1288,8 @@ def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: N
     while stack:
         original, clone_parent, clone_scope = stack.pop()
         clone = _new_object(type(original))
-        _set_values(clone, {key: value for key, value in original._values.items()})
+        _set_values(clone, {key: value for key, value in original._values.items()}
+                    if not _COMPAT[0] else _copied_values(original._values))
         _set_children(clone, _NO_CHILDREN)
         _set_parent(clone, clone_parent)
         _set_root(clone, root)
@@ -1612,3 +1655,128 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
         for section in children(model):
             if not section.spec.holds_bodies:
                 yield from walk(list(children(section)))
+
+
+# ---------------------------------------------------------------------------- dm_control's behaviour
+# What ``install_as_dm_control_mjcf()`` switches on (``_compat``): arrays read as writable
+# arrays, edited in place as dm_control's are, and checked again whenever the model is
+# written (:func:`check_arrays`), so an invalid value never goes unnoticed.
+
+# the arrays handed out for in-place edits: element -> {XML name: the stored array}
+_Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
+_HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
+
+
+def _python_name(spec: ElementSpec, name: str) -> str | None:
+    """The Python name of a child or attribute that ``name`` spells as MJCF does, where the
+    two differ (``global`` is ``global_``)."""
+    child = spec.children.get(name)
+    if child is not None and child.py_name != name:
+        return child.py_name
+    attribute = spec.by_name.get(name)
+    if attribute is not None and attribute.py_name != name:
+        return attribute.py_name
+    return None
+
+
+def on_demand(spec: ElementSpec) -> bool:
+    """Whether ``spec``'s once-only children exist only once added, as in dm_control (whose
+    schema marks them ``on_demand``): those of the rows that hold bodies (``<inertial>``)."""
+    return spec.holds_bodies
+
+
+def _writable_array(element: Element, attribute: AttributeSpec, stored: object) -> object:
+    """The stored array itself, writable: changes made in place are the element's."""
+    owned = _HANDED_OUT.get(element)
+    if owned is not None and owned.get(attribute.name) is stored:
+        return stored
+    array = np.array(attribute.codec.read(stored))  # a copy of its own, writable
+    element._values[attribute.name] = array
+    if owned is None:
+        _HANDED_OUT[element] = owned = {}
+    owned[attribute.name] = array
+    return array
+
+
+def _copied_values(values: dict[str, object]) -> dict[str, object]:
+    """An element's values for its copy: arrays copied, since they may be edited in place."""
+    return {key: value.copy() if type(value) is np.ndarray else value
+            for key, value in values.items()}
+
+
+def check_arrays(model: ModelBase) -> None:
+    """Check again every array of ``model`` (and the models attached to it) handed out for
+    in-place edits: an edit that made it invalid raises the error assigning it would."""
+    if not _HANDED_OUT:
+        return
+    models: set[int] = set()
+    pending: list[ModelBase] = [model]
+    while pending:
+        current = pending.pop()
+        models.add(id(current))
+        pending += attached_models(current)
+    for element, arrays in list(_HANDED_OUT.items()):
+        if element._root is None or id(element._root) not in models:
+            continue
+        for name, array in arrays.items():
+            if element._values.get(name) is not array:
+                continue
+            attribute = element.spec.by_name[name]
+            try:
+                attribute.codec.accept(array)
+            except Rejected as rejected:
+                raise element._reject(attribute, array, rejected) from None
+
+
+def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
+    """The error for ``name``, none of ``element``'s attributes."""
+    return element._unknown_attribute(name)
+
+
+def unnamed_identifier(element: Element) -> str | None:
+    """dm_control's name for an unnamed element of a namespace: ``/unnamed_<namespace>_<i>``,
+    ``i`` its position among its model's elements of that namespace (attached models'
+    left out), to follow its scope's prefix (``/`` for the outermost model)."""
+    namespace = element.spec.namespace
+    root = element._root
+    if namespace is None or element.spec.id_attribute is None or root is None:
+        return None
+    index = 0
+    kind = dm_control_namespace(namespace)
+    for other in iter_composed(root, False):
+        if other is element:
+            return f"/unnamed_{kind}_{index}"
+        parent = other._parent
+        if dm_control_namespace(other.spec.namespace or "") == kind and not isinstance(parent, ModelBase) and not (
+                parent is not None and parent._attached is not None
+                and other._scope is not parent._scope):  # a frame's own are not counted
+            index += 1
+    return None
+
+
+def _name_after_file(element: Element) -> None:
+    """dm_control names an unnamed mesh (texture, ...) after its file's stem, as MuJoCo
+    does: the name is the element's, so references find it and ``mesh.name`` reads it."""
+    namespace = element.spec.namespace
+    attribute = grammar_facts().named_after_file.get(namespace or "")
+    id_attribute = element.spec.id_attribute
+    if attribute is None or id_attribute is None or id_attribute.name in element._values:
+        return
+    file = element._values.get(attribute)
+    stem = file if isinstance(file, str) else getattr(file, "name", None)
+    if not isinstance(stem, str) or not stem:
+        return
+    stem = os.path.basename(stem.replace("\\", "/"))
+    if "." in stem.lstrip("."):
+        stem = stem.rsplit(".", 1)[0]
+    if stem and element._root is not None and element._scope.lookup(
+            cast(str, id_attribute.namespace), stem) is None:
+        element._store(id_attribute, stem)
+
+
+def name_after_files(model: ModelBase) -> None:
+    """Name every unnamed element of ``model`` that MuJoCo names after its file (see
+    :func:`_name_after_file`): dm_control's parser does."""
+    for element in model.iter_elements():
+        if element.spec.namespace in grammar_facts().named_after_file:
+            _name_after_file(element)

@@ -7,6 +7,7 @@ from typing import Final
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
+from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._export import FileNamer, Writer
 from typed_mjcf._files import CollectedFiles, collect_files, is_model_file_name
 from typed_mjcf._gc import collector_paused
@@ -26,6 +27,11 @@ def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: b
     section of a composed model holds the attached models' too); with ``collected``, every
     file by its flat name and no folder attributes; names as seen from ``names_from``;
     only the element's own tag with ``self_only``."""
+    root = _tree.model_of(element)
+    if root is not None:
+        _tree.check_arrays(root)  # arrays edited in place (dm_control's behaviour)
+        if collected is None and not self_only and dm_control_behaviour():
+            collected = collect(_tree.scope_model(_tree.scope_of(root).outermost()))
     file_namer: FileNamer | None = None if collected is None else collected.name_of
     skip = NO_ATTRIBUTES if collected is None else collected.directory_attributes
     with collector_paused():  # an export makes no reference cycles, only short-lived text
@@ -64,7 +70,14 @@ def _model_text(writer: Writer, element: ModelBase, collected: CollectedFiles | 
 
 def collect(model: ModelBase) -> CollectedFiles:
     """Every file the model uses, by a flat unique name."""
+    _tree.check_arrays(model)
     return collect_files(model, rewrite_model_file)
+
+
+def attribute_text(element: Element, name: str, fmt: Format,
+                   names_from: NameScope | None = None) -> str | None:
+    """The text the XML gives ``element``'s attribute ``name`` (an XML name), if set."""
+    return Writer(element, fmt, names_from=names_from).attributes(element).get(name)
 
 
 def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT,

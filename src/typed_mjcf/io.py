@@ -12,8 +12,9 @@ from typing import IO, TYPE_CHECKING, cast
 
 from typed_mjcf._assets_io import export_with_assets as export
 from typed_mjcf._bridge import spec_to_xml
+from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
-from typed_mjcf._tree import ModelBase
+from typed_mjcf._tree import ModelBase, name_after_files
 from typed_mjcf._zip import read_zip, write_zip
 from typed_mjcf.errors import InvalidTypeError, ParseError
 
@@ -24,6 +25,8 @@ if TYPE_CHECKING:
 
 
 def _typed(model: ModelBase) -> RootElement:
+    if dm_control_behaviour():
+        name_after_files(model)  # dm_control names unnamed meshes... after their files
     return cast("RootElement", model)
 
 

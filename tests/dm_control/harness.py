@@ -9,24 +9,23 @@ dm_control import mjcf`` and ``from dm_control.mjcf import parser`` (and ``eleme
 
 from __future__ import annotations
 
-import importlib
 import importlib.util
 import sys
 import types
 import unittest
 from collections.abc import Iterator
 from contextlib import contextmanager
+from functools import cache
 from pathlib import Path
 
-import typed_mjcf
+from typed_mjcf._dmcompat import installed
 
 # dm_control.mjcf's test modules that exercise its public behaviour.
 MODULES = ("element_test", "copier_test", "export_with_assets_test",
-           "export_with_assets_as_zip_test", "traversal_utils_test", "xml_validation_test")
-# The submodules those tests import by name; each is typed_mjcf.
-SUBMODULES = ("attribute", "base", "constants", "copier", "debugging", "element",
-              "export_with_assets", "export_with_assets_as_zip", "namescope", "parser",
-              "physics", "schema", "traversal_utils")
+           "export_with_assets_as_zip_test", "traversal_utils_test", "xml_validation_test",
+           "debugging_test", "skin_test")
+# dm_control.mjcf's modules that hold test code its tests import (loaded from its folder).
+HELPERS = ("code_for_debugging_test",)
 
 
 def mjcf_folder() -> Path | None:
@@ -39,41 +38,39 @@ def mjcf_folder() -> Path | None:
 
 @contextmanager
 def redirected() -> Iterator[None]:
-    """``dm_control.mjcf`` (and its submodules) is typed_mjcf while the block runs."""
-    dm_control = importlib.import_module("dm_control")
-    package = _forwarding("dm_control.mjcf")
-    shims = {"dm_control.mjcf": package}
-    for name in SUBMODULES:
-        shims[f"dm_control.mjcf.{name}"] = submodule = _forwarding(f"dm_control.mjcf.{name}")
-        if not hasattr(typed_mjcf, name):  # mjcf.export_with_assets is the function
-            setattr(package, name, submodule)
-    saved = {name: sys.modules.get(name) for name in shims}
-    had_attribute = hasattr(dm_control, "mjcf")
-    saved_attribute = getattr(dm_control, "mjcf", None)
-    try:
-        sys.modules.update(shims)
-        setattr(dm_control, "mjcf", package)
-        yield
-    finally:
-        for name, module in saved.items():
-            if module is None:
-                sys.modules.pop(name, None)
-            else:
-                sys.modules[name] = module
-        if had_attribute:
-            setattr(dm_control, "mjcf", saved_attribute)
-        else:
-            delattr(dm_control, "mjcf")
+    """``dm_control.mjcf`` (and its submodules) is typed_mjcf while the block runs, as
+    ``typed_mjcf.install_as_dm_control_mjcf()`` makes it; dm_control's test helper modules
+    (``code_for_debugging_test``) are loaded from dm_control's folder against it."""
+    with installed():
+        helpers = {f"dm_control.mjcf.{name}": _helper(name) for name in HELPERS}
+        saved = {name: sys.modules.get(name) for name in helpers}
+        sys.modules.update(helpers)
+        package = sys.modules["dm_control.mjcf"]
+        for name in HELPERS:  # for `from dm_control.mjcf import <helper>`
+            setattr(package, name, helpers[f"dm_control.mjcf.{name}"])
+        try:
+            yield
+        finally:
+            for name in HELPERS:
+                delattr(package, name)
+            for name, module in saved.items():
+                if module is None:
+                    sys.modules.pop(name, None)
+                else:
+                    sys.modules[name] = module
 
 
-def _forwarding(name: str) -> types.ModuleType:
-    """A module named ``name`` whose every attribute is typed_mjcf's."""
-    module = types.ModuleType(name)
-
-    def forward(attribute: str) -> object:
-        return getattr(typed_mjcf, attribute)
-
-    module.__getattr__ = forward  # type: ignore[method-assign]
+@cache
+def _helper(name: str) -> types.ModuleType:
+    """One of dm_control.mjcf's test helper modules, run against typed_mjcf (once)."""
+    folder = mjcf_folder()
+    assert folder is not None
+    path = folder / f"{name}.py"
+    module = types.ModuleType(f"dm_control.mjcf.{name}")
+    module.__file__ = str(path)
+    code = compile(path.read_text(encoding="utf-8"), str(path), "exec")
+    with installed():
+        exec(code, module.__dict__)  # noqa: S102 - dm_control's own test code, as shipped
     return module
 
 
@@ -85,6 +82,7 @@ def load(module_name: str) -> types.ModuleType:
     path = folder / f"{module_name}.py"
     module = types.ModuleType(f"dm_control_mjcf_tests.{module_name}")
     module.__file__ = str(path)
+    sys.modules[module.__name__] = module  # its tests look themselves up there
     code = compile(path.read_text(encoding="utf-8"), str(path), "exec")
     with redirected():
         exec(code, module.__dict__)  # noqa: S102 - dm_control's own test code, as shipped

@@ -21,17 +21,12 @@ pytestmark = pytest.mark.skipif(harness.mjcf_folder() is None, reason="dm_contro
 INTERNALS = ("a test of dm_control's internals: its schema objects (spec.children[...]"
              ".repeated/.on_demand, spec.attributes as a dict) or private slots (_spec)")
 NO_PHYSICS = "no mjcf.Physics: compile() gives a mujoco.MjModel (README: Physics)"
-READABLE_FILES = ("file names in get_assets() are readable, a content hash is added only "
-                  "when two files would collide (README: file names)")
-SPELLING = ("the XML is written without dm_control's class=\"/\", with shortest round-trip "
-            "numbers, childclass on attachment frames and frame joints named s/name rather "
-            "than s/name/ (README: output)")
-ON_DEMAND = ("once-only children such as <inertial> are created on first access, never None "
-             "(README: once-only children)")
+SPELLING = ("the XML is written without dm_control's class=\"/\" on every element (the "
+            "classes that apply are the same), and an attachment frame keeps its model's "
+            "defaults with childclass=\"<model>/\" where dm_control writes a class on "
+            "each of the model's elements (README: output)")
 MESSAGES = ("error messages are worded differently (the exception classes are dm_control's) "
             "(README: errors)")
-EXPORT_TEXT = ("export_with_assets writes the XML with flat file names, so it differs from "
-               "to_xml_string(), which keeps the model's paths (README: file names)")
 
 DIFFERENCES: dict[str, str] = {
     "element_test.ElementTest.testAdd": INTERNALS,
@@ -41,22 +36,15 @@ DIFFERENCES: dict[str, str] = {
     "element_test.ElementTest.testProperties": INTERNALS,
     "element_test.ElementTest.testActuatorReordering": NO_PHYSICS,
     "element_test.ElementTest.testParseModelWithNamelessAssets": NO_PHYSICS,
-    "element_test.ElementTest.testAssetInheritance": READABLE_FILES,
-    "element_test.ElementTest.testAssetsCanBeCopied": READABLE_FILES,
-    "element_test.ElementTest.testGetAssetFromFile": READABLE_FILES,
-    "element_test.ElementTest.testGetAssetFromPlaceholder": READABLE_FILES,
-    "element_test.ElementTest.testGetAssetsFromDict": READABLE_FILES,
-    "element_test.ElementTest.testAttach": SPELLING,
+    "element_test.ElementTest.testAttach": MESSAGES,
     "element_test.ElementTest.testAttachmentFrameChildReference": SPELLING,
     "element_test.ElementTest.testAttachmentFrames": SPELLING,
     "element_test.ElementTest.testDefaultIdentifier": SPELLING,
-    "element_test.ElementTest.testDuplicateAttachmentFrameJointIdentifiers": SPELLING,
-    "element_test.ElementTest.testDeletion": ON_DEMAND,
     "element_test.ElementTest.testSetAndGetAttributes": MESSAGES,
-    "export_with_assets_test.ExportWithAssetsTest.test_export_model_with_assetdir": EXPORT_TEXT,
-    "export_with_assets_test.ExportWithAssetsTest.test_export_model_with_assets": EXPORT_TEXT,
-    "export_with_assets_as_zip_test.ExportWithAssetsAsZipTest.test_export_model_with_assets":
-        EXPORT_TEXT,
+    "debugging_test.DebuggingTest.test_full_debug_dump": NO_PHYSICS,
+    "debugging_test.DebuggingTest.test_physics_error_message_in_debug_mode": NO_PHYSICS,
+    "debugging_test.DebuggingTest.test_physics_error_message_outside_of_debug_mode": NO_PHYSICS,
+    "debugging_test.DebuggingTest.test_valid_physics": NO_PHYSICS,
 }
 
 

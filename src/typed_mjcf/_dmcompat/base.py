@@ -1,0 +1,7 @@
+"""``dm_control.mjcf.base``: the abstract ``Element`` is typed-mjcf's ``Element``."""
+
+from __future__ import annotations
+
+from typed_mjcf._base import Element
+
+__all__ = ["Element"]

@@ -1,0 +1,7 @@
+"""``dm_control.mjcf.export_with_assets_as_zip``."""
+
+from __future__ import annotations
+
+from typed_mjcf.io import export_with_assets_as_zip
+
+__all__ = ["export_with_assets_as_zip"]

@@ -1,0 +1,7 @@
+"""``dm_control.mjcf.namescope``."""
+
+from __future__ import annotations
+
+from typed_mjcf._names import NameScope
+
+__all__ = ["NameScope"]
