@@ -28,7 +28,7 @@ from typed_mjcf.cli._common import (
     shown,
     source_of,
 )
-from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
@@ -167,8 +167,8 @@ def compile_problem(model: RootElement, file: str) -> Report | None:
 
     try:
         xml, collected = vfs_text(model)
-    except MjcfError as problem:  # a file the model names cannot be read
-        message = str(problem)
+    except MjcfError as problem:  # a file the model names cannot (or may not) be read
+        message = problem.detail if isinstance(problem, ParseError) else str(problem)
         element = _element_at_path(model, message.split(": ", 1)[0]) or model
         return _report(element, "compile", "error", element.path,
                        message.split(": ", 1)[-1], file)
