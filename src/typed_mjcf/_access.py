@@ -93,9 +93,11 @@ class Confinement:
         if self.roots is None:
             return None
         real = _real(path)
-        if real is not None and any(_inside(real, root) for root in self.roots):
+        if real is None:
+            return f"{path!r} is not a path a file can have (a NUL character?)"
+        if any(_inside(real, root) for root in self.roots):
             return None
-        shown = path if real is None or real == path else f"{path} (really {real})"
+        shown = path if real == path else f"{path} (really {real})"
         return f"{shown} is outside {self.where}; {self.hint}"
 
 
