@@ -93,6 +93,8 @@ class Confinement:
         if self.roots is None:
             return None
         real = _real(path)
+        if not self.roots:
+            return f"not among {self.where}; {self.hint}"
         if real is None:
             return f"{path!r} is not a path a file can have (a NUL character?)"
         if any(_inside(real, root) for root in self.roots):
@@ -126,7 +128,7 @@ def confine(access: FileAccess, folder: str | None) -> Confinement:
 
 def only_given(what: str, max_bytes: int = DEFAULT_ACCESS.max_bytes) -> Confinement:
     """No file on disk: only what was given with the model (``what`` names it)."""
-    return Confinement((), what, max_bytes,
+    return Confinement((), f"the files of {what}", max_bytes,
                        "a model read from an archive reads only the archive's files")
 
 
