@@ -16,8 +16,8 @@ from __future__ import annotations
 import errno
 import os
 import stat
-from dataclasses import dataclass, field
 from collections.abc import Sequence
+from dataclasses import dataclass, field
 from typing import BinaryIO, Final, cast
 
 from typed_mjcf.errors import InvalidTypeError, InvalidValueError

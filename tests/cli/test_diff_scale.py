@@ -20,9 +20,8 @@ def test_twenty_thousand_unnamed_siblings(tmp_path: Path) -> None:
                          timeout=300, check=False)
     assert run.returncode == 1, run.stderr
     lines = [line for line in run.stdout.splitlines() if line[:2] in ("+ ", "- ", "~ ")]
-    assert lines == [
-        f"+ worldbody/site[{SITES // 2}]: <site pos=\"1 0 0\"/>  [{tmp_path / 'b.xml'}:"
-        f"{SITES // 2 + 2}]",
-        f"~ worldbody/site[{SITES}]: size (unset) -> \"0.5\"  [{tmp_path / 'a.xml'}:"
-        f"{SITES + 1}, {tmp_path / 'b.xml'}:{SITES + 2}]",
-    ]
+    added = (f"+ worldbody/site[{SITES // 2}]: <site pos=\"1 0 0\"/>  "
+             f"[{tmp_path / 'b.xml'}:{SITES // 2 + 2}]")
+    changed = (f"~ worldbody/site[{SITES}]: size (unset) -> \"0.5\"  "
+               f"[{tmp_path / 'a.xml'}:{SITES + 1}, {tmp_path / 'b.xml'}:{SITES + 2}]")
+    assert lines == [added, changed]

@@ -9,6 +9,7 @@ import os
 import zipfile
 from pathlib import Path
 
+import mujoco
 import pytest
 
 import typed_mjcf as mjcf
@@ -251,7 +252,9 @@ def test_attached_models_keep_their_own_folder(layout: Path) -> None:
     parent = mjcf.from_xml_string("<mujoco model='p'><asset><mesh file='../other/box.stl'/>"
                                   "</asset><worldbody><site name='s'/></worldbody></mujoco>",
                                   model_dir=layout / "model")
-    parent.find("site", "s").attach(child)
+    site = parent.find("site", "s")
+    assert site is not None
+    site.attach(child)
     with pytest.raises(mjcf.FileAccessError, match="other/box.stl is outside"):
         parent.get_assets()
     trusting = mjcf.RootElement(model="p")  # built in Python: reads anywhere
@@ -317,3 +320,14 @@ def test_a_zip_model_reads_only_the_archive(layout: Path, monkeypatch: pytest.Mo
         z.writestr("m/p.xml", "<mujoco><worldbody/></mujoco>")
         z.writestr("m/b.stl", box_stl())
     assert mjcf.from_zip(archive).get_assets() == {"b.stl": box_stl()}
+
+
+def test_a_model_from_a_spec_reads_what_the_spec_names(layout: Path) -> None:
+    """A spec is the caller's own object: its files are read wherever they are (here outside
+    the current folder, which would confine text without a folder)."""
+    spec = mujoco.MjSpec.from_string(
+        f"<mujoco><asset><mesh name='b' file='{layout / 'model' / 'box.stl'}'/></asset>"
+        f"<worldbody><geom type='mesh' mesh='b'/></worldbody></mujoco>")
+    (layout / "model" / "box.stl").write_bytes(box_stl())
+    model = mjcf.from_spec(spec)
+    assert model.get_assets() == {"box.stl": box_stl()}  # read from wherever the spec says

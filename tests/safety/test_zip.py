@@ -98,10 +98,10 @@ def test_entry_names_reach_nothing_outside_the_archive(tmp_path: Path,
     assets = mjcf.from_zip(path).get_assets()
     assert sorted(assets.values()) == [b"from the archive 1", b"from the archive 2"]
     assert sorted(p.name for p in tmp_path.iterdir()) == before
-    with pytest.warns(UserWarning, match="Duplicate name"):
-        with zipfile.ZipFile(tmp_path / "d.zip", "w") as z:
-            z.writestr("model.xml", "<mujoco><asset><mesh file='b.stl'/></asset></mujoco>")
-            z.writestr("b.stl", b"first")
+    with zipfile.ZipFile(tmp_path / "d.zip", "w") as z:
+        z.writestr("model.xml", "<mujoco><asset><mesh file='b.stl'/></asset></mujoco>")
+        z.writestr("b.stl", b"first")
+        with pytest.warns(UserWarning, match="Duplicate name"):
             z.writestr("b.stl", b"second")
     assert mjcf.from_zip(tmp_path / "d.zip").get_assets() == {"b.stl": b"second"}
 
@@ -160,13 +160,13 @@ def test_zip_bombs_take_bounded_memory(tmp_path: Path, case: str) -> None:
         path = _bomb(tmp_path / "b.zip", MODEL.encode(), {"m/unused.bin": gib})
     else:
         path = tmp_path / "b.zip"
-        with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED, compresslevel=1) as z:
-            with z.open("m/model.xml", "w", force_zip64=True) as entry:
-                entry.write(b"<mujoco>")
-                chunk = b" " * (1 << 24)
-                for _ in range(gib // len(chunk)):
-                    entry.write(chunk)
-                entry.write(b"</mujoco>")
+        with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED, compresslevel=1) as z, \
+                z.open("m/model.xml", "w", force_zip64=True) as entry:
+            entry.write(b"<mujoco>")
+            chunk = b" " * (1 << 24)
+            for _ in range(gib // len(chunk)):
+                entry.write(chunk)
+            entry.write(b"</mujoco>")
     assert path.stat().st_size < 8 << 20  # small on disk (a few MB for 1 GiB)
     run = subprocess.run([sys.executable, "-c", _BOMB, str(path)], capture_output=True,
                          text=True, check=True, timeout=600)
