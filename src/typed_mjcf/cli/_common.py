@@ -12,7 +12,7 @@ from typed_mjcf import _tree
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._tree import Element
 from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
-from typed_mjcf.io import from_path
+from typed_mjcf.io import FileAccess, from_path
 
 OK: Final = 0
 FOUND: Final = 1  # findings, differences, files that would change
@@ -52,7 +52,8 @@ def parse_error_text(error: ParseError) -> str:
     return one_line(str(error))
 
 
-def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None) -> RootElement:
+def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None,
+         files: FileAccess | None = None) -> RootElement:
     """Parse an MJCF file; raise :class:`BadInput` with a one-line message if it cannot be.
 
     Attributes MuJoCo ignores (and the model drops) go to ``ignored`` when it is given, else
@@ -61,7 +62,7 @@ def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None) -> Roo
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", IgnoredAttributeWarning)
-            model = from_path(path)
+            model = from_path(path, files=files)
     except ParseError as error:
         raise BadInput(parse_error_text(error)) from None
     except MjcfError as error:  # pragma: no cover - from_path raises only ParseError
