@@ -36,12 +36,13 @@ class ArchiveFiles(dict[str, bytes]):
     """An archive's files by their path relative to the model's, inflated when first read.
 
     Only entries read are held (the dict's own items); the archive itself is held compressed.
-    Iterating gives the entries read so far.
+    Read entries through :meth:`get` (as the readers do); iterating gives those read so far.
     """
 
     def __init__(self, data: bytes, source: str, folder: str, skip: str, budget: int) -> None:
         super().__init__()
         self._data, self._source, self._budget = data, source, budget
+        self._used = 0  # bytes inflated so far
         self._entries: dict[str, zipfile.ZipInfo] = {}
         with _open(data, source) as archive:
             for info in archive.infolist():  # a later duplicate of a name wins, as in zipfile
@@ -63,10 +64,10 @@ class ArchiveFiles(dict[str, bytes]):
         info = self._entries.get(key)
         if info is None:
             return default
-        used = sum(len(v) for v in self.values())
         with _open(self._data, self._source) as archive:
-            data = _inflate(archive, info, self._source, self._budget - used,
+            data = _inflate(archive, info, self._source, self._budget - self._used,
                             "FileAccess.max_bytes", "files=typed_mjcf.FileAccess(max_bytes=...)")
+        self._used += len(data)
         self[key] = data
         return data
 
@@ -74,7 +75,7 @@ class ArchiveFiles(dict[str, bytes]):
         clone = ArchiveFiles.__new__(ArchiveFiles)
         clone.update(self)
         clone._data, clone._source, clone._budget = self._data, self._source, self._budget
-        clone._entries = self._entries
+        clone._used, clone._entries = self._used, self._entries
         return clone
 
 
