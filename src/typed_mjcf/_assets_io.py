@@ -256,7 +256,7 @@ def _put_in_place(temporary: str, path: str, contents: bytes, replace: bool) -> 
                 raise FileExistsError(path) from None
     backup: str | None = None
     if os.path.lexists(path):
-        backup = temporary + ".old"
+        backup = temporary.removesuffix(".tmp") + "-old.tmp"  # stale-looking if left
         try:
             os.link(path, backup, follow_symlinks=False)  # the old file, to put back on failure
         except OSError:
