@@ -225,7 +225,11 @@ def _read(element: Element, attribute: AttributeSpec, value: str, model: ModelBa
     and its path."""
     path = resolve_path(model, attribute, value, folders)
     base = _tree.base_dir(model) or os.getcwd()
-    for key in (value, os.path.relpath(path, base), os.path.basename(value)):
+    try:
+        relative = os.path.relpath(path, base)
+    except ValueError:  # another drive (Windows)
+        relative = value
+    for key in (value, relative, os.path.basename(value)):
         given = memory.get(key)  # (an archive's files are not all in the dict: always ask)
         if given is not None:
             return given, path
