@@ -31,6 +31,7 @@ from typed_mjcf.errors import (
     CompileError,
     DuplicateIdentifierError,
     ExportError,
+    FileAccessError,
     FileReadError,
     IgnoredAttributeWarning,
     IllegalChildError,
@@ -42,6 +43,7 @@ from typed_mjcf.errors import (
     UnknownAttributeError,
 )
 from typed_mjcf.io import (
+    FileAccess,
     ParseLimits,
     export_with_assets,
     export_with_assets_as_zip,
@@ -63,6 +65,8 @@ __all__ = [
     "Element",
     "ElementList",
     "ExportError",
+    "FileAccess",
+    "FileAccessError",
     "FileReadError",
     "Finding",
     "IgnoredAttributeWarning",

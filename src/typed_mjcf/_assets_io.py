@@ -8,8 +8,10 @@ replace a different file of the same name unless asked to. File names are flat a
 from __future__ import annotations
 
 import os
+import re
 import stat
 import tempfile
+import time
 
 from typed_mjcf import _tree
 from typed_mjcf._files import is_plain_file_name, safe_file_name, split_name, unique_name
@@ -67,26 +69,104 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
     for file_name, _ in outputs:
         if not is_plain_file_name(file_name):  # pragma: no cover - names are made safe
             raise ExportError(f"refusing to write {file_name!r}: not a plain file name")
+    write_files(directory, outputs, overwrite, "export_with_assets")
+    return os.path.join(directory, name)
+
+
+def write_files(directory: str, outputs: list[tuple[str, bytes]], overwrite: bool,
+                what: str) -> None:
+    """Write ``outputs`` (plain file names, the last one the file that uses the others) into
+    ``directory`` as one change: every file goes to a temporary file first, then each is
+    renamed into place; if anything fails (or is interrupted) the files already renamed are
+    put back as they were and no temporary file is left. Files already there with the same
+    contents are left untouched; different ones (or links, or anything not a regular file)
+    are refused unless ``overwrite``, and then replaced, never written through."""
     try:
         os.makedirs(directory, exist_ok=True)
     except OSError as error:
         raise ExportError(f"cannot create the folder {directory}: "
                           f"{error.strerror or error}") from error
-    pending = _changed_files(directory, outputs, overwrite)
-    for file_name, contents in pending:
-        path = os.path.join(directory, file_name)
-        try:
-            _write_atomically(path, contents, replace=overwrite)
-        except FileExistsError:
+    remove_stale_temporaries(directory)
+    pending = _changed_files(directory, outputs, overwrite, what)
+    temporaries: list[str] = []
+    done: list[tuple[str, str | None, bool]] = []  # (path, its old file kept as, existed)
+    path = directory
+    try:
+        for file_name, contents in pending:
+            path = os.path.join(directory, file_name)
+            temporaries.append(_write_temporary(directory, contents))
+        for (file_name, contents), temporary in zip(pending, temporaries, strict=True):
+            path = os.path.join(directory, file_name)
+            existed = os.path.lexists(path)
+            done.append((path, _put_in_place(temporary, path, contents, overwrite), existed))
+    except BaseException as error:
+        _roll_back(done)
+        if isinstance(error, FileExistsError):
             raise ExportError(f"{path} appeared while exporting and has other contents; "
                               f"pass overwrite=True to replace it") from None
-        except OSError as error:
+        if isinstance(error, OSError):
             raise ExportError(f"cannot write {path}: {error.strerror or error}") from error
-    return os.path.join(directory, name)
+        raise
+    finally:
+        for leftover in temporaries:
+            _remove(leftover)
+    for _, backup, _ in done:
+        if backup is not None:
+            _remove(backup)
 
 
-def _changed_files(directory: str, outputs: list[tuple[str, bytes]],
-                   overwrite: bool) -> list[tuple[str, bytes]]:
+_TEMPORARY = re.compile(r"\.typed-mjcf-(?:(\d+)-)?[^/\\]*\.tmp\Z")
+_STALE_AFTER = 24 * 3600  # seconds; a temporary file of a process still running is this old
+
+
+def remove_stale_temporaries(directory: str) -> None:
+    """Remove the temporary files an export killed midway left in ``directory``: those of a
+    process that is no longer running (their name holds its id), or older than a day."""
+    try:
+        names = os.listdir(directory)
+    except OSError:
+        return
+    now = time.time()
+    for name in names:
+        match = _TEMPORARY.match(name)
+        if match is None:
+            continue
+        path = os.path.join(directory, name)
+        try:
+            info = os.lstat(path)
+        except OSError:
+            continue
+        if not stat.S_ISREG(info.st_mode):
+            continue
+        pid = match.group(1)
+        if now - info.st_mtime > _STALE_AFTER or (pid is not None and not _running(int(pid))):
+            _remove(path)
+
+
+def _running(pid: int) -> bool:
+    """Whether process ``pid`` runs (on Windows, where signal 0 would end it: assume so)."""
+    if pid == os.getpid():
+        return True
+    if os.name == "nt":  # pragma: no cover
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, OSError):
+        return True  # another user's process
+    return True
+
+
+def _remove(path: str) -> None:
+    try:
+        os.unlink(path)
+    except OSError:
+        pass
+
+
+def _changed_files(directory: str, outputs: list[tuple[str, bytes]], overwrite: bool,
+                   what: str) -> list[tuple[str, bytes]]:
     """The outputs whose file is missing or differs; refuses replacing files that differ
     (unless ``overwrite``) and anything that is not a regular file."""
     pending: list[tuple[str, bytes]] = []
@@ -111,7 +191,7 @@ def _changed_files(directory: str, outputs: list[tuple[str, bytes]],
         pending.append((file_name, contents))
     if conflicts:
         raise ExportError(
-            f"export_with_assets would replace {len(conflicts)} file(s) in {directory} that "
+            f"{what} would replace {len(conflicts)} file(s) in {directory} that "
             f"differ from what the model needs: {', '.join(conflicts)}; nothing was written. "
             f"Pass overwrite=True to replace them, or export into another folder")
     return pending
@@ -139,32 +219,64 @@ def _file_mode() -> int:
     return 0o644
 
 
-def _write_atomically(path: str, contents: bytes, *, replace: bool = True) -> None:
-    """Write ``path`` through a temporary file in its folder, renamed into place.
-
-    With ``replace=False`` the rename does not replace a file that appeared meanwhile
-    (``FileExistsError``) unless it has the same contents.
-    """
-    folder = os.path.dirname(path)
-    fd, temporary = tempfile.mkstemp(dir=folder, prefix=".typed-mjcf-", suffix=".tmp")
+def _write_temporary(directory: str, contents: bytes) -> str:
+    """``contents`` in a new temporary file in ``directory`` (named after this process, so a
+    later export can tell it is stale), with a new file's usual permissions."""
+    fd, temporary = tempfile.mkstemp(dir=directory, prefix=f".typed-mjcf-{os.getpid()}-",
+                                     suffix=".tmp")
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(contents)
             f.flush()
             os.fsync(f.fileno())
         os.chmod(temporary, _file_mode())  # mkstemp makes it private (0o600)
-        if replace:
-            os.replace(temporary, path)
-            return
+    except BaseException:
+        _remove(temporary)
+        raise
+    return temporary
+
+
+def _put_in_place(temporary: str, path: str, contents: bytes, replace: bool) -> str | None:
+    """Rename ``temporary`` to ``path``; return where the file it replaced is kept until the
+    whole export is done (``None``: there was none, or it could not be kept).
+
+    With ``replace=False`` a file that appeared meanwhile is not replaced
+    (``FileExistsError``) unless it has the same contents.
+    """
+    if not replace:
         try:
             os.link(temporary, path)  # fails if the name is taken: no silent replacement
+            return None
         except FileExistsError:
             if not _same_contents(path, contents):
                 raise
+            return None
         except OSError:  # no hard links on this file system
             if os.path.lexists(path) and not _same_contents(path, contents):
                 raise FileExistsError(path) from None
-            os.replace(temporary, path)
-    finally:
-        if os.path.lexists(temporary):
-            os.unlink(temporary)
+    backup: str | None = None
+    if os.path.lexists(path):
+        backup = temporary.removesuffix(".tmp") + "-old.tmp"  # stale-looking if left
+        try:
+            os.link(path, backup, follow_symlinks=False)  # the old file, to put back on failure
+        except OSError:
+            backup = None
+    try:
+        os.replace(temporary, path)
+    except BaseException:
+        if backup is not None:
+            _remove(backup)
+        raise
+    return backup
+
+
+def _roll_back(done: list[tuple[str, str | None, bool]]) -> None:
+    """Undo the renames of an export that failed: old files back, new ones removed."""
+    for path, backup, existed in reversed(done):
+        try:
+            if backup is not None:
+                os.replace(backup, path)
+            elif not existed:
+                os.unlink(path)
+        except OSError:
+            pass

@@ -17,22 +17,21 @@ own files under their flat names: :func:`collect_files` takes the function that 
 
 from __future__ import annotations
 
-import errno
 import functools
 import hashlib
 import os
 import re
-import stat
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from typed_mjcf import _tree
 from typed_mjcf._compat import dm_control_behaviour
+from typed_mjcf._access import Refused, read_file
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._skin import scope_bone_names
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import InvalidValueError, MjcfError
+from typed_mjcf.errors import FileAccessError, InvalidValueError, MjcfError
 
 
 @dataclass
@@ -69,15 +68,17 @@ class CollectedFiles:
         mine = self.digest(key, read)
         return mine is not None and mine == self.digest(self.keys.get(name), first)
 
+    bytes_read: int = 0  # from disk, against the model's FileAccess.max_bytes
+
     def name_of(self, element: Element, attribute: AttributeSpec) -> str:
         """The flat name of the file ``element``'s ``attribute`` holds."""
         return self.names[(id(element), attribute.name)]
 
 
-# An MJCF file the model uses, rewritten to find its files among those collected: (path,
-# contents, files collected so far, the MJCF files being read) -> contents (as they were
-# when the file is not MJCF).
-ModelFileWriter = Callable[[str, bytes, CollectedFiles, tuple[str, ...]], bytes]
+# An MJCF file the model uses, rewritten to find its files among those collected: (the model
+# that uses it, path, contents, files collected so far, the MJCF files being read) ->
+# contents (as they were when the file is not MJCF).
+ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]], bytes]
 
 
 def compiler_folders(model: ModelBase) -> dict[str, str]:
@@ -222,7 +223,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
                 name, key = safe_file_name(*split_name(os.path.basename(path))), path
                 # an MJCF file is rewritten for its own folder: its contents are not shared
                 read = None if is_model_file_name(path) else functools.partial(
-                    _contents, element, attribute, value, model, folders)
+                    _contents, element, attribute, value, model, folders, collected)
             scoped = prefix if prefix and is_skin_file(element, attribute) else ""
             if scoped:  # its bones are renamed for its scope: its contents are its own
                 key, read = (key, scoped), None
@@ -267,13 +268,13 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
         assert isinstance(value, str)
         folders = compiler_folders(owner)
         contents, path = _read(element, attribute, value, owner, folders,
-                               _tree.memory_files(owner))
+                               _tree.memory_files(owner), collected)
         if is_model_file_name(name):
             if path in models:
                 raise InvalidValueError(
                     f"{element.path}: {attribute.py_name}: {path} uses itself "
                     f"(through {' -> '.join(models)})")
-            contents = model_file(path, contents, collected, (*models, path))
+            contents = model_file(owner, path, contents, collected, (*models, path))
         if scoped:
             contents = scope_bone_names(contents, scoped, element.path)
         collected.files[name] = contents
@@ -281,30 +282,40 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
 
 
 def _contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
-              folders: dict[str, str]) -> bytes:
+              folders: dict[str, str], collected: CollectedFiles) -> bytes:
     """A file's contents, read as :func:`collect_files` reads it."""
-    return _read(element, attribute, value, model, folders, _tree.memory_files(model))[0]
+    return _read(element, attribute, value, model, folders, _tree.memory_files(model),
+                 collected)[0]
 
 
 def _read(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
-          folders: dict[str, str], memory: dict[str, bytes]) -> tuple[bytes, str]:
-    """A file's contents (given in memory, else read from disk) and its path."""
+          folders: dict[str, str], memory: dict[str, bytes],
+          collected: CollectedFiles) -> tuple[bytes, str]:
+    """A file's contents (given in memory, else read from disk where the model may read)
+    and its path."""
     path = resolve_path(model, attribute, value, folders)
-    if memory:
-        base = _tree.base_dir(model) or os.getcwd()
-        for key in (value, os.path.relpath(path, base), os.path.basename(value)):
-            given = memory.get(key)
-            if given is not None:
-                return given, path
+    base = _tree.base_dir(model) or os.getcwd()
     try:
-        if not stat.S_ISREG(os.stat(path).st_mode):  # a FIFO or /dev/zero: no end
-            raise OSError(errno.EINVAL, "not a regular file")
-        with open(path, "rb") as f:
-            return f.read(), path
+        relative = os.path.relpath(path, base)
+    except ValueError:  # another drive (Windows)
+        relative = value
+    for key in (value, relative, os.path.basename(value)):
+        given = memory.get(key)  # (an archive's files are not all in the dict: always ask)
+        if given is not None:
+            return given, path
+    access = _tree.file_access(model)
+    try:
+        contents = read_file(path, access, access.max_bytes - collected.bytes_read)
+    except Refused as refused:
+        source, line = _tree.source_of(element) or (None, None)
+        raise FileAccessError(f"{element.path}: {attribute.py_name}={value!r}: {refused}",
+                              source, line) from None
     except OSError as error:
         raise InvalidValueError(
             f"{element.path}: {attribute.py_name}={value!r}: cannot read {path}: "
-            f"{error.strerror}") from None
+            f"{error.strerror or error}") from None
+    collected.bytes_read += len(contents)
+    return contents, path
 
 
 def file_stem(file: str) -> str:

@@ -34,6 +34,14 @@ import numpy as np
 from lxml import etree
 
 from typed_mjcf import _tree
+from typed_mjcf._access import (
+    ANYWHERE,
+    DEFAULT_ACCESS,
+    Confinement,
+    FileAccess,
+    confine,
+    open_regular,
+)
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._grammar import AttributeSpec
@@ -41,6 +49,7 @@ from typed_mjcf._sourcelines import SourceText
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
     DuplicateIdentifierError,
+    FileAccessError,
     FileReadError,
     IgnoredAttributeWarning,
     InvalidTypeError,
@@ -183,6 +192,7 @@ class _Context:
     included: dict[str, _Include] = field(default_factory=lambda: {})  # every file, how first read
     nesting: list[_Include] = field(default_factory=lambda: [])  # includes around the current one
     options: ParseOptions = field(default_factory=lambda: DEFAULT_OPTIONS)
+    confinement: Confinement = ANYWHERE  # where included files may be read
     texts: dict[str | None, SourceText] = field(default_factory=lambda: {})  # each source read
     long_tags: bool = False  # a text read may hold a start tag with many attributes
     ignored: int = 0  # attributes dropped with an IgnoredAttributeWarning
@@ -371,16 +381,15 @@ def read_bounded(read: Callable[[int], bytes], limit: int, expected: int = 0) ->
 
 
 def _read_file(path: str, context: _Context, what: str, where: str | None,
-               line: int | None) -> bytes:
-    """A file's bytes, refusing what is not a regular file and what passes ``max_bytes``."""
+               line: int | None, confinement: Confinement = ANYWHERE) -> bytes:
+    """A file's bytes, refusing what ``confinement`` does not allow, what is not a regular
+    file and what passes ``max_bytes``."""
+    reason = confinement.refusal(path)
+    if reason is not None:
+        raise context.error(f"cannot read {what}: {reason}", where, line, FileAccessError)
     try:
-        mode = os.stat(path).st_mode
-        if not stat.S_ISREG(mode):
-            kind = "a folder" if stat.S_ISDIR(mode) else "not a regular file"
-            raise context.error(f"cannot read {what}: it is {kind}", where, line,
-                                FileReadError)
         remaining = max(context.limits.max_bytes - context.bytes_read, 0)
-        with open(path, "rb") as f:
+        with open_regular(path) as f:
             return read_bounded(f.read, remaining, os.fstat(f.fileno()).st_size)
     except OSError as error:
         reason = error.strerror or str(error)
@@ -411,10 +420,12 @@ def is_model_text(data: bytes) -> bool:
 
 
 def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
-               limits: ParseLimits | None = None,
-               options: ParseOptions = DEFAULT_OPTIONS) -> ModelBase:
-    """Parse MJCF text into a model."""
-    context = _Context(base_dir, limits or DEFAULT_LIMITS, options=options)
+               limits: ParseLimits | None = None, options: ParseOptions = DEFAULT_OPTIONS,
+               access: FileAccess | Confinement = DEFAULT_ACCESS) -> ModelBase:
+    """Parse MJCF text into a model that reads files where ``access`` allows (by default in
+    ``base_dir``, else the current folder)."""
+    context = _Context(base_dir, limits or DEFAULT_LIMITS, options=options,
+                       confinement=_confinement(access, base_dir))
     return _guarded(lambda: _parse_text(data, source, context), source)
 
 
@@ -431,12 +442,19 @@ def _parse_text(data: object, source: str | None, context: _Context) -> ModelBas
 
 
 def parse_path(path: str, *, limits: ParseLimits | None = None,
-               options: ParseOptions = DEFAULT_OPTIONS) -> ModelBase:
-    """Parse an MJCF file; its folder is the base of relative paths."""
+               options: ParseOptions = DEFAULT_OPTIONS,
+               access: FileAccess | Confinement = DEFAULT_ACCESS) -> ModelBase:
+    """Parse an MJCF file; its folder is the base of relative paths and, by default, the
+    only folder the model reads files from (see ``access``)."""
     path = os.path.abspath(path)
-    context = _Context(os.path.dirname(path), limits or DEFAULT_LIMITS, main=path,
-                       options=options)
+    folder = os.path.dirname(path)
+    context = _Context(folder, limits or DEFAULT_LIMITS, main=path, options=options,
+                       confinement=_confinement(access, folder))
     return _guarded(lambda: _parse_path(path, context), path)
+
+
+def _confinement(access: FileAccess | Confinement, folder: str | None) -> Confinement:
+    return access if isinstance(access, Confinement) else confine(access, folder)
 
 
 def _parse_path(path: str, context: _Context) -> ModelBase:
@@ -473,6 +491,7 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
                             source, context.line(node, source))
     model = _tree.new_model(cls)
     _tree.set_base_dir(model, context.base_dir)
+    _tree.set_file_access(model, context.confinement)
     _tree.memory_files(model).update(context.options.assets)
     sources = _tree.SourceMap(source)
     sources.add(model, source, node.sourceline)
@@ -825,7 +844,8 @@ class _Builder:
                                 f"a file at most once per model", source, line)
         given = context.options.asset(file)
         data = given if given is not None else _read_file(
-            path, context, f"included file {file!r} ({context.shown(path)})", source, line)
+            path, context, f"included file {file!r} ({context.shown(path)})", source, line,
+            context.confinement)
         level = _Include(path, source, line)
         context.included[path] = level
         self.sources.includes[path] = (source, parent)

@@ -23,6 +23,7 @@ module (the internal API), not the elements' private slots.
 
 from __future__ import annotations
 
+import copy
 import inspect
 import os
 import weakref
@@ -44,6 +45,7 @@ from typing import (
 
 import numpy as np
 
+from typed_mjcf._access import ANYWHERE, Confinement
 from typed_mjcf._codecs import ArrayCodec, Rejected
 from typed_mjcf._compat import STATE as _COMPAT
 from typed_mjcf._compat import dm_control_namespace
@@ -613,8 +615,9 @@ class ModelBase(Element):
     is attached, the file contents it was given in memory, and where a parsed model's
     elements were read."""
 
-    __slots__ = ("_base_dir", "_files", "_frame", "_sources")
+    __slots__ = ("_access", "_base_dir", "_files", "_frame", "_sources")
 
+    _access: Confinement  # the files it may read (a model built in Python: any)
     _base_dir: str | None
     _frame: Element | None  # the attachment frame, in the model this one is attached to
     _files: dict[str, bytes]  # file contents given with the model (by path as written)
@@ -656,6 +659,7 @@ def _init_model(model: ModelBase) -> None:
     model._singles = None
     model._attached = None
     model._base_dir = None
+    model._access = ANYWHERE
     model._frame = None
     model._files = {}
     model._sources = None
@@ -1324,7 +1328,8 @@ def _copy_model(model: ModelBase, memo: dict[int, object]) -> ModelBase:
     clone = _clone_tree(model, None, None, scope, memo)
     scope.model = clone
     clone._base_dir = model._base_dir
-    clone._files = dict(model._files)
+    clone._access = model._access
+    clone._files = copy.copy(model._files)  # files read on demand stay so
     clone._frame = None
     clone._sources = None  # a copy was not read from anywhere
     stack: list[Element] = [clone]
@@ -1509,9 +1514,23 @@ def set_base_dir(model: ModelBase, folder: str | None) -> None:
     model._base_dir = folder
 
 
+def file_access(model: ModelBase) -> Confinement:
+    """The files ``model`` may read (see :mod:`typed_mjcf._access`)."""
+    return model._access
+
+
+def set_file_access(model: ModelBase, access: Confinement) -> None:
+    model._access = access
+
+
 def memory_files(model: ModelBase) -> dict[str, bytes]:
     """File contents the model was given in memory, by the path its attributes write."""
     return model._files
+
+
+def set_memory_files(model: ModelBase, files: dict[str, bytes]) -> None:
+    """Give ``model`` its in-memory files (a dict that may read entries on demand)."""
+    model._files = files
 
 
 def source_map(model: ModelBase) -> SourceMap | None:

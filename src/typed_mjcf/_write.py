@@ -3,6 +3,7 @@ files renamed when the text is for a virtual file system or a folder of its own.
 
 from __future__ import annotations
 
+import os
 from typing import Final
 
 from typed_mjcf import _tree
@@ -13,7 +14,7 @@ from typed_mjcf._files import CollectedFiles, collect_files, is_model_file_name
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._keyframes import combine_keyframes, compile_layout, has_keyframes
 from typed_mjcf._names import NameScope
-from typed_mjcf._parse import is_model_text, parse_path
+from typed_mjcf._parse import ParseOptions, is_model_text, parse_text
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf._xmltext import serialize
 
@@ -88,16 +89,22 @@ def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT,
     return element_text(model, fmt, pretty_print, collected), collected
 
 
-def rewrite_model_file(path: str, contents: bytes, collected: CollectedFiles,
+def rewrite_model_file(owner: ModelBase, path: str, contents: bytes, collected: CollectedFiles,
                        models: tuple[str, ...]) -> bytes:
     """An MJCF file the model uses (an ``<asset><model>``), rewritten to find its own files
     among ``collected``: MuJoCo resolves them against its own folder and ``<compiler>``, and
-    in a virtual file system they get flat names like the main model's."""
+    in a virtual file system they get flat names like the main model's. It reads files as
+    ``owner`` may (the same folders, the same files in memory)."""
     if not is_model_file_name(path) or not is_model_text(contents):
         return contents
-    submodel = parse_path(path)
+    memory = _tree.memory_files(owner)
+    submodel = parse_text(contents, base_dir=os.path.dirname(path), source=path,
+                          options=ParseOptions(memory), access=_tree.file_access(owner))
+    _tree.set_memory_files(submodel, memory)
     sub_collected = CollectedFiles(files=collected.files, folded=collected.folded,
                                    keys=collected.keys, readers=collected.readers,
-                                   digests=collected.digests)
+                                   digests=collected.digests,
+                                   bytes_read=collected.bytes_read)
     collect_files(submodel, rewrite_model_file, sub_collected, models)
+    collected.bytes_read = sub_collected.bytes_read
     return element_text(submodel, DEFAULT_FORMAT, True, sub_collected).encode("utf-8")

@@ -62,6 +62,11 @@ class FileReadError(ParseError, OSError):
     ``OSError``, as dm_control's ``IOError``)."""
 
 
+class FileAccessError(FileReadError, PermissionError):
+    """A file the model names lies outside the folders it may read (by default its own
+    folder; see :class:`~typed_mjcf.FileAccess`), or its files hold more bytes than allowed."""
+
+
 class CompileError(MjcfError, ValueError):
     """MuJoCo refused to compile the model; ``path`` is the element its message is about,
     where one is known."""

@@ -1,7 +1,8 @@
 """Reading and writing models: MJCF text and files, MuJoCo specs, files with their assets.
 
 Reading is safe for models from anywhere: see :class:`ParseLimits` for what it refuses and
-how to raise its bounds. Every failure is a :class:`~typed_mjcf.ParseError`.
+how to raise its bounds, and :class:`FileAccess` for the files a model may read (by default
+only those in its own folder). Every failure is a :class:`~typed_mjcf.ParseError`.
 """
 
 from __future__ import annotations
@@ -10,12 +11,13 @@ import os
 from collections.abc import Mapping
 from typing import IO, TYPE_CHECKING, cast
 
+from typed_mjcf._access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
 from typed_mjcf._assets_io import export_with_assets as export
 from typed_mjcf._bridge import spec_to_xml
 from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 from typed_mjcf._tree import ModelBase, name_after_files
-from typed_mjcf._zip import read_zip, write_zip
+from typed_mjcf._zip import read_zip, use_archive_files, write_zip
 from typed_mjcf.errors import InvalidTypeError, ParseError
 
 if TYPE_CHECKING:
@@ -61,7 +63,8 @@ def from_xml_string(xml_string: str | bytes, escape_separators: bool = False,
                     resolve_references: bool = True,
                     assets: Mapping[str, bytes] | None = None, *,
                     base_dir: str | os.PathLike[str] | None = None, source: str | None = None,
-                    limits: ParseLimits | None = None) -> RootElement:
+                    limits: ParseLimits | None = None,
+                    files: FileAccess | None = None) -> RootElement:
     """Parse MJCF text.
 
     ``model_dir`` (or ``base_dir``) is where relative files and includes are found (the
@@ -70,24 +73,30 @@ def from_xml_string(xml_string: str | bytes, escape_separators: bool = False,
     names as dm_control does (by default names keep their ``/``); ``resolve_references=False``
     keeps references as names until ``model.resolve_references()``. ``source`` names the text
     in error messages; ``limits`` raises (or lowers) the bounds on size, depth and element
-    count (see :class:`ParseLimits`).
+    count (see :class:`ParseLimits`); ``files`` says which files the model may read, its
+    includes and the files ``get_assets()``, ``compile()`` and the exports read (by default
+    only inside ``model_dir``, else the current folder; see :class:`FileAccess`).
     """
     folder = _folder(base_dir if base_dir is not None else model_dir, "model_dir")
     return _typed(parse_text(xml_string, base_dir=folder, source=source,
                              limits=_limits(limits),
-                             options=_options(assets, escape_separators, resolve_references)))
+                             options=_options(assets, escape_separators, resolve_references),
+                             access=_access(files)))
 
 
 def from_path(path: str | os.PathLike[str], escape_separators: bool = False,
               resolve_references: bool = True, assets: Mapping[str, bytes] | None = None, *,
-              limits: ParseLimits | None = None) -> RootElement:
-    """Parse an MJCF file; relative files and includes resolve against its folder (see
-    :func:`from_xml_string` for the other arguments)."""
+              limits: ParseLimits | None = None,
+              files: FileAccess | None = None) -> RootElement:
+    """Parse an MJCF file; relative files and includes resolve against its folder, and by
+    default the model reads files only inside it (see :func:`from_xml_string` for the other
+    arguments)."""
     file = _folder(path, "path")
     if file is None:
         raise InvalidTypeError("path must be a path (str or os.PathLike), got None")
     return _typed(parse_path(file, limits=_limits(limits),
-                             options=_options(assets, escape_separators, resolve_references)))
+                             options=_options(assets, escape_separators, resolve_references),
+                             access=_access(files)))
 
 
 def from_file(file: IO[str] | IO[bytes] | str | os.PathLike[str],
@@ -95,12 +104,14 @@ def from_file(file: IO[str] | IO[bytes] | str | os.PathLike[str],
               model_dir: str | os.PathLike[str] | None = None, resolve_references: bool = True,
               assets: Mapping[str, bytes] | None = None, *,
               base_dir: str | os.PathLike[str] | None = None,
-              limits: ParseLimits | None = None) -> RootElement:
+              limits: ParseLimits | None = None,
+              files: FileAccess | None = None) -> RootElement:
     """Parse MJCF from an open file object (text or binary), or a path. Relative files and
     includes resolve against ``model_dir``, else the file's folder if it has a name (see
     :func:`from_xml_string` for the other arguments)."""
     if isinstance(file, str | os.PathLike):
-        return from_path(file, escape_separators, resolve_references, assets, limits=limits)
+        return from_path(file, escape_separators, resolve_references, assets, limits=limits,
+                         files=files)
     limits = _limits(limits)
     name = getattr(file, "name", None)
     source = name if isinstance(name, str) else None
@@ -118,17 +129,34 @@ def from_file(file: IO[str] | IO[bytes] | str | os.PathLike[str],
             raise
         raise ParseError(f"cannot read the file: {error}", source) from None
     return from_xml_string(data, escape_separators, None, resolve_references, assets,
-                           base_dir=folder, source=source, limits=limits)
+                           base_dir=folder, source=source, limits=limits, files=files)
 
 
 def from_zip(path: str | os.PathLike[str] | IO[bytes], model_file: str = "model.xml",
              escape_separators: bool = False, resolve_references: bool = True, *,
-             limits: ParseLimits | None = None) -> RootElement:
+             limits: ParseLimits | None = None,
+             files: FileAccess | None = None) -> RootElement:
     """Parse a model and its files from a zip archive (one MJCF file, or the one named
-    ``model_file`` among several)."""
-    xml, assets, source = read_zip(path, model_file)
-    return from_xml_string(xml, escape_separators, None, resolve_references, assets,
-                           source=source, limits=limits)
+    ``model_file`` among several).
+
+    The model reads its includes and files only from the archive (``files`` may name folders
+    on disk it may read too: its ``roots``, or ``anywhere``; an archive has no folder of its
+    own). Entries are inflated only when the model reads them, and never past the limits:
+    the model's text past ``limits.max_bytes``, its other files past ``files.max_bytes``.
+    """
+    access = _access(files)
+    limits = _limits(limits)
+    source = os.fspath(path) if isinstance(path, str | os.PathLike) else "<zip>"
+    confinement = confine(FileAccess(access.roots, False, access.anywhere, access.max_bytes),
+                          None)
+    if not access.roots and not access.anywhere:
+        confinement = only_given(f"the archive {source}", access.max_bytes)
+    xml, archive, name = read_zip(path, model_file, limits, confinement)
+    model = parse_text(xml, source=name, limits=limits, access=confinement,
+                       options=ParseOptions(archive, bool(escape_separators),
+                                            bool(resolve_references)))
+    use_archive_files(model, archive)
+    return _typed(model)
 
 
 def _read_all(file: IO[str] | IO[bytes], limit: int) -> str | bytes:
@@ -154,6 +182,14 @@ def _read_all(file: IO[str] | IO[bytes], limit: int) -> str | bytes:
     return "".join(texts) if texts else b"".join(blobs)
 
 
+def _access(files: object) -> FileAccess:
+    if files is None:
+        return DEFAULT_ACCESS
+    if not isinstance(files, FileAccess):
+        raise InvalidTypeError(f"files must be a typed_mjcf.FileAccess, got {type(files).__name__}")
+    return files
+
+
 def _limits(limits: object) -> ParseLimits:
     if limits is None:
         return DEFAULT_LIMITS
@@ -168,7 +204,9 @@ def from_spec(spec: mujoco.MjSpec) -> RootElement:
     xml = spec_to_xml(spec)
     # The spec's files are relative to the folder of the file it was read from (if any).
     folder: object = getattr(spec, "modelfiledir", None)
-    return from_xml_string(xml, base_dir=folder if isinstance(folder, str) and folder else None)
+    # A spec is the caller's own object (MuJoCo read any file it names): no confinement.
+    return _typed(parse_text(xml, base_dir=folder if isinstance(folder, str) and folder else None,
+                             access=ANYWHERE))
 
 
 def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
@@ -193,14 +231,23 @@ def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
 
 
 def export_with_assets_as_zip(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
-                              model_name: str | None = None) -> str:
+                              model_name: str | None = None, *, overwrite: bool = False) -> str:
     """Write the model and every file it uses into ``out_dir/<model_name>.zip`` (a folder
-    ``<model_name>/`` inside, as dm_control writes it); return the archive's path."""
+    ``<model_name>/`` inside, as dm_control writes it); return the archive's path.
+
+    Written as :func:`export_with_assets` writes a file: atomically (a temporary file, then a
+    rename), never through a link, and an archive already there with other contents is an
+    :class:`~typed_mjcf.ExportError` unless ``overwrite=True``.
+    """
     folder = _folder(out_dir, "out_dir")
     if folder is None:
         raise InvalidTypeError("out_dir must be a path (str or os.PathLike), got None")
-    return write_zip(_model(mjcf_model), folder, model_name)
+    if model_name is not None and not isinstance(model_name, str):  # pyright: ignore[reportUnnecessaryIsInstance]
+        raise InvalidTypeError(f"model_name must be a str, got {type(model_name).__name__}")
+    if not isinstance(overwrite, bool):  # pyright: ignore[reportUnnecessaryIsInstance]
+        raise InvalidTypeError(f"overwrite must be a bool, got {type(overwrite).__name__}")
+    return write_zip(_model(mjcf_model), folder, model_name, overwrite=overwrite)
 
 
-__all__ = ["ParseLimits", "export_with_assets", "export_with_assets_as_zip", "from_file",
+__all__ = ["FileAccess", "ParseLimits", "export_with_assets", "export_with_assets_as_zip", "from_file",
            "from_path", "from_spec", "from_xml_string", "from_zip"]

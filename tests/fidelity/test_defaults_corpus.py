@@ -14,7 +14,7 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.runtime.model_compare import model_differences
-from tests.runtime.test_corpus import CORPUS
+from tests.runtime.test_corpus import CORPUS, corpus_files
 from typed_mjcf import _tree
 
 
@@ -52,7 +52,7 @@ def test_the_corpus_has_models_with_classes() -> None:
 @pytest.mark.parametrize(("ident", "path"), COMPILABLE)
 def test_committed_defaults_compile_like_the_classes(ident: str, path: Path) -> None:
     expected = mujoco.MjModel.from_xml_path(str(path))
-    model = mjcf.from_path(path)
+    model = mjcf.from_path(path, files=corpus_files(ident, path))
     for element in list(model.iter_elements()):
         mjcf.commit_defaults(element)
     _strip_classes(model)

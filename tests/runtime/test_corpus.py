@@ -75,6 +75,19 @@ def corpus() -> list[tuple[str, Path]]:
 CORPUS = corpus()
 
 
+# Corpus models that name files outside their own folder, which a model may read only when
+# its loader allows it (typed_mjcf.FileAccess): the folder they need, from the model's.
+OUTSIDE_FOLDER: dict[str, str] = {
+    "dm_control/locomotion/walkers/assets/dog_v2/dog.xml": "../../../../suite/dog_assets",
+}
+
+
+def corpus_files(ident: str, path: Path) -> typed_mjcf.FileAccess | None:
+    """What a corpus model may read: its folder, and the one it needs besides if listed."""
+    extra = OUTSIDE_FOLDER.get(ident)
+    return None if extra is None else typed_mjcf.FileAccess(roots=[path.parent / extra])
+
+
 def _params() -> list[object]:
     params: list[object] = []
     for ident, path in CORPUS:
@@ -102,7 +115,7 @@ def test_compiles_like_mujoco(ident: str, path: Path) -> None:
         expected = mujoco.MjModel.from_xml_path(str(path))
     except ValueError as error:
         pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {_one_line(error)}")
-    model = typed_mjcf.from_path(path)
+    model = typed_mjcf.from_path(path, files=corpus_files(ident, path))
     actual = model.compile()
     assert model_differences(expected, actual) == []
     assert file_differences(expected, str(path.parent), actual, model.get_assets()) == []
@@ -117,6 +130,25 @@ def test_export_is_fixed_point(ident: str, path: Path) -> None:
     xml = typed_mjcf.from_path(path).to_xml_string()
     again = typed_mjcf.from_xml_string(xml, base_dir=path.parent).to_xml_string()
     assert again == xml
+
+
+@pytest.mark.parametrize(("ident", "path"), _params())
+def test_only_the_listed_models_read_files_outside_their_folder(ident: str, path: Path) -> None:
+    """By default a model reads files only inside its own folder: every corpus model that
+    MuJoCo compiles reads all its files so, except those in OUTSIDE_FOLDER (refused without
+    the folder they need, read with it)."""
+    try:
+        mujoco.MjModel.from_xml_path(str(path))
+    except ValueError as error:
+        pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {_one_line(error)}")
+    model = typed_mjcf.from_path(path)
+    if ident not in OUTSIDE_FOLDER:
+        model.get_assets()  # a file outside the folder would be refused (FileAccessError)
+        return
+    with pytest.raises(typed_mjcf.FileAccessError, match="is outside the model's folder"):
+        model.get_assets()
+    allowed = typed_mjcf.from_path(path, files=corpus_files(ident, path))
+    assert allowed.get_assets()
 
 
 def test_comparison_sees_one_ulp() -> None:

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import os
 import stat
+import subprocess
+import sys
 from pathlib import Path
 
 import mujoco
@@ -171,3 +173,145 @@ def test_unwritable_folder_is_an_export_error(tmp_path: Path) -> None:
     blocker.write_text("")
     with pytest.raises(mjcf.ExportError, match="cannot create the folder"):
         mjcf.export_with_assets(model_with_meshes(["part"]), blocker / "out")
+
+
+# ------------------------------------------------------------- one change, and the zip export
+
+
+def _old_folder(out: Path) -> dict[str, bytes]:
+    out.mkdir()
+    (out / "part.stl").write_bytes(b"old part")
+    (out / "m.xml").write_bytes(b"old xml")
+    return {"part.stl": b"old part", "m.xml": b"old xml"}
+
+
+def _contents(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in folder.iterdir()}
+
+
+@pytest.mark.parametrize("failure", [OSError(28, "No space left on device"), KeyboardInterrupt()])
+def test_a_failure_partway_puts_every_file_back(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                failure: BaseException) -> None:
+    """The asset is in place when renaming the XML fails (or is interrupted): the asset is
+    put back, so the old XML never sits beside new assets, and no temporary file is left."""
+    model = model_with_meshes(["part"])
+    out = tmp_path / "out"
+    before = _old_folder(out)
+    real_replace = os.replace
+
+    def failing_on_the_xml(source: str, target: str) -> None:
+        if str(target).endswith("m.xml") and ".typed-mjcf-" in str(source):
+            raise failure
+        real_replace(source, target)
+
+    monkeypatch.setattr(os, "replace", failing_on_the_xml)
+    with pytest.raises(type(failure) if isinstance(failure, KeyboardInterrupt) else mjcf.ExportError):
+        mjcf.export_with_assets(model, out, overwrite=True)
+    monkeypatch.undo()
+    assert _contents(out) == before
+
+
+def test_a_failure_writing_a_temporary_file_changes_nothing(tmp_path: Path,
+                                                            monkeypatch: pytest.MonkeyPatch) -> None:
+    model = model_with_meshes(["part"])
+    out = tmp_path / "out"
+    before = _old_folder(out)
+    calls = 0
+    real_fsync = os.fsync
+
+    def interrupted(fd: int) -> None:
+        nonlocal calls
+        calls += 1
+        if calls == 2:  # the XML's temporary file, after the asset's
+            raise KeyboardInterrupt
+        real_fsync(fd)
+
+    monkeypatch.setattr(os, "fsync", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        mjcf.export_with_assets(model, out, overwrite=True)
+    monkeypatch.undo()
+    assert _contents(out) == before
+
+
+def _dead_pid() -> int:
+    process = subprocess.Popen([sys.executable, "-c", "pass"])
+    process.wait()
+    return process.pid
+
+
+def test_temporary_files_of_a_killed_export_are_removed_by_the_next(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    dead = out / f".typed-mjcf-{_dead_pid()}-abc123.tmp"
+    dead.write_bytes(b"x" * 1000)
+    running = out / f".typed-mjcf-{os.getpid()}-def456.tmp"  # an export still writing
+    running.write_bytes(b"y")
+    old_style = out / ".typed-mjcf-k2j3h4.tmp"  # no process id: stale once a day old
+    old_style.write_bytes(b"z")
+    os.utime(old_style, (1, 1))
+    fresh_old_style = out / ".typed-mjcf-q9w8e7.tmp"
+    fresh_old_style.write_bytes(b"z")
+    unrelated = out / ".typed-mjcf-notes.txt"
+    unrelated.write_bytes(b"keep")
+    mjcf.export_with_assets(model_with_meshes(["part"]), out)
+    assert sorted(p.name for p in out.iterdir()) == sorted(
+        [running.name, fresh_old_style.name, unrelated.name, "m.xml", "part.stl"])
+    dead.write_bytes(b"x")
+    mjcf.export_with_assets_as_zip(model_with_meshes(["part"]), out)
+    assert not dead.exists()
+
+
+def test_a_killed_export_leaves_only_a_temporary_file_the_next_removes(tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    script = (
+        "import os, sys, typed_mjcf as mjcf\n"
+        "from tests.safety.test_export import model_with_meshes\n"
+        "def die(*args, **kwargs):\n"
+        "    os._exit(9)  # killed between writing the files and renaming them\n"
+        "os.replace = os.link = die\n"
+        f"mjcf.export_with_assets(model_with_meshes(['part']), {str(out)!r})\n")
+    subprocess.run([sys.executable, "-c", script], check=False, cwd=Path(__file__).parents[2])
+    left = sorted(p.name for p in out.iterdir())
+    assert left and all(n.startswith(".typed-mjcf-") and n.endswith(".tmp") for n in left), left
+    mjcf.export_with_assets(model_with_meshes(["part"]), out)
+    assert sorted(p.name for p in out.iterdir()) == ["m.xml", "part.stl"]
+
+
+def test_the_zip_export_writes_atomically_and_never_through_a_link(tmp_path: Path) -> None:
+    model = model_with_meshes(["part"])
+    out = tmp_path / "out"
+    out.mkdir()
+    outside = tmp_path / "outside.zip"
+    outside.write_bytes(b"do not touch")
+    (out / "m.zip").symlink_to(outside)
+    with pytest.raises(mjcf.ExportError, match=r"m.zip \(a symbolic link\)"):
+        mjcf.export_with_assets_as_zip(model, out)
+    path = mjcf.export_with_assets_as_zip(model, out, overwrite=True)
+    assert outside.read_bytes() == b"do not touch" and not Path(path).is_symlink()
+    assert mjcf.from_zip(path).get_assets() == model.get_assets()
+    again = mjcf.export_with_assets_as_zip(model, out)  # the same archive: no error
+    assert again == path
+    model.asset.mesh[0].file = mjcf.Asset(box_stl(0.7), ".stl", name="part")
+    with pytest.raises(mjcf.ExportError, match=r"export_with_assets_as_zip would replace 1 "
+                                               r"file\(s\) .*m.zip"):
+        mjcf.export_with_assets_as_zip(model, out)
+    assert mjcf.from_zip(path).get_assets() != model.get_assets()  # the old one is intact
+    mjcf.export_with_assets_as_zip(model, out, overwrite=True)
+    assert mjcf.from_zip(path).get_assets() == model.get_assets()
+    assert sorted(os.listdir(out)) == ["m.zip"]
+
+
+def test_the_zip_export_failing_leaves_the_old_archive(tmp_path: Path,
+                                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "m.zip").write_bytes(b"old archive")
+
+    def failing_replace(source: str, target: str) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(os, "replace", failing_replace)
+    with pytest.raises(KeyboardInterrupt):
+        mjcf.export_with_assets_as_zip(model_with_meshes(["part"]), out, overwrite=True)
+    monkeypatch.undo()
+    assert _contents(out) == {"m.zip": b"old archive"}

@@ -124,15 +124,24 @@ def test_special_files_are_not_read(tmp_path: Path) -> None:
     start = time.perf_counter()
     with pytest.raises(mjcf.ParseError, match="not a regular file"):
         mjcf.from_path("/dev/zero")
+    anywhere = mjcf.FileAccess(anywhere=True)  # not refused as outside the folder first
     with pytest.raises(mjcf.ParseError, match="not a regular file"):
-        mjcf.from_xml_string("<mujoco><include file='/dev/zero'/></mujoco>")
-    model = mjcf.from_xml_string("<mujoco><asset><mesh file='/dev/zero'/></asset></mujoco>")
+        mjcf.from_xml_string("<mujoco><include file='/dev/zero'/></mujoco>", files=anywhere)
+    model = mjcf.from_xml_string("<mujoco><asset><mesh file='/dev/zero'/></asset></mujoco>",
+                                 files=anywhere)
     with pytest.raises(mjcf.InvalidValueError, match="not a regular file"):
         model.get_assets()  # the files a model uses are read when it compiles or exports
     if hasattr(os, "mkfifo"):  # a FIFO would block a plain open()
         os.mkfifo(tmp_path / "fifo.xml")
         with pytest.raises(mjcf.ParseError, match="not a regular file"):
             mjcf.from_path(tmp_path / "fifo.xml")
+        (tmp_path / "main.xml").write_text(
+            "<mujoco><include file='fifo.xml'/><asset><mesh file='fifo.xml'/></asset></mujoco>")
+        with pytest.raises(mjcf.ParseError, match="included file 'fifo.xml'.*not a regular"):
+            mjcf.from_path(tmp_path / "main.xml")
+        (tmp_path / "main.xml").write_text("<mujoco><asset><mesh file='fifo.xml'/></asset></mujoco>")
+        with pytest.raises(mjcf.InvalidValueError, match="not a regular file"):
+            mjcf.from_path(tmp_path / "main.xml").get_assets()
     assert time.perf_counter() - start < 1.0
 
 

@@ -9,11 +9,12 @@ from collections.abc import Iterable, Iterator
 from typing import Final, TextIO, TypeVar, cast
 
 from typed_mjcf import _tree
+from typed_mjcf._access import DEFAULT_ACCESS
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._parse import ParseOptions, Problem, parse_path
 from typed_mjcf._tree import Element
 from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
-from typed_mjcf.io import from_path
+from typed_mjcf.io import FileAccess, from_path
 
 OK: Final = 0
 FOUND: Final = 1  # findings, differences, files that would change
@@ -54,7 +55,8 @@ def parse_error_text(error: ParseError) -> str:
 
 
 def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None,
-         problems: list[Problem] | None = None) -> RootElement:
+         problems: list[Problem] | None = None,
+         files: FileAccess | None = None) -> RootElement:
     """Parse an MJCF file; raise :class:`BadInput` with a one-line message if it cannot be.
 
     Attributes MuJoCo ignores (and the model drops) go to ``ignored`` when it is given, else
@@ -66,10 +68,11 @@ def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None,
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always", IgnoredAttributeWarning)
             if problems is None:
-                model = from_path(path)
+                model = from_path(path, files=files)
             else:
                 options = ParseOptions(on_problem=problems.append)
-                model = cast(RootElement, parse_path(path, options=options))
+                access = DEFAULT_ACCESS if files is None else files
+                model = cast(RootElement, parse_path(path, options=options, access=access))
     except ParseError as error:
         raise BadInput(parse_error_text(error)) from None
     except MjcfError as error:  # pragma: no cover - from_path raises only ParseError

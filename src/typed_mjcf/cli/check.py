@@ -30,7 +30,8 @@ from typed_mjcf.cli._common import (
     source_of,
 )
 from typed_mjcf.cli._isolated import MujocoCrashed, compile_in_child
-from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
+from typed_mjcf.io import FileAccess
 
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
@@ -67,6 +68,9 @@ def arguments(parser: argparse.ArgumentParser) -> None:
                         help="text (default): one line per finding; json: one JSON document "
                              "with every finding and the summary")
     parser.add_argument("--strict", action="store_true", help="exit 1 on warnings too")
+    parser.add_argument("--allow-files", action="append", default=[], metavar="FOLDER",
+                        help="a folder outside the model's own whose files it may read "
+                             "(repeatable; by default only the model's folder)")
     parser.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                         help="show progress on stderr (default: for several files, on a "
                              "terminal)")
@@ -98,7 +102,8 @@ def run(args: argparse.Namespace) -> int:
     progress = Progress(len(files), args.progress)
     for file in progress.each(files, "checking"):
         try:
-            found = check_file(file, compile_model=args.compile)
+            found = check_file(file, compile_model=args.compile,
+                               files=FileAccess(roots=args.allow_files))
         except BadInput as problem:
             progress.clear()
             unreadable.append(str(problem))
@@ -140,11 +145,13 @@ def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
 
 
-def check_file(path: str, compile_model: bool = False) -> list[Report]:
-    """The findings for one model file; raises :class:`BadInput` if it cannot be read."""
+def check_file(path: str, compile_model: bool = False,
+               files: FileAccess | None = None) -> list[Report]:
+    """The findings for one model file (reading files where ``files`` allows: by default in
+    its folder); raises :class:`BadInput` if it cannot be read."""
     ignored: list[IgnoredAttributeWarning] = []
     problems: list[Problem] = []
-    model = load(path, ignored, problems)
+    model = load(path, ignored, problems, files)
     reports = [_problem_report(problem, path) for problem in problems]
     reports += [Report(shown(w.source if w.source is not None else path), w.line,
                        "ignored-attribute", "warning", w.path, w.detail) for w in ignored]
@@ -181,8 +188,8 @@ def compile_problem(model: RootElement, file: str) -> Report | None:
     or ``None``."""
     try:
         xml, collected = vfs_text(model)
-    except MjcfError as problem:  # a file the model names cannot be read
-        message = str(problem)
+    except MjcfError as problem:  # a file the model names cannot (or may not) be read
+        message = problem.detail if isinstance(problem, ParseError) else str(problem)
         element = _element_at_path(model, message.split(": ", 1)[0]) or model
         return _report(element, "compile", "error", element.path,
                        message.split(": ", 1)[-1], file)

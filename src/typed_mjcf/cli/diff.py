@@ -103,16 +103,17 @@ def diff_models(a: Element, b: Element, resolved: bool = False) -> list[str]:
                                                      f"[{where(y)}]"))
             continue
         x = counterpart
-        places = f"  [{where(x)}, {where(y)}]"
+        found: list[str] = []
         for name, (before, after) in _changes(values(x), values(y)).items():
-            lines.append(_Line((position, 0, 0), f"~ {y.path}: {name} {_shown_value(before)} "
-                                                 f"-> {_shown_value(after)}{places}"))
+            found.append(f"~ {y.path}: {name} {_shown_value(before)} -> "
+                         f"{_shown_value(after)}")
         if x.parent is not None and y.parent is not None and pairs.get(x.parent) is not y.parent:
-            lines.append(_Line((position, 0, 0), f"> {y.path}: moved from {x.parent.path} to "
-                                                 f"{y.parent.path}{places}"))
-        for tag in _reordered(x, y, pairs):
-            lines.append(_Line((position, 0, 0), f"^ {y.path}: order of <{tag}> children "
-                                                 f"changed{places}"))
+            found.append(f"> {y.path}: moved from {x.parent.path} to {y.parent.path}")
+        found += [f"^ {y.path}: order of <{tag}> children changed"
+                  for tag in _reordered(x, y, pairs)]
+        if found:  # where the elements are is looked up only for what is reported
+            places = f"  [{where(x)}, {where(y)}]"
+            lines += [_Line((position, 0, 0), text + places) for text in found]
     lines.sort(key=lambda line: line.order)
     return [line.text for line in lines]
 
@@ -155,16 +156,108 @@ def _unnamed_children(element: Element, pairs: dict[Element, Element]) -> dict[s
     return groups
 
 
+# SequenceMatcher compares two sequences in time up to the product of their lengths when
+# elements repeat (as unnamed sites often do): used up to this product; longer ones go
+# through a shortest edit script with a bounded number of edits (Myers), else by position.
+_MATCH_BUDGET = 250_000
+_EDIT_BUDGET = 4_000_000  # (length of both) x (edits looked for)
+
+
 def _matched(group_a: list[Element], group_b: list[Element]) -> Iterable[tuple[Element, Element]]:
     """Pairs of two sequences of elements of one tag: equal runs, and changed elements where
-    one sequence has as many in a place as the other (the rest were inserted or deleted)."""
+    one sequence has as many in a place as the other (the rest were inserted or deleted).
+
+    The common start and end are paired in one pass; what lies between is compared by
+    SequenceMatcher when short, else by a shortest edit script of a bounded number of edits,
+    else paired by position: time stays near linear however many siblings there are."""
     signature: Callable[[Element], tuple[tuple[str, str | None], ...]] = (
         lambda e: tuple(_stored_texts(e).items()))
-    matcher = difflib.SequenceMatcher(None, [signature(e) for e in group_a],
-                                      [signature(e) for e in group_b], autojunk=False)
-    for op, i1, i2, j1, j2 in matcher.get_opcodes():
-        if op in ("equal", "replace"):
-            yield from zip(group_a[i1:i2], group_b[j1:j2], strict=False)
+    signs_a = [signature(e) for e in group_a]
+    signs_b = [signature(e) for e in group_b]
+    start, end_a, end_b = 0, len(signs_a), len(signs_b)
+    while start < end_a and start < end_b and signs_a[start] == signs_b[start]:
+        start += 1
+    while end_a > start and end_b > start and signs_a[end_a - 1] == signs_b[end_b - 1]:
+        end_a, end_b = end_a - 1, end_b - 1
+    yield from zip(group_a[:start], group_b[:start], strict=True)
+    middle_a, middle_b = signs_a[start:end_a], signs_b[start:end_b]
+    if len(middle_a) * len(middle_b) <= _MATCH_BUDGET:
+        matcher = difflib.SequenceMatcher(None, middle_a, middle_b, autojunk=False)
+        indices: list[tuple[int, int]] = []
+        for op, i1, i2, j1, j2 in matcher.get_opcodes():
+            if op in ("equal", "replace"):
+                indices += zip(range(i1, i2), range(j1, j2), strict=False)
+    else:
+        edits = max(16, _EDIT_BUDGET // (len(middle_a) + len(middle_b)))
+        found = _edit_script_pairs(middle_a, middle_b, edits)
+        indices = found if found is not None else list(
+            zip(range(len(middle_a)), range(len(middle_b)), strict=False))
+    yield from ((group_a[start + i], group_b[start + j]) for i, j in indices)
+    yield from zip(group_a[end_a:], group_b[end_b:], strict=True)
+
+
+_Sign = tuple[tuple[str, str | None], ...]
+
+
+def _edit_script_pairs(a: list[_Sign], b: list[_Sign], max_edits: int) -> list[tuple[int, int]] | None:
+    """Index pairs of ``a`` and ``b`` from a shortest edit script (Myers' O((N+M)D)
+    algorithm): equal elements, and in each run of deletions and insertions the ones in the
+    same place (as SequenceMatcher's "replace"); ``None`` if it takes more than
+    ``max_edits`` edits."""
+    n, m, offset = len(a), len(b), max_edits + 1
+    furthest = [0] * (2 * max_edits + 3)  # on diagonal k (= x - y): the furthest x reached
+    trace: list[list[int]] = []
+    for d in range(max_edits + 1):
+        trace.append(furthest[:])
+        for k in range(-d, d + 1, 2):
+            if k == -d or (k != d and furthest[k - 1 + offset] < furthest[k + 1 + offset]):
+                x = furthest[k + 1 + offset]  # an insertion (down)
+            else:
+                x = furthest[k - 1 + offset] + 1  # a deletion (right)
+            y = x - k
+            while x < n and y < m and a[x] == b[y]:
+                x, y = x + 1, y + 1
+            furthest[k + offset] = x
+            if x >= n and y >= m:
+                return _pairs_of_script(trace, n, m, offset)
+    return None
+
+
+def _pairs_of_script(trace: list[list[int]], n: int, m: int,
+                     offset: int) -> list[tuple[int, int]]:
+    """Walk a Myers trace back from the end into index pairs (see :func:`_edit_script_pairs`)."""
+    x, y = n, m
+    pairs: list[tuple[int, int]] = []
+    deleted: list[int] = []
+    inserted: list[int] = []
+
+    def flush() -> None:  # a run of edits: the ones in the same place are a change
+        pairs.extend(zip(reversed(deleted), reversed(inserted), strict=False))
+        deleted.clear()
+        inserted.clear()
+
+    for d in range(len(trace) - 1, -1, -1):
+        furthest = trace[d]
+        k = x - y
+        if k == -d or (k != d and furthest[k - 1 + offset] < furthest[k + 1 + offset]):
+            previous_k = k + 1
+        else:
+            previous_k = k - 1
+        previous_x = furthest[previous_k + offset]
+        previous_y = previous_x - previous_k
+        while x > previous_x and y > previous_y:
+            flush()
+            x, y = x - 1, y - 1
+            pairs.append((x, y))
+        if d > 0:
+            if x == previous_x:
+                inserted.append(y - 1)
+            else:
+                deleted.append(x - 1)
+        x, y = previous_x, previous_y
+    flush()
+    pairs.sort()
+    return pairs
 
 
 def _reordered(x: Element, y: Element, pairs: dict[Element, Element]) -> list[str]:

@@ -164,14 +164,28 @@ def unified_diff(result: Formatted) -> str:
 
 
 def _replace(path: str, text: str) -> None:
-    """Write ``text`` over ``path`` atomically, keeping the file's permissions."""
-    folder = os.path.dirname(os.path.abspath(path))
-    handle, temporary = tempfile.mkstemp(prefix=".fmt-", suffix=".xml", dir=folder)
+    """Write ``text`` as the new contents of ``path``, keeping what the file is: through a
+    symbolic link to the file it names (the link stays a link), and for a file with several
+    hard links in place (as black does: every name sees the new text); any other file is
+    replaced atomically (a temporary file renamed over it), keeping its permissions."""
+    real = os.path.realpath(path)
+    data = text.encode("utf-8")
+    if os.stat(real).st_nlink > 1:
+        with open(real, "r+b") as f:
+            f.write(data)
+            f.truncate()
+            f.flush()
+            os.fsync(f.fileno())
+        return
+    handle, temporary = tempfile.mkstemp(prefix=".fmt-", suffix=".xml",
+                                         dir=os.path.dirname(real))
     try:
         with os.fdopen(handle, "wb") as f:
-            f.write(text.encode("utf-8"))
-        shutil.copymode(path, temporary)
-        os.replace(temporary, path)
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+        shutil.copymode(real, temporary)
+        os.replace(temporary, real)
     except BaseException:
         if os.path.exists(temporary):
             os.unlink(temporary)
@@ -196,9 +210,10 @@ def format_model(path: str, seen: set[str] | None = None, canonical: bool = Fals
     files += [(included, parent.spec) for included, (_, parent) in sources.includes.items()]
     results: list[Formatted] = []
     for file, context in files:
-        if file in seen:
+        real = os.path.realpath(file)  # two links to one file: formatted once
+        if real in seen:
             continue
-        seen.add(file)
+        seen.add(real)
         results.append(format_file(file, context, canonical, width))
     return results
 

@@ -1,0 +1,28 @@
+"""``typed-mjcf check --compile`` reads a model's files only inside its folder, unless
+``--allow-files FOLDER`` names another."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from typed_mjcf.cli import main
+
+from ..runtime.test_io import box_stl
+
+
+def test_files_outside_the_folder_need_allow_files(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "box.stl").write_bytes(box_stl())
+    (tmp_path / "model").mkdir()
+    model = tmp_path / "model" / "m.xml"
+    model.write_text("<mujoco>\n<compiler meshdir='../meshes'/>\n<asset><mesh name='b' "
+                     "file='box.stl'/></asset>\n<worldbody><body><freejoint/><geom type='mesh' "
+                     "mesh='b'/></body></worldbody></mujoco>")
+    assert main(["check", "--compile", str(model)]) == 1
+    out = capsys.readouterr().out
+    assert f"m.xml:3: compile: asset/mesh[b]: file='box.stl': {tmp_path / 'meshes' / 'box.stl'} " \
+           f"is outside the model's folder {tmp_path / 'model'}" in out
+    assert main(["check", "--compile", "--allow-files", str(tmp_path / "meshes"), str(model)]) == 0
