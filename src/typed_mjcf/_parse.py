@@ -24,7 +24,6 @@ from __future__ import annotations
 import inspect
 import os
 import re
-import stat
 import warnings
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
