@@ -13,7 +13,8 @@ RESERVED = frozenset({
     "full_identifier", "get_assets", "get_attachment_frame", "get_attributes",
     "get_children", "get_frame_freejoint", "get_frame_joints", "get_freejoint",
     "include_copy", "insert", "is_removed", "is_same_as", "iter_elements", "iter_exported",
-    "namescope", "namespaces", "parent", "parent_model", "paste", "path", "remove", "resolve",
+    "namescope", "namespaces", "parent", "parent_model", "paste", "path", "remove", "render",
+    "render_png", "resolve",
     "resolve_references", "root", "root_model", "set_attributes", "spec", "tag", "to_spec",
     "to_xml", "to_xml_string", "validate",
 })
