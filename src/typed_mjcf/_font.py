@@ -2,10 +2,16 @@
 
 from __future__ import annotations
 
-import numpy as np
-from numpy.typing import NDArray
+import functools
+from typing import TYPE_CHECKING
 
-Image = NDArray[np.uint8]
+import numpy as np
+
+if TYPE_CHECKING:
+    from numpy.typing import NDArray
+
+    Image = NDArray[np.uint8]
+
 
 # Each glyph: 5 columns, "#" ink; 7 rows, or 9 for letters that descend below the line (g j p
 # q y). Printable ASCII; anything else draws as "?".
@@ -117,7 +123,10 @@ def _bitmap(rows: str) -> NDArray[np.bool_]:
     return bitmap
 
 
-_BITMAPS = {char: _bitmap(rows) for char, rows in _GLYPHS.items()}
+@functools.cache
+def _glyph(char: str) -> NDArray[np.bool_]:
+    """A letter's bitmap (made on first use: most never are)."""
+    return _bitmap(_GLYPHS.get(char, _GLYPHS["?"]))
 
 
 def text_size(text: str, scale: int = 1) -> tuple[int, int]:
@@ -132,7 +141,7 @@ def draw_text(image: Image, text: str, x: int, y: int, colour: tuple[int, int, i
     height, width = image.shape[:2]
     ink = np.array(colour, dtype=np.uint8)
     for i, char in enumerate(text):
-        glyph = _BITMAPS.get(char, _BITMAPS["?"])
+        glyph = _glyph(char)
         if scale > 1:
             glyph = glyph.repeat(scale, axis=0).repeat(scale, axis=1)
         left = x + i * _ADVANCE * scale

@@ -10,7 +10,7 @@ and sets ``MUJOCO_GL`` for code that imports ``mujoco`` later.
 
 from __future__ import annotations
 
-import ctypes.util
+import ctypes
 import importlib
 import importlib.util
 import os
@@ -23,8 +23,9 @@ from typed_mjcf.errors import RenderError
 # Back ends tried in order when MUJOCO_GL is unset: the headless ones on Linux.
 _HEADLESS: Final = ("egl", "osmesa")
 _TRIED: Final = {"Linux": _HEADLESS, "Darwin": ("cgl", "glfw")}
-# The shared library each needs (ctypes.util.find_library's name) and how to install it.
-_LIBRARY: Final = {"egl": "EGL", "osmesa": "OSMesa"}
+# The shared library each needs (the names it is installed under) and how to install it.
+_LIBRARY: Final = {"egl": ("libEGL.so.1", "libEGL.so"),
+                   "osmesa": ("libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so")}
 _INSTALL: Final = {"egl": "libegl1 and libgl1-mesa-dri", "osmesa": "libosmesa6"}
 # mujoco.gl_context's values of MUJOCO_GL: these pick a back end module, the rest GLFW.
 _MODULE: Final = {"egl": "mujoco.egl", "osmesa": "mujoco.osmesa", "cgl": "mujoco.cgl"}
@@ -111,9 +112,9 @@ def _context_class(backend: str) -> _ContextClass:
 
 def _probe(backend: str) -> str | None:
     """Why ``backend`` cannot render here, or ``None`` when it made a context."""
-    library = _LIBRARY.get(backend)
-    if library is not None and ctypes.util.find_library(library) is None:
-        return f"lib{library} is not installed"
+    libraries = _LIBRARY.get(backend, ())
+    if libraries and not any(_loads(name) for name in libraries):
+        return f"{libraries[-1]} is not installed"
     if backend in _HEADLESS and importlib.util.find_spec("OpenGL") is None:
         return "PyOpenGL is not installed (pip install PyOpenGL, or typed-mjcf[render])"
     platform_before = os.environ.get("PYOPENGL_PLATFORM")
@@ -128,6 +129,15 @@ def _probe(backend: str) -> str | None:
             os.environ.pop("PYOPENGL_PLATFORM", None)
         return _one_line(error)
     return None
+
+
+def _loads(library: str) -> bool:
+    """Whether the dynamic loader finds ``library`` (PyOpenGL loads it the same way)."""
+    try:
+        ctypes.CDLL(library)
+    except OSError:
+        return False
+    return True
 
 
 def _no_backend_message(wanted: str, tried: tuple[str, ...], reasons: list[str]) -> str:

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Final, Self, cast
 
 import numpy as np
-from numpy.typing import NDArray
 
 from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model
@@ -28,8 +27,10 @@ from typed_mjcf.errors import InvalidTypeError, InvalidValueError, RenderError, 
 
 if TYPE_CHECKING:
     import mujoco
+    from numpy.typing import NDArray
 
-Image = NDArray[np.uint8]
+    Image = NDArray[np.uint8]
+
 Point = tuple[float, float, float]
 
 

@@ -49,14 +49,18 @@ def test_the_first_back_end_that_works_is_chosen_and_kept(unchosen: pytest.Monke
     assert os.environ["MUJOCO_GL"] == "egl"
 
 
+def _missing(name: str) -> object:
+    raise OSError(f"{name}: cannot open shared object file: No such file or directory")
+
+
 def test_no_back_end_is_one_error_naming_what_to_install(unchosen: pytest.MonkeyPatch) -> None:
     unchosen.setattr(_gl.platform, "system", lambda: "Linux")
-    unchosen.setattr(_gl.ctypes.util, "find_library", lambda name: None)
+    unchosen.setattr(_gl.ctypes, "CDLL", _missing)
     with pytest.raises(mjcf.RenderError) as caught:
         box_scene().render(32, 24)
     assert str(caught.value) == (
-        "cannot render: no OpenGL back end works here (MUJOCO_GL is not set; egl: libEGL is "
-        "not installed; osmesa: libOSMesa is not installed); install EGL (Debian/Ubuntu: "
+        "cannot render: no OpenGL back end works here (MUJOCO_GL is not set; egl: libEGL.so "
+        "is not installed; osmesa: libOSMesa.so is not installed); install EGL (Debian/Ubuntu: "
         "apt-get install libegl1 and libgl1-mesa-dri) or OSMesa (Debian/Ubuntu: apt-get "
         "install libosmesa6), or set MUJOCO_GL to a back end that works here")
     assert "MUJOCO_GL" not in os.environ
