@@ -32,11 +32,9 @@ if TYPE_CHECKING:
     import os
 
     import mujoco
-    import numpy as np
-    from numpy.typing import NDArray
 
     from typed_mjcf._generated.elements import Body, Camera, Key, Namespace, RootElement
-    from typed_mjcf.types import XmlElement
+    from typed_mjcf.types import RgbImage, XmlElement
 
 
 class Element(_tree.Element):
@@ -323,7 +321,7 @@ class ModelRoot(Element, _tree.ModelBase):
     def render(self, width: int = 640, height: int = 480,
                camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
                keyframe: str | int | Key | None = None,
-               views: tuple[str, ...] | list[str] | None = None) -> NDArray[np.uint8]:
+               views: tuple[str, ...] | list[str] | None = None) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
 
         ``camera``: ``None`` frames the whole model as MuJoCo's viewer does (from the
@@ -336,7 +334,8 @@ class ModelRoot(Element, _tree.ModelBase):
         (EGL, else OSMesa, unless ``MUJOCO_GL`` says otherwise); ``RenderError`` says what
         to install when no OpenGL back end works.
         """
-        return render(self, width, height, camera, time=time, keyframe=keyframe, views=views)
+        return cast("RgbImage", render(self, width, height, camera, time=time,
+                                       keyframe=keyframe, views=views))
 
     def render_png(self, path: str | os.PathLike[str], width: int = 640, height: int = 480,
                    camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
