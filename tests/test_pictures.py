@@ -41,8 +41,11 @@ def committed(name: str) -> NDArray[np.uint8]:
     return decode_png(path.read_bytes())
 
 
-def test_every_picture_is_committed_and_none_is_left_over() -> None:
+def test_every_picture_is_committed_shown_and_none_is_left_over() -> None:
     assert {p.name for p in FOLDER.glob("*.png")} == set(PICTURES)
+    readme = (FOLDER.parent.parent / "README.md").read_text(encoding="utf-8")
+    for name in PICTURES:
+        assert f"](examples/pictures/{name})" in readme, f"the README does not show {name}"
 
 
 @pytest.mark.parametrize("name", list(PICTURES))

@@ -7,6 +7,7 @@ import os
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import pytest
 
@@ -31,7 +32,8 @@ def test_headless_by_default_even_after_mujoco_chose_glfw() -> None:
     env = {k: v for k, v in os.environ.items() if k not in ("MUJOCO_GL", "DISPLAY",
                                                             "PYOPENGL_PLATFORM")}
     result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                            env=env, check=False, timeout=120)
+                            env=env, cwd=Path(__file__).resolve().parents[2], check=False,
+                            timeout=120)
     assert result.returncode == 0, result.stderr
     assert result.stdout.split() == ["egl", "(48,", "64,", "3)", "True"]
 
