@@ -1,4 +1,5 @@
-"""Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``.
+"""Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
+``nox -s pictures``.
 
 Every session runs on the first Python nox finds that the project supports (3.11 or newer);
 ``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
@@ -57,6 +58,14 @@ def demo(session: nox.Session) -> None:
     """Build a small robot with the typed API, compile it, simulate one second."""
     session.install("-e", ".")
     session.run("python", "examples/demo.py", *session.posargs)
+
+
+@nox.session(python=PYTHON)
+def pictures(session: nox.Session) -> None:
+    """Render the README's pictures of the examples into examples/pictures/ (offscreen: EGL or
+    OSMesa, no display). tests/test_pictures.py checks the committed ones are current."""
+    session.install("-e", ".[render]")
+    session.run("python", "-m", "tests.pictures", *session.posargs)
 
 
 MUJOCO_VERSION = "4.0.0"  # what schema/ describes; keep in step with the dev extra

@@ -15,7 +15,7 @@ RESERVED = frozenset({
     "get_freejoint", "get_init_stack", "get_last_modified_stacks_for_all_attributes",
     "include_copy", "insert", "is_removed", "is_same_as", "iter_elements", "iter_exported",
     "namescope", "namespaces", "parent", "parent_model", "paste", "path", "prefixed_identifier",
-    "remove", "resolve",
+    "remove", "render", "render_png", "resolve",
     "resolve_references", "root", "root_model", "set_attributes", "spec", "tag", "to_spec",
     "to_xml", "to_xml_string", "validate",
 })

@@ -16,6 +16,8 @@ from typed_mjcf._base import Element, ModelRoot
 from typed_mjcf._generated import elements as _elements
 from typed_mjcf._generated.elements import *
 from typed_mjcf._names import NameScope
+from typed_mjcf._notebook import set_notebook_display
+from typed_mjcf._preview import VIEWS, FreeView
 from typed_mjcf._traversal import (
     commit_defaults,
     get_attachment_frame,
@@ -40,6 +42,7 @@ from typed_mjcf.errors import (
     InvalidValueError,
     MjcfError,
     ParseError,
+    RenderError,
     UnknownAttributeError,
 )
 from typed_mjcf.io import (
@@ -58,6 +61,7 @@ PREFIX_SEPARATOR: _Final[str] = "/"  # dm_control's name for the scope separator
 
 __all__ = [
     "PREFIX_SEPARATOR",
+    "VIEWS",
     "Asset",
     "ChildError",
     "CompileError",
@@ -69,6 +73,7 @@ __all__ = [
     "FileAccessError",
     "FileReadError",
     "Finding",
+    "FreeView",
     "IgnoredAttributeWarning",
     "IllegalChildError",
     "InvalidReferenceError",
@@ -79,6 +84,7 @@ __all__ = [
     "NameScope",
     "ParseError",
     "ParseLimits",
+    "RenderError",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",
@@ -93,6 +99,7 @@ __all__ = [
     "get_frame_freejoint",
     "get_frame_joints",
     "get_freejoint",
+    "set_notebook_display",
 ]
 __all__ += _elements.__all__
 

@@ -21,6 +21,8 @@ from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._defaults import resolve
 from typed_mjcf._files import file_stem
 from typed_mjcf._names import NameScope
+from typed_mjcf._notebook import repr_mimebundle, repr_png
+from typed_mjcf._preview import FreeView, render, render_png
 from typed_mjcf._traversal import commit_defaults
 from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
@@ -29,10 +31,12 @@ from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidTypeError, InvalidValueError, did_you_mean
 
 if TYPE_CHECKING:
+    import os
+
     import mujoco
 
-    from typed_mjcf._generated.elements import Body, Namespace, RootElement
-    from typed_mjcf.types import XmlElement
+    from typed_mjcf._generated.elements import Body, Camera, Key, Namespace, RootElement
+    from typed_mjcf.types import RgbImage, XmlElement
 
 
 class Element(_tree.Element):
@@ -366,6 +370,46 @@ class ModelRoot(Element, _tree.ModelBase):
     def to_spec(self) -> mujoco.MjSpec:
         """This model as a ``mujoco.MjSpec``."""
         return to_spec(self)
+
+    # ------------------------------------------------------------------ pictures
+
+    def render(self, width: int = 640, height: int = 480,
+               camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
+               keyframe: str | int | Key | None = None,
+               views: tuple[str, ...] | list[str] | None = None) -> RgbImage:
+        """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
+
+        ``camera``: ``None`` frames the whole model as MuJoCo's viewer does (from the
+        model's centre and extent); a camera of the model by name or element; or a
+        ``FreeView`` (azimuth, elevation, distance, lookat). The pose is the model's
+        ``qpos0``, or ``keyframe`` (a key's name, index or element), after ``time`` seconds
+        of simulation from it. ``views`` (names of the presets ``front``, ``side``,
+        ``top``, ``iso``, or of the model's cameras, which win) makes a contact sheet of
+        labelled views instead, the whole ``width`` x ``height``. Renders offscreen
+        (EGL, else OSMesa, unless ``MUJOCO_GL`` says otherwise); ``RenderError`` says what
+        to install when no OpenGL back end works.
+        """
+        return cast("RgbImage", render(self, width, height, camera, time=time,
+                                       keyframe=keyframe, views=views))
+
+    def render_png(self, path: str | os.PathLike[str], width: int = 640, height: int = 480,
+                   camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
+                   keyframe: str | int | Key | None = None,
+                   views: tuple[str, ...] | list[str] | None = None) -> None:
+        """Write ``render()``'s picture to ``path`` as a PNG file."""
+        render_png(self, path, width, height, camera, time=time, keyframe=keyframe,
+                   views=views)
+
+    def _repr_png_(self) -> bytes | None:
+        """The picture notebooks show (``None``, the text, if it cannot be made)."""
+        return repr_png(self)
+
+    def _repr_mimebundle_(self, include: object = None,
+                          exclude: object = None) -> dict[str, str | bytes]:
+        """IPython's display: the picture with the MJCF a click away, rendered once
+        (``typed_mjcf.set_notebook_display("xml")`` shows the MJCF only)."""
+        del include, exclude
+        return repr_mimebundle(self)
 
     if TYPE_CHECKING:
         def __copy__(self) -> RootElement: ...

@@ -82,6 +82,11 @@ class ExportError(MjcfError, ValueError):
     """The model cannot be written as MJCF (e.g. a reference to an unnamed element)."""
 
 
+class RenderError(MjcfError, RuntimeError):
+    """A picture cannot be made: no OpenGL back end works here (the message says what to
+    install, or which setting to change)."""
+
+
 class IgnoredAttributeWarning(UserWarning):
     """A file gives an element an attribute MuJoCo's reader ignores on it (``<frame>`` and
     ``<replicate>`` accept any attribute): it is dropped, as MuJoCo drops it."""

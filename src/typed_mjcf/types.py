@@ -17,6 +17,8 @@ Float32Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.float32]]
 """What a ``float`` array attribute reads as (read-only: assign to change it)."""
 Int32Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
 """What an ``int`` array attribute reads as (read-only: assign to change it)."""
+RgbImage: TypeAlias = np.ndarray[tuple[int, int, int], np.dtype[np.uint8]]
+"""A picture: height x width x 3 bytes, red, green and blue (what ``render()`` returns)."""
 
 IntArrayLike: TypeAlias = (
     np.ndarray[tuple[int, ...], np.dtype[np.int64]]
@@ -87,5 +89,5 @@ XmlElement: TypeAlias = etree._Element  # pyright: ignore[reportPrivateUsage]
 __all__ = [
     "Asset", "FileLike", "Float32Array", "Float64Array", "FloatArrayLike", "Int32Array",
     "IntArrayLike", "Integer", "IntegerScalar", "NumberList", "Real", "RealScalar",
-    "XmlElement",
+    "RgbImage", "XmlElement",
 ]

@@ -1,6 +1,8 @@
-"""The ``typed-mjcf`` command: turn MJCF into typed Python, check, format and diff models.
+"""The ``typed-mjcf`` command: turn MJCF into typed Python, check, format, diff and render
+models.
 
-Each command is its own module (:mod:`.to_python`, :mod:`.check`, :mod:`.fmt`, :mod:`.diff`):
+Each command is its own module (:mod:`.to_python`, :mod:`.check`, :mod:`.fmt`, :mod:`.diff`,
+:mod:`.render`):
 its ``NAME``, ``HELP`` and ``DESCRIPTION``, ``arguments()`` declaring its arguments, and a
 ``run()`` that returns the exit status:
 0 all is well, 1 findings, differences or files that would change, 2 bad input (a one-line
@@ -15,7 +17,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 from typed_mjcf import __version__
-from typed_mjcf.cli import check, diff, fmt, to_python
+from typed_mjcf.cli import check, diff, fmt, render, to_python
 
 DESCRIPTION = """\
 Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
@@ -24,6 +26,7 @@ Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
   typed-mjcf check robot.xml                   find what MuJoCo would refuse, file:line
   typed-mjcf fmt robot.xml                     rewrite in the canonical form
   typed-mjcf diff a.xml b.xml                  what differs, element by element
+  typed-mjcf render robot.xml -o robot.png     a picture of the model (offscreen)
 
 Run "typed-mjcf COMMAND --help" for a command's options.
 
@@ -37,7 +40,7 @@ def parser() -> argparse.ArgumentParser:
         formatter_class=argparse.RawDescriptionHelpFormatter)
     main_parser.add_argument("--version", action="version", version=f"typed-mjcf {__version__}")
     commands = main_parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
-    for module in (to_python, check, fmt, diff):
+    for module in (to_python, check, fmt, diff, render):
         module.arguments(commands.add_parser(
             module.NAME, help=module.HELP, description=module.DESCRIPTION,
             formatter_class=argparse.RawDescriptionHelpFormatter))

@@ -21,6 +21,7 @@ from typed_mjcf._export import iter_written, written_children
 from typed_mjcf._tree import Element
 from typed_mjcf.cli._common import BAD_INPUT, FOUND, OK, BadInput, error, load, shown, where
 from typed_mjcf.cli._values import stored_text, value_text
+from typed_mjcf.cli.render import size, write_diff_picture
 from typed_mjcf.errors import MjcfError
 
 NAME = "diff"
@@ -38,7 +39,8 @@ among their parent's children of the same tag), and each difference is one line:
 each followed by the file and line of the element in A and B. Formatting, attribute order
 and the spelling of numbers ("0.10" and ".1") never show; --resolved compares every
 attribute as MuJoCo will use it, with default classes applied, so a change to a default
-class shows on each element it reaches.
+class shows on each element it reaches. --render OUT.png also writes the two models' pictures
+side by side (same camera, framing both) and a third panel marking the pixels that differ.
 
 exit status: 0 the models are the same, 1 they differ, 2 a file cannot be read as MJCF."""
 
@@ -51,6 +53,10 @@ def arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("b", metavar="B.xml", help="the second model")
     parser.add_argument("--resolved", action="store_true",
                         help="compare values with default classes applied")
+    parser.add_argument("--render", metavar="OUT.png",
+                        help="also write a picture: A and B side by side, and where they differ")
+    parser.add_argument("--render-size", type=size, default=(640, 480), metavar="WIDTHxHEIGHT",
+                        help="the size of each of --render's three panels (default 640x480)")
     parser.set_defaults(run=run)
 
 
@@ -60,6 +66,9 @@ def run(args: argparse.Namespace) -> int:
         b = load(args.b)
     except BadInput as problem:
         error("diff", str(problem))
+        return BAD_INPUT
+    if args.render is not None and not write_diff_picture(args.render, a, b, args.a, args.b,
+                                                          args.render_size):
         return BAD_INPUT
     lines = diff_models(a, b, resolved=args.resolved)
     if not lines:
