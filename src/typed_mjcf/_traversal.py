@@ -53,5 +53,5 @@ def get_frame_freejoint(frame: Element) -> Element | None:
 
 
 def get_frame_joints(frame: Element) -> list[Element]:
-    """The joints of an attachment frame (what makes the attached model move)."""
+    """The joints of an attachment frame, which make the attached model move."""
     return [child for child in _tree.children(frame) if child.spec.tag in grammar_facts().joints]
