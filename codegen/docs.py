@@ -30,7 +30,7 @@ _INTERNAL = re.compile(
     r"\bsav(?:e|ed)\b|validated|\bchecks?\b|enforced|directive|stored on|seeded|reader"
     r"|deprecation|lowers to|fans out|pairwise|when defined|flipped|set even when absent"
     r"|compiled values|family is|suffixed byte|whole-attribute|transmission target"
-    r"|object kinds|node positions|projects into|UNTYPED")
+    r"|object kinds|node positions|projects into|ordering|UNTYPED")
 
 
 def note(a: ir.AttributeDef) -> str | None:

@@ -3788,7 +3788,7 @@ class Rangefinder(Element):
             A('user', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('camera', 'ref', namespace='camera', doc='reference to namespace ``camera``; no default (unset when absent).'),
-            A('data', 'flags', keywords=get_args(RayData), ordered=True, doc='any of: dist, dir, origin, point, normal, depth; no default (unset when absent). Ordering-checked.'),
+            A('data', 'flags', keywords=get_args(RayData), ordered=True, doc='any of: dist, dir, origin, point, normal, depth; no default (unset when absent).'),
         ),
         constraints=(('exclusive', (('site',), ('camera',))), ('oneof', (('site',), ('camera',)))),
         anchor='sensor-rangefinder',

@@ -23811,7 +23811,7 @@ class Rangefinder(_Typed):
 
     @property
     def data(self) -> tuple[RayData, ...] | None:
-        """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent). Ordering-checked.
+        """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent).
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
         """
@@ -25202,7 +25202,7 @@ class Sensor(_Typed):
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
             camera: reference to namespace ``camera``; no default (unset when absent).
-            data: any of: dist, dir, origin, point, normal, depth; no default (unset when absent). Ordering-checked.
+            data: any of: dist, dir, origin, point, normal, depth; no default (unset when absent).
         """
 
     @property
