@@ -1,5 +1,5 @@
 """Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
-``nox -s pictures``.
+``nox -s pictures``, ``nox -s bench_editor``.
 
 Every session runs on the first Python nox finds that the project supports (3.11 or newer);
 ``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
@@ -47,7 +47,9 @@ def tests(session: nox.Session) -> None:
     """The test suite, then ruff, mypy --strict and pyright over the typed code."""
     session.install("-e", ".[dev]")
     session.run("python", "-m", "codegen", "check")
-    session.run("pytest", *session.posargs)
+    # every core; a worker takes whole files, so a module's shared fixtures (a mypy run,
+    # a language server) are built once
+    session.run("pytest", "-n", "auto", "--dist", "loadfile", *session.posargs)
     session.run("ruff", "check", ".")
     session.run("mypy", *TYPED_PATHS)
     session.run("pyright", *_pyright_paths())
@@ -125,3 +127,15 @@ def bench(session: nox.Session) -> None:
     """
     session.install("-e", ".", f"mujoco-core=={MUJOCO_VERSION}", "dm_control>=1.0.50")
     session.run("python", "-m", "tests.bench", *session.posargs)
+
+
+@nox.session(python=PYTHON)
+def bench_editor(session: nox.Session) -> None:
+    """What an editor costs: pyright's language server on authoring scripts, typed-mjcf beside
+    dm_control.mjcf and mujoco.MjSpec (tests/bench/editor.py; CPU, memory, completion hits).
+
+    nox -s bench_editor                          # 3 fresh servers per library: minutes
+    nox -s bench_editor -- --rounds 1 --libs typed --misses
+    """
+    session.install("-e", ".[dev]")
+    session.run("python", "-m", "tests.bench.editor", *session.posargs)

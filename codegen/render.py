@@ -16,14 +16,14 @@ from pathlib import Path
 
 import jinja2
 
-from codegen import ir
+from codegen import docs, ir
 from codegen.naming import RESERVED, py_name
 from codegen.typing_names import Alias, Typer
 
 GENERATOR_VERSION = "2"
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 GENERATED_DIR = Path(__file__).resolve().parent.parent / "generated" / "typed_mjcf_generated"
-DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
+DOCS_URL = docs.DOCS_URL
 # find()'s name for attachment frames (dm_control's; typed_mjcf._base.ATTACHMENT_FRAME).
 ATTACHMENT_FRAME = "attachment_frame"
 
@@ -54,7 +54,7 @@ class ChildView:
 
 @dataclass(frozen=True)
 class ResolveView:
-    name: str
+    names: str  # the Literal's arguments: '"pos", "quat"'
     type: str
 
 
@@ -121,8 +121,7 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
     expected_anchor = f"{el.anchor}-{a.name}" if el.anchor else None
     if a.anchor is not None and a.anchor != expected_anchor:
         args.append(f"anchor={a.anchor!r}")
-    if a.doc:
-        args.append(f"doc={a.doc!r}")
+    args.append(f"doc={docs.attribute_doc(typer, a)!r}")
     if el.name == schema.root and a.name == schema.language.model_name:
         args.append("scope=True")
     return "A(" + ", ".join(args) + ")"
@@ -223,52 +222,6 @@ def _facts(schema: ir.Schema) -> str:
 # ---------------------------------------------------------------------------- typing surface
 
 
-def _attribute_doc(typer: Typer, a: ir.AttributeDef) -> list[str]:
-    """What a property's or parameter's documentation says: type, default, allowed values,
-    the description and the link."""
-    facts = [f"{typer.describe(a)}."]
-    if a.default is not None:
-        facts.append(f'Default: "{a.default}".')
-    if a.required:
-        facts.append("Required.")
-    if a.pattern is not None:
-        facts.append(f"Must match ``{a.pattern}``.")
-    lines = [" ".join(facts)]
-    if a.doc:
-        lines.append(a.doc[:1].upper() + a.doc[1:] + ("" if a.doc.endswith(".") else "."))
-    if a.anchor is not None:
-        lines.append(f"{DOCS_URL}#{a.anchor}")
-    return lines
-
-
-def _escape(text: str) -> str:
-    return text.replace("\\", "\\\\").replace('"""', "'''")
-
-
-def _property_doc(typer: Typer, a: ir.AttributeDef) -> str:
-    lines = [f"``{a.name}``: " + "\n\n".join(_attribute_doc(typer, a))]
-    return textwrap.indent(_escape("\n".join(lines)), " " * 8).strip() + "\n        "
-
-
-def _adder_doc(typer: Typer, el: ir.ElementDef) -> str:
-    """``add_<tag>()``'s docstring: the element, its link, and each attribute (``Args:``,
-    which editors show for the keyword being typed)."""
-    head = f"Add a ``<{el.tag}>`` child and return it."
-    parts = [head]
-    if el.anchor is not None:
-        parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
-    if el.attributes:
-        args = ["Args:"]
-        for a in el.attributes:
-            text = " ".join(_attribute_doc(typer, a))
-            args.append(textwrap.fill(f"{a.py_name}: {text}", width=88, initial_indent="    ",
-                                      subsequent_indent="        ", break_long_words=False,
-                                      break_on_hyphens=False))
-        parts.append("\n".join(args))
-    text = _escape("\n\n".join(parts))
-    return textwrap.indent(text, " " * 8).strip() + "\n        "
-
-
 def _class_doc(el: ir.ElementDef) -> str:
     head = f"``<{el.tag}>``"
     if el.projection_of is not None:
@@ -278,7 +231,7 @@ def _class_doc(el: ir.ElementDef) -> str:
     parts = [head + "."]
     if el.anchor is not None:
         parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
-    return textwrap.indent(_escape("\n\n".join(parts)) + "\n", " " * 4).strip() + "\n    "
+    return textwrap.indent(docs.escape("\n\n".join(parts)) + "\n", " " * 4).strip() + "\n    "
 
 
 def _resolve_type(typer: Typer, a: ir.AttributeDef) -> str:
@@ -287,9 +240,18 @@ def _resolve_type(typer: Typer, a: ir.AttributeDef) -> str:
     return getter if a.default is not None else f"{getter} | None"
 
 
+def _resolves(typer: Typer, el: ir.ElementDef) -> list[ResolveView]:
+    """``resolve()``'s overloads: one per return type (an overload carries a type), naming
+    every attribute that resolves to it, in the order the types first appear."""
+    names: dict[str, list[str]] = {}
+    for a in el.attributes:
+        names.setdefault(_resolve_type(typer, a), []).append(f'"{a.py_name}"')
+    return [ResolveView(", ".join(group), type_) for type_, group in names.items()]
+
+
 def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
-                               _property_doc(typer, a)) for a in el.attributes]
+                               docs.property_doc(typer, el, a)) for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     if any(a.name == schema.language.dclass for a in el.attributes):
         dclass = next(a for a in el.attributes if a.name == schema.language.dclass)
@@ -302,18 +264,19 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
         child_params = [ParamView(a.py_name, typer.setter(a)) for a in child.attributes]
         child_params += [ParamView("dclass", typer.setter(a)) for a in child.attributes
                          if a.name == schema.language.dclass]  # dm_control's name
+        entries = docs.adder_entries(typer, child, schema.language.dclass)
         children.append(ChildView(child.tag, child_py_name(child.tag), child.class_name,
-                                  c.single, child_params, _adder_doc(typer, child)))
+                                  c.single, child_params, docs.adder_doc(typer, child, entries)))
     is_root = el.name == schema.root
     bases = "ModelRoot" if is_root else "Element"
     stub_bases = "_Typed, _ModelRoot" if is_root else "_Typed"
     if el.attachable:
         bases += ", Attachable"
         stub_bases += ", _Attachable"
-    resolves = [ResolveView(a.py_name, _resolve_type(typer, a)) for a in el.attributes]
+    resolves = _resolves(typer, el)
     return ClassView(
         class_name=el.class_name, bases=bases, stub_bases=stub_bases,
-        short_doc=_escape(f"``<{el.tag}>``."), doc=_class_doc(el),
+        short_doc=docs.escape(f"``<{el.tag}>``."), doc=_class_doc(el),
         table=_element_spec(schema, typer, el), properties=properties, children=children,
         params=params, resolves=resolves, is_root=is_root,
         init_params=[p for p in params if p.py_name != schema.language.model_name])
@@ -352,7 +315,7 @@ def render(schema: ir.Schema) -> dict[str, str]:
     env = _environment()
     classes = [class_view(schema, typer, el) for el in _ordered(schema)]
     keyword_sets = typer.keyword_aliases()
-    aliases = [*typer.array_aliases(), *typer.namespace_aliases()]
+    aliases = [*typer.array_aliases(), *typer.namespace_aliases(), *typer.target_aliases()]
     namespaces = [NamespaceView(ns, typer.namespace_type(ns)) for ns in typer.namespaces()]
     body = schema.elements.get(schema.language.body)
     if body is not None:  # frames are bodies

@@ -56,6 +56,7 @@ class Typer:
         self._keyword_names = self._name_keyword_sets()
         self._alone_names = self._name_alone_sets()
         self._arrays: dict[str, Alias] = {}
+        self._targets: dict[str, Alias] = {}
 
     # ------------------------------------------------------------------ names
 
@@ -174,7 +175,7 @@ class Typer:
         if a.kind == "file":
             return "_builtins.str | _t.Asset"
         if a.kind == "ref" or a.namespace_from is not None:
-            return " | ".join(["_builtins.str", *self.reference_types(a)])
+            return self._reference_union(a)
         return "_builtins.str"
 
     def setter(self, a: ir.AttributeDef) -> str:
@@ -221,6 +222,37 @@ class Typer:
         self._arrays.setdefault(name, Alias(name, value, f"{doc[:1].upper()}{doc[1:]}: a tuple "
                                             "of that length, a list or a numpy array."))
         return name
+
+    def _reference_union(self, a: ir.AttributeDef) -> str:
+        """``str | <the element types>``; a union of several element types is named once (a
+        checker then reads it once, and a hover shows its name, not 27 classes)."""
+        types = self.reference_types(a)
+        value = " | ".join(["_builtins.str", *types])
+        if len(types) < 2:
+            return value
+        for alias in self._targets.values():
+            if alias.value == value:
+                return alias.name
+        name = self._target_name(a)
+        self._targets[name] = Alias(name, value, "A reference: a name, or the element itself.")
+        return name
+
+    def _target_name(self, a: ir.AttributeDef) -> str:
+        """``<type keywords>Target`` (``FrameobjTarget``) when the type attribute has keywords;
+        ``AnyTarget`` when it is free text (any namespace)."""
+        if a.namespace_from is None:
+            return self.namespace_type(a.namespace or "") + "Target"
+        row = next(e for e in self.schema.elements.values() if any(x is a for x in e.attributes))
+        enum = row.attribute(a.namespace_from).enum
+        name = "AnyTarget" if enum is None else self._keyword_names[enum] + "Target"
+        taken = self.class_names() | set(self._keyword_names.values())
+        while name in taken or name in self._targets:
+            name += "Keyword"
+        return name
+
+    def target_aliases(self) -> list[Alias]:
+        """The reference unions named so far (call after every annotation is made)."""
+        return sorted(self._targets.values(), key=lambda a: a.name)
 
     def reference_types(self, a: ir.AttributeDef) -> list[str]:
         """The element types a reference may be given as."""

@@ -282,9 +282,8 @@ class Attachable(_tree.Element):
     def attach(self, model: ModelRoot) -> Body:
         """Attach ``model`` here; return its attachment frame (a ``<body>``).
 
-        The model stays its own object: its names are scoped ``<model name>/...`` in this
-        model (``find("joint", "arm/elbow")``) and in the exported XML; ``model.detach()``
-        undoes the attachment.
+        Args:
+            model: the model to attach; it stays its own object, its names scoped ``<its name>/...`` here (``find("joint", "arm/elbow")``) and in the exported XML; its ``detach()`` undoes the attachment.
         """
         return cast("Body", attach(self, model))
 

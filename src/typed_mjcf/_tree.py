@@ -72,6 +72,7 @@ _Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscript
 _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
+DCLASS_DOC: Final = "dm_control's name for ``class_``."
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
 _NO_CHILDREN: tuple[()] = ()
@@ -953,7 +954,7 @@ def document_adders() -> None:
                        for a in spec.attributes]
         setattr(function, "__signature__", inspect.Signature(
             parameters, return_annotation=child_spec.class_name))
-        function.__doc__ = attribute_listing(spec, f"Add a <{spec.tag}> child and return it.")
+        function.__doc__ = attribute_listing(spec, f"Add a ``<{spec.tag}>`` child and return it.")
 
 
 def _annotation(attribute: AttributeSpec) -> str:
@@ -961,24 +962,30 @@ def _annotation(attribute: AttributeSpec) -> str:
 
 
 def attribute_listing(spec: ElementSpec, head: str) -> str:
-    """A docstring listing the attributes of a row: type, default, allowed values, link."""
-    lines = [head, ""]
+    """``add_<tag>()``'s docstring, laid out as ``elements.pyi`` lays it out (a test compares
+    them): the head, the reference, then ``Args:`` with each attribute's one line, written by
+    the generator (``codegen/docs.py``) into the attribute's ``doc``."""
+    lines = [head]
     if spec.url:
-        lines += [f"MuJoCo reference: {spec.url}", ""]
-    lines.append("Keyword arguments (MJCF attributes; each None when not given):")
-    for a in spec.attributes:
-        facts = [a.describe()]
-        if a.default is not None:
-            facts.append(f"default {a.default!r}")
-        if a.required:
-            facts.append("required")
-        line = f"    {a.py_name}: {'; '.join(facts)}."
-        if a.doc:
-            line += f" {a.doc[:1].upper()}{a.doc[1:]}{'' if a.doc.endswith('.') else '.'}"
-        lines.append(line)
-        if a.url:
-            lines.append(f"        {a.url}")
+        lines += ["", f"Reference: {spec.url}"]
+    entries = {a.py_name: a.doc for a in spec.attributes}
+    if DCLASS in spec.by_key:
+        entries[DCLASS] = DCLASS_DOC
+    if entries:
+        lines += ["", "Args:", *(f"    {name}: {entries[name]}"
+                                 for name in doc_order(list(entries)))]
     return "\n".join(lines)
+
+
+def doc_order(names: list[str]) -> list[str]:
+    """``names`` in order, except that a name comes before every name ending with it: an
+    editor shows keyword ``p`` the first line containing ``p: ``, which must be its own."""
+    placed: list[str] = []
+    for name in names:
+        at = next((i for i, other in enumerate(placed)
+                   if other != name and other.endswith(name)), len(placed))
+        placed.insert(at, name)
+    return placed
 
 
 # ---------------------------------------------------------------------------- creation

@@ -240,7 +240,7 @@ def test_hover_on_a_property_shows_type_and_docs(server: LanguageServer) -> None
     text = hover_on(server, "joint_type", "joint.type")
     assert "type: JointType | None" in text, text  # the keyword set by its public name
     assert "one of: free, ball, slide, hinge" in text, text
-    assert 'Default: "hinge"' in text, text
+    assert 'default "hinge"' in text, text
     assert "https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type" in text
 
 

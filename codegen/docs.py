@@ -1,0 +1,104 @@
+"""The documentation of attributes: one line per attribute, written once, read everywhere.
+
+``attribute_doc()`` is the one source: the renderer puts its text in ``elements.py`` (the
+``doc`` of each attribute, which ``help()`` lists at run time) and in ``elements.pyi`` (the
+properties' docstrings and the ``Args:`` of each ``add_<tag>()``, which editors show).
+
+The line says, first, what a checker cannot: the MJCF type, the allowed values or the number
+of values, the default (what MuJoCo uses when the attribute is absent), then MuJoCo's note.
+
+Editors read an ``Args:`` block line by line: pyright shows, for keyword ``p``, the first line
+of the whole docstring containing ``p: `` (or ``p (``), and only that line. So each entry is
+one line, a note never contains ``word: ``, and an attribute comes before any attribute whose
+name ends with its name (``range`` before ``ctrlrange``): ``doc_order()``, which the run time
+repeats (``typed_mjcf._grammar.doc_order``; a test compares the two docstrings).
+"""
+
+from __future__ import annotations
+
+import re
+import textwrap
+
+from codegen import ir
+from codegen.typing_names import Typer
+
+DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
+
+# Notes in MuJoCo's grammar file that describe how MuJoCo itself saves, checks or lowers an
+# attribute: true, but about MuJoCo's code, not about what the attribute means to a user.
+_INTERNAL = re.compile(
+    r"\bsav(?:e|ed)\b|validated|\bchecks?\b|enforced|directive|stored on|seeded|reader"
+    r"|deprecation|lowers to|fans out|pairwise|when defined|flipped|set even when absent"
+    r"|compiled values|family is|suffixed byte|whole-attribute|transmission target"
+    r"|object kinds|node positions|projects into|ordering|UNTYPED")
+
+
+def note(a: ir.AttributeDef) -> str | None:
+    """MuJoCo's note on the attribute as a sentence, or None when it is about MuJoCo's code."""
+    if not a.doc or _INTERNAL.search(a.doc):
+        return None
+    text = a.doc.replace(": ", " - ")  # "word: " would read as another entry to an editor
+    return text[:1].upper() + text[1:] + ("" if text.endswith(".") else ".")
+
+
+def attribute_doc(typer: Typer, a: ir.AttributeDef) -> str:
+    """One line: type, allowed values or length, default or required, pattern, note."""
+    facts = [typer.describe(a)]
+    if a.default is not None:
+        facts.append(f'default "{a.default}"')
+    elif a.required:
+        facts.append("required")
+    else:
+        facts.append("no default (unset when absent)")
+    if a.pattern is not None:
+        facts.append(f"must match ``{a.pattern}``")
+    line = "; ".join(facts) + "."
+    text = note(a)
+    return f"{line} {text}" if text else line
+
+
+def attribute_url(el: ir.ElementDef, a: ir.AttributeDef) -> str | None:
+    anchor = a.anchor if a.anchor is not None else None
+    return f"{DOCS_URL}#{anchor}" if anchor is not None else None
+
+
+def doc_order(names: list[str]) -> list[str]:
+    """``names`` in order, except that a name comes before every name ending with it."""
+    placed: list[str] = []
+    for name in names:
+        at = next((i for i, other in enumerate(placed)
+                   if other != name and other.endswith(name)), len(placed))
+        placed.insert(at, name)
+    return placed
+
+
+def escape(text: str) -> str:
+    return text.replace("\\", "\\\\").replace('"""', "'''")
+
+
+def property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
+    """A property's docstring: ``name``: the line, then the link."""
+    parts = [f"``{a.name}``: {attribute_doc(typer, a)}"]
+    url = attribute_url(el, a)
+    if url is not None:
+        parts.append(url)
+    return textwrap.indent(escape("\n\n".join(parts)), " " * 8).strip() + "\n        "
+
+
+def adder_doc(typer: Typer, el: ir.ElementDef, entries: dict[str, str]) -> str:
+    """``add_<tag>()``'s docstring: the element, its link, ``Args:`` (one line each)."""
+    parts = [f"Add a ``<{el.tag}>`` child and return it."]
+    if el.anchor is not None:
+        parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
+    if entries:
+        parts.append("\n".join(["Args:", *(f"    {name}: {entries[name]}"
+                                          for name in doc_order(list(entries)))]))
+    return textwrap.indent(escape("\n\n".join(parts)), " " * 8).strip() + "\n        "
+
+
+def adder_entries(typer: Typer, el: ir.ElementDef, dclass: str) -> dict[str, str]:
+    """Keyword -> its line, for the attributes of ``el`` (and dm_control's ``dclass``)."""
+    entries = {a.py_name: attribute_doc(typer, a) for a in el.attributes}
+    if any(a.name == dclass for a in el.attributes):
+        entries["dclass"] = "dm_control's name for ``class_``."
+    return entries
