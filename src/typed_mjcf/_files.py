@@ -209,7 +209,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
                 continue
             read: Callable[[], bytes] | None
             if dm_control_behaviour():  # dm_control's names: <stem>-<sha1 of contents>
-                name = _hashed_name(model, element, attribute, value, folders)
+                name = _hashed_name(model, element, attribute, value, folders, collected)
                 key: object = name
                 read = None
             elif isinstance(value, Asset):
@@ -237,7 +237,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
 
 
 def _hashed_name(model: ModelBase, element: Element, attribute: AttributeSpec, value: object,
-                 folders: dict[str, str]) -> str:
+                 folders: dict[str, str], collected: CollectedFiles) -> str:
     """dm_control's flat name of a file: its stem (an in-memory asset's name, if it has
     one), ``-`` and the SHA-1 of its contents, and its extension."""
     if isinstance(value, Asset):
@@ -245,7 +245,7 @@ def _hashed_name(model: ModelBase, element: Element, attribute: AttributeSpec, v
     else:
         assert isinstance(value, str)
         contents, path = _read(element, attribute, value, model, folders,
-                               _tree.memory_files(model))
+                               _tree.memory_files(model), collected)
         stem, extension = split_name(os.path.basename(path))
     digest = hashlib.sha1(contents, usedforsecurity=False).hexdigest()
     return safe_file_name(f"{stem}-{digest}" if stem else digest, extension)

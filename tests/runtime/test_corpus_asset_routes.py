@@ -29,6 +29,7 @@ import typed_mjcf
 from tests.cli.corpus import CORPUS, compiled, corpus_params, mirror
 
 from .model_compare import model_differences
+from .test_corpus import corpus_files
 
 SHARED_NAMES = ("dm_control/mjcf/test_assets/model_with_assets.xml",
                 "dm_control/mjcf/test_assets/model_with_assetdir.xml",
@@ -54,7 +55,7 @@ def test_models_whose_files_share_a_name_are_in_the_corpus() -> None:
 def test_text_loads_in_memory_and_beside_its_source(ident: str, path: Path,
                                                     mirrored: Path) -> None:
     expected = compiled(ident, path)
-    model = typed_mjcf.from_path(path)
+    model = typed_mjcf.from_path(path, files=corpus_files(ident, path))
     text = model.to_xml_string()
     assets = model.get_assets()
     in_memory = mujoco.MjModel.from_xml_string(text, assets)
