@@ -10,6 +10,7 @@
 
 __version__ = "0.1.0"
 
+from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
@@ -52,6 +53,10 @@ from typed_mjcf.io import (
     from_zip,
 )
 
+if _TYPE_CHECKING:
+    from typed_mjcf import physics as physics
+    from typed_mjcf.physics import Physics, PhysicsError, RenderError
+
 PREFIX_SEPARATOR: _Final[str] = "/"  # dm_control's name for the scope separator of attached models
 
 __all__ = [
@@ -75,6 +80,9 @@ __all__ = [
     "NameScope",
     "ParseError",
     "ParseLimits",
+    "Physics",
+    "PhysicsError",
+    "RenderError",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",
@@ -91,3 +99,16 @@ __all__ = [
     "get_freejoint",
 ]
 __all__ += _elements.__all__
+
+
+# Simulation imports mujoco, the heaviest import there is: loaded when first used.
+_PHYSICS_NAMES: _Final = frozenset({"Physics", "PhysicsError", "RenderError", "physics"})
+
+
+def __getattr__(name: str) -> object:
+    if name in _PHYSICS_NAMES:
+        import importlib
+
+        module = importlib.import_module("typed_mjcf.physics")
+        return module if name == "physics" else getattr(module, name)
+    raise AttributeError(f"module 'typed_mjcf' has no attribute {name!r}")

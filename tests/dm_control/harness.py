@@ -14,6 +14,7 @@ import importlib.util
 import sys
 import types
 import unittest
+import unittest.mock
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -22,7 +23,8 @@ import typed_mjcf
 
 # dm_control.mjcf's test modules that exercise its public behaviour.
 MODULES = ("element_test", "copier_test", "export_with_assets_test",
-           "export_with_assets_as_zip_test", "traversal_utils_test", "xml_validation_test")
+           "export_with_assets_as_zip_test", "traversal_utils_test", "xml_validation_test",
+           "physics_test")
 # The submodules those tests import by name; each is typed_mjcf.
 SUBMODULES = ("attribute", "base", "constants", "copier", "debugging", "element",
               "export_with_assets", "export_with_assets_as_zip", "namescope", "parser",
@@ -42,8 +44,14 @@ def redirected() -> Iterator[None]:
     """``dm_control.mjcf`` (and its submodules) is typed_mjcf while the block runs."""
     dm_control = importlib.import_module("dm_control")
     package = _forwarding("dm_control.mjcf")
-    shims = {"dm_control.mjcf": package}
+    shims: dict[str, types.ModuleType] = {"dm_control.mjcf": package}
+    if importlib.util.find_spec("mock") is None:  # the backport physics_test imports
+        shims["mock"] = unittest.mock
     for name in SUBMODULES:
+        own = getattr(typed_mjcf, name, None)
+        if isinstance(own, types.ModuleType):  # typed_mjcf has the module (physics)
+            shims[f"dm_control.mjcf.{name}"] = own
+            continue
         shims[f"dm_control.mjcf.{name}"] = submodule = _forwarding(f"dm_control.mjcf.{name}")
         if not hasattr(typed_mjcf, name):  # mjcf.export_with_assets is the function
             setattr(package, name, submodule)
@@ -102,7 +110,8 @@ def _ids(suite: unittest.TestSuite) -> Iterator[str]:
         if isinstance(test, unittest.TestSuite):
             yield from _ids(test)
         else:
-            yield test.id().removeprefix(f"{test.__class__.__module__}.")
+            # absl's parameterized tests append their parameters after a space
+            yield test.id().split(" ")[0].removeprefix(f"{test.__class__.__module__}.")
 
 
 def run(module: types.ModuleType, test_id: str) -> unittest.TestResult:
