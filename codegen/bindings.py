@@ -16,6 +16,7 @@ from __future__ import annotations
 import importlib
 import json
 import keyword
+import operator
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -27,7 +28,7 @@ from codegen import ir
 FORMAT_VERSION = 1
 FACTS_PATH = ir.SCHEMA_DIR / "bindings.toml"
 BINDINGS_PATH = ir.SCHEMA_DIR / "bindings.json"
-STRUCTS = ("model", "data")
+STRUCTS = ("MjModel", "MjData")
 
 
 class BindingFactsError(ValueError):
@@ -121,11 +122,11 @@ def read_wheel(facts: Facts | None = None) -> dict[str, object]:
     facts = load_facts() if facts is None else facts
     model = mujoco.MjModel.from_xml_string("<mujoco/>")
     data = mujoco.MjData(model)
-    instances: dict[str, object] = {"model": model, "data": data}
+    instances: dict[str, object] = {"MjModel": model, "MjData": data}
     fields: dict[str, dict[str, object]] = {}
-    for struct, c_name in (("model", "mjModel"), ("data", "mjData")):
+    for struct, c_name in (("MjModel", "mjModel"), ("MjData", "mjData")):
         table: dict[str, object] = {}
-        for field in cast(list[object], structs[c_name].fields):
+        for field in cast(list[object], operator.attrgetter("fields")(structs[c_name])):
             extent = getattr(field, "array_extent", None)
             name = getattr(field, "name", "")
             if not extent:
@@ -138,7 +139,7 @@ def read_wheel(facts: Facts | None = None) -> dict[str, object]:
             table[name] = {"dims": [str(e) for e in extent][:ndim] if ndim else [],
                            "dtype": str(dtype), "doc": str(getattr(field, "doc", ""))}
         fields[struct] = dict(sorted(table.items()))
-    model_fields = fields["model"]
+    model_fields = fields["MjModel"]
     objects: dict[str, dict[str, str]] = {}
     members = set(mujoco.mjtObj.__members__)
     for name, spec in model_fields.items():
@@ -174,7 +175,7 @@ def read_wheel(facts: Facts | None = None) -> dict[str, object]:
 
 def _check_facts(facts: Facts, fields: dict[str, dict[str, object]], sizes: set[str]) -> None:
     """Every field and size the hand facts name exists in the installed MuJoCo."""
-    every = {**fields["model"], **fields["data"]}
+    every = {**fields["MjModel"], **fields["MjData"]}
     named: list[tuple[str, str]] = []
     for size, ragged in facts.ragged.items():
         if ragged.owner not in sizes:
@@ -223,7 +224,7 @@ _SCALARS = {"bool": "_np.bool_", "float32": "_np.float32", "float64": "_np.float
 @dataclass(frozen=True)
 class AttributeView:
     name: str  # on the binding
-    struct: str  # "model" or "data"
+    struct: str  # "MjModel" or "MjData"
     field: str
     scalar: str  # numpy scalar type
     doc: str
@@ -273,7 +274,7 @@ def _describe(struct: str, field: str, spec: dict[str, object]) -> str:
     dims = cast(list[str], spec["dims"])
     doc = str(spec.get("doc", "")).strip()
     shape = " x ".join(dims) if dims else "scalar"
-    head = f"``Mj{struct.capitalize()}.{field}`` ({shape})"
+    head = f"``{struct}.{field}`` ({shape})"
     return f"{head}: {doc}." if doc else f"{head}."
 
 
@@ -356,8 +357,8 @@ def render_context(schema: ir.Schema, table: dict[str, object]) -> dict[str, obj
     objects = cast(dict[str, dict[str, str]], table["objects"])
     return {
         "objects": {o["size"]: o["objtype"] for o in objects.values()},
-        "named_model": _named(table, "model"),
-        "named_data": _named(table, "data"),
+        "named_model": _named(table, "MjModel"),
+        "named_data": _named(table, "MjData"),
         "element_imports": sorted({c for k in kinds for c in k.element_classes}),
         "binding_version": table["mujoco_version"],
         "kinds": kinds,

@@ -7,8 +7,6 @@ from collections.abc import Iterable, Sequence
 from typing import overload
 
 import numpy as _np
-from numpy.typing import ArrayLike as _ArrayLike
-from numpy.typing import NDArray as _NDArray
 
 from typed_mjcf._base import Element as _Element
 from typed_mjcf._binding import Binding as _Binding
@@ -107,6 +105,8 @@ from typed_mjcf._generated.elements import (
 )
 from typed_mjcf._named import FieldIndexer as _FieldIndexer
 from typed_mjcf._named import StructIndexer as _StructIndexer
+from typed_mjcf.types import Array as _Array
+from typed_mjcf.types import ArrayValues as _ArrayValues
 
 __all__ = [
     "ActuatorBinding",
@@ -142,245 +142,245 @@ class ActuatorBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def acc0(self) -> _NDArray[_np.float64]:
+    def acc0(self) -> _Array[_np.float64]:
         """``MjModel.actuator_acc0`` (nout): acceleration from unit force in qpos0."""
     @acc0.setter
-    def acc0(self, value: _ArrayLike) -> None: ...
+    def acc0(self, value: _ArrayValues) -> None: ...
     @property
-    def act(self) -> _NDArray[_np.float64]:
+    def act(self) -> _Array[_np.float64]:
         """``MjData.act`` (na): actuator activation."""
     @act.setter
-    def act(self, value: _ArrayLike) -> None: ...
+    def act(self, value: _ArrayValues) -> None: ...
     @property
-    def act_dot(self) -> _NDArray[_np.float64]:
+    def act_dot(self) -> _Array[_np.float64]:
         """``MjData.act_dot`` (na): time-derivative of actuator activation."""
     @act_dot.setter
-    def act_dot(self, value: _ArrayLike) -> None: ...
+    def act_dot(self, value: _ArrayValues) -> None: ...
     @property
-    def actadr(self) -> _NDArray[_np.int32]:
+    def actadr(self) -> _Array[_np.int32]:
         """``MjModel.actuator_actadr`` (nactuator): first activation address; -1: stateless."""
     @actadr.setter
-    def actadr(self, value: _ArrayLike) -> None: ...
+    def actadr(self, value: _ArrayValues) -> None: ...
     @property
-    def actearly(self) -> _NDArray[_np.bool_]:
+    def actearly(self) -> _Array[_np.bool_]:
         """``MjModel.actuator_actearly`` (nactuator): step activation before force."""
     @actearly.setter
-    def actearly(self, value: _ArrayLike) -> None: ...
+    def actearly(self, value: _ArrayValues) -> None: ...
     @property
-    def actlimited(self) -> _NDArray[_np.bool_]:
+    def actlimited(self) -> _Array[_np.bool_]:
         """``MjModel.actuator_actlimited`` (nactuator): is activation limited."""
     @actlimited.setter
-    def actlimited(self, value: _ArrayLike) -> None: ...
+    def actlimited(self, value: _ArrayValues) -> None: ...
     @property
-    def actnum(self) -> _NDArray[_np.int32]:
+    def actnum(self) -> _Array[_np.int32]:
         """``MjModel.actuator_actnum`` (nactuator): number of activation variables."""
     @actnum.setter
-    def actnum(self, value: _ArrayLike) -> None: ...
+    def actnum(self, value: _ArrayValues) -> None: ...
     @property
-    def actrange(self) -> _NDArray[_np.float64]:
+    def actrange(self) -> _Array[_np.float64]:
         """``MjModel.actuator_actrange`` (nactuator x 2): range of activations."""
     @actrange.setter
-    def actrange(self, value: _ArrayLike) -> None: ...
+    def actrange(self, value: _ArrayValues) -> None: ...
     @property
-    def armature(self) -> _NDArray[_np.float64]:
+    def armature(self) -> _Array[_np.float64]:
         """``MjModel.actuator_armature`` (nactuator): armature added to target (joint, tendon)."""
     @armature.setter
-    def armature(self, value: _ArrayLike) -> None: ...
+    def armature(self, value: _ArrayValues) -> None: ...
     @property
-    def biasprm(self) -> _NDArray[_np.float64]:
+    def biasprm(self) -> _Array[_np.float64]:
         """``MjModel.actuator_biasprm`` (nactuator x mjNBIAS): bias parameters."""
     @biasprm.setter
-    def biasprm(self, value: _ArrayLike) -> None: ...
+    def biasprm(self, value: _ArrayValues) -> None: ...
     @property
-    def biastype(self) -> _NDArray[_np.int32]:
+    def biastype(self) -> _Array[_np.int32]:
         """``MjModel.actuator_biastype`` (nactuator): bias type (mjtBias)."""
     @biastype.setter
-    def biastype(self, value: _ArrayLike) -> None: ...
+    def biastype(self, value: _ArrayValues) -> None: ...
     @property
-    def cranklength(self) -> _NDArray[_np.float64]:
+    def cranklength(self) -> _Array[_np.float64]:
         """``MjModel.actuator_cranklength`` (nactuator): crank length for slider-crank."""
     @cranklength.setter
-    def cranklength(self, value: _ArrayLike) -> None: ...
+    def cranklength(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrl(self) -> _NDArray[_np.float64]:
+    def ctrl(self) -> _Array[_np.float64]:
         """``MjData.ctrl`` (nu): control."""
     @ctrl.setter
-    def ctrl(self, value: _ArrayLike) -> None: ...
+    def ctrl(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrladr(self) -> _NDArray[_np.int32]:
+    def ctrladr(self) -> _Array[_np.int32]:
         """``MjModel.actuator_ctrladr`` (nactuator): address of first control."""
     @ctrladr.setter
-    def ctrladr(self, value: _ArrayLike) -> None: ...
+    def ctrladr(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrllimited(self) -> _NDArray[_np.bool_]:
+    def ctrllimited(self) -> _Array[_np.bool_]:
         """``MjModel.actuator_ctrllimited`` (nu): is control limited."""
     @ctrllimited.setter
-    def ctrllimited(self, value: _ArrayLike) -> None: ...
+    def ctrllimited(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrlnum(self) -> _NDArray[_np.int32]:
+    def ctrlnum(self) -> _Array[_np.int32]:
         """``MjModel.actuator_ctrlnum`` (nactuator): number of controls."""
     @ctrlnum.setter
-    def ctrlnum(self, value: _ArrayLike) -> None: ...
+    def ctrlnum(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrlrange(self) -> _NDArray[_np.float64]:
+    def ctrlrange(self) -> _Array[_np.float64]:
         """``MjModel.actuator_ctrlrange`` (nu x 2): range of controls."""
     @ctrlrange.setter
-    def ctrlrange(self, value: _ArrayLike) -> None: ...
+    def ctrlrange(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrlspec(self) -> _NDArray[_np.int32]:
+    def ctrlspec(self) -> _Array[_np.int32]:
         """``MjModel.actuator_ctrlspec`` (nactuator): input signature, scoped by gaintype."""
     @ctrlspec.setter
-    def ctrlspec(self, value: _ArrayLike) -> None: ...
+    def ctrlspec(self, value: _ArrayValues) -> None: ...
     @property
-    def damping(self) -> _NDArray[_np.float64]:
+    def damping(self) -> _Array[_np.float64]:
         """``MjModel.actuator_damping`` (nactuator): linear damping coefficient."""
     @damping.setter
-    def damping(self, value: _ArrayLike) -> None: ...
+    def damping(self, value: _ArrayValues) -> None: ...
     @property
-    def dampingpoly(self) -> _NDArray[_np.float64]:
+    def dampingpoly(self) -> _Array[_np.float64]:
         """``MjModel.actuator_dampingpoly`` (nactuator x mjNPOLY): high-order damping coefficients."""
     @dampingpoly.setter
-    def dampingpoly(self, value: _ArrayLike) -> None: ...
+    def dampingpoly(self, value: _ArrayValues) -> None: ...
     @property
-    def delay(self) -> _NDArray[_np.float64]:
+    def delay(self) -> _Array[_np.float64]:
         """``MjModel.actuator_delay`` (nactuator): delay time; 0: no delay."""
     @delay.setter
-    def delay(self, value: _ArrayLike) -> None: ...
+    def delay(self, value: _ArrayValues) -> None: ...
     @property
-    def dynprm(self) -> _NDArray[_np.float64]:
+    def dynprm(self) -> _Array[_np.float64]:
         """``MjModel.actuator_dynprm`` (nactuator x mjNDYN): dynamics parameters."""
     @dynprm.setter
-    def dynprm(self, value: _ArrayLike) -> None: ...
+    def dynprm(self, value: _ArrayValues) -> None: ...
     @property
-    def dyntype(self) -> _NDArray[_np.int32]:
+    def dyntype(self) -> _Array[_np.int32]:
         """``MjModel.actuator_dyntype`` (nactuator): dynamics type (mjtDyn)."""
     @dyntype.setter
-    def dyntype(self, value: _ArrayLike) -> None: ...
+    def dyntype(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_aid(self) -> _NDArray[_np.int32]:
+    def efm_aid(self) -> _Array[_np.int32]:
         """``MjData.efm_aid`` (nactuator): ids of actuators with terms in the metric."""
     @efm_aid.setter
-    def efm_aid(self, value: _ArrayLike) -> None: ...
+    def efm_aid(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_ak(self) -> _NDArray[_np.float64]:
+    def efm_ak(self) -> _Array[_np.float64]:
         """``MjData.efm_ak`` (nactuator): actuator stiffness h*gp, aid indexed."""
     @efm_ak.setter
-    def efm_ak(self, value: _ArrayLike) -> None: ...
+    def efm_ak(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_as(self) -> _NDArray[_np.float64]:
+    def efm_as(self) -> _Array[_np.float64]:
         """``MjData.efm_as`` (nactuator): actuator metric scale h^2*gp + h*gv, aid indexed."""
     @efm_as.setter
-    def efm_as(self, value: _ArrayLike) -> None: ...
+    def efm_as(self, value: _ArrayValues) -> None: ...
     @property
-    def force(self) -> _NDArray[_np.float64]:
+    def force(self) -> _Array[_np.float64]:
         """``MjData.actuator_force`` (nout): actuator force in actuation space."""
     @force.setter
-    def force(self, value: _ArrayLike) -> None: ...
+    def force(self, value: _ArrayValues) -> None: ...
     @property
-    def forcelimited(self) -> _NDArray[_np.bool_]:
+    def forcelimited(self) -> _Array[_np.bool_]:
         """``MjModel.actuator_forcelimited`` (nactuator): is force limited."""
     @forcelimited.setter
-    def forcelimited(self, value: _ArrayLike) -> None: ...
+    def forcelimited(self, value: _ArrayValues) -> None: ...
     @property
-    def forcerange(self) -> _NDArray[_np.float64]:
+    def forcerange(self) -> _Array[_np.float64]:
         """``MjModel.actuator_forcerange`` (nactuator x 2): range of forces."""
     @forcerange.setter
-    def forcerange(self, value: _ArrayLike) -> None: ...
+    def forcerange(self, value: _ArrayValues) -> None: ...
     @property
-    def gainprm(self) -> _NDArray[_np.float64]:
+    def gainprm(self) -> _Array[_np.float64]:
         """``MjModel.actuator_gainprm`` (nactuator x mjNGAIN): gain parameters."""
     @gainprm.setter
-    def gainprm(self, value: _ArrayLike) -> None: ...
+    def gainprm(self, value: _ArrayValues) -> None: ...
     @property
-    def gaintype(self) -> _NDArray[_np.int32]:
+    def gaintype(self) -> _Array[_np.int32]:
         """``MjModel.actuator_gaintype`` (nactuator): gain type (mjtGain)."""
     @gaintype.setter
-    def gaintype(self, value: _ArrayLike) -> None: ...
+    def gaintype(self, value: _ArrayValues) -> None: ...
     @property
-    def gear(self) -> _NDArray[_np.float64]:
+    def gear(self) -> _Array[_np.float64]:
         """``MjModel.actuator_gear`` (nout x 6): scale length and transmitted force."""
     @gear.setter
-    def gear(self, value: _ArrayLike) -> None: ...
+    def gear(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.actuator_group`` (nactuator): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def history(self) -> _NDArray[_np.int32]:
+    def history(self) -> _Array[_np.int32]:
         """``MjModel.actuator_history`` (nactuator x 2): history buffer: [nsample, interp]."""
     @history.setter
-    def history(self, value: _ArrayLike) -> None: ...
+    def history(self, value: _ArrayValues) -> None: ...
     @property
-    def historyadr(self) -> _NDArray[_np.int32]:
+    def historyadr(self) -> _Array[_np.int32]:
         """``MjModel.actuator_historyadr`` (nactuator): address in history buffer; -1: none."""
     @historyadr.setter
-    def historyadr(self, value: _ArrayLike) -> None: ...
+    def historyadr(self, value: _ArrayValues) -> None: ...
     @property
-    def length(self) -> _NDArray[_np.float64]:
+    def length(self) -> _Array[_np.float64]:
         """``MjData.actuator_length`` (nout): actuator lengths, one per force output."""
     @length.setter
-    def length(self, value: _ArrayLike) -> None: ...
+    def length(self, value: _ArrayValues) -> None: ...
     @property
-    def length0(self) -> _NDArray[_np.float64]:
+    def length0(self) -> _Array[_np.float64]:
         """``MjModel.actuator_length0`` (nout): actuator length in qpos0."""
     @length0.setter
-    def length0(self, value: _ArrayLike) -> None: ...
+    def length0(self, value: _ArrayValues) -> None: ...
     @property
-    def lengthrange(self) -> _NDArray[_np.float64]:
+    def lengthrange(self) -> _Array[_np.float64]:
         """``MjModel.actuator_lengthrange`` (nout x 2): feasible actuator length range."""
     @lengthrange.setter
-    def lengthrange(self, value: _ArrayLike) -> None: ...
+    def lengthrange(self, value: _ArrayValues) -> None: ...
     @property
-    def moment_rowadr(self) -> _NDArray[_np.int32]:
+    def moment_rowadr(self) -> _Array[_np.int32]:
         """``MjData.moment_rowadr`` (nout): row start address in colind array."""
     @moment_rowadr.setter
-    def moment_rowadr(self, value: _ArrayLike) -> None: ...
+    def moment_rowadr(self, value: _ArrayValues) -> None: ...
     @property
-    def moment_rownnz(self) -> _NDArray[_np.int32]:
+    def moment_rownnz(self) -> _Array[_np.int32]:
         """``MjData.moment_rownnz`` (nout): number of non-zeros in actuator_moment row."""
     @moment_rownnz.setter
-    def moment_rownnz(self, value: _ArrayLike) -> None: ...
+    def moment_rownnz(self, value: _ArrayValues) -> None: ...
     @property
-    def name_actuatoradr(self) -> _NDArray[_np.int32]:
+    def name_actuatoradr(self) -> _Array[_np.int32]:
         """``MjModel.name_actuatoradr`` (nactuator): actuator name pointers."""
     @name_actuatoradr.setter
-    def name_actuatoradr(self, value: _ArrayLike) -> None: ...
+    def name_actuatoradr(self, value: _ArrayValues) -> None: ...
     @property
-    def outadr(self) -> _NDArray[_np.int32]:
+    def outadr(self) -> _Array[_np.int32]:
         """``MjModel.actuator_outadr`` (nactuator): address of first force output."""
     @outadr.setter
-    def outadr(self, value: _ArrayLike) -> None: ...
+    def outadr(self, value: _ArrayValues) -> None: ...
     @property
-    def outnum(self) -> _NDArray[_np.int32]:
+    def outnum(self) -> _Array[_np.int32]:
         """``MjModel.actuator_outnum`` (nactuator): number of force outputs, from trntype."""
     @outnum.setter
-    def outnum(self, value: _ArrayLike) -> None: ...
+    def outnum(self, value: _ArrayValues) -> None: ...
     @property
-    def plugin(self) -> _NDArray[_np.int32]:
+    def plugin(self) -> _Array[_np.int32]:
         """``MjModel.actuator_plugin`` (nactuator): plugin instance id; -1: not a plugin."""
     @plugin.setter
-    def plugin(self, value: _ArrayLike) -> None: ...
+    def plugin(self, value: _ArrayValues) -> None: ...
     @property
-    def trnid(self) -> _NDArray[_np.int32]:
+    def trnid(self) -> _Array[_np.int32]:
         """``MjModel.actuator_trnid`` (nactuator x 2): transmission id: joint, tendon, site."""
     @trnid.setter
-    def trnid(self, value: _ArrayLike) -> None: ...
+    def trnid(self, value: _ArrayValues) -> None: ...
     @property
-    def trntype(self) -> _NDArray[_np.int32]:
+    def trntype(self) -> _Array[_np.int32]:
         """``MjModel.actuator_trntype`` (nactuator): transmission type (mjtTrn)."""
     @trntype.setter
-    def trntype(self, value: _ArrayLike) -> None: ...
+    def trntype(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.actuator_user`` (nactuator x nuser_actuator): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def velocity(self) -> _NDArray[_np.float64]:
+    def velocity(self) -> _Array[_np.float64]:
         """``MjData.actuator_velocity`` (nout): actuator velocities, one per force output."""
     @velocity.setter
-    def velocity(self, value: _ArrayLike) -> None: ...
+    def velocity(self, value: _ArrayValues) -> None: ...
 
 
 class BodyBinding(_Binding):
@@ -388,270 +388,270 @@ class BodyBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def B_rowadr(self) -> _NDArray[_np.int32]:
+    def B_rowadr(self) -> _Array[_np.int32]:
         """``MjModel.B_rowadr`` (nbody): body-dof: row addresses."""
     @B_rowadr.setter
-    def B_rowadr(self, value: _ArrayLike) -> None: ...
+    def B_rowadr(self, value: _ArrayValues) -> None: ...
     @property
-    def B_rownnz(self) -> _NDArray[_np.int32]:
+    def B_rownnz(self) -> _Array[_np.int32]:
         """``MjModel.B_rownnz`` (nbody): body-dof: non-zeros in each row."""
     @B_rownnz.setter
-    def B_rownnz(self, value: _ArrayLike) -> None: ...
+    def B_rownnz(self, value: _ArrayValues) -> None: ...
     @property
-    def awake(self) -> _NDArray[_np.int32]:
+    def awake(self) -> _Array[_np.int32]:
         """``MjData.body_awake`` (nbody): body sleep state (mjtSleepState)."""
     @awake.setter
-    def awake(self, value: _ArrayLike) -> None: ...
+    def awake(self, value: _ArrayValues) -> None: ...
     @property
-    def awake_ind(self) -> _NDArray[_np.int32]:
+    def awake_ind(self) -> _Array[_np.int32]:
         """``MjData.body_awake_ind`` (nbody): indices of awake and static bodies."""
     @awake_ind.setter
-    def awake_ind(self, value: _ArrayLike) -> None: ...
+    def awake_ind(self, value: _ArrayValues) -> None: ...
     @property
-    def bvhadr(self) -> _NDArray[_np.int32]:
+    def bvhadr(self) -> _Array[_np.int32]:
         """``MjModel.body_bvhadr`` (nbody): address of bvh root."""
     @bvhadr.setter
-    def bvhadr(self, value: _ArrayLike) -> None: ...
+    def bvhadr(self, value: _ArrayValues) -> None: ...
     @property
-    def bvhnum(self) -> _NDArray[_np.int32]:
+    def bvhnum(self) -> _Array[_np.int32]:
         """``MjModel.body_bvhnum`` (nbody): number of bounding volumes."""
     @bvhnum.setter
-    def bvhnum(self, value: _ArrayLike) -> None: ...
+    def bvhnum(self, value: _ArrayValues) -> None: ...
     @property
-    def cacc(self) -> _NDArray[_np.float64]:
+    def cacc(self) -> _Array[_np.float64]:
         """``MjData.cacc`` (nbody x 6): com-based acceleration."""
     @cacc.setter
-    def cacc(self, value: _ArrayLike) -> None: ...
+    def cacc(self, value: _ArrayValues) -> None: ...
     @property
-    def cfrc_ext(self) -> _NDArray[_np.float64]:
+    def cfrc_ext(self) -> _Array[_np.float64]:
         """``MjData.cfrc_ext`` (nbody x 6): com-based external force on body."""
     @cfrc_ext.setter
-    def cfrc_ext(self, value: _ArrayLike) -> None: ...
+    def cfrc_ext(self, value: _ArrayValues) -> None: ...
     @property
-    def cfrc_int(self) -> _NDArray[_np.float64]:
+    def cfrc_int(self) -> _Array[_np.float64]:
         """``MjData.cfrc_int`` (nbody x 6): com-based interaction force with parent."""
     @cfrc_int.setter
-    def cfrc_int(self, value: _ArrayLike) -> None: ...
+    def cfrc_int(self, value: _ArrayValues) -> None: ...
     @property
-    def cinert(self) -> _NDArray[_np.float64]:
+    def cinert(self) -> _Array[_np.float64]:
         """``MjData.cinert`` (nbody x 10): com-based body inertia and mass."""
     @cinert.setter
-    def cinert(self, value: _ArrayLike) -> None: ...
+    def cinert(self, value: _ArrayValues) -> None: ...
     @property
-    def conaffinity(self) -> _NDArray[_np.int32]:
+    def conaffinity(self) -> _Array[_np.int32]:
         """``MjModel.body_conaffinity`` (nbody): OR over all geom conaffinities."""
     @conaffinity.setter
-    def conaffinity(self, value: _ArrayLike) -> None: ...
+    def conaffinity(self, value: _ArrayValues) -> None: ...
     @property
-    def contype(self) -> _NDArray[_np.int32]:
+    def contype(self) -> _Array[_np.int32]:
         """``MjModel.body_contype`` (nbody): OR over all geom contypes."""
     @contype.setter
-    def contype(self, value: _ArrayLike) -> None: ...
+    def contype(self, value: _ArrayValues) -> None: ...
     @property
-    def crb(self) -> _NDArray[_np.float64]:
+    def crb(self) -> _Array[_np.float64]:
         """``MjData.crb`` (nbody x 10): com-based composite inertia and mass."""
     @crb.setter
-    def crb(self, value: _ArrayLike) -> None: ...
+    def crb(self, value: _ArrayValues) -> None: ...
     @property
-    def cvel(self) -> _NDArray[_np.float64]:
+    def cvel(self) -> _Array[_np.float64]:
         """``MjData.cvel`` (nbody x 6): com-based velocity (rot:lin)."""
     @cvel.setter
-    def cvel(self, value: _ArrayLike) -> None: ...
+    def cvel(self, value: _ArrayValues) -> None: ...
     @property
-    def dofadr(self) -> _NDArray[_np.int32]:
+    def dofadr(self) -> _Array[_np.int32]:
         """``MjModel.body_dofadr`` (nbody): start addr of dofs; -1: no dofs."""
     @dofadr.setter
-    def dofadr(self, value: _ArrayLike) -> None: ...
+    def dofadr(self, value: _ArrayValues) -> None: ...
     @property
-    def dofnum(self) -> _NDArray[_np.int32]:
+    def dofnum(self) -> _Array[_np.int32]:
         """``MjModel.body_dofnum`` (nbody): number of motion degrees of freedom."""
     @dofnum.setter
-    def dofnum(self, value: _ArrayLike) -> None: ...
+    def dofnum(self, value: _ArrayValues) -> None: ...
     @property
-    def geomadr(self) -> _NDArray[_np.int32]:
+    def geomadr(self) -> _Array[_np.int32]:
         """``MjModel.body_geomadr`` (nbody): start addr of geoms; -1: no geoms."""
     @geomadr.setter
-    def geomadr(self, value: _ArrayLike) -> None: ...
+    def geomadr(self, value: _ArrayValues) -> None: ...
     @property
-    def geomnum(self) -> _NDArray[_np.int32]:
+    def geomnum(self) -> _Array[_np.int32]:
         """``MjModel.body_geomnum`` (nbody): number of geoms."""
     @geomnum.setter
-    def geomnum(self, value: _ArrayLike) -> None: ...
+    def geomnum(self, value: _ArrayValues) -> None: ...
     @property
-    def gravcomp(self) -> _NDArray[_np.float64]:
+    def gravcomp(self) -> _Array[_np.float64]:
         """``MjModel.body_gravcomp`` (nbody): antigravity force, units of body weight."""
     @gravcomp.setter
-    def gravcomp(self, value: _ArrayLike) -> None: ...
+    def gravcomp(self, value: _ArrayValues) -> None: ...
     @property
-    def inertia(self) -> _NDArray[_np.float64]:
+    def inertia(self) -> _Array[_np.float64]:
         """``MjModel.body_inertia`` (nbody x 3): diagonal inertia in ipos/iquat frame."""
     @inertia.setter
-    def inertia(self, value: _ArrayLike) -> None: ...
+    def inertia(self, value: _ArrayValues) -> None: ...
     @property
-    def invweight0(self) -> _NDArray[_np.float64]:
+    def invweight0(self) -> _Array[_np.float64]:
         """``MjModel.body_invweight0`` (nbody x 2): mean inv inert in qpos0 (trn, rot)."""
     @invweight0.setter
-    def invweight0(self, value: _ArrayLike) -> None: ...
+    def invweight0(self, value: _ArrayValues) -> None: ...
     @property
-    def ipos(self) -> _NDArray[_np.float64]:
+    def ipos(self) -> _Array[_np.float64]:
         """``MjModel.body_ipos`` (nbody x 3): local position of center of mass."""
     @ipos.setter
-    def ipos(self, value: _ArrayLike) -> None: ...
+    def ipos(self, value: _ArrayValues) -> None: ...
     @property
-    def iquat(self) -> _NDArray[_np.float64]:
+    def iquat(self) -> _Array[_np.float64]:
         """``MjModel.body_iquat`` (nbody x 4): local orientation of inertia ellipsoid."""
     @iquat.setter
-    def iquat(self, value: _ArrayLike) -> None: ...
+    def iquat(self, value: _ArrayValues) -> None: ...
     @property
-    def jntadr(self) -> _NDArray[_np.int32]:
+    def jntadr(self) -> _Array[_np.int32]:
         """``MjModel.body_jntadr`` (nbody): start addr of joints; -1: no joints."""
     @jntadr.setter
-    def jntadr(self, value: _ArrayLike) -> None: ...
+    def jntadr(self, value: _ArrayValues) -> None: ...
     @property
-    def jntnum(self) -> _NDArray[_np.int32]:
+    def jntnum(self) -> _Array[_np.int32]:
         """``MjModel.body_jntnum`` (nbody): number of joints for this body."""
     @jntnum.setter
-    def jntnum(self, value: _ArrayLike) -> None: ...
+    def jntnum(self, value: _ArrayValues) -> None: ...
     @property
-    def margin(self) -> _NDArray[_np.float64]:
+    def margin(self) -> _Array[_np.float64]:
         """``MjModel.body_margin`` (nbody): MAX over all geom margins+gaps."""
     @margin.setter
-    def margin(self, value: _ArrayLike) -> None: ...
+    def margin(self, value: _ArrayValues) -> None: ...
     @property
-    def mass(self) -> _NDArray[_np.float64]:
+    def mass(self) -> _Array[_np.float64]:
         """``MjModel.body_mass`` (nbody): mass."""
     @mass.setter
-    def mass(self, value: _ArrayLike) -> None: ...
+    def mass(self, value: _ArrayValues) -> None: ...
     @property
-    def mocap_pos(self) -> _NDArray[_np.float64]:
+    def mocap_pos(self) -> _Array[_np.float64]:
         """``MjData.mocap_pos`` (nmocap x 3): positions of mocap bodies."""
     @mocap_pos.setter
-    def mocap_pos(self, value: _ArrayLike) -> None: ...
+    def mocap_pos(self, value: _ArrayValues) -> None: ...
     @property
-    def mocap_quat(self) -> _NDArray[_np.float64]:
+    def mocap_quat(self) -> _Array[_np.float64]:
         """``MjData.mocap_quat`` (nmocap x 4): orientations of mocap bodies."""
     @mocap_quat.setter
-    def mocap_quat(self, value: _ArrayLike) -> None: ...
+    def mocap_quat(self, value: _ArrayValues) -> None: ...
     @property
-    def mocapid(self) -> _NDArray[_np.int32]:
+    def mocapid(self) -> _Array[_np.int32]:
         """``MjModel.body_mocapid`` (nbody): id of mocap data; -1: none."""
     @mocapid.setter
-    def mocapid(self, value: _ArrayLike) -> None: ...
+    def mocapid(self, value: _ArrayValues) -> None: ...
     @property
-    def name_bodyadr(self) -> _NDArray[_np.int32]:
+    def name_bodyadr(self) -> _Array[_np.int32]:
         """``MjModel.name_bodyadr`` (nbody): body name pointers."""
     @name_bodyadr.setter
-    def name_bodyadr(self, value: _ArrayLike) -> None: ...
+    def name_bodyadr(self, value: _ArrayValues) -> None: ...
     @property
-    def parent_awake_ind(self) -> _NDArray[_np.int32]:
+    def parent_awake_ind(self) -> _Array[_np.int32]:
         """``MjData.parent_awake_ind`` (nbody): indices of bodies with awake or static parents."""
     @parent_awake_ind.setter
-    def parent_awake_ind(self, value: _ArrayLike) -> None: ...
+    def parent_awake_ind(self, value: _ArrayValues) -> None: ...
     @property
-    def parentid(self) -> _NDArray[_np.int32]:
+    def parentid(self) -> _Array[_np.int32]:
         """``MjModel.body_parentid`` (nbody): id of body's parent."""
     @parentid.setter
-    def parentid(self, value: _ArrayLike) -> None: ...
+    def parentid(self, value: _ArrayValues) -> None: ...
     @property
-    def plugin(self) -> _NDArray[_np.int32]:
+    def plugin(self) -> _Array[_np.int32]:
         """``MjModel.body_plugin`` (nbody): plugin instance id; -1: not in use."""
     @plugin.setter
-    def plugin(self, value: _ArrayLike) -> None: ...
+    def plugin(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.body_pos`` (nbody x 3): position offset rel. to parent body."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def quat(self) -> _NDArray[_np.float64]:
+    def quat(self) -> _Array[_np.float64]:
         """``MjModel.body_quat`` (nbody x 4): orientation offset rel. to parent body."""
     @quat.setter
-    def quat(self, value: _ArrayLike) -> None: ...
+    def quat(self, value: _ArrayValues) -> None: ...
     @property
-    def rootid(self) -> _NDArray[_np.int32]:
+    def rootid(self) -> _Array[_np.int32]:
         """``MjModel.body_rootid`` (nbody): ancestor that is direct child of world."""
     @rootid.setter
-    def rootid(self, value: _ArrayLike) -> None: ...
+    def rootid(self, value: _ArrayValues) -> None: ...
     @property
-    def sameframe(self) -> _NDArray[_np.uint8]:
+    def sameframe(self) -> _Array[_np.uint8]:
         """``MjModel.body_sameframe`` (nbody): same frame as inertia (mjtSameframe)."""
     @sameframe.setter
-    def sameframe(self, value: _ArrayLike) -> None: ...
+    def sameframe(self, value: _ArrayValues) -> None: ...
     @property
-    def simple(self) -> _NDArray[_np.uint8]:
+    def simple(self) -> _Array[_np.uint8]:
         """``MjModel.body_simple`` (nbody): 1: diag M; 2: diag M, sliders only."""
     @simple.setter
-    def simple(self, value: _ArrayLike) -> None: ...
+    def simple(self, value: _ArrayValues) -> None: ...
     @property
-    def subtree_angmom(self) -> _NDArray[_np.float64]:
+    def subtree_angmom(self) -> _Array[_np.float64]:
         """``MjData.subtree_angmom`` (nbody x 3): angular momentum about subtree com."""
     @subtree_angmom.setter
-    def subtree_angmom(self, value: _ArrayLike) -> None: ...
+    def subtree_angmom(self, value: _ArrayValues) -> None: ...
     @property
-    def subtree_com(self) -> _NDArray[_np.float64]:
+    def subtree_com(self) -> _Array[_np.float64]:
         """``MjData.subtree_com`` (nbody x 3): center of mass of each subtree."""
     @subtree_com.setter
-    def subtree_com(self, value: _ArrayLike) -> None: ...
+    def subtree_com(self, value: _ArrayValues) -> None: ...
     @property
-    def subtree_linvel(self) -> _NDArray[_np.float64]:
+    def subtree_linvel(self) -> _Array[_np.float64]:
         """``MjData.subtree_linvel`` (nbody x 3): linear velocity of subtree com."""
     @subtree_linvel.setter
-    def subtree_linvel(self, value: _ArrayLike) -> None: ...
+    def subtree_linvel(self, value: _ArrayValues) -> None: ...
     @property
-    def subtreemass(self) -> _NDArray[_np.float64]:
+    def subtreemass(self) -> _Array[_np.float64]:
         """``MjModel.body_subtreemass`` (nbody): mass of subtree starting at this body."""
     @subtreemass.setter
-    def subtreemass(self, value: _ArrayLike) -> None: ...
+    def subtreemass(self, value: _ArrayValues) -> None: ...
     @property
-    def treeid(self) -> _NDArray[_np.int32]:
+    def treeid(self) -> _Array[_np.int32]:
         """``MjModel.body_treeid`` (nbody): id of body's kinematic tree; -1: static."""
     @treeid.setter
-    def treeid(self, value: _ArrayLike) -> None: ...
+    def treeid(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.body_user`` (nbody x nuser_body): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def weldid(self) -> _NDArray[_np.int32]:
+    def weldid(self) -> _Array[_np.int32]:
         """``MjModel.body_weldid`` (nbody): top dof-less ancestor; mocap: own root."""
     @weldid.setter
-    def weldid(self, value: _ArrayLike) -> None: ...
+    def weldid(self, value: _ArrayValues) -> None: ...
     @property
-    def xfrc_applied(self) -> _NDArray[_np.float64]:
+    def xfrc_applied(self) -> _Array[_np.float64]:
         """``MjData.xfrc_applied`` (nbody x 6): applied Cartesian force/torque."""
     @xfrc_applied.setter
-    def xfrc_applied(self, value: _ArrayLike) -> None: ...
+    def xfrc_applied(self, value: _ArrayValues) -> None: ...
     @property
-    def ximat(self) -> _NDArray[_np.float64]:
+    def ximat(self) -> _Array[_np.float64]:
         """``MjData.ximat`` (nbody x 9): Cartesian orientation of body inertia."""
     @ximat.setter
-    def ximat(self, value: _ArrayLike) -> None: ...
+    def ximat(self, value: _ArrayValues) -> None: ...
     @property
-    def xipos(self) -> _NDArray[_np.float64]:
+    def xipos(self) -> _Array[_np.float64]:
         """``MjData.xipos`` (nbody x 3): Cartesian position of body com."""
     @xipos.setter
-    def xipos(self, value: _ArrayLike) -> None: ...
+    def xipos(self, value: _ArrayValues) -> None: ...
     @property
-    def xiquat(self) -> _NDArray[_np.float64]:
+    def xiquat(self) -> _Array[_np.float64]:
         """``MjData.xiquat`` (nbody x 4): Cartesian orientation of body inertia."""
     @xiquat.setter
-    def xiquat(self, value: _ArrayLike) -> None: ...
+    def xiquat(self, value: _ArrayValues) -> None: ...
     @property
-    def xmat(self) -> _NDArray[_np.float64]:
+    def xmat(self) -> _Array[_np.float64]:
         """``MjData.xmat`` (nbody x 9): Cartesian orientation of body frame."""
     @xmat.setter
-    def xmat(self, value: _ArrayLike) -> None: ...
+    def xmat(self, value: _ArrayValues) -> None: ...
     @property
-    def xpos(self) -> _NDArray[_np.float64]:
+    def xpos(self) -> _Array[_np.float64]:
         """``MjData.xpos`` (nbody x 3): Cartesian position of body frame."""
     @xpos.setter
-    def xpos(self, value: _ArrayLike) -> None: ...
+    def xpos(self, value: _ArrayValues) -> None: ...
     @property
-    def xquat(self) -> _NDArray[_np.float64]:
+    def xquat(self) -> _Array[_np.float64]:
         """``MjData.xquat`` (nbody x 4): Cartesian orientation of body frame."""
     @xquat.setter
-    def xquat(self, value: _ArrayLike) -> None: ...
+    def xquat(self, value: _ArrayValues) -> None: ...
 
 
 class CameraBinding(_Binding):
@@ -659,100 +659,100 @@ class CameraBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def bodyid(self) -> _NDArray[_np.int32]:
+    def bodyid(self) -> _Array[_np.int32]:
         """``MjModel.cam_bodyid`` (ncam): id of camera's body."""
     @bodyid.setter
-    def bodyid(self, value: _ArrayLike) -> None: ...
+    def bodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def fovy(self) -> _NDArray[_np.float64]:
+    def fovy(self) -> _Array[_np.float64]:
         """``MjModel.cam_fovy`` (ncam): y field-of-view (ortho ? len : deg)."""
     @fovy.setter
-    def fovy(self, value: _ArrayLike) -> None: ...
+    def fovy(self, value: _ArrayValues) -> None: ...
     @property
-    def intrinsic(self) -> _NDArray[_np.float32]:
+    def intrinsic(self) -> _Array[_np.float32]:
         """``MjModel.cam_intrinsic`` (ncam x 4): [focal length; principal point]."""
     @intrinsic.setter
-    def intrinsic(self, value: _ArrayLike) -> None: ...
+    def intrinsic(self, value: _ArrayValues) -> None: ...
     @property
-    def ipd(self) -> _NDArray[_np.float64]:
+    def ipd(self) -> _Array[_np.float64]:
         """``MjModel.cam_ipd`` (ncam): inter-pupilary distance."""
     @ipd.setter
-    def ipd(self, value: _ArrayLike) -> None: ...
+    def ipd(self, value: _ArrayValues) -> None: ...
     @property
-    def mat0(self) -> _NDArray[_np.float64]:
+    def mat0(self) -> _Array[_np.float64]:
         """``MjModel.cam_mat0`` (ncam x 9): global orientation in qpos0."""
     @mat0.setter
-    def mat0(self, value: _ArrayLike) -> None: ...
+    def mat0(self, value: _ArrayValues) -> None: ...
     @property
-    def mode(self) -> _NDArray[_np.int32]:
+    def mode(self) -> _Array[_np.int32]:
         """``MjModel.cam_mode`` (ncam): camera tracking mode (mjtCamLight)."""
     @mode.setter
-    def mode(self, value: _ArrayLike) -> None: ...
+    def mode(self, value: _ArrayValues) -> None: ...
     @property
-    def name_camadr(self) -> _NDArray[_np.int32]:
+    def name_camadr(self) -> _Array[_np.int32]:
         """``MjModel.name_camadr`` (ncam): camera name pointers."""
     @name_camadr.setter
-    def name_camadr(self, value: _ArrayLike) -> None: ...
+    def name_camadr(self, value: _ArrayValues) -> None: ...
     @property
-    def output(self) -> _NDArray[_np.int32]:
+    def output(self) -> _Array[_np.int32]:
         """``MjModel.cam_output`` (ncam): output types (mjtCamOut bit flags)."""
     @output.setter
-    def output(self, value: _ArrayLike) -> None: ...
+    def output(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.cam_pos`` (ncam x 3): position rel. to body frame."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def pos0(self) -> _NDArray[_np.float64]:
+    def pos0(self) -> _Array[_np.float64]:
         """``MjModel.cam_pos0`` (ncam x 3): global position rel. to body in qpos0."""
     @pos0.setter
-    def pos0(self, value: _ArrayLike) -> None: ...
+    def pos0(self, value: _ArrayValues) -> None: ...
     @property
-    def poscom0(self) -> _NDArray[_np.float64]:
+    def poscom0(self) -> _Array[_np.float64]:
         """``MjModel.cam_poscom0`` (ncam x 3): global position rel. to sub-com in qpos0."""
     @poscom0.setter
-    def poscom0(self, value: _ArrayLike) -> None: ...
+    def poscom0(self, value: _ArrayValues) -> None: ...
     @property
-    def projection(self) -> _NDArray[_np.int32]:
+    def projection(self) -> _Array[_np.int32]:
         """``MjModel.cam_projection`` (ncam): projection type (mjtProjection)."""
     @projection.setter
-    def projection(self, value: _ArrayLike) -> None: ...
+    def projection(self, value: _ArrayValues) -> None: ...
     @property
-    def quat(self) -> _NDArray[_np.float64]:
+    def quat(self) -> _Array[_np.float64]:
         """``MjModel.cam_quat`` (ncam x 4): orientation rel. to body frame."""
     @quat.setter
-    def quat(self, value: _ArrayLike) -> None: ...
+    def quat(self, value: _ArrayValues) -> None: ...
     @property
-    def resolution(self) -> _NDArray[_np.int32]:
+    def resolution(self) -> _Array[_np.int32]:
         """``MjModel.cam_resolution`` (ncam x 2): resolution: pixels [width, height]."""
     @resolution.setter
-    def resolution(self, value: _ArrayLike) -> None: ...
+    def resolution(self, value: _ArrayValues) -> None: ...
     @property
-    def sensorsize(self) -> _NDArray[_np.float32]:
+    def sensorsize(self) -> _Array[_np.float32]:
         """``MjModel.cam_sensorsize`` (ncam x 2): sensor size: length [width, height]."""
     @sensorsize.setter
-    def sensorsize(self, value: _ArrayLike) -> None: ...
+    def sensorsize(self, value: _ArrayValues) -> None: ...
     @property
-    def targetbodyid(self) -> _NDArray[_np.int32]:
+    def targetbodyid(self) -> _Array[_np.int32]:
         """``MjModel.cam_targetbodyid`` (ncam): id of targeted body; -1: none."""
     @targetbodyid.setter
-    def targetbodyid(self, value: _ArrayLike) -> None: ...
+    def targetbodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.cam_user`` (ncam x nuser_cam): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def xmat(self) -> _NDArray[_np.float64]:
+    def xmat(self) -> _Array[_np.float64]:
         """``MjData.cam_xmat`` (ncam x 9): Cartesian camera orientation."""
     @xmat.setter
-    def xmat(self, value: _ArrayLike) -> None: ...
+    def xmat(self, value: _ArrayValues) -> None: ...
     @property
-    def xpos(self) -> _NDArray[_np.float64]:
+    def xpos(self) -> _Array[_np.float64]:
         """``MjData.cam_xpos`` (ncam x 3): Cartesian camera position."""
     @xpos.setter
-    def xpos(self, value: _ArrayLike) -> None: ...
+    def xpos(self, value: _ArrayValues) -> None: ...
 
 
 class EqualityBinding(_Binding):
@@ -760,55 +760,55 @@ class EqualityBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def active(self) -> _NDArray[_np.bool_]:
+    def active(self) -> _Array[_np.bool_]:
         """``MjData.eq_active`` (neq): enable/disable constraints."""
     @active.setter
-    def active(self, value: _ArrayLike) -> None: ...
+    def active(self, value: _ArrayValues) -> None: ...
     @property
-    def active0(self) -> _NDArray[_np.bool_]:
+    def active0(self) -> _Array[_np.bool_]:
         """``MjModel.eq_active0`` (neq): initial enable/disable constraint state."""
     @active0.setter
-    def active0(self, value: _ArrayLike) -> None: ...
+    def active0(self, value: _ArrayValues) -> None: ...
     @property
-    def data(self) -> _NDArray[_np.float64]:
+    def data(self) -> _Array[_np.float64]:
         """``MjModel.eq_data`` (neq x mjNEQDATA): numeric data for constraint."""
     @data.setter
-    def data(self, value: _ArrayLike) -> None: ...
+    def data(self, value: _ArrayValues) -> None: ...
     @property
-    def name_eqadr(self) -> _NDArray[_np.int32]:
+    def name_eqadr(self) -> _Array[_np.int32]:
         """``MjModel.name_eqadr`` (neq): equality constraint name pointers."""
     @name_eqadr.setter
-    def name_eqadr(self, value: _ArrayLike) -> None: ...
+    def name_eqadr(self, value: _ArrayValues) -> None: ...
     @property
-    def obj1id(self) -> _NDArray[_np.int32]:
+    def obj1id(self) -> _Array[_np.int32]:
         """``MjModel.eq_obj1id`` (neq): id of object 1."""
     @obj1id.setter
-    def obj1id(self, value: _ArrayLike) -> None: ...
+    def obj1id(self, value: _ArrayValues) -> None: ...
     @property
-    def obj2id(self) -> _NDArray[_np.int32]:
+    def obj2id(self) -> _Array[_np.int32]:
         """``MjModel.eq_obj2id`` (neq): id of object 2."""
     @obj2id.setter
-    def obj2id(self, value: _ArrayLike) -> None: ...
+    def obj2id(self, value: _ArrayValues) -> None: ...
     @property
-    def objtype(self) -> _NDArray[_np.int32]:
+    def objtype(self) -> _Array[_np.int32]:
         """``MjModel.eq_objtype`` (neq): type of both objects (mjtObj)."""
     @objtype.setter
-    def objtype(self, value: _ArrayLike) -> None: ...
+    def objtype(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp(self) -> _NDArray[_np.float64]:
+    def solimp(self) -> _Array[_np.float64]:
         """``MjModel.eq_solimp`` (neq x mjNIMP): constraint solver impedance."""
     @solimp.setter
-    def solimp(self, value: _ArrayLike) -> None: ...
+    def solimp(self, value: _ArrayValues) -> None: ...
     @property
-    def solref(self) -> _NDArray[_np.float64]:
+    def solref(self) -> _Array[_np.float64]:
         """``MjModel.eq_solref`` (neq x mjNREF): constraint solver reference."""
     @solref.setter
-    def solref(self, value: _ArrayLike) -> None: ...
+    def solref(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.eq_type`` (neq): constraint type (mjtEq)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
 
 
 class ExcludeBinding(_Binding):
@@ -816,15 +816,15 @@ class ExcludeBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def name_excludeadr(self) -> _NDArray[_np.int32]:
+    def name_excludeadr(self) -> _Array[_np.int32]:
         """``MjModel.name_excludeadr`` (nexclude): exclude name pointers."""
     @name_excludeadr.setter
-    def name_excludeadr(self, value: _ArrayLike) -> None: ...
+    def name_excludeadr(self, value: _ArrayValues) -> None: ...
     @property
-    def signature(self) -> _NDArray[_np.int32]:
+    def signature(self) -> _Array[_np.int32]:
         """``MjModel.exclude_signature`` (nexclude): body1 << 16 + body2."""
     @signature.setter
-    def signature(self, value: _ArrayLike) -> None: ...
+    def signature(self, value: _ArrayValues) -> None: ...
 
 
 class FlexBinding(_Binding):
@@ -832,250 +832,250 @@ class FlexBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def activelayers(self) -> _NDArray[_np.int32]:
+    def activelayers(self) -> _Array[_np.int32]:
         """``MjModel.flex_activelayers`` (nflex): number of active element layers, 3D only."""
     @activelayers.setter
-    def activelayers(self, value: _ArrayLike) -> None: ...
+    def activelayers(self, value: _ArrayValues) -> None: ...
     @property
-    def bendingadr(self) -> _NDArray[_np.int32]:
+    def bendingadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_bendingadr`` (nflex): first bending data address."""
     @bendingadr.setter
-    def bendingadr(self, value: _ArrayLike) -> None: ...
+    def bendingadr(self, value: _ArrayValues) -> None: ...
     @property
-    def bvhadr(self) -> _NDArray[_np.int32]:
+    def bvhadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_bvhadr`` (nflex): address of bvh root; -1: no bvh."""
     @bvhadr.setter
-    def bvhadr(self, value: _ArrayLike) -> None: ...
+    def bvhadr(self, value: _ArrayValues) -> None: ...
     @property
-    def bvhnum(self) -> _NDArray[_np.int32]:
+    def bvhnum(self) -> _Array[_np.int32]:
         """``MjModel.flex_bvhnum`` (nflex): number of bounding volumes."""
     @bvhnum.setter
-    def bvhnum(self, value: _ArrayLike) -> None: ...
+    def bvhnum(self, value: _ArrayValues) -> None: ...
     @property
-    def cellnum(self) -> _NDArray[_np.int32]:
+    def cellnum(self) -> _Array[_np.int32]:
         """``MjModel.flex_cellnum`` (nflex x 3): finite cell num per dimension."""
     @cellnum.setter
-    def cellnum(self, value: _ArrayLike) -> None: ...
+    def cellnum(self, value: _ArrayValues) -> None: ...
     @property
-    def centered(self) -> _NDArray[_np.bool_]:
+    def centered(self) -> _Array[_np.bool_]:
         """``MjModel.flex_centered`` (nflex): are all vertex coordinates (0,0,0)."""
     @centered.setter
-    def centered(self, value: _ArrayLike) -> None: ...
+    def centered(self, value: _ArrayValues) -> None: ...
     @property
-    def conaffinity(self) -> _NDArray[_np.int32]:
+    def conaffinity(self) -> _Array[_np.int32]:
         """``MjModel.flex_conaffinity`` (nflex): flex contact affinity."""
     @conaffinity.setter
-    def conaffinity(self, value: _ArrayLike) -> None: ...
+    def conaffinity(self, value: _ArrayValues) -> None: ...
     @property
-    def condim(self) -> _NDArray[_np.int32]:
+    def condim(self) -> _Array[_np.int32]:
         """``MjModel.flex_condim`` (nflex): contact dimensionality (1, 3, 4, 6)."""
     @condim.setter
-    def condim(self, value: _ArrayLike) -> None: ...
+    def condim(self, value: _ArrayValues) -> None: ...
     @property
-    def contype(self) -> _NDArray[_np.int32]:
+    def contype(self) -> _Array[_np.int32]:
         """``MjModel.flex_contype`` (nflex): flex contact type."""
     @contype.setter
-    def contype(self, value: _ArrayLike) -> None: ...
+    def contype(self, value: _ArrayValues) -> None: ...
     @property
-    def damping(self) -> _NDArray[_np.float64]:
+    def damping(self) -> _Array[_np.float64]:
         """``MjModel.flex_damping`` (nflex): Rayleigh's damping coefficient."""
     @damping.setter
-    def damping(self, value: _ArrayLike) -> None: ...
+    def damping(self, value: _ArrayValues) -> None: ...
     @property
-    def dim(self) -> _NDArray[_np.int32]:
+    def dim(self) -> _Array[_np.int32]:
         """``MjModel.flex_dim`` (nflex): 1: lines, 2: triangles, 3: tetrahedra."""
     @dim.setter
-    def dim(self, value: _ArrayLike) -> None: ...
+    def dim(self, value: _ArrayValues) -> None: ...
     @property
-    def edgeadr(self) -> _NDArray[_np.int32]:
+    def edgeadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_edgeadr`` (nflex): first edge address."""
     @edgeadr.setter
-    def edgeadr(self, value: _ArrayLike) -> None: ...
+    def edgeadr(self, value: _ArrayValues) -> None: ...
     @property
-    def edgedamping(self) -> _NDArray[_np.float64]:
+    def edgedamping(self) -> _Array[_np.float64]:
         """``MjModel.flex_edgedamping`` (nflex): edge damping."""
     @edgedamping.setter
-    def edgedamping(self, value: _ArrayLike) -> None: ...
+    def edgedamping(self, value: _ArrayValues) -> None: ...
     @property
-    def edgeequality(self) -> _NDArray[_np.int32]:
+    def edgeequality(self) -> _Array[_np.int32]:
         """``MjModel.flex_edgeequality`` (nflex): 0:none, 1:edges, 3:strain."""
     @edgeequality.setter
-    def edgeequality(self, value: _ArrayLike) -> None: ...
+    def edgeequality(self, value: _ArrayValues) -> None: ...
     @property
-    def edgenum(self) -> _NDArray[_np.int32]:
+    def edgenum(self) -> _Array[_np.int32]:
         """``MjModel.flex_edgenum`` (nflex): number of edges."""
     @edgenum.setter
-    def edgenum(self, value: _ArrayLike) -> None: ...
+    def edgenum(self, value: _ArrayValues) -> None: ...
     @property
-    def edgestiffness(self) -> _NDArray[_np.float64]:
+    def edgestiffness(self) -> _Array[_np.float64]:
         """``MjModel.flex_edgestiffness`` (nflex): edge stiffness."""
     @edgestiffness.setter
-    def edgestiffness(self, value: _ArrayLike) -> None: ...
+    def edgestiffness(self, value: _ArrayValues) -> None: ...
     @property
-    def elemadr(self) -> _NDArray[_np.int32]:
+    def elemadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_elemadr`` (nflex): first element address."""
     @elemadr.setter
-    def elemadr(self, value: _ArrayLike) -> None: ...
+    def elemadr(self, value: _ArrayValues) -> None: ...
     @property
-    def elemdataadr(self) -> _NDArray[_np.int32]:
+    def elemdataadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_elemdataadr`` (nflex): first element vertex id address."""
     @elemdataadr.setter
-    def elemdataadr(self, value: _ArrayLike) -> None: ...
+    def elemdataadr(self, value: _ArrayValues) -> None: ...
     @property
-    def elemedgeadr(self) -> _NDArray[_np.int32]:
+    def elemedgeadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_elemedgeadr`` (nflex): first element edge id address."""
     @elemedgeadr.setter
-    def elemedgeadr(self, value: _ArrayLike) -> None: ...
+    def elemedgeadr(self, value: _ArrayValues) -> None: ...
     @property
-    def elemnum(self) -> _NDArray[_np.int32]:
+    def elemnum(self) -> _Array[_np.int32]:
         """``MjModel.flex_elemnum`` (nflex): number of elements."""
     @elemnum.setter
-    def elemnum(self, value: _ArrayLike) -> None: ...
+    def elemnum(self, value: _ArrayValues) -> None: ...
     @property
-    def flatskin(self) -> _NDArray[_np.bool_]:
+    def flatskin(self) -> _Array[_np.bool_]:
         """``MjModel.flex_flatskin`` (nflex): render flex skin with flat shading."""
     @flatskin.setter
-    def flatskin(self, value: _ArrayLike) -> None: ...
+    def flatskin(self, value: _ArrayValues) -> None: ...
     @property
-    def friction(self) -> _NDArray[_np.float64]:
+    def friction(self) -> _Array[_np.float64]:
         """``MjModel.flex_friction`` (nflex x 3): friction for (slide, spin, roll)."""
     @friction.setter
-    def friction(self, value: _ArrayLike) -> None: ...
+    def friction(self, value: _ArrayValues) -> None: ...
     @property
-    def gap(self) -> _NDArray[_np.float64]:
+    def gap(self) -> _Array[_np.float64]:
         """``MjModel.flex_gap`` (nflex): additional contact detection buffer."""
     @gap.setter
-    def gap(self, value: _ArrayLike) -> None: ...
+    def gap(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.flex_group`` (nflex): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def hessian_valid(self) -> _NDArray[_np.bool_]:
+    def hessian_valid(self) -> _Array[_np.bool_]:
         """``MjData.flex_hessian_valid`` (nflex): Cartesian stretch Hessian cache is current."""
     @hessian_valid.setter
-    def hessian_valid(self, value: _ArrayLike) -> None: ...
+    def hessian_valid(self, value: _ArrayValues) -> None: ...
     @property
-    def interp(self) -> _NDArray[_np.int32]:
+    def interp(self) -> _Array[_np.int32]:
         """``MjModel.flex_interp`` (nflex): interpolation (0: vertex, 1: nodes)."""
     @interp.setter
-    def interp(self, value: _ArrayLike) -> None: ...
+    def interp(self, value: _ArrayValues) -> None: ...
     @property
-    def margin(self) -> _NDArray[_np.float64]:
+    def margin(self) -> _Array[_np.float64]:
         """``MjModel.flex_margin`` (nflex): geometric inflation for contact."""
     @margin.setter
-    def margin(self, value: _ArrayLike) -> None: ...
+    def margin(self, value: _ArrayValues) -> None: ...
     @property
-    def name_flexadr(self) -> _NDArray[_np.int32]:
+    def name_flexadr(self) -> _Array[_np.int32]:
         """``MjModel.name_flexadr`` (nflex): flex name pointers."""
     @name_flexadr.setter
-    def name_flexadr(self, value: _ArrayLike) -> None: ...
+    def name_flexadr(self, value: _ArrayValues) -> None: ...
     @property
-    def nodeadr(self) -> _NDArray[_np.int32]:
+    def nodeadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_nodeadr`` (nflex): first node address."""
     @nodeadr.setter
-    def nodeadr(self, value: _ArrayLike) -> None: ...
+    def nodeadr(self, value: _ArrayValues) -> None: ...
     @property
-    def nodenum(self) -> _NDArray[_np.int32]:
+    def nodenum(self) -> _Array[_np.int32]:
         """``MjModel.flex_nodenum`` (nflex): number of nodes."""
     @nodenum.setter
-    def nodenum(self, value: _ArrayLike) -> None: ...
+    def nodenum(self, value: _ArrayValues) -> None: ...
     @property
-    def passive(self) -> _NDArray[_np.int32]:
+    def passive(self) -> _Array[_np.int32]:
         """``MjModel.flex_passive`` (nflex): passive collisions enabled."""
     @passive.setter
-    def passive(self, value: _ArrayLike) -> None: ...
+    def passive(self, value: _ArrayValues) -> None: ...
     @property
-    def plasticadr(self) -> _NDArray[_np.int32]:
+    def plasticadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_plasticadr`` (nflex): plastic state address; -1: elastic."""
     @plasticadr.setter
-    def plasticadr(self, value: _ArrayLike) -> None: ...
+    def plasticadr(self, value: _ArrayValues) -> None: ...
     @property
-    def plasticmode(self) -> _NDArray[_np.int32]:
+    def plasticmode(self) -> _Array[_np.int32]:
         """``MjModel.flex_plasticmode`` (nflex): plastic state bits; 1: bend, 2: stretch."""
     @plasticmode.setter
-    def plasticmode(self, value: _ArrayLike) -> None: ...
+    def plasticmode(self, value: _ArrayValues) -> None: ...
     @property
-    def priority(self) -> _NDArray[_np.int32]:
+    def priority(self) -> _Array[_np.int32]:
         """``MjModel.flex_priority`` (nflex): flex contact priority."""
     @priority.setter
-    def priority(self, value: _ArrayLike) -> None: ...
+    def priority(self, value: _ArrayValues) -> None: ...
     @property
-    def radius(self) -> _NDArray[_np.float64]:
+    def radius(self) -> _Array[_np.float64]:
         """``MjModel.flex_radius`` (nflex): radius around primitive element."""
     @radius.setter
-    def radius(self, value: _ArrayLike) -> None: ...
+    def radius(self, value: _ArrayValues) -> None: ...
     @property
-    def rgba(self) -> _NDArray[_np.float32]:
+    def rgba(self) -> _Array[_np.float32]:
         """``MjModel.flex_rgba`` (nflex x 4): rgba when material is omitted."""
     @rgba.setter
-    def rgba(self, value: _ArrayLike) -> None: ...
+    def rgba(self, value: _ArrayValues) -> None: ...
     @property
-    def rigid(self) -> _NDArray[_np.bool_]:
+    def rigid(self) -> _Array[_np.bool_]:
         """``MjModel.flex_rigid`` (nflex): are all vertices in the same body."""
     @rigid.setter
-    def rigid(self, value: _ArrayLike) -> None: ...
+    def rigid(self, value: _ArrayValues) -> None: ...
     @property
-    def selfcollide(self) -> _NDArray[_np.int32]:
+    def selfcollide(self) -> _Array[_np.int32]:
         """``MjModel.flex_selfcollide`` (nflex): self collision mode (mjtFlexSelf)."""
     @selfcollide.setter
-    def selfcollide(self, value: _ArrayLike) -> None: ...
+    def selfcollide(self, value: _ArrayValues) -> None: ...
     @property
-    def shelldataadr(self) -> _NDArray[_np.int32]:
+    def shelldataadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_shelldataadr`` (nflex): first shell data address."""
     @shelldataadr.setter
-    def shelldataadr(self, value: _ArrayLike) -> None: ...
+    def shelldataadr(self, value: _ArrayValues) -> None: ...
     @property
-    def shellnum(self) -> _NDArray[_np.int32]:
+    def shellnum(self) -> _Array[_np.int32]:
         """``MjModel.flex_shellnum`` (nflex): number of shells."""
     @shellnum.setter
-    def shellnum(self, value: _ArrayLike) -> None: ...
+    def shellnum(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.float64]:
+    def size(self) -> _Array[_np.float64]:
         """``MjModel.flex_size`` (nflex x 3): vertex bounding box half sizes in qpos0."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp(self) -> _NDArray[_np.float64]:
+    def solimp(self) -> _Array[_np.float64]:
         """``MjModel.flex_solimp`` (nflex x mjNIMP): constraint solver impedance: contact."""
     @solimp.setter
-    def solimp(self, value: _ArrayLike) -> None: ...
+    def solimp(self, value: _ArrayValues) -> None: ...
     @property
-    def solmix(self) -> _NDArray[_np.float64]:
+    def solmix(self) -> _Array[_np.float64]:
         """``MjModel.flex_solmix`` (nflex): mix coef for solref/imp in contact pair."""
     @solmix.setter
-    def solmix(self, value: _ArrayLike) -> None: ...
+    def solmix(self, value: _ArrayValues) -> None: ...
     @property
-    def solref(self) -> _NDArray[_np.float64]:
+    def solref(self) -> _Array[_np.float64]:
         """``MjModel.flex_solref`` (nflex x mjNREF): constraint solver reference: contact."""
     @solref.setter
-    def solref(self, value: _ArrayLike) -> None: ...
+    def solref(self, value: _ArrayValues) -> None: ...
     @property
-    def stiffnessadr(self) -> _NDArray[_np.int32]:
+    def stiffnessadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_stiffnessadr`` (nflex): stiffness matrix address."""
     @stiffnessadr.setter
-    def stiffnessadr(self, value: _ArrayLike) -> None: ...
+    def stiffnessadr(self, value: _ArrayValues) -> None: ...
     @property
-    def texcoordadr(self) -> _NDArray[_np.int32]:
+    def texcoordadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_texcoordadr`` (nflex): address in flex_texcoord; -1: none."""
     @texcoordadr.setter
-    def texcoordadr(self, value: _ArrayLike) -> None: ...
+    def texcoordadr(self, value: _ArrayValues) -> None: ...
     @property
-    def vertadr(self) -> _NDArray[_np.int32]:
+    def vertadr(self) -> _Array[_np.int32]:
         """``MjModel.flex_vertadr`` (nflex): first vertex address."""
     @vertadr.setter
-    def vertadr(self, value: _ArrayLike) -> None: ...
+    def vertadr(self, value: _ArrayValues) -> None: ...
     @property
-    def vertnum(self) -> _NDArray[_np.int32]:
+    def vertnum(self) -> _Array[_np.int32]:
         """``MjModel.flex_vertnum`` (nflex): number of vertices."""
     @vertnum.setter
-    def vertnum(self, value: _ArrayLike) -> None: ...
+    def vertnum(self, value: _ArrayValues) -> None: ...
     @property
-    def yield_(self) -> _NDArray[_np.float64]:
+    def yield_(self) -> _Array[_np.float64]:
         """``MjModel.flex_yield`` (nflex x 2): yield strain (stretch, bend); 0: elastic."""
     @yield_.setter
-    def yield_(self, value: _ArrayLike) -> None: ...
+    def yield_(self, value: _ArrayValues) -> None: ...
 
 
 class GeomBinding(_Binding):
@@ -1083,165 +1083,165 @@ class GeomBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def aabb(self) -> _NDArray[_np.float64]:
+    def aabb(self) -> _Array[_np.float64]:
         """``MjModel.geom_aabb`` (ngeom x 6): bounding box, (center, size)."""
     @aabb.setter
-    def aabb(self, value: _ArrayLike) -> None: ...
+    def aabb(self, value: _ArrayValues) -> None: ...
     @property
-    def adhesion(self) -> _NDArray[_np.float64]:
+    def adhesion(self) -> _Array[_np.float64]:
         """``MjModel.geom_adhesion`` (ngeom): adhesive force of contacts."""
     @adhesion.setter
-    def adhesion(self, value: _ArrayLike) -> None: ...
+    def adhesion(self, value: _ArrayValues) -> None: ...
     @property
-    def bodyid(self) -> _NDArray[_np.int32]:
+    def bodyid(self) -> _Array[_np.int32]:
         """``MjModel.geom_bodyid`` (ngeom): id of geom's body."""
     @bodyid.setter
-    def bodyid(self, value: _ArrayLike) -> None: ...
+    def bodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def castshadow(self) -> _NDArray[_np.bool_]:
+    def castshadow(self) -> _Array[_np.bool_]:
         """``MjModel.geom_castshadow`` (ngeom): does geom cast shadows."""
     @castshadow.setter
-    def castshadow(self, value: _ArrayLike) -> None: ...
+    def castshadow(self, value: _ArrayValues) -> None: ...
     @property
-    def conaffinity(self) -> _NDArray[_np.int32]:
+    def conaffinity(self) -> _Array[_np.int32]:
         """``MjModel.geom_conaffinity`` (ngeom): geom contact affinity."""
     @conaffinity.setter
-    def conaffinity(self, value: _ArrayLike) -> None: ...
+    def conaffinity(self, value: _ArrayValues) -> None: ...
     @property
-    def condim(self) -> _NDArray[_np.int32]:
+    def condim(self) -> _Array[_np.int32]:
         """``MjModel.geom_condim`` (ngeom): contact dimensionality (1, 3, 4, 6)."""
     @condim.setter
-    def condim(self, value: _ArrayLike) -> None: ...
+    def condim(self, value: _ArrayValues) -> None: ...
     @property
-    def contype(self) -> _NDArray[_np.int32]:
+    def contype(self) -> _Array[_np.int32]:
         """``MjModel.geom_contype`` (ngeom): geom contact type."""
     @contype.setter
-    def contype(self, value: _ArrayLike) -> None: ...
+    def contype(self, value: _ArrayValues) -> None: ...
     @property
-    def dataid(self) -> _NDArray[_np.int32]:
+    def dataid(self) -> _Array[_np.int32]:
         """``MjModel.geom_dataid`` (ngeom): id of geom's mesh/hfield; -1: none."""
     @dataid.setter
-    def dataid(self, value: _ArrayLike) -> None: ...
+    def dataid(self, value: _ArrayValues) -> None: ...
     @property
-    def fluid(self) -> _NDArray[_np.float64]:
+    def fluid(self) -> _Array[_np.float64]:
         """``MjModel.geom_fluid`` (ngeom x mjNFLUID): fluid interaction parameters."""
     @fluid.setter
-    def fluid(self, value: _ArrayLike) -> None: ...
+    def fluid(self, value: _ArrayValues) -> None: ...
     @property
-    def friction(self) -> _NDArray[_np.float64]:
+    def friction(self) -> _Array[_np.float64]:
         """``MjModel.geom_friction`` (ngeom x 3): friction for (slide, spin, roll)."""
     @friction.setter
-    def friction(self, value: _ArrayLike) -> None: ...
+    def friction(self, value: _ArrayValues) -> None: ...
     @property
-    def gap(self) -> _NDArray[_np.float64]:
+    def gap(self) -> _Array[_np.float64]:
         """``MjModel.geom_gap`` (ngeom): additional contact detection buffer."""
     @gap.setter
-    def gap(self, value: _ArrayLike) -> None: ...
+    def gap(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.geom_group`` (ngeom): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def margin(self) -> _NDArray[_np.float64]:
+    def margin(self) -> _Array[_np.float64]:
         """``MjModel.geom_margin`` (ngeom): geometric inflation for contact."""
     @margin.setter
-    def margin(self, value: _ArrayLike) -> None: ...
+    def margin(self, value: _ArrayValues) -> None: ...
     @property
-    def matid(self) -> _NDArray[_np.int32]:
+    def matid(self) -> _Array[_np.int32]:
         """``MjModel.geom_matid`` (ngeom): material id for rendering; -1: none."""
     @matid.setter
-    def matid(self, value: _ArrayLike) -> None: ...
+    def matid(self, value: _ArrayValues) -> None: ...
     @property
-    def name_geomadr(self) -> _NDArray[_np.int32]:
+    def name_geomadr(self) -> _Array[_np.int32]:
         """``MjModel.name_geomadr`` (ngeom): geom name pointers."""
     @name_geomadr.setter
-    def name_geomadr(self, value: _ArrayLike) -> None: ...
+    def name_geomadr(self, value: _ArrayValues) -> None: ...
     @property
-    def plugin(self) -> _NDArray[_np.int32]:
+    def plugin(self) -> _Array[_np.int32]:
         """``MjModel.geom_plugin`` (ngeom): plugin instance id; -1: not in use."""
     @plugin.setter
-    def plugin(self, value: _ArrayLike) -> None: ...
+    def plugin(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.geom_pos`` (ngeom x 3): local position offset rel. to body."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def priority(self) -> _NDArray[_np.int32]:
+    def priority(self) -> _Array[_np.int32]:
         """``MjModel.geom_priority`` (ngeom): geom contact priority."""
     @priority.setter
-    def priority(self, value: _ArrayLike) -> None: ...
+    def priority(self, value: _ArrayValues) -> None: ...
     @property
-    def quat(self) -> _NDArray[_np.float64]:
+    def quat(self) -> _Array[_np.float64]:
         """``MjModel.geom_quat`` (ngeom x 4): local orientation offset rel. to body."""
     @quat.setter
-    def quat(self, value: _ArrayLike) -> None: ...
+    def quat(self, value: _ArrayValues) -> None: ...
     @property
-    def rbound(self) -> _NDArray[_np.float64]:
+    def rbound(self) -> _Array[_np.float64]:
         """``MjModel.geom_rbound`` (ngeom): radius of bounding sphere."""
     @rbound.setter
-    def rbound(self, value: _ArrayLike) -> None: ...
+    def rbound(self, value: _ArrayValues) -> None: ...
     @property
-    def rgba(self) -> _NDArray[_np.float32]:
+    def rgba(self) -> _Array[_np.float32]:
         """``MjModel.geom_rgba`` (ngeom x 4): rgba when material is omitted."""
     @rgba.setter
-    def rgba(self, value: _ArrayLike) -> None: ...
+    def rgba(self, value: _ArrayValues) -> None: ...
     @property
-    def sameframe(self) -> _NDArray[_np.uint8]:
+    def sameframe(self) -> _Array[_np.uint8]:
         """``MjModel.geom_sameframe`` (ngeom): same frame as body (mjtSameframe)."""
     @sameframe.setter
-    def sameframe(self, value: _ArrayLike) -> None: ...
+    def sameframe(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.float64]:
+    def size(self) -> _Array[_np.float64]:
         """``MjModel.geom_size`` (ngeom x 3): geom-specific size parameters."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp(self) -> _NDArray[_np.float64]:
+    def solimp(self) -> _Array[_np.float64]:
         """``MjModel.geom_solimp`` (ngeom x mjNIMP): constraint solver impedance: contact."""
     @solimp.setter
-    def solimp(self, value: _ArrayLike) -> None: ...
+    def solimp(self, value: _ArrayValues) -> None: ...
     @property
-    def solmix(self) -> _NDArray[_np.float64]:
+    def solmix(self) -> _Array[_np.float64]:
         """``MjModel.geom_solmix`` (ngeom): mixing coef for solref/imp in geom pair."""
     @solmix.setter
-    def solmix(self, value: _ArrayLike) -> None: ...
+    def solmix(self, value: _ArrayValues) -> None: ...
     @property
-    def solref(self) -> _NDArray[_np.float64]:
+    def solref(self) -> _Array[_np.float64]:
         """``MjModel.geom_solref`` (ngeom x mjNREF): constraint solver reference: contact."""
     @solref.setter
-    def solref(self, value: _ArrayLike) -> None: ...
+    def solref(self, value: _ArrayValues) -> None: ...
     @property
-    def surfacevel(self) -> _NDArray[_np.float64]:
+    def surfacevel(self) -> _Array[_np.float64]:
         """``MjModel.geom_surfacevel`` (ngeom x 6): surface velocity in local frame: lin,ang."""
     @surfacevel.setter
-    def surfacevel(self, value: _ArrayLike) -> None: ...
+    def surfacevel(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.geom_type`` (ngeom): geometric type (mjtGeom)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.geom_user`` (ngeom x nuser_geom): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def xmat(self) -> _NDArray[_np.float64]:
+    def xmat(self) -> _Array[_np.float64]:
         """``MjData.geom_xmat`` (ngeom x 9): Cartesian geom orientation."""
     @xmat.setter
-    def xmat(self, value: _ArrayLike) -> None: ...
+    def xmat(self, value: _ArrayValues) -> None: ...
     @property
-    def xpos(self) -> _NDArray[_np.float64]:
+    def xpos(self) -> _Array[_np.float64]:
         """``MjData.geom_xpos`` (ngeom x 3): Cartesian geom position."""
     @xpos.setter
-    def xpos(self, value: _ArrayLike) -> None: ...
+    def xpos(self, value: _ArrayValues) -> None: ...
     @property
-    def xquat(self) -> _NDArray[_np.float64]:
+    def xquat(self) -> _Array[_np.float64]:
         """``MjData.geom_xquat`` (ngeom x 4): Cartesian geom orientation."""
     @xquat.setter
-    def xquat(self, value: _ArrayLike) -> None: ...
+    def xquat(self, value: _ArrayValues) -> None: ...
 
 
 class HfieldBinding(_Binding):
@@ -1249,35 +1249,35 @@ class HfieldBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adr(self) -> _NDArray[_np.int32]:
+    def adr(self) -> _Array[_np.int32]:
         """``MjModel.hfield_adr`` (nhfield): address in hfield_data."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def name_hfieldadr(self) -> _NDArray[_np.int32]:
+    def name_hfieldadr(self) -> _Array[_np.int32]:
         """``MjModel.name_hfieldadr`` (nhfield): hfield name pointers."""
     @name_hfieldadr.setter
-    def name_hfieldadr(self, value: _ArrayLike) -> None: ...
+    def name_hfieldadr(self, value: _ArrayValues) -> None: ...
     @property
-    def ncol(self) -> _NDArray[_np.int32]:
+    def ncol(self) -> _Array[_np.int32]:
         """``MjModel.hfield_ncol`` (nhfield): number of columns in grid."""
     @ncol.setter
-    def ncol(self, value: _ArrayLike) -> None: ...
+    def ncol(self, value: _ArrayValues) -> None: ...
     @property
-    def nrow(self) -> _NDArray[_np.int32]:
+    def nrow(self) -> _Array[_np.int32]:
         """``MjModel.hfield_nrow`` (nhfield): number of rows in grid."""
     @nrow.setter
-    def nrow(self, value: _ArrayLike) -> None: ...
+    def nrow(self, value: _ArrayValues) -> None: ...
     @property
-    def pathadr(self) -> _NDArray[_np.int32]:
+    def pathadr(self) -> _Array[_np.int32]:
         """``MjModel.hfield_pathadr`` (nhfield): address of hfield asset path; -1: none."""
     @pathadr.setter
-    def pathadr(self, value: _ArrayLike) -> None: ...
+    def pathadr(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.float64]:
+    def size(self) -> _Array[_np.float64]:
         """``MjModel.hfield_size`` (nhfield x 4): (x, y, z_top, z_bottom)."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
 
 
 class JointBinding(_Binding):
@@ -1285,395 +1285,395 @@ class JointBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def D_diag(self) -> _NDArray[_np.int32]:
+    def D_diag(self) -> _Array[_np.int32]:
         """``MjModel.D_diag`` (nv): full inertia: index of diagonal element."""
     @D_diag.setter
-    def D_diag(self, value: _ArrayLike) -> None: ...
+    def D_diag(self, value: _ArrayValues) -> None: ...
     @property
-    def D_rowadr(self) -> _NDArray[_np.int32]:
+    def D_rowadr(self) -> _Array[_np.int32]:
         """``MjModel.D_rowadr`` (nv): full inertia: row addresses."""
     @D_rowadr.setter
-    def D_rowadr(self, value: _ArrayLike) -> None: ...
+    def D_rowadr(self, value: _ArrayValues) -> None: ...
     @property
-    def D_rownnz(self) -> _NDArray[_np.int32]:
+    def D_rownnz(self) -> _Array[_np.int32]:
         """``MjModel.D_rownnz`` (nv): full inertia: non-zeros in each row."""
     @D_rownnz.setter
-    def D_rownnz(self, value: _ArrayLike) -> None: ...
+    def D_rownnz(self, value: _ArrayValues) -> None: ...
     @property
-    def M0(self) -> _NDArray[_np.float64]:
+    def M0(self) -> _Array[_np.float64]:
         """``MjModel.dof_M0`` (nv): diag. inertia in qpos0."""
     @M0.setter
-    def M0(self, value: _ArrayLike) -> None: ...
+    def M0(self, value: _ArrayValues) -> None: ...
     @property
-    def M_rowadr(self) -> _NDArray[_np.int32]:
+    def M_rowadr(self) -> _Array[_np.int32]:
         """``MjModel.M_rowadr`` (nv): reduced inertia: row addresses."""
     @M_rowadr.setter
-    def M_rowadr(self, value: _ArrayLike) -> None: ...
+    def M_rowadr(self, value: _ArrayValues) -> None: ...
     @property
-    def M_rownnz(self) -> _NDArray[_np.int32]:
+    def M_rownnz(self) -> _Array[_np.int32]:
         """``MjModel.M_rownnz`` (nv): reduced inertia: non-zeros in each row."""
     @M_rownnz.setter
-    def M_rownnz(self, value: _ArrayLike) -> None: ...
+    def M_rownnz(self, value: _ArrayValues) -> None: ...
     @property
-    def Madr(self) -> _NDArray[_np.int32]:
+    def Madr(self) -> _Array[_np.int32]:
         """``MjModel.dof_Madr`` (nv): dof address in M-diagonal."""
     @Madr.setter
-    def Madr(self, value: _ArrayLike) -> None: ...
+    def Madr(self, value: _ArrayValues) -> None: ...
     @property
-    def actfrclimited(self) -> _NDArray[_np.bool_]:
+    def actfrclimited(self) -> _Array[_np.bool_]:
         """``MjModel.jnt_actfrclimited`` (njnt): does joint have actuator force limits."""
     @actfrclimited.setter
-    def actfrclimited(self, value: _ArrayLike) -> None: ...
+    def actfrclimited(self, value: _ArrayValues) -> None: ...
     @property
-    def actfrcrange(self) -> _NDArray[_np.float64]:
+    def actfrcrange(self) -> _Array[_np.float64]:
         """``MjModel.jnt_actfrcrange`` (njnt x 2): range of total actuator force."""
     @actfrcrange.setter
-    def actfrcrange(self, value: _ArrayLike) -> None: ...
+    def actfrcrange(self, value: _ArrayValues) -> None: ...
     @property
-    def actgravcomp(self) -> _NDArray[_np.bool_]:
+    def actgravcomp(self) -> _Array[_np.bool_]:
         """``MjModel.jnt_actgravcomp`` (njnt): is gravcomp force applied via actuators."""
     @actgravcomp.setter
-    def actgravcomp(self, value: _ArrayLike) -> None: ...
+    def actgravcomp(self, value: _ArrayValues) -> None: ...
     @property
-    def actuatorid(self) -> _NDArray[_np.int32]:
+    def actuatorid(self) -> _Array[_np.int32]:
         """``MjModel.jnt_actuatorid`` (njnt): actuator contributing damping / armature."""
     @actuatorid.setter
-    def actuatorid(self, value: _ArrayLike) -> None: ...
+    def actuatorid(self, value: _ArrayValues) -> None: ...
     @property
-    def armature(self) -> _NDArray[_np.float64]:
+    def armature(self) -> _Array[_np.float64]:
         """``MjModel.dof_armature`` (nv): dof armature inertia/mass."""
     @armature.setter
-    def armature(self, value: _ArrayLike) -> None: ...
+    def armature(self, value: _ArrayValues) -> None: ...
     @property
-    def awake_ind(self) -> _NDArray[_np.int32]:
+    def awake_ind(self) -> _Array[_np.int32]:
         """``MjData.dof_awake_ind`` (nv): indices of awake dofs."""
     @awake_ind.setter
-    def awake_ind(self, value: _ArrayLike) -> None: ...
+    def awake_ind(self, value: _ArrayValues) -> None: ...
     @property
-    def axis(self) -> _NDArray[_np.float64]:
+    def axis(self) -> _Array[_np.float64]:
         """``MjModel.jnt_axis`` (njnt x 3): local joint axis."""
     @axis.setter
-    def axis(self, value: _ArrayLike) -> None: ...
+    def axis(self, value: _ArrayValues) -> None: ...
     @property
-    def bodyid(self) -> _NDArray[_np.int32]:
+    def bodyid(self) -> _Array[_np.int32]:
         """``MjModel.jnt_bodyid`` (njnt): id of joint's body."""
     @bodyid.setter
-    def bodyid(self, value: _ArrayLike) -> None: ...
+    def bodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def cdof(self) -> _NDArray[_np.float64]:
+    def cdof(self) -> _Array[_np.float64]:
         """``MjData.cdof`` (nv x 6): com-based motion axis of each dof (rot:lin)."""
     @cdof.setter
-    def cdof(self, value: _ArrayLike) -> None: ...
+    def cdof(self, value: _ArrayValues) -> None: ...
     @property
-    def cdof_dot(self) -> _NDArray[_np.float64]:
+    def cdof_dot(self) -> _Array[_np.float64]:
         """``MjData.cdof_dot`` (nv x 6): time-derivative of cdof (rot:lin)."""
     @cdof_dot.setter
-    def cdof_dot(self, value: _ArrayLike) -> None: ...
+    def cdof_dot(self, value: _ArrayValues) -> None: ...
     @property
-    def damping(self) -> _NDArray[_np.float64]:
+    def damping(self) -> _Array[_np.float64]:
         """``MjModel.dof_damping`` (nv): linear damping coefficient."""
     @damping.setter
-    def damping(self, value: _ArrayLike) -> None: ...
+    def damping(self, value: _ArrayValues) -> None: ...
     @property
-    def dampingpoly(self) -> _NDArray[_np.float64]:
+    def dampingpoly(self) -> _Array[_np.float64]:
         """``MjModel.dof_dampingpoly`` (nv x mjNPOLY): high-order damping coefficients."""
     @dampingpoly.setter
-    def dampingpoly(self, value: _ArrayLike) -> None: ...
+    def dampingpoly(self, value: _ArrayValues) -> None: ...
     @property
-    def dof_bodyid(self) -> _NDArray[_np.int32]:
+    def dof_bodyid(self) -> _Array[_np.int32]:
         """``MjModel.dof_bodyid`` (nv): id of dof's body."""
     @dof_bodyid.setter
-    def dof_bodyid(self, value: _ArrayLike) -> None: ...
+    def dof_bodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def dof_solimp(self) -> _NDArray[_np.float64]:
+    def dof_solimp(self) -> _Array[_np.float64]:
         """``MjModel.dof_solimp`` (nv x mjNIMP): constraint solver impedance:frictionloss."""
     @dof_solimp.setter
-    def dof_solimp(self, value: _ArrayLike) -> None: ...
+    def dof_solimp(self, value: _ArrayValues) -> None: ...
     @property
-    def dof_solref(self) -> _NDArray[_np.float64]:
+    def dof_solref(self) -> _Array[_np.float64]:
         """``MjModel.dof_solref`` (nv x mjNREF): constraint solver reference:frictionloss."""
     @dof_solref.setter
-    def dof_solref(self, value: _ArrayLike) -> None: ...
+    def dof_solref(self, value: _ArrayValues) -> None: ...
     @property
-    def dofadr(self) -> _NDArray[_np.int32]:
+    def dofadr(self) -> _Array[_np.int32]:
         """``MjModel.jnt_dofadr`` (njnt): start addr in 'qvel' for joint's data."""
     @dofadr.setter
-    def dofadr(self, value: _ArrayLike) -> None: ...
+    def dofadr(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_K_rowadr(self) -> _NDArray[_np.int32]:
+    def efm_K_rowadr(self) -> _Array[_np.int32]:
         """``MjData.efm_K_rowadr`` (nv): effective-stiffness CSR row addresses."""
     @efm_K_rowadr.setter
-    def efm_K_rowadr(self, value: _ArrayLike) -> None: ...
+    def efm_K_rowadr(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_K_rownnz(self) -> _NDArray[_np.int32]:
+    def efm_K_rownnz(self) -> _Array[_np.int32]:
         """``MjData.efm_K_rownnz`` (nv): effective-stiffness CSR row nonzeros."""
     @efm_K_rownnz.setter
-    def efm_K_rownnz(self, value: _ArrayLike) -> None: ...
+    def efm_K_rownnz(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_c(self) -> _NDArray[_np.float64]:
+    def efm_c(self) -> _Array[_np.float64]:
         """``MjData.efm_c`` (nv): smooth-force shift h*K*qvel."""
     @efm_c.setter
-    def efm_c(self, value: _ArrayLike) -> None: ...
+    def efm_c(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_ca(self) -> _NDArray[_np.float64]:
+    def efm_ca(self) -> _Array[_np.float64]:
         """``MjData.efm_ca`` (nv): actuation-stage smooth-force shift."""
     @efm_ca.setter
-    def efm_ca(self, value: _ArrayLike) -> None: ...
+    def efm_ca(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_ck(self) -> _NDArray[_np.float64]:
+    def efm_ck(self) -> _Array[_np.float64]:
         """``MjData.efm_ck`` (nv): diagonal stiffness h*k, for the smooth shift."""
     @efm_ck.setter
-    def efm_ck(self, value: _ArrayLike) -> None: ...
+    def efm_ck(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_diag(self) -> _NDArray[_np.float64]:
+    def efm_diag(self) -> _Array[_np.float64]:
         """``MjData.efm_diag`` (nv): effective-metric diagonal h*D + h^2*K."""
     @efm_diag.setter
-    def efm_diag(self, value: _ArrayLike) -> None: ...
+    def efm_diag(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_sdiag(self) -> _NDArray[_np.float64]:
+    def efm_sdiag(self) -> _Array[_np.float64]:
         """``MjData.efm_sdiag`` (nv): diagonal additions to M in the backbone."""
     @efm_sdiag.setter
-    def efm_sdiag(self, value: _ArrayLike) -> None: ...
+    def efm_sdiag(self, value: _ArrayValues) -> None: ...
     @property
-    def frictionloss(self) -> _NDArray[_np.float64]:
+    def frictionloss(self) -> _Array[_np.float64]:
         """``MjModel.dof_frictionloss`` (nv): dof friction loss."""
     @frictionloss.setter
-    def frictionloss(self, value: _ArrayLike) -> None: ...
+    def frictionloss(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.jnt_group`` (njnt): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def invweight0(self) -> _NDArray[_np.float64]:
+    def invweight0(self) -> _Array[_np.float64]:
         """``MjModel.dof_invweight0`` (nv): diag. inverse inertia in qpos0."""
     @invweight0.setter
-    def invweight0(self, value: _ArrayLike) -> None: ...
+    def invweight0(self, value: _ArrayValues) -> None: ...
     @property
-    def island(self) -> _NDArray[_np.int32]:
+    def island(self) -> _Array[_np.int32]:
         """``MjData.dof_island`` (nv): island id of this dof; -1: none."""
     @island.setter
-    def island(self, value: _ArrayLike) -> None: ...
+    def island(self, value: _ArrayValues) -> None: ...
     @property
-    def jntid(self) -> _NDArray[_np.int32]:
+    def jntid(self) -> _Array[_np.int32]:
         """``MjModel.dof_jntid`` (nv): id of dof's joint."""
     @jntid.setter
-    def jntid(self, value: _ArrayLike) -> None: ...
+    def jntid(self, value: _ArrayValues) -> None: ...
     @property
-    def length(self) -> _NDArray[_np.float64]:
+    def length(self) -> _Array[_np.float64]:
         """``MjModel.dof_length`` (nv): linear: 1; angular: approx. length scale."""
     @length.setter
-    def length(self, value: _ArrayLike) -> None: ...
+    def length(self, value: _ArrayValues) -> None: ...
     @property
-    def limited(self) -> _NDArray[_np.bool_]:
+    def limited(self) -> _Array[_np.bool_]:
         """``MjModel.jnt_limited`` (njnt): does joint have limits."""
     @limited.setter
-    def limited(self, value: _ArrayLike) -> None: ...
+    def limited(self, value: _ArrayValues) -> None: ...
     @property
-    def map_dof2idof(self) -> _NDArray[_np.int32]:
+    def map_dof2idof(self) -> _Array[_np.int32]:
         """``MjData.map_dof2idof`` (nv): map from dof to idof."""
     @map_dof2idof.setter
-    def map_dof2idof(self, value: _ArrayLike) -> None: ...
+    def map_dof2idof(self, value: _ArrayValues) -> None: ...
     @property
-    def map_idof2dof(self) -> _NDArray[_np.int32]:
+    def map_idof2dof(self) -> _Array[_np.int32]:
         """``MjData.map_idof2dof`` (nv): map from idof to dof;  >= nidof: unconstrained."""
     @map_idof2dof.setter
-    def map_idof2dof(self, value: _ArrayLike) -> None: ...
+    def map_idof2dof(self, value: _ArrayValues) -> None: ...
     @property
-    def margin(self) -> _NDArray[_np.float64]:
+    def margin(self) -> _Array[_np.float64]:
         """``MjModel.jnt_margin`` (njnt): min distance for limit detection."""
     @margin.setter
-    def margin(self, value: _ArrayLike) -> None: ...
+    def margin(self, value: _ArrayValues) -> None: ...
     @property
-    def name_jntadr(self) -> _NDArray[_np.int32]:
+    def name_jntadr(self) -> _Array[_np.int32]:
         """``MjModel.name_jntadr`` (njnt): joint name pointers."""
     @name_jntadr.setter
-    def name_jntadr(self, value: _ArrayLike) -> None: ...
+    def name_jntadr(self, value: _ArrayValues) -> None: ...
     @property
-    def parentid(self) -> _NDArray[_np.int32]:
+    def parentid(self) -> _Array[_np.int32]:
         """``MjModel.dof_parentid`` (nv): id of dof's parent; -1: none."""
     @parentid.setter
-    def parentid(self, value: _ArrayLike) -> None: ...
+    def parentid(self, value: _ArrayValues) -> None: ...
     @property
-    def plasticadr(self) -> _NDArray[_np.int32]:
+    def plasticadr(self) -> _Array[_np.int32]:
         """``MjModel.jnt_plasticadr`` (njnt): start addr in plastic state (-1: none)."""
     @plasticadr.setter
-    def plasticadr(self, value: _ArrayLike) -> None: ...
+    def plasticadr(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.jnt_pos`` (njnt x 3): local anchor position."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def qHDiagInv(self) -> _NDArray[_np.float64]:
+    def qHDiagInv(self) -> _Array[_np.float64]:
         """``MjData.qHDiagInv`` (nv): 1/diag(D) of modified M."""
     @qHDiagInv.setter
-    def qHDiagInv(self, value: _ArrayLike) -> None: ...
+    def qHDiagInv(self, value: _ArrayValues) -> None: ...
     @property
-    def qLDiagInv(self) -> _NDArray[_np.float64]:
+    def qLDiagInv(self) -> _Array[_np.float64]:
         """``MjData.qLDiagInv`` (nv): 1/diag(D)."""
     @qLDiagInv.setter
-    def qLDiagInv(self, value: _ArrayLike) -> None: ...
+    def qLDiagInv(self, value: _ArrayValues) -> None: ...
     @property
-    def qacc(self) -> _NDArray[_np.float64]:
+    def qacc(self) -> _Array[_np.float64]:
         """``MjData.qacc`` (nv): acceleration."""
     @qacc.setter
-    def qacc(self, value: _ArrayLike) -> None: ...
+    def qacc(self, value: _ArrayValues) -> None: ...
     @property
-    def qacc_smooth(self) -> _NDArray[_np.float64]:
+    def qacc_smooth(self) -> _Array[_np.float64]:
         """``MjData.qacc_smooth`` (nv): unconstrained acceleration."""
     @qacc_smooth.setter
-    def qacc_smooth(self, value: _ArrayLike) -> None: ...
+    def qacc_smooth(self, value: _ArrayValues) -> None: ...
     @property
-    def qacc_warmstart(self) -> _NDArray[_np.float64]:
+    def qacc_warmstart(self) -> _Array[_np.float64]:
         """``MjData.qacc_warmstart`` (nv): acceleration used for warmstart."""
     @qacc_warmstart.setter
-    def qacc_warmstart(self, value: _ArrayLike) -> None: ...
+    def qacc_warmstart(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_actuator(self) -> _NDArray[_np.float64]:
+    def qfrc_actuator(self) -> _Array[_np.float64]:
         """``MjData.qfrc_actuator`` (nv): actuator force in joint space."""
     @qfrc_actuator.setter
-    def qfrc_actuator(self, value: _ArrayLike) -> None: ...
+    def qfrc_actuator(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_adhesion(self) -> _NDArray[_np.float64]:
+    def qfrc_adhesion(self) -> _Array[_np.float64]:
         """``MjData.qfrc_adhesion`` (nv): passive contact adhesion force."""
     @qfrc_adhesion.setter
-    def qfrc_adhesion(self, value: _ArrayLike) -> None: ...
+    def qfrc_adhesion(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_applied(self) -> _NDArray[_np.float64]:
+    def qfrc_applied(self) -> _Array[_np.float64]:
         """``MjData.qfrc_applied`` (nv): applied generalized force."""
     @qfrc_applied.setter
-    def qfrc_applied(self, value: _ArrayLike) -> None: ...
+    def qfrc_applied(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_bias(self) -> _NDArray[_np.float64]:
+    def qfrc_bias(self) -> _Array[_np.float64]:
         """``MjData.qfrc_bias`` (nv): C(qpos,qvel)."""
     @qfrc_bias.setter
-    def qfrc_bias(self, value: _ArrayLike) -> None: ...
+    def qfrc_bias(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_constraint(self) -> _NDArray[_np.float64]:
+    def qfrc_constraint(self) -> _Array[_np.float64]:
         """``MjData.qfrc_constraint`` (nv): constraint force (flag ipc: incl. flex contact)."""
     @qfrc_constraint.setter
-    def qfrc_constraint(self, value: _ArrayLike) -> None: ...
+    def qfrc_constraint(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_damper(self) -> _NDArray[_np.float64]:
+    def qfrc_damper(self) -> _Array[_np.float64]:
         """``MjData.qfrc_damper`` (nv): passive damper force."""
     @qfrc_damper.setter
-    def qfrc_damper(self, value: _ArrayLike) -> None: ...
+    def qfrc_damper(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_fluid(self) -> _NDArray[_np.float64]:
+    def qfrc_fluid(self) -> _Array[_np.float64]:
         """``MjData.qfrc_fluid`` (nv): passive fluid force."""
     @qfrc_fluid.setter
-    def qfrc_fluid(self, value: _ArrayLike) -> None: ...
+    def qfrc_fluid(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_gravcomp(self) -> _NDArray[_np.float64]:
+    def qfrc_gravcomp(self) -> _Array[_np.float64]:
         """``MjData.qfrc_gravcomp`` (nv): passive gravity compensation force."""
     @qfrc_gravcomp.setter
-    def qfrc_gravcomp(self, value: _ArrayLike) -> None: ...
+    def qfrc_gravcomp(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_inverse(self) -> _NDArray[_np.float64]:
+    def qfrc_inverse(self) -> _Array[_np.float64]:
         """``MjData.qfrc_inverse`` (nv): net external force; should equal: qfrc_applied + J'*xfrc_applied + qfrc_actuator."""
     @qfrc_inverse.setter
-    def qfrc_inverse(self, value: _ArrayLike) -> None: ...
+    def qfrc_inverse(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_passive(self) -> _NDArray[_np.float64]:
+    def qfrc_passive(self) -> _Array[_np.float64]:
         """``MjData.qfrc_passive`` (nv): total passive force."""
     @qfrc_passive.setter
-    def qfrc_passive(self, value: _ArrayLike) -> None: ...
+    def qfrc_passive(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_smooth(self) -> _NDArray[_np.float64]:
+    def qfrc_smooth(self) -> _Array[_np.float64]:
         """``MjData.qfrc_smooth`` (nv): net unconstrained force."""
     @qfrc_smooth.setter
-    def qfrc_smooth(self, value: _ArrayLike) -> None: ...
+    def qfrc_smooth(self, value: _ArrayValues) -> None: ...
     @property
-    def qfrc_spring(self) -> _NDArray[_np.float64]:
+    def qfrc_spring(self) -> _Array[_np.float64]:
         """``MjData.qfrc_spring`` (nv): passive spring force."""
     @qfrc_spring.setter
-    def qfrc_spring(self, value: _ArrayLike) -> None: ...
+    def qfrc_spring(self, value: _ArrayValues) -> None: ...
     @property
-    def qpos(self) -> _NDArray[_np.float64]:
+    def qpos(self) -> _Array[_np.float64]:
         """``MjData.qpos`` (nq): position."""
     @qpos.setter
-    def qpos(self, value: _ArrayLike) -> None: ...
+    def qpos(self, value: _ArrayValues) -> None: ...
     @property
-    def qpos0(self) -> _NDArray[_np.float64]:
+    def qpos0(self) -> _Array[_np.float64]:
         """``MjModel.qpos0`` (nq): qpos values at default pose."""
     @qpos0.setter
-    def qpos0(self, value: _ArrayLike) -> None: ...
+    def qpos0(self, value: _ArrayValues) -> None: ...
     @property
-    def qpos_spring(self) -> _NDArray[_np.float64]:
+    def qpos_spring(self) -> _Array[_np.float64]:
         """``MjModel.qpos_spring`` (nq): reference pose for springs."""
     @qpos_spring.setter
-    def qpos_spring(self, value: _ArrayLike) -> None: ...
+    def qpos_spring(self, value: _ArrayValues) -> None: ...
     @property
-    def qposadr(self) -> _NDArray[_np.int32]:
+    def qposadr(self) -> _Array[_np.int32]:
         """``MjModel.jnt_qposadr`` (njnt): start addr in 'qpos' for joint's data."""
     @qposadr.setter
-    def qposadr(self, value: _ArrayLike) -> None: ...
+    def qposadr(self, value: _ArrayValues) -> None: ...
     @property
-    def qvel(self) -> _NDArray[_np.float64]:
+    def qvel(self) -> _Array[_np.float64]:
         """``MjData.qvel`` (nv): velocity."""
     @qvel.setter
-    def qvel(self, value: _ArrayLike) -> None: ...
+    def qvel(self, value: _ArrayValues) -> None: ...
     @property
-    def range(self) -> _NDArray[_np.float64]:
+    def range(self) -> _Array[_np.float64]:
         """``MjModel.jnt_range`` (njnt x 2): joint limits."""
     @range.setter
-    def range(self, value: _ArrayLike) -> None: ...
+    def range(self, value: _ArrayValues) -> None: ...
     @property
-    def simplenum(self) -> _NDArray[_np.int32]:
+    def simplenum(self) -> _Array[_np.int32]:
         """``MjModel.dof_simplenum`` (nv): number of consecutive simple dofs."""
     @simplenum.setter
-    def simplenum(self, value: _ArrayLike) -> None: ...
+    def simplenum(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp(self) -> _NDArray[_np.float64]:
+    def solimp(self) -> _Array[_np.float64]:
         """``MjModel.jnt_solimp`` (njnt x mjNIMP): constraint solver impedance: limit."""
     @solimp.setter
-    def solimp(self, value: _ArrayLike) -> None: ...
+    def solimp(self, value: _ArrayValues) -> None: ...
     @property
-    def solref(self) -> _NDArray[_np.float64]:
+    def solref(self) -> _Array[_np.float64]:
         """``MjModel.jnt_solref`` (njnt x mjNREF): constraint solver reference: limit."""
     @solref.setter
-    def solref(self, value: _ArrayLike) -> None: ...
+    def solref(self, value: _ArrayValues) -> None: ...
     @property
-    def springyield(self) -> _NDArray[_np.float64]:
+    def springyield(self) -> _Array[_np.float64]:
         """``MjModel.jnt_springyield`` (njnt): plastic yield threshold."""
     @springyield.setter
-    def springyield(self, value: _ArrayLike) -> None: ...
+    def springyield(self, value: _ArrayValues) -> None: ...
     @property
-    def stiffness(self) -> _NDArray[_np.float64]:
+    def stiffness(self) -> _Array[_np.float64]:
         """``MjModel.jnt_stiffness`` (njnt): linear stiffness coefficient."""
     @stiffness.setter
-    def stiffness(self, value: _ArrayLike) -> None: ...
+    def stiffness(self, value: _ArrayValues) -> None: ...
     @property
-    def stiffnesspoly(self) -> _NDArray[_np.float64]:
+    def stiffnesspoly(self) -> _Array[_np.float64]:
         """``MjModel.jnt_stiffnesspoly`` (njnt x mjNPOLY): high-order stiffness coefficients."""
     @stiffnesspoly.setter
-    def stiffnesspoly(self, value: _ArrayLike) -> None: ...
+    def stiffnesspoly(self, value: _ArrayValues) -> None: ...
     @property
-    def treeid(self) -> _NDArray[_np.int32]:
+    def treeid(self) -> _Array[_np.int32]:
         """``MjModel.dof_treeid`` (nv): id of dof's kinematic tree."""
     @treeid.setter
-    def treeid(self, value: _ArrayLike) -> None: ...
+    def treeid(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.jnt_type`` (njnt): type of joint (mjtJoint)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.jnt_user`` (njnt x nuser_jnt): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def xanchor(self) -> _NDArray[_np.float64]:
+    def xanchor(self) -> _Array[_np.float64]:
         """``MjData.xanchor`` (njnt x 3): Cartesian position of joint anchor."""
     @xanchor.setter
-    def xanchor(self, value: _ArrayLike) -> None: ...
+    def xanchor(self, value: _ArrayValues) -> None: ...
     @property
-    def xaxis(self) -> _NDArray[_np.float64]:
+    def xaxis(self) -> _Array[_np.float64]:
         """``MjData.xaxis`` (njnt x 3): Cartesian joint axis."""
     @xaxis.setter
-    def xaxis(self, value: _ArrayLike) -> None: ...
+    def xaxis(self, value: _ArrayValues) -> None: ...
 
 
 class KeyBinding(_Binding):
@@ -1681,50 +1681,50 @@ class KeyBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def act(self) -> _NDArray[_np.float64]:
+    def act(self) -> _Array[_np.float64]:
         """``MjModel.key_act`` (nkey x na): key activation."""
     @act.setter
-    def act(self, value: _ArrayLike) -> None: ...
+    def act(self, value: _ArrayValues) -> None: ...
     @property
-    def ctrl(self) -> _NDArray[_np.float64]:
+    def ctrl(self) -> _Array[_np.float64]:
         """``MjModel.key_ctrl`` (nkey x nu): key control."""
     @ctrl.setter
-    def ctrl(self, value: _ArrayLike) -> None: ...
+    def ctrl(self, value: _ArrayValues) -> None: ...
     @property
-    def mpos(self) -> _NDArray[_np.float64]:
+    def mpos(self) -> _Array[_np.float64]:
         """``MjModel.key_mpos`` (nkey x nmocap*3): key mocap position."""
     @mpos.setter
-    def mpos(self, value: _ArrayLike) -> None: ...
+    def mpos(self, value: _ArrayValues) -> None: ...
     @property
-    def mquat(self) -> _NDArray[_np.float64]:
+    def mquat(self) -> _Array[_np.float64]:
         """``MjModel.key_mquat`` (nkey x nmocap*4): key mocap quaternion."""
     @mquat.setter
-    def mquat(self, value: _ArrayLike) -> None: ...
+    def mquat(self, value: _ArrayValues) -> None: ...
     @property
-    def name_keyadr(self) -> _NDArray[_np.int32]:
+    def name_keyadr(self) -> _Array[_np.int32]:
         """``MjModel.name_keyadr`` (nkey): keyframe name pointers."""
     @name_keyadr.setter
-    def name_keyadr(self, value: _ArrayLike) -> None: ...
+    def name_keyadr(self, value: _ArrayValues) -> None: ...
     @property
-    def plastic(self) -> _NDArray[_np.float64]:
+    def plastic(self) -> _Array[_np.float64]:
         """``MjModel.key_plastic`` (nkey x nplastic): key plastic state."""
     @plastic.setter
-    def plastic(self, value: _ArrayLike) -> None: ...
+    def plastic(self, value: _ArrayValues) -> None: ...
     @property
-    def qpos(self) -> _NDArray[_np.float64]:
+    def qpos(self) -> _Array[_np.float64]:
         """``MjModel.key_qpos`` (nkey x nq): key position."""
     @qpos.setter
-    def qpos(self, value: _ArrayLike) -> None: ...
+    def qpos(self, value: _ArrayValues) -> None: ...
     @property
-    def qvel(self) -> _NDArray[_np.float64]:
+    def qvel(self) -> _Array[_np.float64]:
         """``MjModel.key_qvel`` (nkey x nv): key velocity."""
     @qvel.setter
-    def qvel(self, value: _ArrayLike) -> None: ...
+    def qvel(self, value: _ArrayValues) -> None: ...
     @property
-    def time(self) -> _NDArray[_np.float64]:
+    def time(self) -> _Array[_np.float64]:
         """``MjModel.key_time`` (nkey): key time."""
     @time.setter
-    def time(self, value: _ArrayLike) -> None: ...
+    def time(self, value: _ArrayValues) -> None: ...
 
 
 class LightBinding(_Binding):
@@ -1732,130 +1732,130 @@ class LightBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def active(self) -> _NDArray[_np.bool_]:
+    def active(self) -> _Array[_np.bool_]:
         """``MjModel.light_active`` (nlight): is light on."""
     @active.setter
-    def active(self, value: _ArrayLike) -> None: ...
+    def active(self, value: _ArrayValues) -> None: ...
     @property
-    def ambient(self) -> _NDArray[_np.float32]:
+    def ambient(self) -> _Array[_np.float32]:
         """``MjModel.light_ambient`` (nlight x 3): ambient rgb (alpha=1)."""
     @ambient.setter
-    def ambient(self, value: _ArrayLike) -> None: ...
+    def ambient(self, value: _ArrayValues) -> None: ...
     @property
-    def attenuation(self) -> _NDArray[_np.float32]:
+    def attenuation(self) -> _Array[_np.float32]:
         """``MjModel.light_attenuation`` (nlight x 3): OpenGL attenuation (quadratic model)."""
     @attenuation.setter
-    def attenuation(self, value: _ArrayLike) -> None: ...
+    def attenuation(self, value: _ArrayValues) -> None: ...
     @property
-    def bodyid(self) -> _NDArray[_np.int32]:
+    def bodyid(self) -> _Array[_np.int32]:
         """``MjModel.light_bodyid`` (nlight): id of light's body."""
     @bodyid.setter
-    def bodyid(self, value: _ArrayLike) -> None: ...
+    def bodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def bulbradius(self) -> _NDArray[_np.float32]:
+    def bulbradius(self) -> _Array[_np.float32]:
         """``MjModel.light_bulbradius`` (nlight): light radius for soft shadows."""
     @bulbradius.setter
-    def bulbradius(self, value: _ArrayLike) -> None: ...
+    def bulbradius(self, value: _ArrayValues) -> None: ...
     @property
-    def castshadow(self) -> _NDArray[_np.bool_]:
+    def castshadow(self) -> _Array[_np.bool_]:
         """``MjModel.light_castshadow`` (nlight): does light cast shadows."""
     @castshadow.setter
-    def castshadow(self, value: _ArrayLike) -> None: ...
+    def castshadow(self, value: _ArrayValues) -> None: ...
     @property
-    def cutoff(self) -> _NDArray[_np.float32]:
+    def cutoff(self) -> _Array[_np.float32]:
         """``MjModel.light_cutoff`` (nlight): OpenGL cutoff."""
     @cutoff.setter
-    def cutoff(self, value: _ArrayLike) -> None: ...
+    def cutoff(self, value: _ArrayValues) -> None: ...
     @property
-    def diffuse(self) -> _NDArray[_np.float32]:
+    def diffuse(self) -> _Array[_np.float32]:
         """``MjModel.light_diffuse`` (nlight x 3): diffuse rgb (alpha=1)."""
     @diffuse.setter
-    def diffuse(self, value: _ArrayLike) -> None: ...
+    def diffuse(self, value: _ArrayValues) -> None: ...
     @property
-    def dir(self) -> _NDArray[_np.float64]:
+    def dir(self) -> _Array[_np.float64]:
         """``MjModel.light_dir`` (nlight x 3): direction rel. to body frame."""
     @dir.setter
-    def dir(self, value: _ArrayLike) -> None: ...
+    def dir(self, value: _ArrayValues) -> None: ...
     @property
-    def dir0(self) -> _NDArray[_np.float64]:
+    def dir0(self) -> _Array[_np.float64]:
         """``MjModel.light_dir0`` (nlight x 3): global direction in qpos0."""
     @dir0.setter
-    def dir0(self, value: _ArrayLike) -> None: ...
+    def dir0(self, value: _ArrayValues) -> None: ...
     @property
-    def exponent(self) -> _NDArray[_np.float32]:
+    def exponent(self) -> _Array[_np.float32]:
         """``MjModel.light_exponent`` (nlight): OpenGL exponent."""
     @exponent.setter
-    def exponent(self, value: _ArrayLike) -> None: ...
+    def exponent(self, value: _ArrayValues) -> None: ...
     @property
-    def intensity(self) -> _NDArray[_np.float32]:
+    def intensity(self) -> _Array[_np.float32]:
         """``MjModel.light_intensity`` (nlight): intensity, in candela."""
     @intensity.setter
-    def intensity(self, value: _ArrayLike) -> None: ...
+    def intensity(self, value: _ArrayValues) -> None: ...
     @property
-    def mode(self) -> _NDArray[_np.int32]:
+    def mode(self) -> _Array[_np.int32]:
         """``MjModel.light_mode`` (nlight): light tracking mode (mjtCamLight)."""
     @mode.setter
-    def mode(self, value: _ArrayLike) -> None: ...
+    def mode(self, value: _ArrayValues) -> None: ...
     @property
-    def name_lightadr(self) -> _NDArray[_np.int32]:
+    def name_lightadr(self) -> _Array[_np.int32]:
         """``MjModel.name_lightadr`` (nlight): light name pointers."""
     @name_lightadr.setter
-    def name_lightadr(self, value: _ArrayLike) -> None: ...
+    def name_lightadr(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.light_pos`` (nlight x 3): position rel. to body frame."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def pos0(self) -> _NDArray[_np.float64]:
+    def pos0(self) -> _Array[_np.float64]:
         """``MjModel.light_pos0`` (nlight x 3): global position rel. to body in qpos0."""
     @pos0.setter
-    def pos0(self, value: _ArrayLike) -> None: ...
+    def pos0(self, value: _ArrayValues) -> None: ...
     @property
-    def poscom0(self) -> _NDArray[_np.float64]:
+    def poscom0(self) -> _Array[_np.float64]:
         """``MjModel.light_poscom0`` (nlight x 3): global position rel. to sub-com in qpos0."""
     @poscom0.setter
-    def poscom0(self, value: _ArrayLike) -> None: ...
+    def poscom0(self, value: _ArrayValues) -> None: ...
     @property
-    def range(self) -> _NDArray[_np.float32]:
+    def range(self) -> _Array[_np.float32]:
         """``MjModel.light_range`` (nlight): range of effectiveness."""
     @range.setter
-    def range(self, value: _ArrayLike) -> None: ...
+    def range(self, value: _ArrayValues) -> None: ...
     @property
-    def softness(self) -> _NDArray[_np.float32]:
+    def softness(self) -> _Array[_np.float32]:
         """``MjModel.light_softness`` (nlight): spotlight edge softness."""
     @softness.setter
-    def softness(self, value: _ArrayLike) -> None: ...
+    def softness(self, value: _ArrayValues) -> None: ...
     @property
-    def specular(self) -> _NDArray[_np.float32]:
+    def specular(self) -> _Array[_np.float32]:
         """``MjModel.light_specular`` (nlight x 3): specular rgb (alpha=1)."""
     @specular.setter
-    def specular(self, value: _ArrayLike) -> None: ...
+    def specular(self, value: _ArrayValues) -> None: ...
     @property
-    def targetbodyid(self) -> _NDArray[_np.int32]:
+    def targetbodyid(self) -> _Array[_np.int32]:
         """``MjModel.light_targetbodyid`` (nlight): id of targeted body; -1: none."""
     @targetbodyid.setter
-    def targetbodyid(self, value: _ArrayLike) -> None: ...
+    def targetbodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def texid(self) -> _NDArray[_np.int32]:
+    def texid(self) -> _Array[_np.int32]:
         """``MjModel.light_texid`` (nlight): texture id for image lights."""
     @texid.setter
-    def texid(self, value: _ArrayLike) -> None: ...
+    def texid(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.light_type`` (nlight): spot, directional, etc. (mjtLightType)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def xdir(self) -> _NDArray[_np.float64]:
+    def xdir(self) -> _Array[_np.float64]:
         """``MjData.light_xdir`` (nlight x 3): Cartesian light direction."""
     @xdir.setter
-    def xdir(self, value: _ArrayLike) -> None: ...
+    def xdir(self, value: _ArrayValues) -> None: ...
     @property
-    def xpos(self) -> _NDArray[_np.float64]:
+    def xpos(self) -> _Array[_np.float64]:
         """``MjData.light_xpos`` (nlight x 3): Cartesian light position."""
     @xpos.setter
-    def xpos(self, value: _ArrayLike) -> None: ...
+    def xpos(self, value: _ArrayValues) -> None: ...
 
 
 class MaterialBinding(_Binding):
@@ -1863,60 +1863,60 @@ class MaterialBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def emission(self) -> _NDArray[_np.float32]:
+    def emission(self) -> _Array[_np.float32]:
         """``MjModel.mat_emission`` (nmat): emission (x rgb)."""
     @emission.setter
-    def emission(self, value: _ArrayLike) -> None: ...
+    def emission(self, value: _ArrayValues) -> None: ...
     @property
-    def metallic(self) -> _NDArray[_np.float32]:
+    def metallic(self) -> _Array[_np.float32]:
         """``MjModel.mat_metallic`` (nmat): metallic coef."""
     @metallic.setter
-    def metallic(self, value: _ArrayLike) -> None: ...
+    def metallic(self, value: _ArrayValues) -> None: ...
     @property
-    def name_matadr(self) -> _NDArray[_np.int32]:
+    def name_matadr(self) -> _Array[_np.int32]:
         """``MjModel.name_matadr`` (nmat): material name pointers."""
     @name_matadr.setter
-    def name_matadr(self, value: _ArrayLike) -> None: ...
+    def name_matadr(self, value: _ArrayValues) -> None: ...
     @property
-    def reflectance(self) -> _NDArray[_np.float32]:
+    def reflectance(self) -> _Array[_np.float32]:
         """``MjModel.mat_reflectance`` (nmat): reflectance (0: disable)."""
     @reflectance.setter
-    def reflectance(self, value: _ArrayLike) -> None: ...
+    def reflectance(self, value: _ArrayValues) -> None: ...
     @property
-    def rgba(self) -> _NDArray[_np.float32]:
+    def rgba(self) -> _Array[_np.float32]:
         """``MjModel.mat_rgba`` (nmat x 4): rgba."""
     @rgba.setter
-    def rgba(self, value: _ArrayLike) -> None: ...
+    def rgba(self, value: _ArrayValues) -> None: ...
     @property
-    def roughness(self) -> _NDArray[_np.float32]:
+    def roughness(self) -> _Array[_np.float32]:
         """``MjModel.mat_roughness`` (nmat): roughness coef."""
     @roughness.setter
-    def roughness(self, value: _ArrayLike) -> None: ...
+    def roughness(self, value: _ArrayValues) -> None: ...
     @property
-    def shininess(self) -> _NDArray[_np.float32]:
+    def shininess(self) -> _Array[_np.float32]:
         """``MjModel.mat_shininess`` (nmat): shininess coef."""
     @shininess.setter
-    def shininess(self, value: _ArrayLike) -> None: ...
+    def shininess(self, value: _ArrayValues) -> None: ...
     @property
-    def specular(self) -> _NDArray[_np.float32]:
+    def specular(self) -> _Array[_np.float32]:
         """``MjModel.mat_specular`` (nmat): specular (x white)."""
     @specular.setter
-    def specular(self, value: _ArrayLike) -> None: ...
+    def specular(self, value: _ArrayValues) -> None: ...
     @property
-    def texid(self) -> _NDArray[_np.int32]:
+    def texid(self) -> _Array[_np.int32]:
         """``MjModel.mat_texid`` (nmat x mjNTEXROLE): indices of textures; -1: none."""
     @texid.setter
-    def texid(self, value: _ArrayLike) -> None: ...
+    def texid(self, value: _ArrayValues) -> None: ...
     @property
-    def texrepeat(self) -> _NDArray[_np.float32]:
+    def texrepeat(self) -> _Array[_np.float32]:
         """``MjModel.mat_texrepeat`` (nmat x 2): texture repetition for 2d mapping."""
     @texrepeat.setter
-    def texrepeat(self, value: _ArrayLike) -> None: ...
+    def texrepeat(self, value: _ArrayValues) -> None: ...
     @property
-    def texuniform(self) -> _NDArray[_np.bool_]:
+    def texuniform(self) -> _Array[_np.bool_]:
         """``MjModel.mat_texuniform`` (nmat): make texture cube uniform."""
     @texuniform.setter
-    def texuniform(self, value: _ArrayLike) -> None: ...
+    def texuniform(self, value: _ArrayValues) -> None: ...
 
 
 class MeshBinding(_Binding):
@@ -1924,110 +1924,110 @@ class MeshBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def bvhadr(self) -> _NDArray[_np.int32]:
+    def bvhadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_bvhadr`` (nmesh): address of bvh root."""
     @bvhadr.setter
-    def bvhadr(self, value: _ArrayLike) -> None: ...
+    def bvhadr(self, value: _ArrayValues) -> None: ...
     @property
-    def bvhnum(self) -> _NDArray[_np.int32]:
+    def bvhnum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_bvhnum`` (nmesh): number of bvh."""
     @bvhnum.setter
-    def bvhnum(self, value: _ArrayLike) -> None: ...
+    def bvhnum(self, value: _ArrayValues) -> None: ...
     @property
-    def extrema(self) -> _NDArray[_np.int32]:
+    def extrema(self) -> _Array[_np.int32]:
         """``MjModel.mesh_extrema`` (nmesh x 27): extremum vertices in 3x3x3 directions."""
     @extrema.setter
-    def extrema(self, value: _ArrayLike) -> None: ...
+    def extrema(self, value: _ArrayValues) -> None: ...
     @property
-    def faceadr(self) -> _NDArray[_np.int32]:
+    def faceadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_faceadr`` (nmesh): first face address."""
     @faceadr.setter
-    def faceadr(self, value: _ArrayLike) -> None: ...
+    def faceadr(self, value: _ArrayValues) -> None: ...
     @property
-    def facenum(self) -> _NDArray[_np.int32]:
+    def facenum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_facenum`` (nmesh): number of faces."""
     @facenum.setter
-    def facenum(self, value: _ArrayLike) -> None: ...
+    def facenum(self, value: _ArrayValues) -> None: ...
     @property
-    def graphadr(self) -> _NDArray[_np.int32]:
+    def graphadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_graphadr`` (nmesh): graph data address; -1: no graph."""
     @graphadr.setter
-    def graphadr(self, value: _ArrayLike) -> None: ...
+    def graphadr(self, value: _ArrayValues) -> None: ...
     @property
-    def name_meshadr(self) -> _NDArray[_np.int32]:
+    def name_meshadr(self) -> _Array[_np.int32]:
         """``MjModel.name_meshadr`` (nmesh): mesh name pointers."""
     @name_meshadr.setter
-    def name_meshadr(self, value: _ArrayLike) -> None: ...
+    def name_meshadr(self, value: _ArrayValues) -> None: ...
     @property
-    def normaladr(self) -> _NDArray[_np.int32]:
+    def normaladr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_normaladr`` (nmesh): first normal address."""
     @normaladr.setter
-    def normaladr(self, value: _ArrayLike) -> None: ...
+    def normaladr(self, value: _ArrayValues) -> None: ...
     @property
-    def normalnum(self) -> _NDArray[_np.int32]:
+    def normalnum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_normalnum`` (nmesh): number of normals."""
     @normalnum.setter
-    def normalnum(self, value: _ArrayLike) -> None: ...
+    def normalnum(self, value: _ArrayValues) -> None: ...
     @property
-    def octadr(self) -> _NDArray[_np.int32]:
+    def octadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_octadr`` (nmesh): address of octree root."""
     @octadr.setter
-    def octadr(self, value: _ArrayLike) -> None: ...
+    def octadr(self, value: _ArrayValues) -> None: ...
     @property
-    def octnum(self) -> _NDArray[_np.int32]:
+    def octnum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_octnum`` (nmesh): number of octree nodes."""
     @octnum.setter
-    def octnum(self, value: _ArrayLike) -> None: ...
+    def octnum(self, value: _ArrayValues) -> None: ...
     @property
-    def pathadr(self) -> _NDArray[_np.int32]:
+    def pathadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_pathadr`` (nmesh): address of asset path for mesh; -1: none."""
     @pathadr.setter
-    def pathadr(self, value: _ArrayLike) -> None: ...
+    def pathadr(self, value: _ArrayValues) -> None: ...
     @property
-    def polyadr(self) -> _NDArray[_np.int32]:
+    def polyadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_polyadr`` (nmesh): first polygon address per mesh."""
     @polyadr.setter
-    def polyadr(self, value: _ArrayLike) -> None: ...
+    def polyadr(self, value: _ArrayValues) -> None: ...
     @property
-    def polynum(self) -> _NDArray[_np.int32]:
+    def polynum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_polynum`` (nmesh): number of polygons per mesh."""
     @polynum.setter
-    def polynum(self, value: _ArrayLike) -> None: ...
+    def polynum(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.mesh_pos`` (nmesh x 3): translation applied to asset vertices."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def quat(self) -> _NDArray[_np.float64]:
+    def quat(self) -> _Array[_np.float64]:
         """``MjModel.mesh_quat`` (nmesh x 4): rotation applied to asset vertices."""
     @quat.setter
-    def quat(self, value: _ArrayLike) -> None: ...
+    def quat(self, value: _ArrayValues) -> None: ...
     @property
-    def scale(self) -> _NDArray[_np.float64]:
+    def scale(self) -> _Array[_np.float64]:
         """``MjModel.mesh_scale`` (nmesh x 3): scaling applied to asset vertices."""
     @scale.setter
-    def scale(self, value: _ArrayLike) -> None: ...
+    def scale(self, value: _ArrayValues) -> None: ...
     @property
-    def texcoordadr(self) -> _NDArray[_np.int32]:
+    def texcoordadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_texcoordadr`` (nmesh): texcoord data address; -1: no texcoord."""
     @texcoordadr.setter
-    def texcoordadr(self, value: _ArrayLike) -> None: ...
+    def texcoordadr(self, value: _ArrayValues) -> None: ...
     @property
-    def texcoordnum(self) -> _NDArray[_np.int32]:
+    def texcoordnum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_texcoordnum`` (nmesh): number of texcoord."""
     @texcoordnum.setter
-    def texcoordnum(self, value: _ArrayLike) -> None: ...
+    def texcoordnum(self, value: _ArrayValues) -> None: ...
     @property
-    def vertadr(self) -> _NDArray[_np.int32]:
+    def vertadr(self) -> _Array[_np.int32]:
         """``MjModel.mesh_vertadr`` (nmesh): first vertex address."""
     @vertadr.setter
-    def vertadr(self, value: _ArrayLike) -> None: ...
+    def vertadr(self, value: _ArrayValues) -> None: ...
     @property
-    def vertnum(self) -> _NDArray[_np.int32]:
+    def vertnum(self) -> _Array[_np.int32]:
         """``MjModel.mesh_vertnum`` (nmesh): number of vertices."""
     @vertnum.setter
-    def vertnum(self, value: _ArrayLike) -> None: ...
+    def vertnum(self, value: _ArrayValues) -> None: ...
 
 
 class NumericBinding(_Binding):
@@ -2035,25 +2035,25 @@ class NumericBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adr(self) -> _NDArray[_np.int32]:
+    def adr(self) -> _Array[_np.int32]:
         """``MjModel.numeric_adr`` (nnumeric): address of field in numeric_data."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def data(self) -> _NDArray[_np.float64]:
+    def data(self) -> _Array[_np.float64]:
         """``MjModel.numeric_data`` (nnumericdata): array of all numeric fields."""
     @data.setter
-    def data(self, value: _ArrayLike) -> None: ...
+    def data(self, value: _ArrayValues) -> None: ...
     @property
-    def name_numericadr(self) -> _NDArray[_np.int32]:
+    def name_numericadr(self) -> _Array[_np.int32]:
         """``MjModel.name_numericadr`` (nnumeric): numeric name pointers."""
     @name_numericadr.setter
-    def name_numericadr(self, value: _ArrayLike) -> None: ...
+    def name_numericadr(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.int32]:
+    def size(self) -> _Array[_np.int32]:
         """``MjModel.numeric_size`` (nnumeric): size of numeric field."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
 
 
 class PairBinding(_Binding):
@@ -2061,65 +2061,65 @@ class PairBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adhesion(self) -> _NDArray[_np.float64]:
+    def adhesion(self) -> _Array[_np.float64]:
         """``MjModel.pair_adhesion`` (npair): adhesive force of contacts."""
     @adhesion.setter
-    def adhesion(self, value: _ArrayLike) -> None: ...
+    def adhesion(self, value: _ArrayValues) -> None: ...
     @property
-    def dim(self) -> _NDArray[_np.int32]:
+    def dim(self) -> _Array[_np.int32]:
         """``MjModel.pair_dim`` (npair): contact dimensionality."""
     @dim.setter
-    def dim(self, value: _ArrayLike) -> None: ...
+    def dim(self, value: _ArrayValues) -> None: ...
     @property
-    def friction(self) -> _NDArray[_np.float64]:
+    def friction(self) -> _Array[_np.float64]:
         """``MjModel.pair_friction`` (npair x 5): tangent1, 2, spin, roll1, 2."""
     @friction.setter
-    def friction(self, value: _ArrayLike) -> None: ...
+    def friction(self, value: _ArrayValues) -> None: ...
     @property
-    def gap(self) -> _NDArray[_np.float64]:
+    def gap(self) -> _Array[_np.float64]:
         """``MjModel.pair_gap`` (npair): additional contact detection buffer."""
     @gap.setter
-    def gap(self, value: _ArrayLike) -> None: ...
+    def gap(self, value: _ArrayValues) -> None: ...
     @property
-    def geom1(self) -> _NDArray[_np.int32]:
+    def geom1(self) -> _Array[_np.int32]:
         """``MjModel.pair_geom1`` (npair): id of geom1."""
     @geom1.setter
-    def geom1(self, value: _ArrayLike) -> None: ...
+    def geom1(self, value: _ArrayValues) -> None: ...
     @property
-    def geom2(self) -> _NDArray[_np.int32]:
+    def geom2(self) -> _Array[_np.int32]:
         """``MjModel.pair_geom2`` (npair): id of geom2."""
     @geom2.setter
-    def geom2(self, value: _ArrayLike) -> None: ...
+    def geom2(self, value: _ArrayValues) -> None: ...
     @property
-    def margin(self) -> _NDArray[_np.float64]:
+    def margin(self) -> _Array[_np.float64]:
         """``MjModel.pair_margin`` (npair): geometric inflation for contact."""
     @margin.setter
-    def margin(self, value: _ArrayLike) -> None: ...
+    def margin(self, value: _ArrayValues) -> None: ...
     @property
-    def name_pairadr(self) -> _NDArray[_np.int32]:
+    def name_pairadr(self) -> _Array[_np.int32]:
         """``MjModel.name_pairadr`` (npair): geom pair name pointers."""
     @name_pairadr.setter
-    def name_pairadr(self, value: _ArrayLike) -> None: ...
+    def name_pairadr(self, value: _ArrayValues) -> None: ...
     @property
-    def signature(self) -> _NDArray[_np.int32]:
+    def signature(self) -> _Array[_np.int32]:
         """``MjModel.pair_signature`` (npair): body1 << 16 + body2."""
     @signature.setter
-    def signature(self, value: _ArrayLike) -> None: ...
+    def signature(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp(self) -> _NDArray[_np.float64]:
+    def solimp(self) -> _Array[_np.float64]:
         """``MjModel.pair_solimp`` (npair x mjNIMP): solver impedance: contact."""
     @solimp.setter
-    def solimp(self, value: _ArrayLike) -> None: ...
+    def solimp(self, value: _ArrayValues) -> None: ...
     @property
-    def solref(self) -> _NDArray[_np.float64]:
+    def solref(self) -> _Array[_np.float64]:
         """``MjModel.pair_solref`` (npair x mjNREF): solver reference: contact normal."""
     @solref.setter
-    def solref(self, value: _ArrayLike) -> None: ...
+    def solref(self, value: _ArrayValues) -> None: ...
     @property
-    def solreffriction(self) -> _NDArray[_np.float64]:
+    def solreffriction(self) -> _Array[_np.float64]:
         """``MjModel.pair_solreffriction`` (npair x mjNREF): solver reference: contact friction."""
     @solreffriction.setter
-    def solreffriction(self, value: _ArrayLike) -> None: ...
+    def solreffriction(self, value: _ArrayValues) -> None: ...
 
 
 class SensorBinding(_Binding):
@@ -2127,105 +2127,105 @@ class SensorBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adr(self) -> _NDArray[_np.int32]:
+    def adr(self) -> _Array[_np.int32]:
         """``MjModel.sensor_adr`` (nsensor): address in sensor array."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def cutoff(self) -> _NDArray[_np.float64]:
+    def cutoff(self) -> _Array[_np.float64]:
         """``MjModel.sensor_cutoff`` (nsensor): cutoff for real and positive; 0: ignore."""
     @cutoff.setter
-    def cutoff(self, value: _ArrayLike) -> None: ...
+    def cutoff(self, value: _ArrayValues) -> None: ...
     @property
-    def datatype(self) -> _NDArray[_np.int32]:
+    def datatype(self) -> _Array[_np.int32]:
         """``MjModel.sensor_datatype`` (nsensor): numeric data type (mjtDataType)."""
     @datatype.setter
-    def datatype(self, value: _ArrayLike) -> None: ...
+    def datatype(self, value: _ArrayValues) -> None: ...
     @property
-    def delay(self) -> _NDArray[_np.float64]:
+    def delay(self) -> _Array[_np.float64]:
         """``MjModel.sensor_delay`` (nsensor): delay time in seconds; 0: no delay."""
     @delay.setter
-    def delay(self, value: _ArrayLike) -> None: ...
+    def delay(self, value: _ArrayValues) -> None: ...
     @property
-    def dim(self) -> _NDArray[_np.int32]:
+    def dim(self) -> _Array[_np.int32]:
         """``MjModel.sensor_dim`` (nsensor): number of scalar outputs."""
     @dim.setter
-    def dim(self, value: _ArrayLike) -> None: ...
+    def dim(self, value: _ArrayValues) -> None: ...
     @property
-    def history(self) -> _NDArray[_np.int32]:
+    def history(self) -> _Array[_np.int32]:
         """``MjModel.sensor_history`` (nsensor x 2): history buffer: [nsample, interp]."""
     @history.setter
-    def history(self, value: _ArrayLike) -> None: ...
+    def history(self, value: _ArrayValues) -> None: ...
     @property
-    def historyadr(self) -> _NDArray[_np.int32]:
+    def historyadr(self) -> _Array[_np.int32]:
         """``MjModel.sensor_historyadr`` (nsensor): address in history buffer; -1: none."""
     @historyadr.setter
-    def historyadr(self, value: _ArrayLike) -> None: ...
+    def historyadr(self, value: _ArrayValues) -> None: ...
     @property
-    def interval(self) -> _NDArray[_np.float64]:
+    def interval(self) -> _Array[_np.float64]:
         """``MjModel.sensor_interval`` (nsensor x 2): interval: [period, phase] in seconds."""
     @interval.setter
-    def interval(self, value: _ArrayLike) -> None: ...
+    def interval(self, value: _ArrayValues) -> None: ...
     @property
-    def intprm(self) -> _NDArray[_np.int32]:
+    def intprm(self) -> _Array[_np.int32]:
         """``MjModel.sensor_intprm`` (nsensor x mjNSENS): sensor parameters."""
     @intprm.setter
-    def intprm(self, value: _ArrayLike) -> None: ...
+    def intprm(self, value: _ArrayValues) -> None: ...
     @property
-    def name_sensoradr(self) -> _NDArray[_np.int32]:
+    def name_sensoradr(self) -> _Array[_np.int32]:
         """``MjModel.name_sensoradr`` (nsensor): sensor name pointers."""
     @name_sensoradr.setter
-    def name_sensoradr(self, value: _ArrayLike) -> None: ...
+    def name_sensoradr(self, value: _ArrayValues) -> None: ...
     @property
-    def needstage(self) -> _NDArray[_np.int32]:
+    def needstage(self) -> _Array[_np.int32]:
         """``MjModel.sensor_needstage`` (nsensor): required compute stage (mjtStage)."""
     @needstage.setter
-    def needstage(self, value: _ArrayLike) -> None: ...
+    def needstage(self, value: _ArrayValues) -> None: ...
     @property
-    def noise(self) -> _NDArray[_np.float64]:
+    def noise(self) -> _Array[_np.float64]:
         """``MjModel.sensor_noise`` (nsensor): noise standard deviation."""
     @noise.setter
-    def noise(self, value: _ArrayLike) -> None: ...
+    def noise(self, value: _ArrayValues) -> None: ...
     @property
-    def objid(self) -> _NDArray[_np.int32]:
+    def objid(self) -> _Array[_np.int32]:
         """``MjModel.sensor_objid`` (nsensor): id of sensorized object."""
     @objid.setter
-    def objid(self, value: _ArrayLike) -> None: ...
+    def objid(self, value: _ArrayValues) -> None: ...
     @property
-    def objtype(self) -> _NDArray[_np.int32]:
+    def objtype(self) -> _Array[_np.int32]:
         """``MjModel.sensor_objtype`` (nsensor): type of sensorized object (mjtObj)."""
     @objtype.setter
-    def objtype(self, value: _ArrayLike) -> None: ...
+    def objtype(self, value: _ArrayValues) -> None: ...
     @property
-    def plugin(self) -> _NDArray[_np.int32]:
+    def plugin(self) -> _Array[_np.int32]:
         """``MjModel.sensor_plugin`` (nsensor): plugin instance id; -1: not a plugin."""
     @plugin.setter
-    def plugin(self, value: _ArrayLike) -> None: ...
+    def plugin(self, value: _ArrayValues) -> None: ...
     @property
-    def refid(self) -> _NDArray[_np.int32]:
+    def refid(self) -> _Array[_np.int32]:
         """``MjModel.sensor_refid`` (nsensor): id of reference frame; -1: global frame."""
     @refid.setter
-    def refid(self, value: _ArrayLike) -> None: ...
+    def refid(self, value: _ArrayValues) -> None: ...
     @property
-    def reftype(self) -> _NDArray[_np.int32]:
+    def reftype(self) -> _Array[_np.int32]:
         """``MjModel.sensor_reftype`` (nsensor): type of reference frame (mjtObj)."""
     @reftype.setter
-    def reftype(self, value: _ArrayLike) -> None: ...
+    def reftype(self, value: _ArrayValues) -> None: ...
     @property
-    def sensordata(self) -> _NDArray[_np.float64]:
+    def sensordata(self) -> _Array[_np.float64]:
         """``MjData.sensordata`` (nsensordata): sensor data array."""
     @sensordata.setter
-    def sensordata(self, value: _ArrayLike) -> None: ...
+    def sensordata(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.sensor_type`` (nsensor): sensor type (mjtSensor)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.sensor_user`` (nsensor x nuser_sensor): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
 
 
 class SiteBinding(_Binding):
@@ -2233,80 +2233,80 @@ class SiteBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def bodyid(self) -> _NDArray[_np.int32]:
+    def bodyid(self) -> _Array[_np.int32]:
         """``MjModel.site_bodyid`` (nsite): id of site's body."""
     @bodyid.setter
-    def bodyid(self, value: _ArrayLike) -> None: ...
+    def bodyid(self, value: _ArrayValues) -> None: ...
     @property
-    def dataid(self) -> _NDArray[_np.int32]:
+    def dataid(self) -> _Array[_np.int32]:
         """``MjModel.site_dataid`` (nsite): id of site's mesh; -1: none."""
     @dataid.setter
-    def dataid(self, value: _ArrayLike) -> None: ...
+    def dataid(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.site_group`` (nsite): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def matid(self) -> _NDArray[_np.int32]:
+    def matid(self) -> _Array[_np.int32]:
         """``MjModel.site_matid`` (nsite): material id for rendering; -1: none."""
     @matid.setter
-    def matid(self, value: _ArrayLike) -> None: ...
+    def matid(self, value: _ArrayValues) -> None: ...
     @property
-    def name_siteadr(self) -> _NDArray[_np.int32]:
+    def name_siteadr(self) -> _Array[_np.int32]:
         """``MjModel.name_siteadr`` (nsite): site name pointers."""
     @name_siteadr.setter
-    def name_siteadr(self, value: _ArrayLike) -> None: ...
+    def name_siteadr(self, value: _ArrayValues) -> None: ...
     @property
-    def pos(self) -> _NDArray[_np.float64]:
+    def pos(self) -> _Array[_np.float64]:
         """``MjModel.site_pos`` (nsite x 3): local position offset rel. to body."""
     @pos.setter
-    def pos(self, value: _ArrayLike) -> None: ...
+    def pos(self, value: _ArrayValues) -> None: ...
     @property
-    def quat(self) -> _NDArray[_np.float64]:
+    def quat(self) -> _Array[_np.float64]:
         """``MjModel.site_quat`` (nsite x 4): local orientation offset rel. to body."""
     @quat.setter
-    def quat(self, value: _ArrayLike) -> None: ...
+    def quat(self, value: _ArrayValues) -> None: ...
     @property
-    def rgba(self) -> _NDArray[_np.float32]:
+    def rgba(self) -> _Array[_np.float32]:
         """``MjModel.site_rgba`` (nsite x 4): rgba when material is omitted."""
     @rgba.setter
-    def rgba(self, value: _ArrayLike) -> None: ...
+    def rgba(self, value: _ArrayValues) -> None: ...
     @property
-    def sameframe(self) -> _NDArray[_np.uint8]:
+    def sameframe(self) -> _Array[_np.uint8]:
         """``MjModel.site_sameframe`` (nsite): same frame as body (mjtSameframe)."""
     @sameframe.setter
-    def sameframe(self, value: _ArrayLike) -> None: ...
+    def sameframe(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.float64]:
+    def size(self) -> _Array[_np.float64]:
         """``MjModel.site_size`` (nsite x 3): geom size for rendering."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.site_type`` (nsite): geom type for rendering (mjtGeom)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.site_user`` (nsite x nuser_site): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def xmat(self) -> _NDArray[_np.float64]:
+    def xmat(self) -> _Array[_np.float64]:
         """``MjData.site_xmat`` (nsite x 9): Cartesian site orientation."""
     @xmat.setter
-    def xmat(self, value: _ArrayLike) -> None: ...
+    def xmat(self, value: _ArrayValues) -> None: ...
     @property
-    def xpos(self) -> _NDArray[_np.float64]:
+    def xpos(self) -> _Array[_np.float64]:
         """``MjData.site_xpos`` (nsite x 3): Cartesian site position."""
     @xpos.setter
-    def xpos(self, value: _ArrayLike) -> None: ...
+    def xpos(self, value: _ArrayValues) -> None: ...
     @property
-    def xquat(self) -> _NDArray[_np.float64]:
+    def xquat(self) -> _Array[_np.float64]:
         """``MjData.site_xquat`` (nsite x 4): Cartesian site orientation."""
     @xquat.setter
-    def xquat(self, value: _ArrayLike) -> None: ...
+    def xquat(self, value: _ArrayValues) -> None: ...
 
 
 class SkinBinding(_Binding):
@@ -2314,70 +2314,70 @@ class SkinBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def boneadr(self) -> _NDArray[_np.int32]:
+    def boneadr(self) -> _Array[_np.int32]:
         """``MjModel.skin_boneadr`` (nskin): first bone in skin."""
     @boneadr.setter
-    def boneadr(self, value: _ArrayLike) -> None: ...
+    def boneadr(self, value: _ArrayValues) -> None: ...
     @property
-    def bonenum(self) -> _NDArray[_np.int32]:
+    def bonenum(self) -> _Array[_np.int32]:
         """``MjModel.skin_bonenum`` (nskin): number of bones in skin."""
     @bonenum.setter
-    def bonenum(self, value: _ArrayLike) -> None: ...
+    def bonenum(self, value: _ArrayValues) -> None: ...
     @property
-    def faceadr(self) -> _NDArray[_np.int32]:
+    def faceadr(self) -> _Array[_np.int32]:
         """``MjModel.skin_faceadr`` (nskin): first face address."""
     @faceadr.setter
-    def faceadr(self, value: _ArrayLike) -> None: ...
+    def faceadr(self, value: _ArrayValues) -> None: ...
     @property
-    def facenum(self) -> _NDArray[_np.int32]:
+    def facenum(self) -> _Array[_np.int32]:
         """``MjModel.skin_facenum`` (nskin): number of faces."""
     @facenum.setter
-    def facenum(self, value: _ArrayLike) -> None: ...
+    def facenum(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.skin_group`` (nskin): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def inflate(self) -> _NDArray[_np.float32]:
+    def inflate(self) -> _Array[_np.float32]:
         """``MjModel.skin_inflate`` (nskin): inflate skin in normal direction."""
     @inflate.setter
-    def inflate(self, value: _ArrayLike) -> None: ...
+    def inflate(self, value: _ArrayValues) -> None: ...
     @property
-    def matid(self) -> _NDArray[_np.int32]:
+    def matid(self) -> _Array[_np.int32]:
         """``MjModel.skin_matid`` (nskin): skin material id; -1: none."""
     @matid.setter
-    def matid(self, value: _ArrayLike) -> None: ...
+    def matid(self, value: _ArrayValues) -> None: ...
     @property
-    def name_skinadr(self) -> _NDArray[_np.int32]:
+    def name_skinadr(self) -> _Array[_np.int32]:
         """``MjModel.name_skinadr`` (nskin): skin name pointers."""
     @name_skinadr.setter
-    def name_skinadr(self, value: _ArrayLike) -> None: ...
+    def name_skinadr(self, value: _ArrayValues) -> None: ...
     @property
-    def pathadr(self) -> _NDArray[_np.int32]:
+    def pathadr(self) -> _Array[_np.int32]:
         """``MjModel.skin_pathadr`` (nskin): address of asset path for skin; -1: none."""
     @pathadr.setter
-    def pathadr(self, value: _ArrayLike) -> None: ...
+    def pathadr(self, value: _ArrayValues) -> None: ...
     @property
-    def rgba(self) -> _NDArray[_np.float32]:
+    def rgba(self) -> _Array[_np.float32]:
         """``MjModel.skin_rgba`` (nskin x 4): skin rgba."""
     @rgba.setter
-    def rgba(self, value: _ArrayLike) -> None: ...
+    def rgba(self, value: _ArrayValues) -> None: ...
     @property
-    def texcoordadr(self) -> _NDArray[_np.int32]:
+    def texcoordadr(self) -> _Array[_np.int32]:
         """``MjModel.skin_texcoordadr`` (nskin): texcoord data address; -1: no texcoord."""
     @texcoordadr.setter
-    def texcoordadr(self, value: _ArrayLike) -> None: ...
+    def texcoordadr(self, value: _ArrayValues) -> None: ...
     @property
-    def vertadr(self) -> _NDArray[_np.int32]:
+    def vertadr(self) -> _Array[_np.int32]:
         """``MjModel.skin_vertadr`` (nskin): first vertex address."""
     @vertadr.setter
-    def vertadr(self, value: _ArrayLike) -> None: ...
+    def vertadr(self, value: _ArrayValues) -> None: ...
     @property
-    def vertnum(self) -> _NDArray[_np.int32]:
+    def vertnum(self) -> _Array[_np.int32]:
         """``MjModel.skin_vertnum`` (nskin): number of vertices."""
     @vertnum.setter
-    def vertnum(self, value: _ArrayLike) -> None: ...
+    def vertnum(self, value: _ArrayValues) -> None: ...
 
 
 class TendonBinding(_Binding):
@@ -2385,215 +2385,215 @@ class TendonBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def J_rowadr(self) -> _NDArray[_np.int32]:
+    def J_rowadr(self) -> _Array[_np.int32]:
         """``MjModel.ten_J_rowadr`` (ntendon): row start address in colind array."""
     @J_rowadr.setter
-    def J_rowadr(self, value: _ArrayLike) -> None: ...
+    def J_rowadr(self, value: _ArrayValues) -> None: ...
     @property
-    def J_rownnz(self) -> _NDArray[_np.int32]:
+    def J_rownnz(self) -> _Array[_np.int32]:
         """``MjModel.ten_J_rownnz`` (ntendon): number of non-zeros in Jacobian row."""
     @J_rownnz.setter
-    def J_rownnz(self, value: _ArrayLike) -> None: ...
+    def J_rownnz(self, value: _ArrayValues) -> None: ...
     @property
-    def actfrclimited(self) -> _NDArray[_np.bool_]:
+    def actfrclimited(self) -> _Array[_np.bool_]:
         """``MjModel.tendon_actfrclimited`` (ntendon): does tendon have actuator force limits."""
     @actfrclimited.setter
-    def actfrclimited(self, value: _ArrayLike) -> None: ...
+    def actfrclimited(self, value: _ArrayValues) -> None: ...
     @property
-    def actfrcrange(self) -> _NDArray[_np.float64]:
+    def actfrcrange(self) -> _Array[_np.float64]:
         """``MjModel.tendon_actfrcrange`` (ntendon x 2): range of total actuator force."""
     @actfrcrange.setter
-    def actfrcrange(self, value: _ArrayLike) -> None: ...
+    def actfrcrange(self, value: _ArrayValues) -> None: ...
     @property
-    def actuatorid(self) -> _NDArray[_np.int32]:
+    def actuatorid(self) -> _Array[_np.int32]:
         """``MjModel.tendon_actuatorid`` (ntendon): actuator contributing damping / armature."""
     @actuatorid.setter
-    def actuatorid(self, value: _ArrayLike) -> None: ...
+    def actuatorid(self, value: _ArrayValues) -> None: ...
     @property
-    def adr(self) -> _NDArray[_np.int32]:
+    def adr(self) -> _Array[_np.int32]:
         """``MjModel.tendon_adr`` (ntendon): address of first object in tendon's path."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def armature(self) -> _NDArray[_np.float64]:
+    def armature(self) -> _Array[_np.float64]:
         """``MjModel.tendon_armature`` (ntendon): inertia associated with tendon velocity."""
     @armature.setter
-    def armature(self, value: _ArrayLike) -> None: ...
+    def armature(self, value: _ArrayValues) -> None: ...
     @property
-    def damping(self) -> _NDArray[_np.float64]:
+    def damping(self) -> _Array[_np.float64]:
         """``MjModel.tendon_damping`` (ntendon): linear damping coefficient."""
     @damping.setter
-    def damping(self, value: _ArrayLike) -> None: ...
+    def damping(self, value: _ArrayValues) -> None: ...
     @property
-    def dampingpoly(self) -> _NDArray[_np.float64]:
+    def dampingpoly(self) -> _Array[_np.float64]:
         """``MjModel.tendon_dampingpoly`` (ntendon x mjNPOLY): high-order damping coefficients."""
     @dampingpoly.setter
-    def dampingpoly(self, value: _ArrayLike) -> None: ...
+    def dampingpoly(self, value: _ArrayValues) -> None: ...
     @property
-    def efcadr(self) -> _NDArray[_np.int32]:
+    def efcadr(self) -> _Array[_np.int32]:
         """``MjData.tendon_efcadr`` (ntendon): first efc address involving tendon; -1: none."""
     @efcadr.setter
-    def efcadr(self, value: _ArrayLike) -> None: ...
+    def efcadr(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_tid(self) -> _NDArray[_np.int32]:
+    def efm_tid(self) -> _Array[_np.int32]:
         """``MjData.efm_tid`` (ntendon): ids of tendons with terms in the metric."""
     @efm_tid.setter
-    def efm_tid(self, value: _ArrayLike) -> None: ...
+    def efm_tid(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_tk(self) -> _NDArray[_np.float64]:
+    def efm_tk(self) -> _Array[_np.float64]:
         """``MjData.efm_tk`` (ntendon): tendon stiffness h*k for shift, tid indexed."""
     @efm_tk.setter
-    def efm_tk(self, value: _ArrayLike) -> None: ...
+    def efm_tk(self, value: _ArrayValues) -> None: ...
     @property
-    def efm_ts(self) -> _NDArray[_np.float64]:
+    def efm_ts(self) -> _Array[_np.float64]:
         """``MjData.efm_ts`` (ntendon): tendon metric scale h^2*k + h*b, tid indexed."""
     @efm_ts.setter
-    def efm_ts(self, value: _ArrayLike) -> None: ...
+    def efm_ts(self, value: _ArrayValues) -> None: ...
     @property
-    def frictionloss(self) -> _NDArray[_np.float64]:
+    def frictionloss(self) -> _Array[_np.float64]:
         """``MjModel.tendon_frictionloss`` (ntendon): loss due to friction."""
     @frictionloss.setter
-    def frictionloss(self, value: _ArrayLike) -> None: ...
+    def frictionloss(self, value: _ArrayValues) -> None: ...
     @property
-    def group(self) -> _NDArray[_np.int32]:
+    def group(self) -> _Array[_np.int32]:
         """``MjModel.tendon_group`` (ntendon): group for visibility."""
     @group.setter
-    def group(self, value: _ArrayLike) -> None: ...
+    def group(self, value: _ArrayValues) -> None: ...
     @property
-    def invweight0(self) -> _NDArray[_np.float64]:
+    def invweight0(self) -> _Array[_np.float64]:
         """``MjModel.tendon_invweight0`` (ntendon): inv. weight in qpos0."""
     @invweight0.setter
-    def invweight0(self, value: _ArrayLike) -> None: ...
+    def invweight0(self, value: _ArrayValues) -> None: ...
     @property
-    def length(self) -> _NDArray[_np.float64]:
+    def length(self) -> _Array[_np.float64]:
         """``MjData.ten_length`` (ntendon): tendon lengths."""
     @length.setter
-    def length(self, value: _ArrayLike) -> None: ...
+    def length(self, value: _ArrayValues) -> None: ...
     @property
-    def length0(self) -> _NDArray[_np.float64]:
+    def length0(self) -> _Array[_np.float64]:
         """``MjModel.tendon_length0`` (ntendon): tendon length in qpos0."""
     @length0.setter
-    def length0(self, value: _ArrayLike) -> None: ...
+    def length0(self, value: _ArrayValues) -> None: ...
     @property
-    def lengthspring(self) -> _NDArray[_np.float64]:
+    def lengthspring(self) -> _Array[_np.float64]:
         """``MjModel.tendon_lengthspring`` (ntendon x 2): spring resting length range."""
     @lengthspring.setter
-    def lengthspring(self, value: _ArrayLike) -> None: ...
+    def lengthspring(self, value: _ArrayValues) -> None: ...
     @property
-    def limited(self) -> _NDArray[_np.bool_]:
+    def limited(self) -> _Array[_np.bool_]:
         """``MjModel.tendon_limited`` (ntendon): does tendon have length limits."""
     @limited.setter
-    def limited(self, value: _ArrayLike) -> None: ...
+    def limited(self, value: _ArrayValues) -> None: ...
     @property
-    def margin(self) -> _NDArray[_np.float64]:
+    def margin(self) -> _Array[_np.float64]:
         """``MjModel.tendon_margin`` (ntendon): min distance for limit detection."""
     @margin.setter
-    def margin(self, value: _ArrayLike) -> None: ...
+    def margin(self, value: _ArrayValues) -> None: ...
     @property
-    def matid(self) -> _NDArray[_np.int32]:
+    def matid(self) -> _Array[_np.int32]:
         """``MjModel.tendon_matid`` (ntendon): material id for rendering."""
     @matid.setter
-    def matid(self, value: _ArrayLike) -> None: ...
+    def matid(self, value: _ArrayValues) -> None: ...
     @property
-    def name_tendonadr(self) -> _NDArray[_np.int32]:
+    def name_tendonadr(self) -> _Array[_np.int32]:
         """``MjModel.name_tendonadr`` (ntendon): tendon name pointers."""
     @name_tendonadr.setter
-    def name_tendonadr(self, value: _ArrayLike) -> None: ...
+    def name_tendonadr(self, value: _ArrayValues) -> None: ...
     @property
-    def num(self) -> _NDArray[_np.int32]:
+    def num(self) -> _Array[_np.int32]:
         """``MjModel.tendon_num`` (ntendon): number of objects in tendon's path."""
     @num.setter
-    def num(self, value: _ArrayLike) -> None: ...
+    def num(self, value: _ArrayValues) -> None: ...
     @property
-    def plasticadr(self) -> _NDArray[_np.int32]:
+    def plasticadr(self) -> _Array[_np.int32]:
         """``MjModel.tendon_plasticadr`` (ntendon): start addr in plastic state (-1: none)."""
     @plasticadr.setter
-    def plasticadr(self, value: _ArrayLike) -> None: ...
+    def plasticadr(self, value: _ArrayValues) -> None: ...
     @property
-    def range(self) -> _NDArray[_np.float64]:
+    def range(self) -> _Array[_np.float64]:
         """``MjModel.tendon_range`` (ntendon x 2): tendon length limits."""
     @range.setter
-    def range(self, value: _ArrayLike) -> None: ...
+    def range(self, value: _ArrayValues) -> None: ...
     @property
-    def rgba(self) -> _NDArray[_np.float32]:
+    def rgba(self) -> _Array[_np.float32]:
         """``MjModel.tendon_rgba`` (ntendon x 4): rgba when material is omitted."""
     @rgba.setter
-    def rgba(self, value: _ArrayLike) -> None: ...
+    def rgba(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp_fri(self) -> _NDArray[_np.float64]:
+    def solimp_fri(self) -> _Array[_np.float64]:
         """``MjModel.tendon_solimp_fri`` (ntendon x mjNIMP): constraint solver impedance: friction."""
     @solimp_fri.setter
-    def solimp_fri(self, value: _ArrayLike) -> None: ...
+    def solimp_fri(self, value: _ArrayValues) -> None: ...
     @property
-    def solimp_lim(self) -> _NDArray[_np.float64]:
+    def solimp_lim(self) -> _Array[_np.float64]:
         """``MjModel.tendon_solimp_lim`` (ntendon x mjNIMP): constraint solver impedance: limit."""
     @solimp_lim.setter
-    def solimp_lim(self, value: _ArrayLike) -> None: ...
+    def solimp_lim(self, value: _ArrayValues) -> None: ...
     @property
-    def solref_fri(self) -> _NDArray[_np.float64]:
+    def solref_fri(self) -> _Array[_np.float64]:
         """``MjModel.tendon_solref_fri`` (ntendon x mjNREF): constraint solver reference: friction."""
     @solref_fri.setter
-    def solref_fri(self, value: _ArrayLike) -> None: ...
+    def solref_fri(self, value: _ArrayValues) -> None: ...
     @property
-    def solref_lim(self) -> _NDArray[_np.float64]:
+    def solref_lim(self) -> _Array[_np.float64]:
         """``MjModel.tendon_solref_lim`` (ntendon x mjNREF): constraint solver reference: limit."""
     @solref_lim.setter
-    def solref_lim(self, value: _ArrayLike) -> None: ...
+    def solref_lim(self, value: _ArrayValues) -> None: ...
     @property
-    def springyield(self) -> _NDArray[_np.float64]:
+    def springyield(self) -> _Array[_np.float64]:
         """``MjModel.tendon_springyield`` (ntendon): plastic yield threshold."""
     @springyield.setter
-    def springyield(self, value: _ArrayLike) -> None: ...
+    def springyield(self, value: _ArrayValues) -> None: ...
     @property
-    def stiffness(self) -> _NDArray[_np.float64]:
+    def stiffness(self) -> _Array[_np.float64]:
         """``MjModel.tendon_stiffness`` (ntendon): linear stiffness coefficient."""
     @stiffness.setter
-    def stiffness(self, value: _ArrayLike) -> None: ...
+    def stiffness(self, value: _ArrayValues) -> None: ...
     @property
-    def stiffnesspoly(self) -> _NDArray[_np.float64]:
+    def stiffnesspoly(self) -> _Array[_np.float64]:
         """``MjModel.tendon_stiffnesspoly`` (ntendon x mjNPOLY): high-order stiffness coefficients."""
     @stiffnesspoly.setter
-    def stiffnesspoly(self, value: _ArrayLike) -> None: ...
+    def stiffnesspoly(self, value: _ArrayValues) -> None: ...
     @property
-    def treeid(self) -> _NDArray[_np.int32]:
+    def treeid(self) -> _Array[_np.int32]:
         """``MjModel.tendon_treeid`` (ntendon x 2): first two trees along tendon's path."""
     @treeid.setter
-    def treeid(self, value: _ArrayLike) -> None: ...
+    def treeid(self, value: _ArrayValues) -> None: ...
     @property
-    def treenum(self) -> _NDArray[_np.int32]:
+    def treenum(self) -> _Array[_np.int32]:
         """``MjModel.tendon_treenum`` (ntendon): number of trees along tendon's path."""
     @treenum.setter
-    def treenum(self, value: _ArrayLike) -> None: ...
+    def treenum(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.tendon_type`` (ntendon): type of tendon (mjtTendon)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def user(self) -> _NDArray[_np.float64]:
+    def user(self) -> _Array[_np.float64]:
         """``MjModel.tendon_user`` (ntendon x nuser_tendon): user data."""
     @user.setter
-    def user(self, value: _ArrayLike) -> None: ...
+    def user(self, value: _ArrayValues) -> None: ...
     @property
-    def velocity(self) -> _NDArray[_np.float64]:
+    def velocity(self) -> _Array[_np.float64]:
         """``MjData.ten_velocity`` (ntendon): tendon velocities."""
     @velocity.setter
-    def velocity(self, value: _ArrayLike) -> None: ...
+    def velocity(self, value: _ArrayValues) -> None: ...
     @property
-    def width(self) -> _NDArray[_np.float64]:
+    def width(self) -> _Array[_np.float64]:
         """``MjModel.tendon_width`` (ntendon): width for rendering."""
     @width.setter
-    def width(self, value: _ArrayLike) -> None: ...
+    def width(self, value: _ArrayValues) -> None: ...
     @property
-    def wrapadr(self) -> _NDArray[_np.int32]:
+    def wrapadr(self) -> _Array[_np.int32]:
         """``MjData.ten_wrapadr`` (ntendon): start address of tendon's path."""
     @wrapadr.setter
-    def wrapadr(self, value: _ArrayLike) -> None: ...
+    def wrapadr(self, value: _ArrayValues) -> None: ...
     @property
-    def wrapnum(self) -> _NDArray[_np.int32]:
+    def wrapnum(self) -> _Array[_np.int32]:
         """``MjData.ten_wrapnum`` (ntendon): number of wrap points in path."""
     @wrapnum.setter
-    def wrapnum(self, value: _ArrayLike) -> None: ...
+    def wrapnum(self, value: _ArrayValues) -> None: ...
 
 
 class TextBinding(_Binding):
@@ -2601,20 +2601,20 @@ class TextBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adr(self) -> _NDArray[_np.int32]:
+    def adr(self) -> _Array[_np.int32]:
         """``MjModel.text_adr`` (ntext): address of text in text_data."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def name_textadr(self) -> _NDArray[_np.int32]:
+    def name_textadr(self) -> _Array[_np.int32]:
         """``MjModel.name_textadr`` (ntext): text name pointers."""
     @name_textadr.setter
-    def name_textadr(self, value: _ArrayLike) -> None: ...
+    def name_textadr(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.int32]:
+    def size(self) -> _Array[_np.int32]:
         """``MjModel.text_size`` (ntext): size of text field (strlen+1)."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
 
 
 class TextureBinding(_Binding):
@@ -2622,50 +2622,50 @@ class TextureBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adr(self) -> _NDArray[_np.int64]:
+    def adr(self) -> _Array[_np.int64]:
         """``MjModel.tex_adr`` (ntex): start address in tex_data."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def colorspace(self) -> _NDArray[_np.int32]:
+    def colorspace(self) -> _Array[_np.int32]:
         """``MjModel.tex_colorspace`` (ntex): texture colorspace (mjtColorSpace)."""
     @colorspace.setter
-    def colorspace(self, value: _ArrayLike) -> None: ...
+    def colorspace(self, value: _ArrayValues) -> None: ...
     @property
-    def contenttypeadr(self) -> _NDArray[_np.int32]:
+    def contenttypeadr(self) -> _Array[_np.int32]:
         """``MjModel.tex_contenttypeadr`` (ntex): content type address in paths; -1: none."""
     @contenttypeadr.setter
-    def contenttypeadr(self, value: _ArrayLike) -> None: ...
+    def contenttypeadr(self, value: _ArrayValues) -> None: ...
     @property
-    def height(self) -> _NDArray[_np.int32]:
+    def height(self) -> _Array[_np.int32]:
         """``MjModel.tex_height`` (ntex): number of rows in texture image."""
     @height.setter
-    def height(self, value: _ArrayLike) -> None: ...
+    def height(self, value: _ArrayValues) -> None: ...
     @property
-    def name_texadr(self) -> _NDArray[_np.int32]:
+    def name_texadr(self) -> _Array[_np.int32]:
         """``MjModel.name_texadr`` (ntex): texture name pointers."""
     @name_texadr.setter
-    def name_texadr(self, value: _ArrayLike) -> None: ...
+    def name_texadr(self, value: _ArrayValues) -> None: ...
     @property
-    def nchannel(self) -> _NDArray[_np.int32]:
+    def nchannel(self) -> _Array[_np.int32]:
         """``MjModel.tex_nchannel`` (ntex): number of channels in texture image."""
     @nchannel.setter
-    def nchannel(self, value: _ArrayLike) -> None: ...
+    def nchannel(self, value: _ArrayValues) -> None: ...
     @property
-    def pathadr(self) -> _NDArray[_np.int32]:
+    def pathadr(self) -> _Array[_np.int32]:
         """``MjModel.tex_pathadr`` (ntex): address of texture asset path; -1: none."""
     @pathadr.setter
-    def pathadr(self, value: _ArrayLike) -> None: ...
+    def pathadr(self, value: _ArrayValues) -> None: ...
     @property
-    def type(self) -> _NDArray[_np.int32]:
+    def type(self) -> _Array[_np.int32]:
         """``MjModel.tex_type`` (ntex): texture type (mjtTexture)."""
     @type.setter
-    def type(self, value: _ArrayLike) -> None: ...
+    def type(self, value: _ArrayValues) -> None: ...
     @property
-    def width(self) -> _NDArray[_np.int32]:
+    def width(self) -> _Array[_np.int32]:
         """``MjModel.tex_width`` (ntex): number of columns in texture image."""
     @width.setter
-    def width(self, value: _ArrayLike) -> None: ...
+    def width(self, value: _ArrayValues) -> None: ...
 
 
 class TupleBinding(_Binding):
@@ -2673,35 +2673,35 @@ class TupleBinding(_Binding):
     several elements' stacked (in the order they were bound)."""
 
     @property
-    def adr(self) -> _NDArray[_np.int32]:
+    def adr(self) -> _Array[_np.int32]:
         """``MjModel.tuple_adr`` (ntuple): address of text in text_data."""
     @adr.setter
-    def adr(self, value: _ArrayLike) -> None: ...
+    def adr(self, value: _ArrayValues) -> None: ...
     @property
-    def name_tupleadr(self) -> _NDArray[_np.int32]:
+    def name_tupleadr(self) -> _Array[_np.int32]:
         """``MjModel.name_tupleadr`` (ntuple): tuple name pointers."""
     @name_tupleadr.setter
-    def name_tupleadr(self, value: _ArrayLike) -> None: ...
+    def name_tupleadr(self, value: _ArrayValues) -> None: ...
     @property
-    def objid(self) -> _NDArray[_np.int32]:
+    def objid(self) -> _Array[_np.int32]:
         """``MjModel.tuple_objid`` (ntupledata): array of object ids in all tuples."""
     @objid.setter
-    def objid(self, value: _ArrayLike) -> None: ...
+    def objid(self, value: _ArrayValues) -> None: ...
     @property
-    def objprm(self) -> _NDArray[_np.float64]:
+    def objprm(self) -> _Array[_np.float64]:
         """``MjModel.tuple_objprm`` (ntupledata): array of object params in all tuples."""
     @objprm.setter
-    def objprm(self, value: _ArrayLike) -> None: ...
+    def objprm(self, value: _ArrayValues) -> None: ...
     @property
-    def objtype(self) -> _NDArray[_np.int32]:
+    def objtype(self) -> _Array[_np.int32]:
         """``MjModel.tuple_objtype`` (ntupledata): array of object types in all tuples."""
     @objtype.setter
-    def objtype(self, value: _ArrayLike) -> None: ...
+    def objtype(self, value: _ArrayValues) -> None: ...
     @property
-    def size(self) -> _NDArray[_np.int32]:
+    def size(self) -> _Array[_np.int32]:
         """``MjModel.tuple_size`` (ntuple): number of objects in tuple."""
     @size.setter
-    def size(self, value: _ArrayLike) -> None: ...
+    def size(self, value: _ArrayValues) -> None: ...
 
 
 class NamedModel(_StructIndexer):

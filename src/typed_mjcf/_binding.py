@@ -20,11 +20,14 @@ import numpy as np
 import numpy.typing as npt
 
 from typed_mjcf.errors import InvalidValueError, MjcfError, did_you_mean
+from typed_mjcf.types import Array, MuJoCoArray
 
 if TYPE_CHECKING:
     import mujoco
 
 PICKLING_NOT_SUPPORTED: Final = "Objects of type {type} cannot be pickled."
+MODEL: Final = "MjModel"  # the tables' names of the two structs
+DATA: Final = "MjData"
 
 # What indexes MuJoCo's arrays here: rows (a number, a slice, an array of numbers), and columns
 _Item: TypeAlias = int | slice | EllipsisType | npt.NDArray[np.intp]
@@ -64,7 +67,7 @@ class Ragged:
 @dataclass(frozen=True, slots=True)
 class Kind:
     """A kind of element MuJoCo compiles: its ``mjtObj``, its count, its binding class, the
-    arrays it binds (binding name -> ``("model" | "data", field)``), MjSpec's list of it."""
+    arrays it binds (binding name -> ``("MjModel" | "MjData", field)``), MjSpec's list."""
 
     objtype: str
     size: str
@@ -124,14 +127,14 @@ class Bound(Protocol):
 
 
 def _array(physics: Bound, struct: str, name: str) -> npt.NDArray[np.generic]:
-    source: object = physics.model if struct == "model" else physics.data
+    source: object = physics.model if struct == MODEL else physics.data
     return cast("npt.NDArray[np.generic]", getattr(source, name))
 
 
 def triggers_dirty(struct: str, name: str) -> bool:
     """Whether writing ``struct.name`` makes MjData's derived quantities stale."""
     tables = binding_tables()
-    return name in tables.data_inputs if struct == "data" else (
+    return name in tables.data_inputs if struct == DATA else (
         name not in tables.model_cosmetic)
 
 
@@ -272,7 +275,7 @@ class Binding:
     # ------------------------------------------------------------------ what it binds
 
     @property
-    def element_id(self) -> int | npt.NDArray[np.intp]:
+    def element_id(self) -> int | Array[np.intp]:
         """The compiled id of the element (of each element, for several)."""
         if self._single and len(self._ids) == 1:
             return int(self._ids[0])
@@ -319,8 +322,8 @@ class Binding:
             tuple[npt.NDArray[np.generic], npt.NDArray[np.intp] | int], ...]:
         out: list[tuple[npt.NDArray[np.generic], npt.NDArray[np.intp] | int]] = []
         for other in binding_tables().clear_on_write.get(field_name, ()):
-            out.append((_array(self._physics, "model", other), self._index(
-                f"{name}->{other}", "model", other)))
+            out.append((_array(self._physics, MODEL, other), self._index(
+                f"{name}->{other}", MODEL, other)))
         return tuple(out)
 
     def _get(self, name: str) -> BoundArray:
@@ -329,7 +332,7 @@ class Binding:
         if physics.is_dirty and not triggers_dirty(struct, field_name):
             physics.forward()
         return BoundArray.of(physics, struct, field_name, self._index(name, struct, field_name),
-                             self._clears(name, field_name) if struct == "model" else ())
+                             self._clears(name, field_name) if struct == MODEL else ())
 
     def _set(self, name: str, value: object) -> None:
         struct, field_name = self._where(name)
@@ -344,7 +347,7 @@ class Binding:
         except (ValueError, TypeError) as error:
             raise InvalidValueError(f"{self._label}: cannot set {name} ({struct}."
                                     f"{field_name}) to {value!r}: {error}") from None
-        if struct == "model":
+        if struct == MODEL:
             for other, where in self._clears(name, field_name):
                 other[where] = 0
         if dirty:
@@ -381,12 +384,12 @@ class Binding:
             return name, np.ix_(rows_index, np.asarray(column_index, dtype=np.intp))
         return name, (rows_index, column_index)
 
-    def __getitem__(self, index: str | tuple[str, object]) -> npt.NDArray[np.generic]:
+    def __getitem__(self, index: str | tuple[str, object]) -> MuJoCoArray:
         name, where = self._expression(index)
         struct, field_name = self._where(name)
         if self._physics.is_dirty and not triggers_dirty(struct, field_name):
             self._physics.forward()
-        return index_array(_array(self._physics, struct, field_name), where)
+        return cast(MuJoCoArray, index_array(_array(self._physics, struct, field_name), where))
 
     def __setitem__(self, index: str | tuple[str, object], value: object) -> None:
         name, where = self._expression(index)
@@ -395,7 +398,7 @@ class Binding:
         if self._physics.is_dirty and not dirty:
             self._physics.forward()
         assign_array(_array(self._physics, struct, field_name), where, value)
-        if struct == "model":
+        if struct == MODEL:
             for other, at in self._clears(name, field_name):
                 other[at] = 0
         if dirty:

@@ -10,18 +10,20 @@ they are coordinates (``xpos[..., "z"]``, ``geom_rgba["floor", "a"]``) or object
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from typing import TYPE_CHECKING, Generic, TypeVar, cast
+from typing import TYPE_CHECKING, Generic, TypeAlias, TypeVar, cast
 
 import numpy as np
 import numpy.typing as npt
 
-from typed_mjcf._binding import assign_array, binding_tables, index_array, rows
+from typed_mjcf._binding import DATA, MODEL, assign_array, binding_tables, index_array, rows
 from typed_mjcf.errors import did_you_mean
+from typed_mjcf.types import Array, MuJoCoArray
 
 if TYPE_CHECKING:
     import mujoco
 
-S = TypeVar("S", bound=np.generic)
+S = TypeVar("S", np.float64, np.float32, np.int64, np.int32, np.int8, np.uint64, np.uint8,
+            np.bool_)
 
 
 class Axis:
@@ -29,11 +31,15 @@ class Axis:
 
     __slots__ = ("names", "rows", "slices")
 
+    names: list[str]
+    rows: dict[str, Array[np.intp] | int]
+    slices: bool  # ragged: each name has rows of its own
+
     def __init__(self, names: Sequence[str] = (),
-                 rows_of: Sequence[npt.NDArray[np.intp]] | None = None) -> None:
+                 rows_of: Sequence[Array[np.intp]] | None = None) -> None:
         self.names = list(names)
         # each name's rows (a ragged axis: a joint's qpos rows); else its position
-        self.rows: dict[str, npt.NDArray[np.intp] | int] = {}
+        self.rows = {}
         for position, name in enumerate(self.names):
             if name:
                 self.rows[name] = position if rows_of is None else rows_of[position]
@@ -78,7 +84,11 @@ class FieldIndexer(Generic[S]):
 
     __slots__ = ("_array", "_axes", "_name")
 
-    def __init__(self, name: str, array: npt.NDArray[S], axes: tuple[Axis, ...]) -> None:
+    _array: Array[S]
+    _axes: tuple[Axis, ...]
+    _name: str
+
+    def __init__(self, name: str, array: Array[S], axes: tuple[Axis, ...]) -> None:
         self._name = name
         self._array = array
         self._axes = axes
@@ -103,9 +113,8 @@ class FieldIndexer(Generic[S]):
     def __len__(self) -> int:
         return len(self._array)
 
-    def __array__(self, dtype: npt.DTypeLike | None = None, copy: bool | None = None,
-                  ) -> npt.NDArray[np.generic]:
-        return self._array if dtype is None else self._array.astype(dtype)
+    def __array__(self, dtype: None = None, copy: bool | None = None) -> Array[S]:
+        return self._array
 
     def _key(self, key: object) -> object:
         if not isinstance(key, tuple):
@@ -116,11 +125,11 @@ class FieldIndexer(Generic[S]):
                              f"{self._array.ndim} dimensions")
         return tuple(axis.key(item) for axis, item in zip(self._axes, items, strict=False))
 
-    def __getitem__(self, key: object) -> npt.NDArray[S]:
-        return cast("npt.NDArray[S]", index_array(self._array, self._key(key)))
+    def __getitem__(self, key: object) -> Array[S]:
+        return cast("Array[S]", index_array(cast(MuJoCoArray, self._array), self._key(key)))
 
     def __setitem__(self, key: object, value: object) -> None:
-        assign_array(cast("npt.NDArray[np.generic]", self._array), self._key(key), value)
+        assign_array(cast(MuJoCoArray, self._array), self._key(key), value)
 
     def __repr__(self) -> str:
         lines = [f"FieldIndexer({self._name}):"]
@@ -134,16 +143,22 @@ class FieldIndexer(Generic[S]):
         return "\n".join(lines) if len(lines) > 1 else lines[0] + "\n(empty)"
 
 
+AnyIndexer: TypeAlias = (
+    "FieldIndexer[np.float64] | FieldIndexer[np.float32] | FieldIndexer[np.int64] "
+    "| FieldIndexer[np.int32] | FieldIndexer[np.int8] | FieldIndexer[np.uint64] "
+    "| FieldIndexer[np.uint8] | FieldIndexer[np.bool_]")
+
+
 class StructIndexer:
     """Named indexers for every array of ``MjModel`` (``physics.named.model``) or ``MjData``
     (``physics.named.data``) that MuJoCo indexes by object."""
 
     __slots__ = ("_indexers",)
 
-    def __init__(self, indexers: dict[str, FieldIndexer[np.generic]]) -> None:
+    def __init__(self, indexers: dict[str, AnyIndexer]) -> None:
         self._indexers = indexers
 
-    def _asdict(self) -> dict[str, FieldIndexer[np.generic]]:
+    def _asdict(self) -> dict[str, AnyIndexer]:
         return dict(self._indexers)
 
     def __dir__(self) -> Iterator[str]:
@@ -151,7 +166,7 @@ class StructIndexer:
 
     if not TYPE_CHECKING:  # the generated classes declare each array
 
-        def __getattr__(self, name: str) -> FieldIndexer[np.generic]:
+        def __getattr__(self, name: str) -> AnyIndexer:
             if name.startswith("__"):
                 raise AttributeError(name)
             try:
@@ -191,15 +206,16 @@ def make_axes(model: mujoco.MjModel) -> dict[str, Axis]:
 
 
 def struct_indexers(model: mujoco.MjModel, data: mujoco.MjData,
-                    axes: dict[str, Axis]) -> tuple[dict[str, FieldIndexer[np.generic]],
-                                                    dict[str, FieldIndexer[np.generic]]]:
+                    axes: dict[str, Axis]) -> tuple[dict[str, AnyIndexer],
+                                                    dict[str, AnyIndexer]]:
     """The named indexers of ``model``'s and ``data``'s arrays."""
-    out: dict[str, dict[str, FieldIndexer[np.generic]]] = {"model": {}, "data": {}}
-    sources: dict[str, object] = {"model": model, "data": data}
+    out: dict[str, dict[str, AnyIndexer]] = {MODEL: {}, DATA: {}}
+    sources: dict[str, object] = {MODEL: model, DATA: data}
     for (struct, name), (row, column) in binding_tables().fields.items():
         array = getattr(sources[struct], name, None)
         if not isinstance(array, np.ndarray):
             continue
         found = (axes.get(row, UNNAMED), axes.get(column, UNNAMED))[:max(1, array.ndim)]
-        out[struct][name] = FieldIndexer(name, cast("npt.NDArray[np.generic]", array), found)
-    return out["model"], out["data"]
+        out[struct][name] = cast(AnyIndexer, FieldIndexer(
+            name, cast("Array[np.float64]", array), found))  # its dtype: the generated types
+    return out[MODEL], out[DATA]

@@ -24,18 +24,16 @@ import contextlib
 import os
 import warnings
 from collections.abc import Generator, Iterable, Mapping
-from typing import TYPE_CHECKING, Final, NamedTuple, Self, cast
+from typing import TYPE_CHECKING, Final, Literal, NamedTuple, Self, cast, overload
 
 import mujoco
 import numpy as np
-import numpy.typing as npt
 
 from typed_mjcf import _tree
 from typed_mjcf._binding import (
     PICKLING_NOT_SUPPORTED,
     Binding,
     BindingError,
-    BoundArray,
     EmptyBinding,
     binding_tables,
     new_binding,
@@ -48,11 +46,12 @@ from typed_mjcf._ids import compile_for_physics, ids_for_text, kind_of
 from typed_mjcf._named import make_axes, struct_indexers
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import InvalidValueError, MjcfError
+from typed_mjcf.types import Array, ArrayValues
 
 if TYPE_CHECKING:
     from typed_mjcf._base import ModelRoot
 
-__all__ = ["Binding", "BoundArray", "Data", "Model", "Named", "Physics", "PhysicsError",
+__all__ = ["Binding", "Data", "Model", "Named", "Physics", "PhysicsError",
            "RenderError"]
 __all__ += _bindings.__all__
 
@@ -80,7 +79,7 @@ class Model(mujoco.MjModel):
         found = mujoco.mj_name2id(self, objtype, name)
         if found < 0:
             raise InvalidValueError(f"no {objtype.name[6:].lower()} named {name!r} in the "
-                                    f"model")
+                                    "compiled model")
         return found
 
     def id2name(self, object_id: int, object_type: str | mujoco.mjtObj) -> str:
@@ -386,37 +385,37 @@ class Physics(Bind):
         """The simulated time, in seconds."""
         return float(self._data.time)
 
-    def control(self) -> npt.NDArray[np.float64]:
+    def control(self) -> Array[np.float64]:
         """A copy of the controls."""
         return np.array(self._data.ctrl, copy=True)
 
-    def set_control(self, control: npt.ArrayLike) -> None:
+    def set_control(self, control: ArrayValues) -> None:
         """Set the controls for the next steps."""
         np.copyto(self._data.ctrl, np.asarray(control, dtype=np.float64))
 
-    def position(self) -> npt.NDArray[np.float64]:
+    def position(self) -> Array[np.float64]:
         """A copy of the generalized positions (``qpos``)."""
         return np.array(self._data.qpos, copy=True)
 
-    def velocity(self) -> npt.NDArray[np.float64]:
+    def velocity(self) -> Array[np.float64]:
         """A copy of the generalized velocities (``qvel``)."""
         return np.array(self._data.qvel, copy=True)
 
-    def activation(self) -> npt.NDArray[np.float64]:
+    def activation(self) -> Array[np.float64]:
         """A copy of the actuators' activations (``act``)."""
         return np.array(self._data.act, copy=True)
 
-    def _state_items(self) -> list[npt.NDArray[np.float64]]:
+    def _state_items(self) -> list[Array[np.float64]]:
         items = [self._data.qpos, self._data.qvel, self._data.act]
         if self.model.nplugin:
             items.append(self._data.plugin_state)
         return items
 
-    def state(self) -> npt.NDArray[np.float64]:
+    def state(self) -> Array[np.float64]:
         """The state: qpos, qvel, act (and the plugins' state), concatenated."""
         return np.concatenate(self._state_items())
 
-    def get_state(self, sig: int | None = None) -> npt.NDArray[np.float64]:
+    def get_state(self, sig: int | None = None) -> Array[np.float64]:
         """:meth:`state`, or MuJoCo's ``mj_getState`` of the state elements ``sig``."""
         if sig is None:
             return self.state()
@@ -424,7 +423,7 @@ class Physics(Bind):
         mujoco.mj_getState(self.model, self._data, out, sig)
         return out
 
-    def set_state(self, physics_state: npt.ArrayLike, sig: int | None = None) -> None:
+    def set_state(self, physics_state: ArrayValues, sig: int | None = None) -> None:
         """Set what :meth:`get_state` gives."""
         values = np.asarray(physics_state, dtype=np.float64)
         if sig is not None:
@@ -460,14 +459,28 @@ class Physics(Bind):
 
     # ------------------------------------------------------------------ rendering
 
-    def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1,
+    @overload
+    def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
+               depth: Literal[False] = False, segmentation: Literal[False] = False,
+               scene_option: mujoco.MjvOption | None = None) -> Array[np.uint8]: ...
+    @overload
+    def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
+               depth: Literal[True], segmentation: Literal[False] = False,
+               scene_option: mujoco.MjvOption | None = None) -> Array[np.float32]: ...
+    @overload
+    def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
+               depth: Literal[False] = False, segmentation: Literal[True],
+               scene_option: mujoco.MjvOption | None = None) -> Array[np.int32]: ...
+
+    def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: bool = False, segmentation: bool = False,
-               scene_option: mujoco.MjvOption | None = None) -> npt.NDArray[np.generic]:
+               scene_option: mujoco.MjvOption | None = None,
+               ) -> Array[np.uint8] | Array[np.float32] | Array[np.int32]:
         """An image of the scene from camera ``camera_id`` (a name or an id; -1: the free
         camera): height x width x 3 ``uint8`` RGB; with ``depth``, height x width
         ``float32`` distances in metres; with ``segmentation``, height x width x 2 ``int32``
         (object id, ``mjtObj`` type; -1, -1 for the background). Uses the OpenGL back end
-        ``MUJOCO_GL`` chooses (``egl`` without a display)."""
+        ``MUJOCO_GL`` chooses (``egl`` renders without a display)."""
         if depth and segmentation:
             raise InvalidValueError("render: depth and segmentation cannot both be True")
         camera = self._camera(camera_id)
@@ -480,7 +493,8 @@ class Physics(Bind):
             renderer.enable_segmentation_rendering()
         try:
             renderer.update_scene(self._data, camera, scene_option)
-            return cast("npt.NDArray[np.generic]", renderer.render())
+            pixels: Array[np.uint8] | Array[np.float32] | Array[np.int32] = renderer.render()
+            return pixels
         finally:
             renderer.disable_depth_rendering()
             renderer.disable_segmentation_rendering()
