@@ -146,8 +146,10 @@ def _disable_bit(flag: str) -> mujoco.mjtDisableBit:
 
 def _as_model(model: mujoco.MjModel) -> Model:
     """``model`` as a :class:`Model` (its contents copied once)."""
-    if isinstance(model, Model):
-        return model
+    return model if isinstance(model, Model) else _copy_model(model)
+
+
+def _copy_model(model: mujoco.MjModel) -> Model:
     out = Model.__new__(Model)
     out.__setstate__(model.__getstate__())
     return out
@@ -442,7 +444,7 @@ class Physics(Bind):
     def copy(self, share_model: bool = False) -> Self:
         """An independent copy of this physics (sharing the compiled model with
         ``share_model=True``); bindings are made anew on it."""
-        model = self.model if share_model else _as_model(self.model)
+        model = self.model if share_model else _copy_model(self.model)
         data = Data(model)
         mujoco.mj_copyData(data, model, self._data)
         new = type(self).__new__(type(self))
