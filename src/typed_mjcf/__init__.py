@@ -17,6 +17,7 @@ from typed_mjcf._base import Element, ModelRoot
 from typed_mjcf._generated import elements as _elements
 from typed_mjcf._generated.elements import *
 from typed_mjcf._names import NameScope
+from typed_mjcf._png import encode_png
 from typed_mjcf._traversal import (
     commit_defaults,
     get_attachment_frame,
@@ -86,6 +87,7 @@ __all__ = [
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",
+    "encode_png",
     "export_with_assets",
     "export_with_assets_as_zip",
     "from_file",

@@ -156,11 +156,13 @@ def rows(model: mujoco.MjModel, size: str, ids: npt.NDArray[np.intp]) -> (
     else:  # up to the next address (the last: to the end)
         total = int(getattr(model, size))
         num = np.diff(np.append(adr, total))
-    if len(ids) == 0:
-        return np.zeros(0, dtype=np.intp)
-    parts = [np.arange(int(adr[i]), int(adr[i] + num[i]), dtype=np.intp)
-             for i in ids if adr[i] >= 0]
-    return np.concatenate(parts) if parts else np.zeros(0, dtype=np.intp)
+    starts, counts = adr[ids], np.where(adr[ids] >= 0, num[ids], 0)
+    if bool((counts == 1).all()):
+        return starts  # one row each (hinges, slides): their addresses
+    # each element's rows in order: its start, repeated, plus 0, 1, ... within it
+    total = int(counts.sum())
+    offsets = np.arange(total, dtype=np.intp) - np.repeat(np.cumsum(counts) - counts, counts)
+    return np.repeat(starts, counts) + offsets
 
 
 # ---------------------------------------------------------------------------- arrays

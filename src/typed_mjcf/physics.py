@@ -564,8 +564,7 @@ class Physics(Bind):
                                f"types ({kinds[0]!r} != "
                                f"{next(k for k in kinds if k != kinds[0])!r}).")
         kind = kinds[0]
-        ids = np.asarray([i for element in elements for i in self._ids(element, kind)],
-                         dtype=np.intp)
+        ids = self._ids_of(elements, kind)
         label = elements[0].path if single else f"{len(elements)} <{kind}> elements"
         binding = new_binding(binding_tables().kinds[kind].binding, self, kind, ids,
                               single, label)
@@ -583,26 +582,40 @@ class Physics(Bind):
                                f"it indexes)")
         return kind
 
-    def _ids(self, element: Element, kind: str) -> tuple[int, ...]:
-        if element.is_removed:
-            raise BindingError(f"{element.path}: the element was removed from its model, so "
-                               f"it cannot be bound (bind the elements of the model as it is)")
-        entry = self._unnamed.get(id(element))
-        if entry is None and self._text is not None and _full_identifier(element) is None:
-            entry = self._from_text(element)
-        if entry is not None and entry[0] is element:
-            if not entry[1]:
-                raise BindingError(f"{element.path}: MuJoCo's compiler made no <{kind}> of it")
-            return entry[1]
-        name = _full_identifier(element)
-        if name is None:
-            raise BindingError(self._unbound(element, "it has no name, and "))
+    def _ids_of(self, elements: list[Element], kind: str) -> Array[np.intp]:
+        """The compiled ids of ``elements`` (of ``kind``), in order (a replicated element:
+        one per copy)."""
+        model, unnamed = self.model, self._unnamed
         objtype = getattr(mujoco.mjtObj, binding_tables().kinds[kind].objtype)
-        found = mujoco.mj_name2id(self.model, objtype, name)
-        if found < 0:
-            raise BindingError(self._unbound(element, f"the compiled model has no {kind} "
-                                                      f"named {name!r}: "))
-        return (found,)
+        name2id = mujoco.mj_name2id
+        prefixes: dict[int, str] = {}  # each name scope's prefix, computed once
+        out: list[int] = []
+        for element in elements:
+            if element.is_removed:
+                raise BindingError(f"{element.path}: the element was removed from its model, "
+                                   f"so it cannot be bound (bind the elements of the model as "
+                                   f"it is)")
+            entry = unnamed.get(id(element))
+            if entry is not None and entry[0] is element:
+                if not entry[1]:
+                    raise BindingError(f"{element.path}: MuJoCo's compiler made no <{kind}> "
+                                       f"of it")
+                out += entry[1]
+                continue
+            name = _scoped_name(element, prefixes)
+            if name is None and self._text is not None:
+                entry = self._from_text(element)
+                if entry is not None and entry[1]:
+                    out += entry[1]
+                    continue
+            if name is None:
+                raise BindingError(self._unbound(element, "it has no name, and "))
+            found = name2id(model, objtype, name)
+            if found < 0:
+                raise BindingError(self._unbound(element, f"the compiled model has no {kind} "
+                                                          f"named {name!r}: "))
+            out.append(found)
+        return np.asarray(out, dtype=np.intp)
 
     def _from_text(self, element: Element) -> tuple[Element, tuple[int, ...]] | None:
         """An unnamed element of a physics made from text: found if the text is its model's
@@ -640,9 +653,17 @@ class Physics(Bind):
             self._free_renderers()
 
 
-def _full_identifier(element: Element) -> str | None:
-    name = getattr(element, "full_identifier", None)
-    return name if isinstance(name, str) else None
+def _scoped_name(element: Element, prefixes: dict[int, str]) -> str | None:
+    """``element.full_identifier``, the prefix of each scope computed once for a batch."""
+    own = _tree.element_name(element)
+    if own is None or _tree.attached_at(element) is not None:
+        name = getattr(element, "full_identifier", None)  # the world body, frames
+        return name if isinstance(name, str) else None
+    scope = _tree.scope_of(element)
+    prefix = prefixes.get(id(scope))
+    if prefix is None:
+        prefix = prefixes[id(scope)] = scope.prefix()
+    return prefix + own
 
 
 def _load(xml_string: str, assets: Mapping[str, bytes] | None) -> Model:
