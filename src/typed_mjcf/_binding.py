@@ -162,7 +162,8 @@ def rows(model: mujoco.MjModel, size: str, ids: npt.NDArray[np.intp]) -> (
     # each element's rows in order: its start, repeated, plus 0, 1, ... within it
     total = int(counts.sum())
     offsets = np.arange(total, dtype=np.intp) - np.repeat(np.cumsum(counts) - counts, counts)
-    return np.repeat(starts, counts) + offsets
+    out: npt.NDArray[np.intp] = np.repeat(starts, counts) + offsets
+    return out
 
 
 # ---------------------------------------------------------------------------- arrays
