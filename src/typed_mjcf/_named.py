@@ -144,9 +144,9 @@ class FieldIndexer(Generic[S]):
 
 
 AnyIndexer: TypeAlias = (
-    "FieldIndexer[np.float64] | FieldIndexer[np.float32] | FieldIndexer[np.int64] "
-    "| FieldIndexer[np.int32] | FieldIndexer[np.int8] | FieldIndexer[np.uint64] "
-    "| FieldIndexer[np.uint8] | FieldIndexer[np.bool_]")
+    FieldIndexer[np.float64] | FieldIndexer[np.float32] | FieldIndexer[np.int64]
+    | FieldIndexer[np.int32] | FieldIndexer[np.int8] | FieldIndexer[np.uint64]
+    | FieldIndexer[np.uint8] | FieldIndexer[np.bool_])
 
 
 class StructIndexer:
