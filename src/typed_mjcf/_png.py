@@ -7,7 +7,8 @@ import struct
 import zlib
 
 import numpy as np
-import numpy.typing as npt
+
+from typed_mjcf.types import MuJoCoArray
 
 _COLOR_TYPES = {1: 0, 2: 4, 3: 2, 4: 6}  # channels -> PNG colour type (grey, +alpha, RGB, RGBA)
 
@@ -17,7 +18,7 @@ def _chunk(kind: bytes, payload: bytes) -> bytes:
             + struct.pack(">I", zlib.crc32(kind + payload) & 0xFFFFFFFF))
 
 
-def encode_png(array: npt.ArrayLike) -> bytes:
+def encode_png(array: MuJoCoArray) -> bytes:
     """``array`` (height x width, or height x width x 1-4 channels; 8 bits each) as PNG
     bytes. Other dtypes must hold values 0-255; ``ValueError`` otherwise."""
     pixels = np.asarray(array)
