@@ -6,7 +6,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from codegen import ir, mujoco_stubs, render
+from codegen import bindings, ir, mujoco_stubs, render
 from codegen.pipeline import refresh
 
 
@@ -19,6 +19,8 @@ def generate(grammar: Path | None, allow_untyped: bool) -> int:
               "schema/facts.toml ([[attribute]]) or pass --allow-untyped", file=sys.stderr)
         return 1
     ir.dump(schema)
+    if bindings.dump(bindings.read_wheel()):
+        print("schema/bindings.json: rewritten from the installed mujoco")
     changed = render.write(render.render(schema))
     print(f"schema/mjcf.json: MuJoCo {schema.mujoco_version}, {len(schema.elements)} rows, "
           f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
@@ -48,6 +50,11 @@ def check() -> int:
         print(f"generated/ is out of date: {', '.join(stale)}; run `nox -s generate`")
         return 1
     print("generated/ matches schema/")
+    if bindings.dumps(bindings.read_wheel()) != bindings.BINDINGS_PATH.read_text(encoding="utf-8"):
+        print("schema/bindings.json is out of date with the installed mujoco; run "
+              "`nox -s generate`")
+        return 1
+    print("schema/bindings.json matches the installed mujoco")
     stale_stubs = mujoco_stubs.stale(mujoco_stubs.render())
     if stale_stubs:
         print(f"generated/mujoco-stubs/ is out of date: {', '.join(stale_stubs)}; "

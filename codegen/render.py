@@ -16,7 +16,7 @@ from pathlib import Path
 
 import jinja2
 
-from codegen import docs, ir
+from codegen import bindings, docs, ir
 from codegen.naming import RESERVED, py_name
 from codegen.typing_names import Alias, Typer
 
@@ -282,8 +282,14 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
         init_params=[p for p in params if p.py_name != schema.language.model_name])
 
 
+def _tuple_repr(values: list[str]) -> str:
+    """A tuple of strings as Python writes it, double-quoted (the project's style)."""
+    inner = ", ".join(f'"{v}"' for v in values)
+    return f"({inner},)" if len(values) == 1 else f"({inner})"
+
+
 def _environment() -> jinja2.Environment:
-    return jinja2.Environment(
+    env = jinja2.Environment(
         loader=jinja2.FileSystemLoader(TEMPLATES),
         undefined=jinja2.StrictUndefined,
         keep_trailing_newline=True,
@@ -291,6 +297,8 @@ def _environment() -> jinja2.Environment:
         lstrip_blocks=True,
         autoescape=False,
     )
+    env.filters["tuple_repr"] = _tuple_repr
+    return env
 
 
 def _ordered(schema: ir.Schema) -> list[ir.ElementDef]:
@@ -309,8 +317,10 @@ def _typed_maps(schema: ir.Schema, typer: Typer) -> list[Alias]:
     return [Alias(name, value, "") for name, value in sorted(maps.items())]
 
 
-def render(schema: ir.Schema) -> dict[str, str]:
-    """The generated package: file name -> text."""
+def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
+           ) -> dict[str, str]:
+    """The generated package: file name -> text (the bindings from ``schema/bindings.json``
+    unless ``binding_table`` is given)."""
     typer = Typer(schema)
     env = _environment()
     classes = [class_view(schema, typer, el) for el in _ordered(schema)]
@@ -336,7 +346,12 @@ def render(schema: ir.Schema) -> dict[str, str]:
         "namespaces": namespaces,
         "namespace_literals": ", ".join(f'"{ns.name}"' for ns in namespaces),
     }
+    table = bindings.load() if binding_table is None else binding_table
+    binding_context = {**bindings.render_context(schema, table),
+                       "generator_version": GENERATOR_VERSION}
     return {
+        "bindings.py": env.get_template("bindings.py.jinja2").render(binding_context),
+        "bindings.pyi": env.get_template("bindings.pyi.jinja2").render(binding_context),
         "elements.py": env.get_template("elements.py.jinja2").render(context),
         "elements.pyi": env.get_template("elements.pyi.jinja2").render(context),
         "__init__.py": env.get_template("__init__.py.jinja2").render(context),

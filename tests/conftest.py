@@ -8,9 +8,15 @@ run). ``nox -s tests`` and plain
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
+
+# MuJoCo picks its OpenGL back end when first imported: EGL renders without a display (on
+# Mesa's software EGL where there is no GPU), so the tests that render (the README's example,
+# tests/physics, tests/render) run on headless machines. A back end the user chose is kept.
+os.environ.setdefault("MUJOCO_GL", "egl")
 
 TESTS = Path(__file__).resolve().parent
 

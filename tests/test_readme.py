@@ -49,7 +49,9 @@ BLOCKS = readme_blocks()
 
 
 @pytest.mark.parametrize("block", BLOCKS, ids=[f"line{b.line}" for b in BLOCKS])
-def test_readme_example_runs(block: Block) -> None:
+def test_readme_example_runs(block: Block, tmp_path: Path,
+                             monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)  # what an example writes (an image) lands there
     expected = [line[2:] for line in block.code.splitlines() if line.startswith("# ")]
     out = io.StringIO()
     with contextlib.redirect_stdout(out):

@@ -10,6 +10,7 @@
 
 __version__ = "0.1.0"
 
+from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
@@ -17,6 +18,7 @@ from typed_mjcf._generated import elements as _elements
 from typed_mjcf._generated.elements import *
 from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import set_notebook_display
+from typed_mjcf._png import encode_png
 from typed_mjcf._preview import VIEWS, FreeView
 from typed_mjcf._traversal import (
     commit_defaults,
@@ -57,6 +59,10 @@ from typed_mjcf.io import (
     from_zip,
 )
 
+if _TYPE_CHECKING:
+    from typed_mjcf import physics as physics
+    from typed_mjcf.physics import Physics, PhysicsError
+
 PREFIX_SEPARATOR: _Final[str] = "/"  # dm_control's name for the scope separator of attached models
 
 __all__ = [
@@ -84,10 +90,13 @@ __all__ = [
     "NameScope",
     "ParseError",
     "ParseLimits",
+    "Physics",
+    "PhysicsError",
     "RenderError",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",
+    "encode_png",
     "export_with_assets",
     "export_with_assets_as_zip",
     "from_file",
@@ -106,3 +115,15 @@ __all__ += _elements.__all__
 from typed_mjcf._dmcompat import install as install_as_dm_control_mjcf
 
 __all__ += ["install_as_dm_control_mjcf"]
+
+# Simulation imports mujoco, the heaviest import there is: loaded when first used.
+_PHYSICS_NAMES: _Final = frozenset({"Physics", "PhysicsError", "physics"})
+
+
+def __getattr__(name: str) -> object:
+    if name in _PHYSICS_NAMES:
+        import importlib
+
+        module = importlib.import_module("typed_mjcf.physics")
+        return module if name == "physics" else getattr(module, name)
+    raise AttributeError(f"module 'typed_mjcf' has no attribute {name!r}")

@@ -155,3 +155,13 @@ def _no_backend_message(wanted: str, tried: tuple[str, ...], reasons: list[str])
 def _one_line(error: BaseException) -> str:
     text = " ".join(str(error).split()) or type(error).__name__
     return text if len(text) <= 200 else text[:197] + "..."
+
+
+def gl_error(error: BaseException) -> RenderError:
+    """What a failure to make an OpenGL context (outside :func:`gl_context`) says, as one
+    error naming the back end and what to do."""
+    backend = os.environ.get("MUJOCO_GL", "").strip().lower() or "glfw (MuJoCo's default)"
+    return RenderError(f"cannot render: MuJoCo could not make an OpenGL context with "
+                       f"MUJOCO_GL={backend}: {_one_line(error)}; set MUJOCO_GL before "
+                       f"Python starts: egl renders without a display (a GPU, or Mesa's EGL "
+                       f"on the CPU), osmesa on the CPU, glfw with a display")

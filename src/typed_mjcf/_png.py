@@ -4,21 +4,18 @@ from __future__ import annotations
 
 import struct
 import zlib
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-if TYPE_CHECKING:
-    from numpy.typing import NDArray
-
 from typed_mjcf.errors import InvalidValueError
+from typed_mjcf.types import MuJoCoArray
 
 _SIGNATURE = b"\x89PNG\r\n\x1a\n"
 # PNG colour types by channel count: grayscale, RGB, RGBA.
 _COLOUR_TYPES = {1: 0, 3: 2, 4: 6}
 
 
-def encode_png(array: NDArray[np.uint8]) -> bytes:
+def encode_png(array: MuJoCoArray) -> bytes:
     """``array`` (height x width, or height x width x 1, 3 or 4 channels of ``uint8``) as
     the bytes of a PNG file: 8 bits per channel, no interlacing, no filtering."""
     pixels = np.asarray(array)

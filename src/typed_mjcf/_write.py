@@ -4,6 +4,7 @@ files renamed when the text is for a virtual file system or a folder of its own.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from typing import Final
 
 from typed_mjcf import _tree
@@ -23,11 +24,12 @@ NO_ATTRIBUTES: Final[frozenset[str]] = frozenset()
 
 def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
                  collected: CollectedFiles | None = None, names_from: NameScope | None = None,
-                 self_only: bool = False) -> str:
+                 self_only: bool = False, namer: Callable[[Writer], None] | None = None) -> str:
     """The XML text of ``element`` and its subtree (attached models included: a top-level
     section of a composed model holds the attached models' too); with ``collected``, every
     file by its flat name and no folder attributes; names as seen from ``names_from``;
-    only the element's own tag with ``self_only``."""
+    only the element's own tag with ``self_only``; ``namer`` may give unnamed elements
+    names for this text (in the writer's ``given_names``) before it is written."""
     root = _tree.model_of(element)
     if root is not None:
         _tree.check_arrays(root)  # arrays edited in place (dm_control's behaviour)
@@ -37,6 +39,8 @@ def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: b
     skip = NO_ATTRIBUTES if collected is None else collected.directory_attributes
     with collector_paused():  # an export makes no reference cycles, only short-lived text
         writer = Writer(element, fmt, file_namer, skip, names_from)
+        if namer is not None:
+            namer(writer)
         if self_only:
             return writer.start_tag(element)
         if not writer.composed:
@@ -81,12 +85,13 @@ def attribute_text(element: Element, name: str, fmt: Format,
     return Writer(element, fmt, names_from=names_from).attributes(element).get(name)
 
 
-def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT,
-             pretty_print: bool = True) -> tuple[str, CollectedFiles]:
+def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
+             namer: Callable[[Writer], None] | None = None) -> tuple[str, CollectedFiles]:
     """The model's XML with every file by its flat name (and no folder attributes), and the
-    files: what MuJoCo compiles from memory and what a folder export writes."""
+    files: what MuJoCo compiles from memory and what a folder export writes (``namer``: as
+    for :func:`element_text`)."""
     collected = collect(model)
-    return element_text(model, fmt, pretty_print, collected), collected
+    return element_text(model, fmt, pretty_print, collected, namer=namer), collected
 
 
 def rewrite_model_file(owner: ModelBase, path: str, contents: bytes, collected: CollectedFiles,

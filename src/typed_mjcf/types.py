@@ -78,6 +78,26 @@ class NumberList(Protocol[_T_co]):
     def copy(self) -> object: ...  # what tuples lack: they are checked by their length
 
 
+# the scalar types of MuJoCo's arrays (and of indices into them)
+_S = TypeVar("_S", np.float64, np.float32, np.int64, np.int32, np.int8, np.uint64, np.uint8,
+             np.bool_, np.intp)
+
+Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[_S]]
+"""A numpy array of MuJoCo's, by its scalar type: ``Array[np.float64]`` (bindings, named
+indexers and rendered images are such arrays)."""
+MuJoCoArray: TypeAlias = (
+    Array[np.float64] | Array[np.float32] | Array[np.int64] | Array[np.int32]
+    | Array[np.int8] | Array[np.uint64] | Array[np.uint8] | Array[np.bool_]
+)
+"""An array of MuJoCo's of any of the dtypes its model and data use."""
+ArrayValues: TypeAlias = (
+    float | RealScalar | NumberList[float | RealScalar]
+    | NumberList[NumberList[float | RealScalar]] | tuple[float | RealScalar, ...]
+    | FloatArrayLike | Array[np.bool_]
+)
+"""What an array of MuJoCo's accepts when assigned: a number (set everywhere), sequences of
+numbers (one per entry, or rows of them), or a numpy array; the shape is checked by numpy."""
+
 FileLike: TypeAlias = str | os.PathLike[str] | Asset
 """A file attribute: a path, or contents held in memory."""
 
@@ -87,7 +107,21 @@ XmlElement: TypeAlias = etree._Element  # pyright: ignore[reportPrivateUsage]
 """An lxml element (what ``to_xml()`` returns)."""
 
 __all__ = [
-    "Asset", "FileLike", "Float32Array", "Float64Array", "FloatArrayLike", "Int32Array",
-    "IntArrayLike", "Integer", "IntegerScalar", "NumberList", "Real", "RealScalar",
-    "RgbImage", "XmlElement",
+    "Array",
+    "ArrayValues",
+    "Asset",
+    "FileLike",
+    "Float32Array",
+    "Float64Array",
+    "FloatArrayLike",
+    "Int32Array",
+    "IntArrayLike",
+    "Integer",
+    "IntegerScalar",
+    "MuJoCoArray",
+    "NumberList",
+    "Real",
+    "RealScalar",
+    "RgbImage",
+    "XmlElement",
 ]

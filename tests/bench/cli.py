@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from tests.bench import timing
+from tests.bench.bind import bench_bind
 from tests.bench.child import IMPORT_SNIPPET, importtime_breakdown
 from tests.bench.report import Results, render
 from tests.bench.timing import Budget, Case, SizeResult, predict, run_once, run_round_robin
@@ -29,7 +30,7 @@ from tests.bench.workloads import (
 )
 
 REPO = Path(__file__).resolve().parents[2]
-WORKLOADS = ("W1", "W2", "W3", "import", "memory")
+WORKLOADS = ("W1", "W2", "W3", "bind", "import", "memory")
 
 
 @dataclass(frozen=True)
@@ -47,6 +48,8 @@ class Plan:
     import_repeats: int
     import_modules: tuple[str, ...]
     memory_n: int
+    bind_joints: int = 1_000
+    bind_repeats: int = 21
     warm_n: int = 20
     warm_k: int = 2
     budget: Budget = field(default_factory=Budget)
@@ -78,6 +81,8 @@ QUICK = Plan(
     import_repeats=2,
     import_modules=("typed_mjcf",),
     memory_n=50,
+    bind_joints=20,
+    bind_repeats=3,
     budget=Budget(per_case_size=5.0, max_run=10.0),
 )
 
@@ -439,6 +444,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         bench_w2(results, adapters, plan)
     if "W3" in args.only:
         bench_w3(results, adapters, plan)
+    if "bind" in args.only and "typed" in adapters:
+        log("bind")
+        results.bind = bench_bind(plan.bind_joints, plan.bind_repeats)
     if "import" in args.only:
         bench_imports(results, plan)
     if "memory" in args.only:

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from tests.bench.bind import render_bind
 from tests.bench.timing import Case, Sample, SizeResult, growth_exponent
 
 # Targets of the performance issue (ratios measured in one run).
@@ -28,6 +29,7 @@ class Results:
     importtime: list[dict[str, Any]] = field(default_factory=list)
     memory: list[dict[str, Any]] = field(default_factory=list)
     validity: list[dict[str, Any]] = field(default_factory=list)
+    bind: list[dict[str, Any]] = field(default_factory=list)
 
     def as_json(self) -> dict[str, Any]:
         def cases(items: list[Case]) -> list[dict[str, Any]]:
@@ -38,7 +40,7 @@ class Results:
 
         return {"meta": self.meta, "W1": cases(self.w1), "W2": cases(self.w2),
                 "W3": cases(self.w3), "import": self.imports, "importtime": self.importtime,
-                "memory": self.memory, "validity": self.validity,
+                "memory": self.memory, "validity": self.validity, "bind": self.bind,
                 "targets": [t.as_json() for t in targets(self)]}
 
 
@@ -64,7 +66,8 @@ class Results:
 
         return cls(meta=data["meta"], w1=cases(data["W1"]), w2=cases(data["W2"]),
                    w3=cases(data["W3"]), imports=data["import"], importtime=data["importtime"],
-                   memory=data["memory"], validity=data["validity"])
+                   memory=data["memory"], validity=data["validity"],
+                   bind=data.get("bind", []))
 
 
 # ----------------------------------------------------------------------------- formatting
@@ -436,6 +439,7 @@ def render(results: Results) -> str:
             out.append(f"- {v['case']}: {v['error']}")
         out.append("")
     found = targets(results)
+    out += render_bind(results.bind)
     if found:
         out += ["## Targets", ""]
         rows = [["met" if t.met else ("MISSED" if t.met is False else "n/a"), t.text, t.value]

@@ -23,7 +23,7 @@ def test_quick_benchmark_runs_and_reports(tmp_path: Path,
     assert main(["--quick", "--libs", libs, "--json", str(out)]) == 0
     report = capsys.readouterr().out
     for heading in ("## W1 build + export", "## W2 parse + export", "## W3 compose",
-                    "## Import time", "## Peak memory", "## Targets"):
+                    "## Bind", "## Import time", "## Peak memory", "## Targets"):
         assert heading in report
     assert "cyclic GC ms (full)" in report and "less GC" in report  # the collector's share
     data = json.loads(out.read_text())

@@ -13,6 +13,7 @@ import importlib.util
 import sys
 import types
 import unittest
+import unittest.mock
 from collections.abc import Iterator
 from contextlib import contextmanager
 from functools import cache
@@ -23,7 +24,7 @@ from typed_mjcf._dmcompat import installed
 # dm_control.mjcf's test modules that exercise its public behaviour.
 MODULES = ("element_test", "copier_test", "export_with_assets_test",
            "export_with_assets_as_zip_test", "traversal_utils_test", "xml_validation_test",
-           "debugging_test", "skin_test")
+           "debugging_test", "skin_test", "physics_test")
 # dm_control.mjcf's modules that hold test code its tests import (loaded from its folder).
 HELPERS = ("code_for_debugging_test",)
 
@@ -100,7 +101,8 @@ def _ids(suite: unittest.TestSuite) -> Iterator[str]:
         if isinstance(test, unittest.TestSuite):
             yield from _ids(test)
         else:
-            yield test.id().removeprefix(f"{test.__class__.__module__}.")
+            # absl's parameterized tests append their parameters after a space
+            yield test.id().split(" ")[0].removeprefix(f"{test.__class__.__module__}.")
 
 
 def run(module: types.ModuleType, test_id: str) -> unittest.TestResult:
