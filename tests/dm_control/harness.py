@@ -44,6 +44,8 @@ def redirected() -> Iterator[None]:
     (``code_for_debugging_test``) are loaded from dm_control's folder against it."""
     with installed():
         helpers = {f"dm_control.mjcf.{name}": _helper(name) for name in HELPERS}
+        if importlib.util.find_spec("mock") is None:  # the backport physics_test imports
+            helpers["mock"] = unittest.mock
         saved = {name: sys.modules.get(name) for name in helpers}
         sys.modules.update(helpers)
         package = sys.modules["dm_control.mjcf"]
