@@ -159,6 +159,32 @@ class _Blank(_Layout):
     __slots__ = ()
 
 
+
+class SiblingNumbers:
+    """Each child's place among its parent's children of its tag, counted once per parent:
+    the paths of many unnamed siblings in linear time (a path alone counts its siblings)."""
+
+    def __init__(self) -> None:
+        self._tables: dict[int, dict[int, int]] = {}
+
+    def number(self, parent: Element, child: Element) -> int | None:
+        table = self._tables.get(id(parent))
+        if table is None:
+            table = self._tables[id(parent)] = {}
+            counts: dict[str, int] = {}
+            for sibling in children(parent):
+                tag = sibling.spec.tag
+                table[id(sibling)] = counts.get(tag, 0)
+                counts[tag] = table[id(sibling)] + 1
+        return table.get(id(child))
+
+
+def paths(elements: Iterable[Element]) -> list[str]:
+    """The paths of ``elements`` (as :attr:`Element.path`), in time linear in their number."""
+    numbers = SiblingNumbers()
+    return [element._path(numbers) for element in elements]
+
+
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
@@ -205,10 +231,13 @@ class Element(_Layout):
     @property
     def path(self) -> str:
         """Where the element is in its model, e.g. ``worldbody/body[upper_arm]/geom[0]``."""
+        return self._path(None)
+
+    def _path(self, numbers: SiblingNumbers | None) -> str:
         steps: list[str] = []
         element: Element = self
         while element._parent is not None:
-            steps.append(element._step())
+            steps.append(element._step(numbers))
             element = element._parent
         if not steps:
             return "<root>" if isinstance(element, ModelBase) and element is self._root else (
@@ -216,7 +245,7 @@ class Element(_Layout):
         scope = element._scope.prefix() if isinstance(element, ModelBase) else ""
         return scope + "/".join(reversed(steps))
 
-    def _step(self) -> str:
+    def _step(self, numbers: SiblingNumbers | None = None) -> str:
         parent = self._parent
         assert parent is not None
         tag = self.spec.tag
@@ -228,6 +257,9 @@ class Element(_Layout):
             name = self._values.get(id_attribute.name)
             if isinstance(name, str):
                 return f"{tag}[{name}]"
+        if numbers is not None:
+            number = numbers.number(parent, self)
+            return f"{tag}[new]" if number is None else f"{tag}[{number}]"
         index = 0
         for sibling in parent._children:
             if sibling is self:

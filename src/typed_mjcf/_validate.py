@@ -198,8 +198,10 @@ class _Pass:
 
     def findings(self) -> list[Finding]:
         self.found.sort(key=lambda item: (item[0], item[1]))
-        return [Finding(element.path, rule, message, severity, element)
-                for _, _, element, rule, message, severity in self.found]
+        paths = _tree.paths(element for _, _, element, _, _, _ in self.found)
+        return [Finding(path, rule, message, severity, element)
+                for path, (_, _, element, rule, message, severity) in zip(paths, self.found,
+                                                                           strict=True)]
 
 
 def _is_written(parent: Element, child: Element) -> bool:

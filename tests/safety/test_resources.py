@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf import _tree
 from typed_mjcf._codecs import _DOUBLE, _FLOAT, _INTEGER, _PIECE, ArrayCodec, Format, Rejected
 from typed_mjcf.io import ParseLimits
 
@@ -214,3 +215,25 @@ def test_an_element_with_100000_attributes(tag: str, expected: str, warnings: in
                 raise AssertionError("accepted")
         assert len(caught) == {warnings}, len(caught)
     """)
+
+
+def test_validate_names_many_unnamed_findings_in_linear_time() -> None:
+    """A finding names its element by path, and an unnamed element's path counts its siblings:
+    counted once per parent (100,000 sensors with a reference to nothing took minutes)."""
+    out = _run("""
+        import typed_mjcf as mjcf
+        sensors = "".join(f'<jointpos joint="missing{i}"/>' for i in range(100_000))
+        model = mjcf.from_xml_string(f"<mujoco><sensor>{sensors}</sensor></mujoco>")
+        findings = model.validate()
+        print(len(findings), findings[-1].path)
+    """)
+    assert out.split() == ["100000", "sensor/jointpos[99999]"]
+
+
+def test_paths_of_many_elements_are_their_paths() -> None:
+    model = mjcf.RootElement()
+    body = model.worldbody.add_body(name="b")
+    elements = [body.add_geom(), body.add_site(), body.add_geom(name="g"), body.add_geom(),
+                model.worldbody.add_geom(), body, model.compiler]
+    assert _tree.paths(elements) == [element.path for element in elements]
+    assert _tree.paths(elements)[3] == "worldbody/body[b]/geom[2]"
