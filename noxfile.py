@@ -9,6 +9,7 @@ installed, a session fails (it does not skip) and says which Python it looked fo
 from __future__ import annotations
 
 import re
+import tomllib
 from pathlib import Path
 
 import nox
@@ -88,8 +89,18 @@ def generate(session: nox.Session) -> None:
         version, args = _generate_args(session.posargs)
     except ValueError as error:  # before installing anything: a mistake fails at once
         session.error(str(error))
-    session.install("-e", ".[codegen]", f"mujoco-core=={version}")
+    # The release generated for, whatever release the project depends on now (that is the
+    # pin being moved): the project without its dependencies, the rest by hand.
+    session.install(*_requirements("codegen"), f"mujoco-core=={version}")
+    session.install("--no-deps", "-e", ".")
     session.run("python", "-m", "codegen", "generate", *args)
+
+
+def _requirements(extra: str) -> list[str]:
+    """pyproject's runtime dependencies other than MuJoCo, and those of ``extra``."""
+    project = tomllib.loads(Path("pyproject.toml").read_text(encoding="utf-8"))["project"]
+    runtime = [r for r in project["dependencies"] if not r.startswith("mujoco")]
+    return [*runtime, *project["optional-dependencies"][extra]]
 
 
 def _generate_args(posargs: list[str]) -> tuple[str, list[str]]:
