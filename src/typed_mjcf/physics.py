@@ -579,6 +579,14 @@ class Physics(Bind):
         self._renderers[(height, width)] = renderer
         return renderer
 
+    @property
+    def contexts(self) -> None:
+        """dm_control's rendering contexts: None here, where a renderer is made per image size
+        when first used. Reading it frees the renderers, so the next image uploads the model
+        as it is then: dm_control's code reads it to upload a height field (or texture, mesh)
+        it changed (``if physics.contexts: ... mjr_uploadHField``)."""
+        self._free_renderers()
+
     def _free_renderers(self) -> None:
         for renderer in getattr(self, "_renderers", {}).values():
             renderer.close()

@@ -124,3 +124,18 @@ def test_files_outside_the_models_folder_are_read_under_the_switch(tmp_path: Pat
     assert list(assets.values()) == [b"not read as an image here"]
     with pytest.raises(FileAccessError, match="outside the model's folder"):
         load().get_assets()
+
+
+def test_renderers_are_made_again_after_contexts_is_read() -> None:
+    """dm_control's bowl arena changes its height field, then re-uploads it to the rendering
+    context if ``physics.contexts``: here reading it frees the renderers, so the next image
+    shows the model's data as it is then."""
+    root = model()
+    root.asset.add_hfield(name="terrain", nrow=3, ncol=3, size=(1, 1, 0.5, 0.1))
+    root.worldbody.add_geom(name="terrain", type="hfield", hfield="terrain", pos=(0, 0, 0.5))
+    physics = mjcf.Physics.from_mjcf_model(root)
+    flat = physics.render(48, 64)
+    physics.model.hfield_data[:] = 1.0  # a raised terrain, not yet uploaded
+    assert np.array_equal(physics.render(48, 64), flat)  # the old upload: why dm_control's
+    assert physics.contexts is None                      # code re-uploads it
+    assert not np.array_equal(physics.render(48, 64), flat)
