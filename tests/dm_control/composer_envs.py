@@ -109,13 +109,16 @@ def compare(typed: dict[str, Any], theirs: dict[str, Any]) -> list[str]:
     for name in sorted(set(typed) | set(theirs)):
         ours, reference = typed.get(name), theirs.get(name)
         if not isinstance(ours, dict) or not isinstance(reference, dict):
-            found.append(f"{name}: typed-mjcf {'ran' if isinstance(ours, dict) else 'failed'}"
-                         f", dm_control {'ran' if isinstance(reference, dict) else 'failed'}")
+            found.append(f"{name}: typed-mjcf {_outcome(ours)}, dm_control {_outcome(reference)}")
             continue
         for key in ("spec", "action", "declared"):
             if ours[key] != reference[key]:
                 found.append(f"{name}: {key} differs: {ours[key]} != {reference[key]}")
     return found
+
+
+def _outcome(result: object) -> str:
+    return "not run" if result is None else "ran" if isinstance(result, dict) else "failed"
 
 
 def main(argv: list[str]) -> None:
