@@ -34,6 +34,8 @@ SLOW = {
     "codegen/test_drift.py": "the generator over MuJoCo's grammar",
     "dm_control/test_dm_control_tests.py": "dm_control's own test suite",
     "dm_control/test_parity.py": "dm_control beside typed-mjcf over the corpus",
+    "dm_control/test_composer.py::test_environments_with_cameras_run":
+        "dm_control's environments with cameras: an image rendered at each of 2000 steps",
     "fidelity/test_corpus_validate.py": "MuJoCo compiles the corpus",
     "fidelity/test_defaults_corpus.py": "MuJoCo compiles the corpus",
     "fidelity/test_round_trip.py": "round trips of the corpus",

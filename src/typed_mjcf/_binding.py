@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Final, Literal, Protocol, Self, TypeAlias, cas
 import numpy as np
 import numpy.typing as npt
 
+from typed_mjcf._compat import STATE
 from typed_mjcf.errors import InvalidValueError, MjcfError, did_you_mean
 from typed_mjcf.types import Array, MuJoCoArray
 
@@ -205,6 +206,15 @@ class BoundArray(np.ndarray[tuple[int, ...], np.dtype[np.generic]]):
             self._rows = None
             self._clear = ()
 
+    def __array_wrap__(self, array: npt.NDArray[np.generic],  # type: ignore[override]
+                       context: object = None, return_scalar: bool = False, /,
+                       ) -> npt.NDArray[np.generic] | np.generic:
+        # an operation on a single element's value gives a numpy scalar, as on a plain 0-d
+        # array (dm_control gives scalars: np.ogrid[-1:1:nrow * 1j] needs one)
+        if return_scalar:
+            return cast(np.generic, array[()])  # 0-d: indexing by () gives the scalar
+        return array.view(type(self))
+
     def __setitem__(self, index: object, value: object) -> None:
         physics = getattr(self, "_physics", None)
         dirty = physics is not None and triggers_dirty(self._struct, self._field)
@@ -358,10 +368,16 @@ class Binding:
 
     if not TYPE_CHECKING:  # run time only: each kind's class declares its arrays
 
-        def __getattr__(self, name: str) -> BoundArray:
+        def __getattr__(self, name: str) -> BoundArray | np.generic:
             if name.startswith("__"):
                 raise AttributeError(name)
-            return self._get(name)
+            found = self._get(name)
+            if found.ndim == 0 and STATE[0]:
+                # dm_control gives a single element's value as a numpy scalar, a copy: its
+                # code saves values that way before writing (composer's prop placer saves
+                # a geom's contype, sets 0, restores it), so a view would restore the 0
+                return cast(np.generic, found.view(np.ndarray)[()])
+            return found
 
         def __setattr__(self, name: str, value: object) -> None:
             if name in Binding.__slots__:

@@ -10,7 +10,7 @@ they are coordinates (``xpos[..., "z"]``, ``geom_rgba["floor", "a"]``) or object
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
-from typing import TYPE_CHECKING, Generic, TypeAlias, TypeVar, cast
+from typing import TYPE_CHECKING, Generic, NamedTuple, TypeAlias, TypeVar, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -62,6 +62,10 @@ class Axis:
             return np.concatenate([np.atleast_1d(np.asarray(f)) for f in found])
         return item
 
+    def convert_key_item(self, key_item: object) -> object:
+        """dm_control's name for :meth:`key` (``inverse_kinematics`` calls it)."""
+        return self.key(key_item)
+
     def _one(self, name: str, alone: bool) -> object:
         if not name:
             raise IndexError("Empty strings are not allowed in a named index")
@@ -76,6 +80,14 @@ class Axis:
 
 
 UNNAMED = Axis()
+
+
+class Axes(NamedTuple):
+    """An indexer's axes, as dm_control names them: ``axes.row``, ``axes.col`` (``None``
+    for a one-dimensional array)."""
+
+    row: Axis
+    col: Axis | None = None
 
 
 class FieldIndexer(Generic[S]):
@@ -94,9 +106,9 @@ class FieldIndexer(Generic[S]):
         self._axes = axes
 
     @property
-    def axes(self) -> tuple[Axis, ...]:
+    def axes(self) -> Axes:
         """The row axis and, for a two-dimensional array, the column axis."""
-        return self._axes
+        return Axes(*self._axes)
 
     @property
     def shape(self) -> tuple[int, ...]:

@@ -22,9 +22,10 @@ from __future__ import annotations
 
 import contextlib
 import os
+import sys
 import warnings
 from collections.abc import Generator, Iterable, Mapping
-from typing import TYPE_CHECKING, Final, Literal, NamedTuple, Self, cast, overload
+from typing import TYPE_CHECKING, Final, Literal, NamedTuple, Self, TypeAlias, cast, overload
 
 import mujoco
 import numpy as np
@@ -38,6 +39,7 @@ from typed_mjcf._binding import (
     binding_tables,
     new_binding,
 )
+from typed_mjcf._compat import STATE
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
@@ -56,11 +58,34 @@ __all__ = ["Binding", "Data", "Model", "Named", "Physics", "PhysicsError",
 __all__ += _bindings.__all__
 
 _PICKLING_NOT_SUPPORTED: Final = PICKLING_NOT_SUPPORTED  # dm_control's name, its tests read it
+# render_flag_overrides: MuJoCo's rendering flags by name ("shadow") or enum, and values
+RenderFlags: TypeAlias = Mapping[str, bool] | Mapping[mujoco.mjtRndFlag, bool]
 _INVALID_STATE: Final = "Physics state is invalid. Warning(s) raised: {}"
 
 
 class PhysicsError(MjcfError, RuntimeError):
     """The simulation reached an invalid state (MuJoCo raised a warning: NaNs, instability)."""
+
+
+# dm_control's PhysicsError class -> ours deriving from it too (made once each)
+_DM_CONTROL_ERRORS: Final[dict[type[BaseException], type[PhysicsError]]] = {}
+
+
+def _physics_error_class() -> type[PhysicsError]:
+    """:class:`PhysicsError`; under ``install_as_dm_control_mjcf()``, once dm_control's
+    ``rl.control`` is imported, a subclass of it that is also dm_control's
+    ``control.PhysicsError`` (composer catches that: a diverging episode ends, rather than
+    the error escaping). dm_control is never imported here."""
+    control = sys.modules.get("dm_control.rl.control") if STATE[0] else None
+    theirs: object = getattr(control, "PhysicsError", None)
+    if not isinstance(theirs, type) or not issubclass(theirs, BaseException):
+        return PhysicsError
+    found = _DM_CONTROL_ERRORS.get(theirs)
+    if found is None:
+        found = _DM_CONTROL_ERRORS[theirs] = cast(type[PhysicsError], type(
+            "PhysicsError", (PhysicsError, theirs),
+            {"__module__": __name__, "__doc__": PhysicsError.__doc__}))
+    return found
 
 
 class Model(mujoco.MjModel):
@@ -141,6 +166,17 @@ def _disable_bit(flag: str) -> mujoco.mjtDisableBit:
     if name not in members:
         raise InvalidValueError(f"{flag!r} is not one of MuJoCo's disable flags: "
                                 f"{', '.join(m[6:].lower() for m in members)}")
+    return members[name]
+
+
+def _render_flag(flag: str | mujoco.mjtRndFlag) -> mujoco.mjtRndFlag:
+    if isinstance(flag, mujoco.mjtRndFlag):
+        return flag
+    name = f"mjRND_{flag.upper()}"
+    members = mujoco.mjtRndFlag.__members__
+    if name not in members:
+        flags = ", ".join(m[6:].lower() for m in members if m.startswith("mjRND_"))
+        raise InvalidValueError(f"{flag!r} is not one of MuJoCo's rendering flags: {flags}")
     return members[name]
 
 
@@ -352,7 +388,7 @@ class Physics(Bind):
         if raised:
             message = _INVALID_STATE.format(", ".join(raised))
             if self._warnings_cause_exception:
-                raise PhysicsError(message)
+                raise _physics_error_class()(message)
             warnings.warn(message, RuntimeWarning, stacklevel=3)
 
     @contextlib.contextmanager
@@ -464,40 +500,57 @@ class Physics(Bind):
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[False] = False, segmentation: Literal[False] = False,
-               scene_option: mujoco.MjvOption | None = None) -> Array[np.uint8]: ...
+               scene_option: mujoco.MjvOption | None = None,
+               render_flag_overrides: RenderFlags | None = None) -> Array[np.uint8]: ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[True], segmentation: Literal[False] = False,
-               scene_option: mujoco.MjvOption | None = None) -> Array[np.float32]: ...
+               scene_option: mujoco.MjvOption | None = None,
+               render_flag_overrides: RenderFlags | None = None) -> Array[np.float32]: ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[False] = False, segmentation: Literal[True],
-               scene_option: mujoco.MjvOption | None = None) -> Array[np.int32]: ...
+               scene_option: mujoco.MjvOption | None = None,
+               render_flag_overrides: RenderFlags | None = None) -> Array[np.int32]: ...
 
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: bool = False, segmentation: bool = False,
                scene_option: mujoco.MjvOption | None = None,
+               render_flag_overrides: RenderFlags | None = None,
                ) -> Array[np.uint8] | Array[np.float32] | Array[np.int32]:
         """An image of the scene from camera ``camera_id`` (a name or an id; -1: the free
         camera): height x width x 3 ``uint8`` RGB; with ``depth``, height x width
         ``float32`` distances in metres; with ``segmentation``, height x width x 2 ``int32``
-        (object id, ``mjtObj`` type; -1, -1 for the background). Uses the OpenGL back end
-        ``MUJOCO_GL`` chooses (``egl`` renders without a display)."""
+        (object id, ``mjtObj`` type; -1, -1 for the background). ``render_flag_overrides``:
+        MuJoCo's rendering flags to set for this image (``{"shadow": False}``; RGB only).
+        Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
+        display)."""
         if depth and segmentation:
             raise InvalidValueError("render: depth and segmentation cannot both be True")
+        if render_flag_overrides and (depth or segmentation):
+            raise InvalidValueError("render: render_flag_overrides are not supported for "
+                                    "depth or segmentation rendering")
+        flags = [(_render_flag(flag), bool(value))
+                 for flag, value in (render_flag_overrides or {}).items()]
         camera = self._camera(camera_id)
         renderer = self._renderer(height, width)
         if self._dirty:
             self.forward()
+        saved: list[tuple[mujoco.mjtRndFlag, bool]] = []
         if depth:
             renderer.enable_depth_rendering()
         elif segmentation:
             renderer.enable_segmentation_rendering()
         try:
             renderer.update_scene(self._data, camera, scene_option)
+            for flag, value in flags:  # the renderer's scene is reused: restored below
+                saved.append((flag, bool(renderer.scene.flags[flag])))
+                renderer.scene.flags[flag] = value
             pixels: Array[np.uint8] | Array[np.float32] | Array[np.int32] = renderer.render()
             return pixels
         finally:
+            for flag, value in reversed(saved):
+                renderer.scene.flags[flag] = value
             renderer.disable_depth_rendering()
             renderer.disable_segmentation_rendering()
 
@@ -525,6 +578,14 @@ class Physics(Bind):
             raise gl_error(error) from None
         self._renderers[(height, width)] = renderer
         return renderer
+
+    @property
+    def contexts(self) -> None:
+        """dm_control's rendering contexts: None here, where a renderer is made per image size
+        when first used. Reading it frees the renderers, so the next image uploads the model
+        as it is then: dm_control's code reads it to upload a height field (or texture, mesh)
+        it changed (``if physics.contexts: ... mjr_uploadHField``)."""
+        self._free_renderers()
 
     def _free_renderers(self) -> None:
         for renderer in getattr(self, "_renderers", {}).values():
