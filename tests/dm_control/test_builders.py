@@ -44,8 +44,8 @@ NAMES = (
     "composed.EmptyCorridor+Rat", "composed.Floor+3 Duplos",
 )
 
-NEEDS_PHYSICS = ("built with mjcf.Physics (the walker's initial pose), which typed-mjcf does "
-                 "not have yet and dm_control's own cannot run on MuJoCo 4: not comparable here")
+NEEDS_PHYSICS = ("built with mjcf.Physics (the walker's initial pose), which dm_control's own "
+                 "cannot run on MuJoCo 4: dm_control's side cannot be built, not comparable here")
 # builder -> why typed-mjcf's model differs from dm_control's
 DIFFERENT: dict[str, str] = {
     "walker.CMUHumanoidPositionControlledV2020": NEEDS_PHYSICS,
