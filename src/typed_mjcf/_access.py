@@ -68,12 +68,17 @@ class FileAccess:
             flag: object = getattr(self, name)
             if not isinstance(flag, bool):
                 raise InvalidTypeError(f"FileAccess.{name} must be a bool, got {flag!r}")
-        limit = cast(object, self.max_bytes)
-        if isinstance(limit, bool) or not isinstance(limit, int):
-            raise InvalidTypeError(f"FileAccess.max_bytes must be an int, got {limit!r}")
-        if limit < 1:
-            raise InvalidValueError(f"FileAccess.max_bytes must be at least 1, got {limit!r}")
+        check_count("FileAccess.max_bytes", self.max_bytes)
 
+
+
+def check_count(name: str, value: object) -> None:
+    """A setting that is a whole number of at least 1 (a bool is not one): one error naming
+    ``name`` otherwise."""
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise InvalidTypeError(f"{name} must be an int, got {value!r}")
+    if value < 1:
+        raise InvalidValueError(f"{name} must be at least 1, got {value!r}")
 
 DEFAULT_ACCESS: Final = FileAccess()
 

@@ -38,6 +38,7 @@ from typed_mjcf._access import (
     DEFAULT_ACCESS,
     Confinement,
     FileAccess,
+    check_count,
     confine,
     open_regular,
 )
@@ -52,7 +53,6 @@ from typed_mjcf.errors import (
     FileReadError,
     IgnoredAttributeWarning,
     InvalidTypeError,
-    InvalidValueError,
     MjcfError,
     ParseError,
     did_you_mean,
@@ -101,11 +101,7 @@ class ParseLimits:
 
     def __post_init__(self) -> None:
         for name in ("max_bytes", "max_depth", "max_elements"):
-            value: object = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, int):
-                raise InvalidTypeError(f"ParseLimits.{name} must be an int, got {value!r}")
-            if value < 1:
-                raise InvalidValueError(f"ParseLimits.{name} must be at least 1, got {value!r}")
+            check_count(f"ParseLimits.{name}", getattr(self, name))
 
 
 DEFAULT_LIMITS: Final = ParseLimits()
