@@ -6,12 +6,16 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from codegen import bindings, ir, mujoco_stubs, render
+from codegen import bindings, ir, mujoco_stubs, releases, render
 from codegen.pipeline import refresh
 
 
 def generate(grammar: Path | None, allow_untyped: bool) -> int:
     before = ir.load() if ir.SCHEMA_PATH.exists() else None
+    installed = releases.installed_version()
+    if (grammar is None and before is not None
+            and releases.version_key(installed) < releases.version_key(before.mujoco_version)):
+        return generate_older(before, installed)
     schema, report = refresh(before, grammar)
     print(report.format())
     if report.untyped and not allow_untyped:
@@ -26,6 +30,28 @@ def generate(grammar: Path | None, allow_untyped: bool) -> int:
           f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
     return stubs()
+
+
+def generate_older(newest: ir.Schema, installed: str) -> int:
+    """An older release than schema/mjcf.json's: its grammar (the newest synced with the
+    installed wheel) into schema/releases/<version>.json, then generated/ (whose release
+    gates it changes). schema/mjcf.json, the bindings and the mujoco stubs stay the newest's:
+    the typing surface is one."""
+    schema, report = refresh(newest, None, older=True)
+    print(report.format())
+    if report.untyped:
+        print(f"(MuJoCo {installed} is older than the typing surface, {newest.mujoco_version}: "
+              "only which attributes, children and keywords it has is used; the attributes "
+              "above stay untyped)")
+    releases.RELEASES_DIR.mkdir(exist_ok=True)
+    path = releases.release_path(installed)
+    ir.dump(schema, path)
+    print(f"{path.relative_to(ir.SCHEMA_DIR.parent)}: MuJoCo {installed}, "
+          f"{len(schema.elements)} rows, "
+          f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
+    changed = render.write(render.render(newest))
+    print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    return 0
 
 
 def stubs() -> int:

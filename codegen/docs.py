@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import re
 import textwrap
+from collections.abc import Mapping
 
 from codegen import ir
 from codegen.typing_names import Typer
@@ -41,8 +42,9 @@ def note(a: ir.AttributeDef) -> str | None:
     return text[:1].upper() + text[1:] + ("" if text.endswith(".") else ".")
 
 
-def attribute_doc(typer: Typer, a: ir.AttributeDef) -> str:
-    """One line: type, allowed values or length, default or required, pattern, note."""
+def attribute_doc(typer: Typer, a: ir.AttributeDef, releases: str | None = None) -> str:
+    """One line: type, allowed values or length, default or required, pattern, the releases
+    that have it (``releases``, when not every release covered does), note."""
     facts = [typer.describe(a)]
     if a.default is not None:
         facts.append(f'default "{a.default}"')
@@ -52,6 +54,8 @@ def attribute_doc(typer: Typer, a: ir.AttributeDef) -> str:
         facts.append("no default (unset when absent)")
     if a.pattern is not None:
         facts.append(f"must match ``{a.pattern}``")
+    if releases is not None:
+        facts.append(f"in {releases}")
     line = "; ".join(facts) + "."
     text = note(a)
     return f"{line} {text}" if text else line
@@ -76,9 +80,10 @@ def escape(text: str) -> str:
     return text.replace("\\", "\\\\").replace('"""', "'''")
 
 
-def property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
+def property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef,
+                 releases: str | None = None) -> str:
     """A property's docstring: ``name``: the line, then the link."""
-    parts = [f"``{a.name}``: {attribute_doc(typer, a)}"]
+    parts = [f"``{a.name}``: {attribute_doc(typer, a, releases)}"]
     url = attribute_url(el, a)
     if url is not None:
         parts.append(url)
@@ -96,9 +101,12 @@ def adder_doc(typer: Typer, el: ir.ElementDef, entries: dict[str, str]) -> str:
     return textwrap.indent(escape("\n\n".join(parts)), " " * 8).strip() + "\n        "
 
 
-def adder_entries(typer: Typer, el: ir.ElementDef, dclass: str) -> dict[str, str]:
-    """Keyword -> its line, for the attributes of ``el`` (and dm_control's ``dclass``)."""
-    entries = {a.py_name: attribute_doc(typer, a) for a in el.attributes}
+def adder_entries(typer: Typer, el: ir.ElementDef, dclass: str,
+                  releases: Mapping[str, str] | None = None) -> dict[str, str]:
+    """Keyword -> its line, for the attributes of ``el`` (and dm_control's ``dclass``);
+    ``releases``: attribute -> the releases that have it, where not all do."""
+    releases = {} if releases is None else releases
+    entries = {a.py_name: attribute_doc(typer, a, releases.get(a.name)) for a in el.attributes}
     if any(a.name == dclass for a in el.attributes):
         entries["dclass"] = "dm_control's name for ``class_``."
     return entries

@@ -147,19 +147,24 @@ def _type_of(attr: ir.AttributeDef) -> tuple[object, ...]:
 # ----------------------------------------------------------------------------------- sync
 
 
-def sync(schema: ir.Schema, wheel: Wheel, facts: Facts) -> tuple[ir.Schema, Report]:
-    """``schema`` (left untouched) made to agree with ``wheel``, and what changed."""
+def sync(schema: ir.Schema, wheel: Wheel, facts: Facts, older: bool = False,
+         ) -> tuple[ir.Schema, Report]:
+    """``schema`` (left untouched) made to agree with ``wheel``, and what changed; ``older``:
+    the wheel is a release older than ``schema``'s (``[[attribute]]`` entries for attributes
+    it lacks are skipped, not errors: codegen/releases.py)."""
     out = copy.deepcopy(schema)
     report = Report()
-    _Sync(out, wheel, facts, report).run()
+    _Sync(out, wheel, facts, report, older).run()
     return out, report
 
 
 class _Sync:
     """One reconciliation; the methods edit ``schema`` in place and log to ``report``."""
 
-    def __init__(self, schema: ir.Schema, wheel: Wheel, facts: Facts, report: Report) -> None:
+    def __init__(self, schema: ir.Schema, wheel: Wheel, facts: Facts, report: Report,
+                 older: bool = False) -> None:
         self.schema = schema
+        self.older = older
         self.wheel = wheel
         self.ref: Reference = wheel.reference
         self.report = report
@@ -635,6 +640,10 @@ class _Sync:
         for (element, name), hand in sorted(self.overrides.items()):
             row = self.rows.get(element)
             if row is None or all(a.name != name for a in row.attributes):
+                if self.older:
+                    self.report.notes.append(f"{element}@{name}: not in this release; its "
+                                             "schema/facts.toml entry is left out")
+                    continue
                 raise ValueError(f"schema/facts.toml [[attribute]] {element}@{name}: the synced "
                                  "schema has no such attribute; fix or remove the entry")
             self._override(row, hand)

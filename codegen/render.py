@@ -16,7 +16,7 @@ from pathlib import Path
 
 import jinja2
 
-from codegen import bindings, docs, ir
+from codegen import bindings, docs, ir, releases
 from codegen.naming import RESERVED, py_name
 from codegen.typing_names import Alias, Typer
 
@@ -91,7 +91,7 @@ def child_py_name(tag: str) -> str:
 
 
 def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
-                    a: ir.AttributeDef) -> str:
+                    a: ir.AttributeDef, notes: releases.Notes) -> str:
     args = [repr(a.name), repr(a.kind)]
     if a.py_name != a.name:
         args.append(f"py_name={a.py_name!r}")
@@ -121,7 +121,7 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
     expected_anchor = f"{el.anchor}-{a.name}" if el.anchor else None
     if a.anchor is not None and a.anchor != expected_anchor:
         args.append(f"anchor={a.anchor!r}")
-    args.append(f"doc={docs.attribute_doc(typer, a)!r}")
+    args.append(f"doc={docs.attribute_doc(typer, a, notes.get(el.name, {}).get(a.name))!r}")
     if el.name == schema.root and a.name == schema.language.model_name:
         args.append("scope=True")
     return "A(" + ", ".join(args) + ")"
@@ -133,13 +133,14 @@ def typed_map_name(typer: Typer, a: ir.AttributeDef) -> str:
     return "_NAMESPACES_" + "_".join(sorted(set(namespaces))).upper()
 
 
-def _element_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> str:
+def _element_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
+                  notes: releases.Notes) -> str:
     lines = [f"{el.tag!r},"]
     if el.name != el.tag:
         lines.append(f"{el.name!r},")
     if el.attributes:
         lines.append("attributes=(")
-        lines += [f"    {_attribute_spec(schema, typer, el, a)}," for a in el.attributes]
+        lines += [f"    {_attribute_spec(schema, typer, el, a, notes)}," for a in el.attributes]
         lines.append("),")
     if el.children:
         lines.append("children=(")
@@ -249,9 +250,13 @@ def _resolves(typer: Typer, el: ir.ElementDef) -> list[ResolveView]:
     return [ResolveView(", ".join(group), type_) for type_, group in names.items()]
 
 
-def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
+def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
+               notes: releases.Notes | None = None) -> ClassView:
+    notes = {} if notes is None else notes  # row -> attribute -> the releases that have it
+    mine = notes.get(el.name, {})
     properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
-                               docs.property_doc(typer, el, a)) for a in el.attributes]
+                               docs.property_doc(typer, el, a, mine.get(a.name)))
+                  for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     if any(a.name == schema.language.dclass for a in el.attributes):
         dclass = next(a for a in el.attributes if a.name == schema.language.dclass)
@@ -264,7 +269,8 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
         child_params = [ParamView(a.py_name, typer.setter(a)) for a in child.attributes]
         child_params += [ParamView("dclass", typer.setter(a)) for a in child.attributes
                          if a.name == schema.language.dclass]  # dm_control's name
-        entries = docs.adder_entries(typer, child, schema.language.dclass)
+        entries = docs.adder_entries(typer, child, schema.language.dclass,
+                                     notes.get(child.name))
         children.append(ChildView(child.tag, child_py_name(child.tag), child.class_name,
                                   c.single, child_params, docs.adder_doc(typer, child, entries)))
     is_root = el.name == schema.root
@@ -277,7 +283,7 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     return ClassView(
         class_name=el.class_name, bases=bases, stub_bases=stub_bases,
         short_doc=docs.escape(f"``<{el.tag}>``."), doc=_class_doc(el),
-        table=_element_spec(schema, typer, el), properties=properties, children=children,
+        table=_element_spec(schema, typer, el, notes), properties=properties, children=children,
         params=params, resolves=resolves, is_root=is_root,
         init_params=[p for p in params if p.py_name != schema.language.model_name])
 
@@ -318,12 +324,15 @@ def _typed_maps(schema: ir.Schema, typer: Typer) -> list[Alias]:
 
 
 def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
-           ) -> dict[str, str]:
+           older: dict[str, ir.Schema] | None = None) -> dict[str, str]:
     """The generated package: file name -> text (the bindings from ``schema/bindings.json``
-    unless ``binding_table`` is given)."""
+    unless ``binding_table`` is given; the older releases from ``schema/releases/`` unless
+    ``older`` is given)."""
     typer = Typer(schema)
     env = _environment()
-    classes = [class_view(schema, typer, el) for el in _ordered(schema)]
+    gates = releases.gates(schema, releases.load_releases() if older is None else older)
+    notes = releases.notes(gates)
+    classes = [class_view(schema, typer, el, notes) for el in _ordered(schema)]
     keyword_sets = typer.keyword_aliases()
     aliases = [*typer.array_aliases(), *typer.namespace_aliases(), *typer.target_aliases()]
     namespaces = [NamespaceView(ns, typer.namespace_type(ns)) for ns in typer.namespaces()]
@@ -355,6 +364,7 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
         "elements.py": env.get_template("elements.py.jinja2").render(context),
         "elements.pyi": env.get_template("elements.pyi.jinja2").render(context),
         "__init__.py": env.get_template("__init__.py.jinja2").render(context),
+        "releases.py": releases.render_table(gates, schema.mujoco_version),
     }
 
 

@@ -830,12 +830,12 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             inertiafromgeom: one of: false, true, auto; default "auto".
             inertiagrouprange: int[2]; default "0 5".
             saveinertial: bool; no default (unset when absent).
-            savecompiled: bool; default "true".
-            savecanonical: bool; default "true".
+            savecompiled: bool; default "true"; in MuJoCo >= 3.17.0.
+            savecanonical: bool; default "true"; in MuJoCo >= 3.17.0.
             assetdir: string; no default (unset when absent).
             alignfree: bool; no default (unset when absent).
-            conflict: one of: warning, merge, error; no default (unset when absent).
-            passthrough: one of: none, textures; default "none".
+            conflict: one of: warning, merge, error; no default (unset when absent); in MuJoCo >= 3.17.0.
+            passthrough: one of: none, textures; default "none"; in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -885,7 +885,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             ls_tolerance: double; default "0.01".
             noslip_tolerance: double; default "1e-06".
             ccd_tolerance: double; default "1e-06".
-            sleep_tolerance: double; default "0.001".
+            sleep_tolerance: double; default "0.001"; in MuJoCo >= 3.17.0.
             gravity: double[3]; default "0 0 -9.81".
             wind: double[3]; default "0 0 0".
             magnetic: double[3]; default "0 -0.5 0".
@@ -1286,7 +1286,7 @@ class Accelerometer(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
         """
@@ -1295,7 +1295,7 @@ class Accelerometer(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
         """
@@ -1304,7 +1304,7 @@ class Accelerometer(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
         """
@@ -1313,7 +1313,7 @@ class Accelerometer(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
         """
@@ -1439,9 +1439,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -1451,8 +1451,8 @@ class Actuator(_Typed):
             actrange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1463,10 +1463,10 @@ class Actuator(_Typed):
             refsite: reference to namespace ``site``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
             actdim: int; default "-1".
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent). So3 chart keyword, or servo token subset.
-            velrange: double[2]; no default (unset when absent).
-            ffrange: double[2]; no default (unset when absent).
-            inheritrange: double; no default (unset when absent).
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             dyntype: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
             gaintype: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed".
             biastype: one of: none, affine, muscle, dcmotor, so3, user; default "none".
@@ -1516,9 +1516,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -1526,8 +1526,8 @@ class Actuator(_Typed):
             forcerange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1583,9 +1583,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -1594,8 +1594,8 @@ class Actuator(_Typed):
             forcerange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1651,9 +1651,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -1661,8 +1661,8 @@ class Actuator(_Typed):
             forcerange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1720,21 +1720,21 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            actlimited: one of: false, true, auto; default "auto".
+            actlimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
             forcerange: double[2]; no default (unset when absent).
             actrange: double[2]; no default (unset when absent).
             inheritrange: double; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1779,23 +1779,23 @@ class Actuator(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation
 
         Args:
-            name: name declared in namespace ``actuator``; no default (unset when absent).
-            class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
-            forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            joint: reference to namespace ``joint``; no default (unset when absent).
-            site: reference to namespace ``site``; no default (unset when absent).
-            refsite: reference to namespace ``site``; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent).
+            name: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            joint: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            site: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1846,40 +1846,40 @@ class Actuator(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid
 
         Args:
-            name: name declared in namespace ``actuator``; no default (unset when absent).
-            class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
-            ctrllimited: one of: false, true, auto; default "auto".
-            forcelimited: one of: false, true, auto; default "auto".
-            posrange: double[2]; no default (unset when absent). Alias - the position-setpoint range.
-            velrange: double[2]; no default (unset when absent).
-            ffrange: double[2]; no default (unset when absent).
-            forcerange: double[2]; no default (unset when absent).
-            inheritrange: double; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
-            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
-            cranklength: double; no default (unset when absent).
-            joint: reference to namespace ``joint``; no default (unset when absent).
-            jointinparent: reference to namespace ``joint``; no default (unset when absent).
-            tendon: reference to namespace ``tendon``; no default (unset when absent).
-            site: reference to namespace ``site``; no default (unset when absent).
-            slidersite: reference to namespace ``site``; no default (unset when absent).
-            cranksite: reference to namespace ``site``; no default (unset when absent).
-            refsite: reference to namespace ``site``; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
-            ki: double; no default (unset when absent).
-            imax: double; no default (unset when absent).
-            slewmax: double; no default (unset when absent).
-            input: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent).
+            name: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            posrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
+            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            lengthrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            joint: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            jointinparent: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            tendon: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            site: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            slidersite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            cranksite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ki: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            imax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            slewmax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            input: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1922,17 +1922,17 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1988,9 +1988,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -1998,8 +1998,8 @@ class Actuator(_Typed):
             forcerange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -2062,9 +2062,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             range: double[2]; no default (unset when absent).
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -2073,8 +2073,8 @@ class Actuator(_Typed):
             forcerange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -2121,9 +2121,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
@@ -2177,37 +2177,37 @@ class Actuator(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor
 
         Args:
-            name: name declared in namespace ``actuator``; no default (unset when absent).
-            class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
-            ctrllimited: one of: false, true, auto; default "auto".
-            lengthrange: double[2]; no default (unset when absent).
-            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
-            cranklength: double; no default (unset when absent).
-            joint: reference to namespace ``joint``; no default (unset when absent).
-            jointinparent: reference to namespace ``joint``; no default (unset when absent).
-            tendon: reference to namespace ``tendon``; no default (unset when absent).
-            site: reference to namespace ``site``; no default (unset when absent).
-            slidersite: reference to namespace ``site``; no default (unset when absent).
-            cranksite: reference to namespace ``site``; no default (unset when absent).
-            refsite: reference to namespace ``site``; no default (unset when absent).
-            motorconst: double[1..2] (1 to 2 values); no default (unset when absent).
-            resistance: double; no default (unset when absent).
-            nominal: double[1..3] (1 to 3 values); no default (unset when absent).
-            saturation: double[1..3] (1 to 3 values); no default (unset when absent).
-            inductance: double[1..2] (1 to 2 values); no default (unset when absent).
-            cogging: double[1..3] (1 to 3 values); no default (unset when absent).
-            controller: double[1..6] (1 to 6 values); no default (unset when absent).
-            thermal: double[1..6] (1 to 6 values); no default (unset when absent).
-            lugre: double[1..5] (1 to 5 values); no default (unset when absent).
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent). Token subset, or the none keyword.
+            name: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            lengthrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            joint: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            jointinparent: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            tendon: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            site: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            slidersite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            cranksite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            resistance: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nominal: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            saturation: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            inductance: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            cogging: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            controller: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            thermal: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            lugre: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2257,9 +2257,9 @@ class Actuator(_Typed):
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             plugin: string; no default (unset when absent).
@@ -2271,8 +2271,8 @@ class Actuator(_Typed):
             actrange: double[2]; no default (unset when absent).
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -2409,7 +2409,7 @@ class ActuatorPlugin(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
         """
@@ -2418,7 +2418,7 @@ class ActuatorPlugin(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
         """
@@ -2427,7 +2427,7 @@ class ActuatorPlugin(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
         """
@@ -2535,7 +2535,7 @@ class ActuatorPlugin(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
         """
@@ -2544,7 +2544,7 @@ class ActuatorPlugin(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
         """
@@ -2754,7 +2754,7 @@ class Actuatorfrc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
         """
@@ -2763,7 +2763,7 @@ class Actuatorfrc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
         """
@@ -2772,7 +2772,7 @@ class Actuatorfrc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
         """
@@ -2781,7 +2781,7 @@ class Actuatorfrc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
         """
@@ -2864,7 +2864,7 @@ class Actuatorpos(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
         """
@@ -2873,7 +2873,7 @@ class Actuatorpos(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
         """
@@ -2882,7 +2882,7 @@ class Actuatorpos(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
         """
@@ -2891,7 +2891,7 @@ class Actuatorpos(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
         """
@@ -2974,7 +2974,7 @@ class Actuatorvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
         """
@@ -2983,7 +2983,7 @@ class Actuatorvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
         """
@@ -2992,7 +2992,7 @@ class Actuatorvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
         """
@@ -3001,7 +3001,7 @@ class Actuatorvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
         """
@@ -3102,7 +3102,7 @@ class Adhesion(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
         """
@@ -3111,7 +3111,7 @@ class Adhesion(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
         """
@@ -3120,7 +3120,7 @@ class Adhesion(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
         """
@@ -3396,8 +3396,8 @@ class AssetSection(_Typed):
             hflip: bool; no default (unset when absent).
             vflip: bool; no default (unset when absent).
             nchannel: int; default "3".
-            class_: reference to namespace ``default``; no default (unset when absent).
-            embed: one of: false, true, auto; default "auto".
+            class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            embed: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -3532,7 +3532,7 @@ class Attach(_Typed):
 
     @property
     def frame(self) -> _builtins.str | Frame | None:
-        """``frame``: reference to namespace ``frame``; no default (unset when absent).
+        """``frame``: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-frame
         """
@@ -3582,7 +3582,7 @@ class Ballangvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
         """
@@ -3591,7 +3591,7 @@ class Ballangvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
         """
@@ -3600,7 +3600,7 @@ class Ballangvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
         """
@@ -3609,7 +3609,7 @@ class Ballangvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
         """
@@ -3692,7 +3692,7 @@ class Ballquat(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
         """
@@ -3701,7 +3701,7 @@ class Ballquat(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
         """
@@ -3710,7 +3710,7 @@ class Ballquat(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
         """
@@ -3719,7 +3719,7 @@ class Ballquat(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
         """
@@ -3883,7 +3883,7 @@ class Body(_Typed, _Attachable):
 
     @property
     def sleep(self) -> BodySleep | None:
-        """``sleep``: one of: auto, never, allowed, init; no default (unset when absent).
+        """``sleep``: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
         """
@@ -3892,7 +3892,7 @@ class Body(_Typed, _Attachable):
 
     @property
     def simple(self) -> FalseAuto | None:
-        """``simple``: one of: false, auto; default "auto".
+        """``simple``: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-simple
         """
@@ -3901,7 +3901,7 @@ class Body(_Typed, _Attachable):
 
     @property
     def fuse(self) -> FalseAuto | None:
-        """``fuse``: one of: false, auto; default "auto".
+        """``fuse``: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-fuse
         """
@@ -3953,9 +3953,9 @@ class Body(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mocap: bool; no default (unset when absent).
             gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent).
-            simple: one of: false, auto; default "auto".
-            fuse: one of: false, auto; default "auto".
+            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
+            fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -3993,9 +3993,9 @@ class Body(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            scale: double[1..3] (1 to 3 values); default "1".
-            scaling: one of: similar, geometry; default "similar".
-            massscale: double; default "0".
+            scale: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0.
+            scaling: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0.
+            massscale: double; default "0"; in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
         """
 
@@ -4123,7 +4123,7 @@ class Body(_Typed, _Attachable):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             frictionloss: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
-            springyield: double; default "0".
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -4215,8 +4215,8 @@ class Body(_Typed, _Attachable):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             margin: double; no default (unset when absent).
             gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             fromto: double[6]; no default (unset when absent).
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
@@ -4231,7 +4231,7 @@ class Body(_Typed, _Attachable):
             fluidshape: one of: none, ellipsoid; no default (unset when absent).
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
-            castshadow: bool; default "true".
+            castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -4253,7 +4253,7 @@ class Body(_Typed, _Attachable):
         Args:
             model: reference to namespace ``model``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
-            frame: reference to namespace ``frame``; no default (unset when absent).
+            frame: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0.
             prefix: string; required.
         """
 
@@ -4297,7 +4297,7 @@ class Body(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
             fromto: double[6]; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
@@ -4341,11 +4341,11 @@ class Body(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent).
+            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -4410,7 +4410,7 @@ class Body(_Typed, _Attachable):
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
-            softness: float; default "0.2".
+            softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
             ambient: float[3]; no default (unset when absent).
             diffuse: float[3]; default "0.7 0.7 0.7".
@@ -4485,7 +4485,7 @@ class Body(_Typed, _Attachable):
             dim: int; no default (unset when absent).
             dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
             count: int[3]; no default (unset when absent).
-            cellcount: int[3]; no default (unset when absent).
+            cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             spacing: double[3]; no default (unset when absent).
             radius: double; no default (unset when absent).
             rigid: bool; no default (unset when absent).
@@ -4506,7 +4506,7 @@ class Body(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             origin: double[3]; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @overload
@@ -4716,7 +4716,7 @@ class Camera(_Typed):
 
     @property
     def projection(self) -> Projection | None:
-        """``projection``: one of: perspective, orthographic; no default (unset when absent).
+        """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
         """
@@ -4752,7 +4752,7 @@ class Camera(_Typed):
 
     @property
     def output(self) -> tuple[Camout, ...] | None:
-        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
         """
@@ -4947,7 +4947,7 @@ class Camprojection(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
         """
@@ -4956,7 +4956,7 @@ class Camprojection(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
         """
@@ -4965,7 +4965,7 @@ class Camprojection(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
         """
@@ -4974,7 +4974,7 @@ class Camprojection(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
         """
@@ -5069,7 +5069,7 @@ class Clock(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
         """
@@ -5078,7 +5078,7 @@ class Clock(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
         """
@@ -5087,7 +5087,7 @@ class Clock(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
         """
@@ -5096,7 +5096,7 @@ class Clock(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
         """
@@ -5320,7 +5320,7 @@ class Compiler(_Typed):
 
     @property
     def savecompiled(self) -> _builtins.bool | None:
-        """``savecompiled``: bool; default "true".
+        """``savecompiled``: bool; default "true"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecompiled
         """
@@ -5329,7 +5329,7 @@ class Compiler(_Typed):
 
     @property
     def savecanonical(self) -> _builtins.bool | None:
-        """``savecanonical``: bool; default "true".
+        """``savecanonical``: bool; default "true"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecanonical
         """
@@ -5356,7 +5356,7 @@ class Compiler(_Typed):
 
     @property
     def conflict(self) -> Conflict | None:
-        """``conflict``: one of: warning, merge, error; no default (unset when absent).
+        """``conflict``: one of: warning, merge, error; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
         """
@@ -5365,7 +5365,7 @@ class Compiler(_Typed):
 
     @property
     def passthrough(self) -> Passthrough | None:
-        """``passthrough``: one of: none, textures; default "none".
+        """``passthrough``: one of: none, textures; default "none"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-passthrough
         """
@@ -5660,7 +5660,7 @@ class Contact(_Typed):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             gap: double; no default (unset when absent).
             margin: double; no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -5827,7 +5827,7 @@ class Cylinder(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
         """
@@ -5836,7 +5836,7 @@ class Cylinder(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
         """
@@ -5845,7 +5845,7 @@ class Cylinder(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
         """
@@ -5917,7 +5917,7 @@ class Cylinder(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
         """
@@ -5926,7 +5926,7 @@ class Cylinder(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
         """
@@ -6121,7 +6121,7 @@ class Damper(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
         """
@@ -6130,7 +6130,7 @@ class Damper(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
         """
@@ -6139,7 +6139,7 @@ class Damper(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
         """
@@ -6202,7 +6202,7 @@ class Damper(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
         """
@@ -6211,7 +6211,7 @@ class Damper(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
         """
@@ -6352,7 +6352,7 @@ class Dcmotor(_Typed):
 
     @property
     def name(self) -> _builtins.str | None:
-        """``name``: name declared in namespace ``actuator``; no default (unset when absent).
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-name
         """
@@ -6361,7 +6361,7 @@ class Dcmotor(_Typed):
 
     @property
     def class_(self) -> _builtins.str | Default | None:
-        """``class``: reference to namespace ``default``; no default (unset when absent).
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-class
         """
@@ -6370,7 +6370,7 @@ class Dcmotor(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
         """
@@ -6379,7 +6379,7 @@ class Dcmotor(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
         """
@@ -6388,7 +6388,7 @@ class Dcmotor(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
         """
@@ -6397,7 +6397,7 @@ class Dcmotor(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
         """
@@ -6406,7 +6406,7 @@ class Dcmotor(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
         """
@@ -6415,7 +6415,7 @@ class Dcmotor(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
         """
@@ -6424,7 +6424,7 @@ class Dcmotor(_Typed):
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
-        """``ctrllimited``: one of: false, true, auto; default "auto".
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
         """
@@ -6433,7 +6433,7 @@ class Dcmotor(_Typed):
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
-        """``lengthrange``: double[2]; no default (unset when absent).
+        """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
         """
@@ -6442,7 +6442,7 @@ class Dcmotor(_Typed):
 
     @property
     def gear(self) -> _t.Float64Array | None:
-        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
         """
@@ -6451,7 +6451,7 @@ class Dcmotor(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
         """
@@ -6460,7 +6460,7 @@ class Dcmotor(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
         """
@@ -6469,7 +6469,7 @@ class Dcmotor(_Typed):
 
     @property
     def cranklength(self) -> _builtins.float | None:
-        """``cranklength``: double; no default (unset when absent).
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
         """
@@ -6478,7 +6478,7 @@ class Dcmotor(_Typed):
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
-        """``joint``: reference to namespace ``joint``; no default (unset when absent).
+        """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-joint
         """
@@ -6487,7 +6487,7 @@ class Dcmotor(_Typed):
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
-        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-jointinparent
         """
@@ -6496,7 +6496,7 @@ class Dcmotor(_Typed):
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
-        """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-tendon
         """
@@ -6505,7 +6505,7 @@ class Dcmotor(_Typed):
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
-        """``slidersite``: reference to namespace ``site``; no default (unset when absent).
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-slidersite
         """
@@ -6514,7 +6514,7 @@ class Dcmotor(_Typed):
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
-        """``cranksite``: reference to namespace ``site``; no default (unset when absent).
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranksite
         """
@@ -6523,7 +6523,7 @@ class Dcmotor(_Typed):
 
     @property
     def site(self) -> _builtins.str | Site | None:
-        """``site``: reference to namespace ``site``; no default (unset when absent).
+        """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-site
         """
@@ -6532,7 +6532,7 @@ class Dcmotor(_Typed):
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
-        """``refsite``: reference to namespace ``site``; no default (unset when absent).
+        """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-refsite
         """
@@ -6541,7 +6541,7 @@ class Dcmotor(_Typed):
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
@@ -6550,7 +6550,7 @@ class Dcmotor(_Typed):
 
     @property
     def resistance(self) -> _builtins.float | None:
-        """``resistance``: double; no default (unset when absent).
+        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
@@ -6559,7 +6559,7 @@ class Dcmotor(_Typed):
 
     @property
     def nominal(self) -> _t.Float64Array | None:
-        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent).
+        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
         """
@@ -6568,7 +6568,7 @@ class Dcmotor(_Typed):
 
     @property
     def saturation(self) -> _t.Float64Array | None:
-        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent).
+        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
         """
@@ -6577,7 +6577,7 @@ class Dcmotor(_Typed):
 
     @property
     def inductance(self) -> _t.Float64Array | None:
-        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
         """
@@ -6586,7 +6586,7 @@ class Dcmotor(_Typed):
 
     @property
     def cogging(self) -> _t.Float64Array | None:
-        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent).
+        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
         """
@@ -6595,7 +6595,7 @@ class Dcmotor(_Typed):
 
     @property
     def controller(self) -> _t.Float64Array | None:
-        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent).
+        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
         """
@@ -6604,7 +6604,7 @@ class Dcmotor(_Typed):
 
     @property
     def thermal(self) -> _t.Float64Array | None:
-        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent).
+        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
         """
@@ -6613,7 +6613,7 @@ class Dcmotor(_Typed):
 
     @property
     def lugre(self) -> _t.Float64Array | None:
-        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent).
+        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
         """
@@ -6622,7 +6622,7 @@ class Dcmotor(_Typed):
 
     @property
     def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent). Token subset, or the none keyword.
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
@@ -6834,7 +6834,7 @@ class Default(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             frictionloss: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
-            springyield: double; default "0".
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
         """
 
     @property
@@ -6902,8 +6902,8 @@ class Default(_Typed):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             margin: double; no default (unset when absent).
             gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             fromto: double[6]; no default (unset when absent).
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
@@ -6918,7 +6918,7 @@ class Default(_Typed):
             fluidshape: one of: none, ellipsoid; no default (unset when absent).
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
-            castshadow: bool; default "true".
+            castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
         """
 
     @property
@@ -6958,7 +6958,7 @@ class Default(_Typed):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
             fromto: double[6]; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
@@ -6997,11 +6997,11 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-camera
 
         Args:
-            projection: one of: perspective, orthographic; no default (unset when absent).
+            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -7059,7 +7059,7 @@ class Default(_Typed):
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
-            softness: float; default "0.2".
+            softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
             ambient: float[3]; no default (unset when absent).
             diffuse: float[3]; default "0.7 0.7 0.7".
@@ -7096,7 +7096,7 @@ class Default(_Typed):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             gap: double; no default (unset when absent).
             margin: double; no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -7171,10 +7171,10 @@ class Default(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
-            actuatorfrclimited: one of: false, true, auto; default "auto".
-            actuatorfrcrange: double[2]; no default (unset when absent).
-            springyield: double; default "0".
-            armature: double; no default (unset when absent).
+            actuatorfrclimited: one of: false, true, auto; default "auto"; in MuJoCo >= 4.0.0.
+            actuatorfrcrange: double[2]; no default (unset when absent); in MuJoCo >= 4.0.0.
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
+            armature: double; no default (unset when absent); in MuJoCo >= 4.0.0.
         """
 
     @property
@@ -7219,9 +7219,9 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -7230,14 +7230,14 @@ class Default(_Typed):
             forcerange: double[2]; no default (unset when absent).
             actrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             actdim: int; default "-1".
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent). So3 chart keyword, or servo token subset.
-            velrange: double[2]; no default (unset when absent).
-            ffrange: double[2]; no default (unset when absent).
-            inheritrange: double; no default (unset when absent).
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             dyntype: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
             gaintype: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed".
             biastype: one of: none, affine, muscle, dcmotor, so3, user; default "none".
@@ -7275,17 +7275,17 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
         """
 
@@ -7322,9 +7322,9 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
@@ -7332,8 +7332,8 @@ class Default(_Typed):
             inheritrange: double; no default (unset when absent).
             forcerange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
             kv: double; no default (unset when absent).
@@ -7370,17 +7370,17 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             kv: double; no default (unset when absent).
         """
@@ -7419,20 +7419,20 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            actlimited: one of: false, true, auto; default "auto".
+            actlimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
             forcerange: double[2]; no default (unset when absent).
             actrange: double[2]; no default (unset when absent).
             inheritrange: double; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
             kv: double; no default (unset when absent).
@@ -7465,18 +7465,18 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-orientation
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
-            forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent).
+            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -7517,30 +7517,30 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
-            ctrllimited: one of: false, true, auto; default "auto".
-            forcelimited: one of: false, true, auto; default "auto".
-            posrange: double[2]; no default (unset when absent). Alias - the position-setpoint range.
-            velrange: double[2]; no default (unset when absent).
-            ffrange: double[2]; no default (unset when absent).
-            forcerange: double[2]; no default (unset when absent).
-            inheritrange: double; no default (unset when absent).
-            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
-            cranklength: double; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
-            ki: double; no default (unset when absent).
-            imax: double; no default (unset when absent).
-            slewmax: double; no default (unset when absent).
-            input: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent).
+            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            posrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
+            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ki: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            imax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            slewmax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            input: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -7571,16 +7571,16 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             kv: double; no default (unset when absent).
         """
@@ -7617,17 +7617,17 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             timeconst: double; no default (unset when absent).
             area: double; no default (unset when absent).
@@ -7672,9 +7672,9 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             range: double[2]; no default (unset when absent).
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -7682,8 +7682,8 @@ class Default(_Typed):
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             timeconst: double[2]; no default (unset when absent).
             force: double; no default (unset when absent).
@@ -7719,9 +7719,9 @@ class Default(_Typed):
 
         Args:
             group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
@@ -7764,27 +7764,27 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcmotor
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
-            ctrllimited: one of: false, true, auto; default "auto".
-            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
-            cranklength: double; no default (unset when absent).
-            motorconst: double[1..2] (1 to 2 values); no default (unset when absent).
-            resistance: double; no default (unset when absent).
-            nominal: double[1..3] (1 to 3 values); no default (unset when absent).
-            saturation: double[1..3] (1 to 3 values); no default (unset when absent).
-            inductance: double[1..2] (1 to 2 values); no default (unset when absent).
-            cogging: double[1..3] (1 to 3 values); no default (unset when absent).
-            controller: double[1..6] (1 to 6 values); no default (unset when absent).
-            thermal: double[1..6] (1 to 6 values); no default (unset when absent).
-            lugre: double[1..5] (1 to 5 values); no default (unset when absent).
-            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent). Token subset, or the none keyword.
+            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
+            gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            resistance: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nominal: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            saturation: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            inductance: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            cogging: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            controller: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            thermal: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            lugre: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
         """
 
     @property
@@ -7817,22 +7817,22 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-texture
 
         Args:
-            type: one of: 2d, cube, skybox; default "cube".
-            colorspace: one of: auto, linear, sRGB; default "auto".
-            gridsize: int[2]; default "1 1".
-            gridlayout: chars[1..12] (1 to 12 values); no default (unset when absent). Length must equal the gridsize product.
-            builtin: one of: none, gradient, checker, flat; no default (unset when absent).
-            rgb1: double[3]; default "0.8 0.8 0.8".
-            rgb2: double[3]; default "0.5 0.5 0.5".
-            mark: one of: none, edge, cross, random; no default (unset when absent).
-            markrgb: double[3]; no default (unset when absent).
-            random: double; default "0.01".
-            width: int; no default (unset when absent).
-            height: int; no default (unset when absent).
-            hflip: bool; no default (unset when absent).
-            vflip: bool; no default (unset when absent).
-            nchannel: int; default "3".
-            embed: one of: false, true, auto; default "auto".
+            type: one of: 2d, cube, skybox; default "cube"; in MuJoCo >= 3.17.0.
+            colorspace: one of: auto, linear, sRGB; default "auto"; in MuJoCo >= 3.17.0.
+            gridsize: int[2]; default "1 1"; in MuJoCo >= 3.17.0.
+            gridlayout: chars[1..12] (1 to 12 values); no default (unset when absent); in MuJoCo >= 3.17.0. Length must equal the gridsize product.
+            builtin: one of: none, gradient, checker, flat; no default (unset when absent); in MuJoCo >= 3.17.0.
+            rgb1: double[3]; default "0.8 0.8 0.8"; in MuJoCo >= 3.17.0.
+            rgb2: double[3]; default "0.5 0.5 0.5"; in MuJoCo >= 3.17.0.
+            mark: one of: none, edge, cross, random; no default (unset when absent); in MuJoCo >= 3.17.0.
+            markrgb: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            random: double; default "0.01"; in MuJoCo >= 3.17.0.
+            width: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            height: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            hflip: bool; no default (unset when absent); in MuJoCo >= 3.17.0.
+            vflip: bool; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nchannel: int; default "3"; in MuJoCo >= 3.17.0.
+            embed: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
         """
 
     @overload
@@ -8009,7 +8009,7 @@ class DefaultAdhesion(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
         """
@@ -8018,7 +8018,7 @@ class DefaultAdhesion(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
         """
@@ -8027,7 +8027,7 @@ class DefaultAdhesion(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
         """
@@ -8107,7 +8107,7 @@ class DefaultCamera(_Typed):
 
     @property
     def projection(self) -> Projection | None:
-        """``projection``: one of: perspective, orthographic; no default (unset when absent).
+        """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
         """
@@ -8143,7 +8143,7 @@ class DefaultCamera(_Typed):
 
     @property
     def output(self) -> tuple[Camout, ...] | None:
-        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
         """
@@ -8313,7 +8313,7 @@ class DefaultCylinder(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
         """
@@ -8322,7 +8322,7 @@ class DefaultCylinder(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
         """
@@ -8331,7 +8331,7 @@ class DefaultCylinder(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
         """
@@ -8394,7 +8394,7 @@ class DefaultCylinder(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
         """
@@ -8403,7 +8403,7 @@ class DefaultCylinder(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
         """
@@ -8495,7 +8495,7 @@ class DefaultDamper(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
         """
@@ -8504,7 +8504,7 @@ class DefaultDamper(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
         """
@@ -8513,7 +8513,7 @@ class DefaultDamper(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
         """
@@ -8567,7 +8567,7 @@ class DefaultDamper(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
         """
@@ -8576,7 +8576,7 @@ class DefaultDamper(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
         """
@@ -8632,7 +8632,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
         """
@@ -8641,7 +8641,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
         """
@@ -8650,7 +8650,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
         """
@@ -8659,7 +8659,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
         """
@@ -8668,7 +8668,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
         """
@@ -8677,7 +8677,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
         """
@@ -8686,7 +8686,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
-        """``ctrllimited``: one of: false, true, auto; default "auto".
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
         """
@@ -8695,7 +8695,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def gear(self) -> _t.Float64Array | None:
-        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
         """
@@ -8704,7 +8704,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
         """
@@ -8713,7 +8713,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
         """
@@ -8722,7 +8722,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def cranklength(self) -> _builtins.float | None:
-        """``cranklength``: double; no default (unset when absent).
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
         """
@@ -8731,7 +8731,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
@@ -8740,7 +8740,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def resistance(self) -> _builtins.float | None:
-        """``resistance``: double; no default (unset when absent).
+        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
@@ -8749,7 +8749,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def nominal(self) -> _t.Float64Array | None:
-        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent).
+        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
         """
@@ -8758,7 +8758,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def saturation(self) -> _t.Float64Array | None:
-        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent).
+        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
         """
@@ -8767,7 +8767,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def inductance(self) -> _t.Float64Array | None:
-        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
         """
@@ -8776,7 +8776,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def cogging(self) -> _t.Float64Array | None:
-        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent).
+        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
         """
@@ -8785,7 +8785,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def controller(self) -> _t.Float64Array | None:
-        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent).
+        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
         """
@@ -8794,7 +8794,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def thermal(self) -> _t.Float64Array | None:
-        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent).
+        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
         """
@@ -8803,7 +8803,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def lugre(self) -> _t.Float64Array | None:
-        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent).
+        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
         """
@@ -8812,7 +8812,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
-        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent). Token subset, or the none keyword.
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
@@ -8906,7 +8906,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
         """
@@ -8915,7 +8915,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
         """
@@ -8924,7 +8924,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
         """
@@ -9005,7 +9005,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
         """
@@ -9014,7 +9014,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
         """
@@ -9041,7 +9041,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent). So3 chart keyword, or servo token subset.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
@@ -9050,7 +9050,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def velrange(self) -> _t.Float64Array | None:
-        """``velrange``: double[2]; no default (unset when absent).
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
         """
@@ -9059,7 +9059,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
-        """``ffrange``: double[2]; no default (unset when absent).
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
         """
@@ -9068,7 +9068,7 @@ class DefaultGeneral(_Typed):
 
     @property
     def inheritrange(self) -> _builtins.float | None:
-        """``inheritrange``: double; no default (unset when absent).
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
         """
@@ -9340,7 +9340,7 @@ class DefaultGeom(_Typed):
 
     @property
     def surfacevel(self) -> _t.Float64Array | None:
-        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent).
+        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
         """
@@ -9349,7 +9349,7 @@ class DefaultGeom(_Typed):
 
     @property
     def adhesion(self) -> _builtins.float | None:
-        """``adhesion``: double; no default (unset when absent).
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
         """
@@ -9484,7 +9484,7 @@ class DefaultGeom(_Typed):
 
     @property
     def castshadow(self) -> _builtins.bool | None:
-        """``castshadow``: bool; default "true".
+        """``castshadow``: bool; default "true"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
         """
@@ -9555,7 +9555,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
         """
@@ -9564,7 +9564,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
         """
@@ -9573,7 +9573,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
         """
@@ -9618,7 +9618,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
-        """``actlimited``: one of: false, true, auto; default "auto".
+        """``actlimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
         """
@@ -9663,7 +9663,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
         """
@@ -9672,7 +9672,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
         """
@@ -9944,7 +9944,7 @@ class DefaultJoint(_Typed):
 
     @property
     def springyield(self) -> _builtins.float | None:
-        """``springyield``: double; default "0".
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
         """
@@ -10087,7 +10087,7 @@ class DefaultLight(_Typed):
 
     @property
     def softness(self) -> _builtins.float | None:
-        """``softness``: float; default "0.2".
+        """``softness``: float; default "0.2"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
         """
@@ -10381,7 +10381,7 @@ class DefaultMotor(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
         """
@@ -10390,7 +10390,7 @@ class DefaultMotor(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
         """
@@ -10399,7 +10399,7 @@ class DefaultMotor(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
         """
@@ -10462,7 +10462,7 @@ class DefaultMotor(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
         """
@@ -10471,7 +10471,7 @@ class DefaultMotor(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
         """
@@ -10527,7 +10527,7 @@ class DefaultMuscle(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
         """
@@ -10536,7 +10536,7 @@ class DefaultMuscle(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
         """
@@ -10545,7 +10545,7 @@ class DefaultMuscle(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
         """
@@ -10608,7 +10608,7 @@ class DefaultMuscle(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
         """
@@ -10617,7 +10617,7 @@ class DefaultMuscle(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
         """
@@ -10745,7 +10745,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
         """
@@ -10754,7 +10754,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
         """
@@ -10763,7 +10763,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
         """
@@ -10772,7 +10772,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
         """
@@ -10781,7 +10781,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
         """
@@ -10790,7 +10790,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
         """
@@ -10799,7 +10799,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
-        """``forcelimited``: one of: false, true, auto; default "auto".
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
         """
@@ -10808,7 +10808,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
-        """``forcerange``: double[2]; no default (unset when absent).
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
         """
@@ -10817,7 +10817,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def kp(self) -> _builtins.float | None:
-        """``kp``: double; no default (unset when absent).
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
         """
@@ -10826,7 +10826,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
         """
@@ -10835,7 +10835,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
         """
@@ -10844,7 +10844,7 @@ class DefaultOrientation(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent).
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
@@ -10945,7 +10945,7 @@ class DefaultPair(_Typed):
 
     @property
     def adhesion(self) -> _builtins.float | None:
-        """``adhesion``: double; no default (unset when absent).
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
         """
@@ -10977,7 +10977,7 @@ class DefaultPid(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
         """
@@ -10986,7 +10986,7 @@ class DefaultPid(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
         """
@@ -10995,7 +10995,7 @@ class DefaultPid(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
         """
@@ -11004,7 +11004,7 @@ class DefaultPid(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
         """
@@ -11013,7 +11013,7 @@ class DefaultPid(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
         """
@@ -11022,7 +11022,7 @@ class DefaultPid(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
         """
@@ -11031,7 +11031,7 @@ class DefaultPid(_Typed):
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
-        """``ctrllimited``: one of: false, true, auto; default "auto".
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
         """
@@ -11040,7 +11040,7 @@ class DefaultPid(_Typed):
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
-        """``forcelimited``: one of: false, true, auto; default "auto".
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
         """
@@ -11049,7 +11049,7 @@ class DefaultPid(_Typed):
 
     @property
     def posrange(self) -> _t.Float64Array | None:
-        """``posrange``: double[2]; no default (unset when absent). Alias - the position-setpoint range.
+        """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
         """
@@ -11058,7 +11058,7 @@ class DefaultPid(_Typed):
 
     @property
     def velrange(self) -> _t.Float64Array | None:
-        """``velrange``: double[2]; no default (unset when absent).
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
         """
@@ -11067,7 +11067,7 @@ class DefaultPid(_Typed):
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
-        """``ffrange``: double[2]; no default (unset when absent).
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
         """
@@ -11076,7 +11076,7 @@ class DefaultPid(_Typed):
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
-        """``forcerange``: double[2]; no default (unset when absent).
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
         """
@@ -11085,7 +11085,7 @@ class DefaultPid(_Typed):
 
     @property
     def inheritrange(self) -> _builtins.float | None:
-        """``inheritrange``: double; no default (unset when absent).
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
         """
@@ -11094,7 +11094,7 @@ class DefaultPid(_Typed):
 
     @property
     def gear(self) -> _t.Float64Array | None:
-        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
         """
@@ -11103,7 +11103,7 @@ class DefaultPid(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
         """
@@ -11112,7 +11112,7 @@ class DefaultPid(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
         """
@@ -11121,7 +11121,7 @@ class DefaultPid(_Typed):
 
     @property
     def cranklength(self) -> _builtins.float | None:
-        """``cranklength``: double; no default (unset when absent).
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
         """
@@ -11130,7 +11130,7 @@ class DefaultPid(_Typed):
 
     @property
     def kp(self) -> _builtins.float | None:
-        """``kp``: double; no default (unset when absent).
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
         """
@@ -11139,7 +11139,7 @@ class DefaultPid(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
@@ -11148,7 +11148,7 @@ class DefaultPid(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
@@ -11157,7 +11157,7 @@ class DefaultPid(_Typed):
 
     @property
     def ki(self) -> _builtins.float | None:
-        """``ki``: double; no default (unset when absent).
+        """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
         """
@@ -11166,7 +11166,7 @@ class DefaultPid(_Typed):
 
     @property
     def imax(self) -> _builtins.float | None:
-        """``imax``: double; no default (unset when absent).
+        """``imax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
         """
@@ -11175,7 +11175,7 @@ class DefaultPid(_Typed):
 
     @property
     def slewmax(self) -> _builtins.float | None:
-        """``slewmax``: double; no default (unset when absent).
+        """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
         """
@@ -11184,7 +11184,7 @@ class DefaultPid(_Typed):
 
     @property
     def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
-        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent).
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
@@ -11234,7 +11234,7 @@ class DefaultPosition(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
         """
@@ -11243,7 +11243,7 @@ class DefaultPosition(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
         """
@@ -11252,7 +11252,7 @@ class DefaultPosition(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
         """
@@ -11324,7 +11324,7 @@ class DefaultPosition(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
         """
@@ -11333,7 +11333,7 @@ class DefaultPosition(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
         """
@@ -11497,7 +11497,7 @@ class DefaultSite(_Typed):
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
-        """``mesh``: reference to namespace ``mesh``; no default (unset when absent).
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
         """
@@ -11718,7 +11718,7 @@ class DefaultTendon(_Typed):
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
-        """``actuatorfrclimited``: one of: false, true, auto; default "auto".
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrclimited
         """
@@ -11727,7 +11727,7 @@ class DefaultTendon(_Typed):
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
-        """``actuatorfrcrange``: double[2]; no default (unset when absent).
+        """``actuatorfrcrange``: double[2]; no default (unset when absent); in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
         """
@@ -11736,7 +11736,7 @@ class DefaultTendon(_Typed):
 
     @property
     def springyield(self) -> _builtins.float | None:
-        """``springyield``: double; default "0".
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springyield
         """
@@ -11745,7 +11745,7 @@ class DefaultTendon(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
         """
@@ -11786,7 +11786,7 @@ class DefaultTexture(_Typed):
 
     @property
     def type(self) -> TextureType | None:
-        """``type``: one of: 2d, cube, skybox; default "cube".
+        """``type``: one of: 2d, cube, skybox; default "cube"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
         """
@@ -11795,7 +11795,7 @@ class DefaultTexture(_Typed):
 
     @property
     def colorspace(self) -> Colorspace | None:
-        """``colorspace``: one of: auto, linear, sRGB; default "auto".
+        """``colorspace``: one of: auto, linear, sRGB; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
         """
@@ -11804,7 +11804,7 @@ class DefaultTexture(_Typed):
 
     @property
     def gridsize(self) -> _t.Int32Array | None:
-        """``gridsize``: int[2]; default "1 1".
+        """``gridsize``: int[2]; default "1 1"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
         """
@@ -11813,7 +11813,7 @@ class DefaultTexture(_Typed):
 
     @property
     def gridlayout(self) -> _builtins.str | None:
-        """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent). Length must equal the gridsize product.
+        """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent); in MuJoCo >= 3.17.0. Length must equal the gridsize product.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
         """
@@ -11822,7 +11822,7 @@ class DefaultTexture(_Typed):
 
     @property
     def builtin(self) -> Builtin | None:
-        """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent).
+        """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
         """
@@ -11831,7 +11831,7 @@ class DefaultTexture(_Typed):
 
     @property
     def rgb1(self) -> _t.Float64Array | None:
-        """``rgb1``: double[3]; default "0.8 0.8 0.8".
+        """``rgb1``: double[3]; default "0.8 0.8 0.8"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
         """
@@ -11840,7 +11840,7 @@ class DefaultTexture(_Typed):
 
     @property
     def rgb2(self) -> _t.Float64Array | None:
-        """``rgb2``: double[3]; default "0.5 0.5 0.5".
+        """``rgb2``: double[3]; default "0.5 0.5 0.5"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
         """
@@ -11849,7 +11849,7 @@ class DefaultTexture(_Typed):
 
     @property
     def mark(self) -> Mark | None:
-        """``mark``: one of: none, edge, cross, random; no default (unset when absent).
+        """``mark``: one of: none, edge, cross, random; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
         """
@@ -11858,7 +11858,7 @@ class DefaultTexture(_Typed):
 
     @property
     def markrgb(self) -> _t.Float64Array | None:
-        """``markrgb``: double[3]; no default (unset when absent).
+        """``markrgb``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
         """
@@ -11867,7 +11867,7 @@ class DefaultTexture(_Typed):
 
     @property
     def random(self) -> _builtins.float | None:
-        """``random``: double; default "0.01".
+        """``random``: double; default "0.01"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
         """
@@ -11876,7 +11876,7 @@ class DefaultTexture(_Typed):
 
     @property
     def width(self) -> _builtins.int | None:
-        """``width``: int; no default (unset when absent).
+        """``width``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
         """
@@ -11885,7 +11885,7 @@ class DefaultTexture(_Typed):
 
     @property
     def height(self) -> _builtins.int | None:
-        """``height``: int; no default (unset when absent).
+        """``height``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
         """
@@ -11894,7 +11894,7 @@ class DefaultTexture(_Typed):
 
     @property
     def hflip(self) -> _builtins.bool | None:
-        """``hflip``: bool; no default (unset when absent).
+        """``hflip``: bool; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
         """
@@ -11903,7 +11903,7 @@ class DefaultTexture(_Typed):
 
     @property
     def vflip(self) -> _builtins.bool | None:
-        """``vflip``: bool; no default (unset when absent).
+        """``vflip``: bool; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
         """
@@ -11912,7 +11912,7 @@ class DefaultTexture(_Typed):
 
     @property
     def nchannel(self) -> _builtins.int | None:
-        """``nchannel``: int; default "3".
+        """``nchannel``: int; default "3"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
         """
@@ -11921,7 +11921,7 @@ class DefaultTexture(_Typed):
 
     @property
     def embed(self) -> FalseTrueAuto | None:
-        """``embed``: one of: false, true, auto; default "auto".
+        """``embed``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
         """
@@ -11989,7 +11989,7 @@ class DefaultVelocity(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
         """
@@ -11998,7 +11998,7 @@ class DefaultVelocity(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
         """
@@ -12007,7 +12007,7 @@ class DefaultVelocity(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
         """
@@ -12070,7 +12070,7 @@ class DefaultVelocity(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
         """
@@ -12079,7 +12079,7 @@ class DefaultVelocity(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
         """
@@ -12174,9 +12174,9 @@ class Deformable(_Typed):
             texcoord: float[] (any length); no default (unset when absent).
             elemtexcoord: int[] (any length); no default (unset when absent).
             node: string; no default (unset when absent). Space-separated body names.
-            nodecoord: double[] (any length); no default (unset when absent).
-            cellcount: int[3]; default "1 1 1".
-            dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
+            nodecoord: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
+            cellcount: int[3]; default "1 1 1"; in MuJoCo >= 3.17.0.
+            dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -12249,7 +12249,7 @@ class Distance(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
         """
@@ -12258,7 +12258,7 @@ class Distance(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
         """
@@ -12267,7 +12267,7 @@ class Distance(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
         """
@@ -12276,7 +12276,7 @@ class Distance(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
         """
@@ -12389,7 +12389,7 @@ class EKinetic(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
         """
@@ -12398,7 +12398,7 @@ class EKinetic(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
         """
@@ -12407,7 +12407,7 @@ class EKinetic(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
         """
@@ -12416,7 +12416,7 @@ class EKinetic(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
         """
@@ -12487,7 +12487,7 @@ class EPotential(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
         """
@@ -12496,7 +12496,7 @@ class EPotential(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
         """
@@ -12505,7 +12505,7 @@ class EPotential(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
         """
@@ -12514,7 +12514,7 @@ class EPotential(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
         """
@@ -12621,7 +12621,7 @@ class Elasticity(_Typed):
 
     @property
     def shear(self) -> _builtins.float | None:
-        """``shear``: double; default "0".
+        """``shear``: double; default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-shear
         """
@@ -12630,7 +12630,7 @@ class Elasticity(_Typed):
 
     @property
     def yield_(self) -> _t.Float64Array | None:
-        """``yield``: double[1..2] (1 to 2 values); default "0".
+        """``yield``: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-yield
         """
@@ -12639,7 +12639,7 @@ class Elasticity(_Typed):
 
     @property
     def section(self) -> Section | None:
-        """``section``: one of: circle, box; default "circle".
+        """``section``: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-section
         """
@@ -12648,7 +12648,7 @@ class Elasticity(_Typed):
 
     @property
     def sectionsize(self) -> _t.Float64Array | None:
-        """``sectionsize``: double[2]; default "0 0".
+        """``sectionsize``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-sectionsize
         """
@@ -12869,13 +12869,13 @@ class Equality(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain
 
         Args:
-            name: name declared in namespace ``equality``; no default (unset when absent).
-            class_: reference to namespace ``default``; no default (unset when absent).
-            active: bool; default "true".
-            solref: double[1..2] (1 to 2 values); default "0.02 1".
-            solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            flex: reference to namespace ``flex``; required.
-            cell: double[3]; no default (unset when absent).
+            name: name declared in namespace ``equality``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            active: bool; default "true"; in MuJoCo >= 3.17.0.
+            solref: double[1..2] (1 to 2 values); default "0.02 1"; in MuJoCo >= 3.17.0.
+            solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"; in MuJoCo >= 3.17.0.
+            flex: reference to namespace ``flex``; required; in MuJoCo >= 3.17.0.
+            cell: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -13528,7 +13528,7 @@ class Fixed(_Typed):
 
     @property
     def springyield(self) -> _builtins.float | None:
-        """``springyield``: double; default "0".
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springyield
         """
@@ -13860,7 +13860,7 @@ class Flag(_Typed):
 
     @property
     def sleep(self) -> Enable | None:
-        """``sleep``: one of: disable, enable; default "disable".
+        """``sleep``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sleep
         """
@@ -13869,7 +13869,7 @@ class Flag(_Typed):
 
     @property
     def diagexact(self) -> Enable | None:
-        """``diagexact``: one of: disable, enable; default "disable".
+        """``diagexact``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-diagexact
         """
@@ -13878,7 +13878,7 @@ class Flag(_Typed):
 
     @property
     def ipc(self) -> Enable | None:
-        """``ipc``: one of: disable, enable; default "disable".
+        """``ipc``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-ipc
         """
@@ -13887,7 +13887,7 @@ class Flag(_Typed):
 
     @property
     def speculative(self) -> Enable | None:
-        """``speculative``: one of: disable, enable; default "disable".
+        """``speculative``: one of: disable, enable; default "disable"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-speculative
         """
@@ -14026,7 +14026,7 @@ class Flex(_Typed):
 
     @property
     def nodecoord(self) -> _t.Float64Array | None:
-        """``nodecoord``: double[] (any length); no default (unset when absent).
+        """``nodecoord``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-nodecoord
         """
@@ -14035,7 +14035,7 @@ class Flex(_Typed):
 
     @property
     def cellcount(self) -> _t.Int32Array | None:
-        """``cellcount``: int[3]; default "1 1 1".
+        """``cellcount``: int[3]; default "1 1 1"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-cellcount
         """
@@ -14044,7 +14044,7 @@ class Flex(_Typed):
 
     @property
     def dof(self) -> FDof | None:
-        """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
+        """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dof
         """
@@ -14141,10 +14141,10 @@ class Flex(_Typed):
             damping: double; no default (unset when absent).
             thickness: double; default "-1".
             elastic2d: one of: none, bend, stretch, both; no default (unset when absent).
-            shear: double; default "0".
-            yield_: double[1..2] (1 to 2 values); default "0".
-            section: one of: circle, box; default "circle".
-            sectionsize: double[2]; default "0 0".
+            shear: double; default "0"; in MuJoCo >= 4.0.0.
+            yield_: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0.
+            section: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0.
+            sectionsize: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
         """
 
     @overload
@@ -14305,7 +14305,7 @@ class Flexcomp(_Typed):
 
     @property
     def cellcount(self) -> _t.Int32Array | None:
-        """``cellcount``: int[3]; no default (unset when absent).
+        """``cellcount``: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-cellcount
         """
@@ -14494,7 +14494,7 @@ class Flexcomp(_Typed):
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
-        """``mesh``: reference to namespace ``mesh``; no default (unset when absent).
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mesh
         """
@@ -14555,10 +14555,10 @@ class Flexcomp(_Typed):
             damping: double; no default (unset when absent).
             thickness: double; default "-1".
             elastic2d: one of: none, bend, stretch, both; no default (unset when absent).
-            shear: double; default "0".
-            yield_: double[1..2] (1 to 2 values); default "0".
-            section: one of: circle, box; default "circle".
-            sectionsize: double[2]; default "0 0".
+            shear: double; default "0"; in MuJoCo >= 4.0.0.
+            yield_: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0.
+            section: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0.
+            sectionsize: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -14942,7 +14942,7 @@ class Flexstrain(_Typed):
 
     @property
     def name(self) -> _builtins.str | None:
-        """``name``: name declared in namespace ``equality``; no default (unset when absent).
+        """``name``: name declared in namespace ``equality``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-name
         """
@@ -14951,7 +14951,7 @@ class Flexstrain(_Typed):
 
     @property
     def class_(self) -> _builtins.str | Default | None:
-        """``class``: reference to namespace ``default``; no default (unset when absent).
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-class
         """
@@ -14960,7 +14960,7 @@ class Flexstrain(_Typed):
 
     @property
     def active(self) -> _builtins.bool | None:
-        """``active``: bool; default "true".
+        """``active``: bool; default "true"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-active
         """
@@ -14969,7 +14969,7 @@ class Flexstrain(_Typed):
 
     @property
     def solref(self) -> _t.Float64Array | None:
-        """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solref
         """
@@ -14978,7 +14978,7 @@ class Flexstrain(_Typed):
 
     @property
     def solimp(self) -> _t.Float64Array | None:
-        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solimp
         """
@@ -14987,7 +14987,7 @@ class Flexstrain(_Typed):
 
     @property
     def flex(self) -> _builtins.str | AnyFlex | None:
-        """``flex``: reference to namespace ``flex``; required.
+        """``flex``: reference to namespace ``flex``; required; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-flex
         """
@@ -14996,7 +14996,7 @@ class Flexstrain(_Typed):
 
     @property
     def cell(self) -> _t.Float64Array | None:
-        """``cell``: double[3]; no default (unset when absent).
+        """``cell``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-cell
         """
@@ -15050,7 +15050,7 @@ class Force(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
         """
@@ -15059,7 +15059,7 @@ class Force(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
         """
@@ -15068,7 +15068,7 @@ class Force(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
         """
@@ -15077,7 +15077,7 @@ class Force(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
         """
@@ -15223,7 +15223,7 @@ class Frame(_Typed, _Attachable):
 
     @property
     def scale(self) -> _t.Float64Array | None:
-        """``scale``: double[1..3] (1 to 3 values); default "1".
+        """``scale``: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scale
         """
@@ -15232,7 +15232,7 @@ class Frame(_Typed, _Attachable):
 
     @property
     def scaling(self) -> Scaling | None:
-        """``scaling``: one of: similar, geometry; default "similar".
+        """``scaling``: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scaling
         """
@@ -15241,7 +15241,7 @@ class Frame(_Typed, _Attachable):
 
     @property
     def massscale(self) -> _builtins.float | None:
-        """``massscale``: double; default "0".
+        """``massscale``: double; default "0"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-massscale
         """
@@ -15298,9 +15298,9 @@ class Frame(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mocap: bool; no default (unset when absent).
             gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent).
-            simple: one of: false, auto; default "auto".
-            fuse: one of: false, auto; default "auto".
+            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
+            fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -15338,9 +15338,9 @@ class Frame(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            scale: double[1..3] (1 to 3 values); default "1".
-            scaling: one of: similar, geometry; default "similar".
-            massscale: double; default "0".
+            scale: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0.
+            scaling: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0.
+            massscale: double; default "0"; in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
         """
 
@@ -15468,7 +15468,7 @@ class Frame(_Typed, _Attachable):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             frictionloss: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
-            springyield: double; default "0".
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -15560,8 +15560,8 @@ class Frame(_Typed, _Attachable):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             margin: double; no default (unset when absent).
             gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             fromto: double[6]; no default (unset when absent).
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
@@ -15576,7 +15576,7 @@ class Frame(_Typed, _Attachable):
             fluidshape: one of: none, ellipsoid; no default (unset when absent).
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
-            castshadow: bool; default "true".
+            castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -15598,7 +15598,7 @@ class Frame(_Typed, _Attachable):
         Args:
             model: reference to namespace ``model``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
-            frame: reference to namespace ``frame``; no default (unset when absent).
+            frame: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0.
             prefix: string; required.
         """
 
@@ -15642,7 +15642,7 @@ class Frame(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
             fromto: double[6]; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
@@ -15686,11 +15686,11 @@ class Frame(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent).
+            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -15755,7 +15755,7 @@ class Frame(_Typed, _Attachable):
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
-            softness: float; default "0.2".
+            softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
             ambient: float[3]; no default (unset when absent).
             diffuse: float[3]; default "0.7 0.7 0.7".
@@ -15830,7 +15830,7 @@ class Frame(_Typed, _Attachable):
             dim: int; no default (unset when absent).
             dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
             count: int[3]; no default (unset when absent).
-            cellcount: int[3]; no default (unset when absent).
+            cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             spacing: double[3]; no default (unset when absent).
             radius: double; no default (unset when absent).
             rigid: bool; no default (unset when absent).
@@ -15851,7 +15851,7 @@ class Frame(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             origin: double[3]; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @overload
@@ -15978,7 +15978,7 @@ class Frameangacc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
         """
@@ -15987,7 +15987,7 @@ class Frameangacc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
         """
@@ -15996,7 +15996,7 @@ class Frameangacc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
         """
@@ -16005,7 +16005,7 @@ class Frameangacc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
         """
@@ -16100,7 +16100,7 @@ class Frameangvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
         """
@@ -16109,7 +16109,7 @@ class Frameangvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
         """
@@ -16118,7 +16118,7 @@ class Frameangvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
         """
@@ -16127,7 +16127,7 @@ class Frameangvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
         """
@@ -16240,7 +16240,7 @@ class Framelinacc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
         """
@@ -16249,7 +16249,7 @@ class Framelinacc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
         """
@@ -16258,7 +16258,7 @@ class Framelinacc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
         """
@@ -16267,7 +16267,7 @@ class Framelinacc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
         """
@@ -16362,7 +16362,7 @@ class Framelinvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
         """
@@ -16371,7 +16371,7 @@ class Framelinvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
         """
@@ -16380,7 +16380,7 @@ class Framelinvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
         """
@@ -16389,7 +16389,7 @@ class Framelinvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
         """
@@ -16502,7 +16502,7 @@ class Framepos(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
         """
@@ -16511,7 +16511,7 @@ class Framepos(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
         """
@@ -16520,7 +16520,7 @@ class Framepos(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
         """
@@ -16529,7 +16529,7 @@ class Framepos(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
         """
@@ -16642,7 +16642,7 @@ class Framequat(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
         """
@@ -16651,7 +16651,7 @@ class Framequat(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
         """
@@ -16660,7 +16660,7 @@ class Framequat(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
         """
@@ -16669,7 +16669,7 @@ class Framequat(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
         """
@@ -16782,7 +16782,7 @@ class Framexaxis(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
         """
@@ -16791,7 +16791,7 @@ class Framexaxis(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
         """
@@ -16800,7 +16800,7 @@ class Framexaxis(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
         """
@@ -16809,7 +16809,7 @@ class Framexaxis(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
         """
@@ -16922,7 +16922,7 @@ class Frameyaxis(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
         """
@@ -16931,7 +16931,7 @@ class Frameyaxis(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
         """
@@ -16940,7 +16940,7 @@ class Frameyaxis(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
         """
@@ -16949,7 +16949,7 @@ class Frameyaxis(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
         """
@@ -17062,7 +17062,7 @@ class Framezaxis(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
         """
@@ -17071,7 +17071,7 @@ class Framezaxis(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
         """
@@ -17080,7 +17080,7 @@ class Framezaxis(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
         """
@@ -17089,7 +17089,7 @@ class Framezaxis(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
         """
@@ -17249,7 +17249,7 @@ class Fromto(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
         """
@@ -17258,7 +17258,7 @@ class Fromto(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
         """
@@ -17267,7 +17267,7 @@ class Fromto(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
         """
@@ -17276,7 +17276,7 @@ class Fromto(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
         """
@@ -17407,7 +17407,7 @@ class General(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
         """
@@ -17416,7 +17416,7 @@ class General(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
         """
@@ -17425,7 +17425,7 @@ class General(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
         """
@@ -17515,7 +17515,7 @@ class General(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
         """
@@ -17524,7 +17524,7 @@ class General(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
         """
@@ -17623,7 +17623,7 @@ class General(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent). So3 chart keyword, or servo token subset.
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
@@ -17632,7 +17632,7 @@ class General(_Typed):
 
     @property
     def velrange(self) -> _t.Float64Array | None:
-        """``velrange``: double[2]; no default (unset when absent).
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
         """
@@ -17641,7 +17641,7 @@ class General(_Typed):
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
-        """``ffrange``: double[2]; no default (unset when absent).
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
         """
@@ -17650,7 +17650,7 @@ class General(_Typed):
 
     @property
     def inheritrange(self) -> _builtins.float | None:
-        """``inheritrange``: double; no default (unset when absent).
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
         """
@@ -17965,7 +17965,7 @@ class Geom(_Typed):
 
     @property
     def surfacevel(self) -> _t.Float64Array | None:
-        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent).
+        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
         """
@@ -17974,7 +17974,7 @@ class Geom(_Typed):
 
     @property
     def adhesion(self) -> _builtins.float | None:
-        """``adhesion``: double; no default (unset when absent).
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
         """
@@ -18109,7 +18109,7 @@ class Geom(_Typed):
 
     @property
     def castshadow(self) -> _builtins.bool | None:
-        """``castshadow``: bool; default "true".
+        """``castshadow``: bool; default "true"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
         """
@@ -18360,7 +18360,7 @@ class Gyro(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
         """
@@ -18369,7 +18369,7 @@ class Gyro(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
         """
@@ -18378,7 +18378,7 @@ class Gyro(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
         """
@@ -18387,7 +18387,7 @@ class Gyro(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
         """
@@ -18710,7 +18710,7 @@ class Insidesite(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
         """
@@ -18719,7 +18719,7 @@ class Insidesite(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
         """
@@ -18728,7 +18728,7 @@ class Insidesite(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
         """
@@ -18737,7 +18737,7 @@ class Insidesite(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
         """
@@ -18800,7 +18800,7 @@ class Insidesite(_Typed):
 
     @property
     def enclosed(self) -> _builtins.bool | None:
-        """``enclosed``: bool; default "false".
+        """``enclosed``: bool; default "false"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-enclosed
         """
@@ -18926,7 +18926,7 @@ class Intvelocity(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
         """
@@ -18935,7 +18935,7 @@ class Intvelocity(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
         """
@@ -18944,7 +18944,7 @@ class Intvelocity(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
         """
@@ -18989,7 +18989,7 @@ class Intvelocity(_Typed):
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
-        """``actlimited``: one of: false, true, auto; default "auto".
+        """``actlimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
         """
@@ -19043,7 +19043,7 @@ class Intvelocity(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
         """
@@ -19052,7 +19052,7 @@ class Intvelocity(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
         """
@@ -19427,7 +19427,7 @@ class Joint(_Typed):
 
     @property
     def springyield(self) -> _builtins.float | None:
-        """``springyield``: double; default "0".
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
         """
@@ -19493,7 +19493,7 @@ class Jointactuatorfrc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
         """
@@ -19502,7 +19502,7 @@ class Jointactuatorfrc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
         """
@@ -19511,7 +19511,7 @@ class Jointactuatorfrc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
         """
@@ -19520,7 +19520,7 @@ class Jointactuatorfrc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
         """
@@ -19603,7 +19603,7 @@ class Jointlimitfrc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
         """
@@ -19612,7 +19612,7 @@ class Jointlimitfrc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
         """
@@ -19621,7 +19621,7 @@ class Jointlimitfrc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
         """
@@ -19630,7 +19630,7 @@ class Jointlimitfrc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
         """
@@ -19713,7 +19713,7 @@ class Jointlimitpos(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
         """
@@ -19722,7 +19722,7 @@ class Jointlimitpos(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
         """
@@ -19731,7 +19731,7 @@ class Jointlimitpos(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
         """
@@ -19740,7 +19740,7 @@ class Jointlimitpos(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
         """
@@ -19823,7 +19823,7 @@ class Jointlimitvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
         """
@@ -19832,7 +19832,7 @@ class Jointlimitvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
         """
@@ -19841,7 +19841,7 @@ class Jointlimitvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
         """
@@ -19850,7 +19850,7 @@ class Jointlimitvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
         """
@@ -19933,7 +19933,7 @@ class Jointpos(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
         """
@@ -19942,7 +19942,7 @@ class Jointpos(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
         """
@@ -19951,7 +19951,7 @@ class Jointpos(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
         """
@@ -19960,7 +19960,7 @@ class Jointpos(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
         """
@@ -20043,7 +20043,7 @@ class Jointvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
         """
@@ -20052,7 +20052,7 @@ class Jointvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
         """
@@ -20061,7 +20061,7 @@ class Jointvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
         """
@@ -20070,7 +20070,7 @@ class Jointvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
         """
@@ -20216,7 +20216,7 @@ class Key(_Typed):
 
     @property
     def plastic(self) -> _t.Float64Array | None:
-        """``plastic``: double[] (any length); no default (unset when absent).
+        """``plastic``: double[] (any length); no default (unset when absent); in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-plastic
         """
@@ -20272,7 +20272,7 @@ class Keyframe(_Typed):
             mpos: double[] (any length); no default (unset when absent).
             mquat: double[] (any length); no default (unset when absent).
             ctrl: double[] (any length); no default (unset when absent).
-            plastic: double[] (any length); no default (unset when absent).
+            plastic: double[] (any length); no default (unset when absent); in MuJoCo >= 4.0.0.
         """
 
     @overload
@@ -20566,7 +20566,7 @@ class Light(_Typed):
 
     @property
     def softness(self) -> _builtins.float | None:
-        """``softness``: float; default "0.2".
+        """``softness``: float; default "0.2"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
         """
@@ -20704,7 +20704,7 @@ class Magnetometer(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
         """
@@ -20713,7 +20713,7 @@ class Magnetometer(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
         """
@@ -20722,7 +20722,7 @@ class Magnetometer(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
         """
@@ -20731,7 +20731,7 @@ class Magnetometer(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
         """
@@ -21420,7 +21420,7 @@ class Motor(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
         """
@@ -21429,7 +21429,7 @@ class Motor(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
         """
@@ -21438,7 +21438,7 @@ class Motor(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
         """
@@ -21510,7 +21510,7 @@ class Motor(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
         """
@@ -21519,7 +21519,7 @@ class Motor(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
         """
@@ -21678,7 +21678,7 @@ class Muscle(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
         """
@@ -21687,7 +21687,7 @@ class Muscle(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
         """
@@ -21696,7 +21696,7 @@ class Muscle(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
         """
@@ -21768,7 +21768,7 @@ class Muscle(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
         """
@@ -21777,7 +21777,7 @@ class Muscle(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
         """
@@ -21990,7 +21990,7 @@ class Normal(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
         """
@@ -21999,7 +21999,7 @@ class Normal(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
         """
@@ -22008,7 +22008,7 @@ class Normal(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
         """
@@ -22017,7 +22017,7 @@ class Normal(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
         """
@@ -22222,7 +22222,7 @@ class Option(_Typed):
 
     @property
     def sleep_tolerance(self) -> _builtins.float | None:
-        """``sleep_tolerance``: double; default "0.001".
+        """``sleep_tolerance``: double; default "0.001"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sleep_tolerance
         """
@@ -22475,10 +22475,10 @@ class Option(_Typed):
             energy: one of: disable, enable; default "disable".
             fwdinv: one of: disable, enable; default "disable".
             invdiscrete: one of: disable, enable; default "disable".
-            sleep: one of: disable, enable; default "disable".
-            diagexact: one of: disable, enable; default "disable".
-            ipc: one of: disable, enable; default "disable".
-            speculative: one of: disable, enable; default "disable".
+            sleep: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
+            diagexact: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
+            ipc: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
+            speculative: one of: disable, enable; default "disable"; in MuJoCo >= 4.0.0.
         """
 
     @overload
@@ -22536,7 +22536,7 @@ class Orientation(_Typed):
 
     @property
     def name(self) -> _builtins.str | None:
-        """``name``: name declared in namespace ``actuator``; no default (unset when absent).
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-name
         """
@@ -22545,7 +22545,7 @@ class Orientation(_Typed):
 
     @property
     def class_(self) -> _builtins.str | Default | None:
-        """``class``: reference to namespace ``default``; no default (unset when absent).
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-class
         """
@@ -22554,7 +22554,7 @@ class Orientation(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
         """
@@ -22563,7 +22563,7 @@ class Orientation(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
         """
@@ -22572,7 +22572,7 @@ class Orientation(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
         """
@@ -22581,7 +22581,7 @@ class Orientation(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
         """
@@ -22590,7 +22590,7 @@ class Orientation(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
         """
@@ -22599,7 +22599,7 @@ class Orientation(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
         """
@@ -22608,7 +22608,7 @@ class Orientation(_Typed):
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
-        """``forcelimited``: one of: false, true, auto; default "auto".
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
         """
@@ -22617,7 +22617,7 @@ class Orientation(_Typed):
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
-        """``forcerange``: double[2]; no default (unset when absent).
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
         """
@@ -22626,7 +22626,7 @@ class Orientation(_Typed):
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
-        """``joint``: reference to namespace ``joint``; no default (unset when absent).
+        """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-joint
         """
@@ -22635,7 +22635,7 @@ class Orientation(_Typed):
 
     @property
     def site(self) -> _builtins.str | Site | None:
-        """``site``: reference to namespace ``site``; no default (unset when absent).
+        """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-site
         """
@@ -22644,7 +22644,7 @@ class Orientation(_Typed):
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
-        """``refsite``: reference to namespace ``site``; no default (unset when absent).
+        """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-refsite
         """
@@ -22653,7 +22653,7 @@ class Orientation(_Typed):
 
     @property
     def kp(self) -> _builtins.float | None:
-        """``kp``: double; no default (unset when absent).
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
         """
@@ -22662,7 +22662,7 @@ class Orientation(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
         """
@@ -22671,7 +22671,7 @@ class Orientation(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
         """
@@ -22680,7 +22680,7 @@ class Orientation(_Typed):
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
-        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent).
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
@@ -22836,7 +22836,7 @@ class Pair(_Typed):
 
     @property
     def adhesion(self) -> _builtins.float | None:
-        """``adhesion``: double; no default (unset when absent).
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
         """
@@ -22884,7 +22884,7 @@ class Pid(_Typed):
 
     @property
     def name(self) -> _builtins.str | None:
-        """``name``: name declared in namespace ``actuator``; no default (unset when absent).
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-name
         """
@@ -22893,7 +22893,7 @@ class Pid(_Typed):
 
     @property
     def class_(self) -> _builtins.str | Default | None:
-        """``class``: reference to namespace ``default``; no default (unset when absent).
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-class
         """
@@ -22902,7 +22902,7 @@ class Pid(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
         """
@@ -22911,7 +22911,7 @@ class Pid(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
         """
@@ -22920,7 +22920,7 @@ class Pid(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
         """
@@ -22929,7 +22929,7 @@ class Pid(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
         """
@@ -22938,7 +22938,7 @@ class Pid(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
         """
@@ -22947,7 +22947,7 @@ class Pid(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
         """
@@ -22956,7 +22956,7 @@ class Pid(_Typed):
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
-        """``ctrllimited``: one of: false, true, auto; default "auto".
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
         """
@@ -22965,7 +22965,7 @@ class Pid(_Typed):
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
-        """``forcelimited``: one of: false, true, auto; default "auto".
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
         """
@@ -22974,7 +22974,7 @@ class Pid(_Typed):
 
     @property
     def posrange(self) -> _t.Float64Array | None:
-        """``posrange``: double[2]; no default (unset when absent). Alias - the position-setpoint range.
+        """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
         """
@@ -22983,7 +22983,7 @@ class Pid(_Typed):
 
     @property
     def velrange(self) -> _t.Float64Array | None:
-        """``velrange``: double[2]; no default (unset when absent).
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
         """
@@ -22992,7 +22992,7 @@ class Pid(_Typed):
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
-        """``ffrange``: double[2]; no default (unset when absent).
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
         """
@@ -23001,7 +23001,7 @@ class Pid(_Typed):
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
-        """``forcerange``: double[2]; no default (unset when absent).
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
         """
@@ -23010,7 +23010,7 @@ class Pid(_Typed):
 
     @property
     def inheritrange(self) -> _builtins.float | None:
-        """``inheritrange``: double; no default (unset when absent).
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
         """
@@ -23019,7 +23019,7 @@ class Pid(_Typed):
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
-        """``lengthrange``: double[2]; no default (unset when absent).
+        """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
         """
@@ -23028,7 +23028,7 @@ class Pid(_Typed):
 
     @property
     def gear(self) -> _t.Float64Array | None:
-        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
         """
@@ -23037,7 +23037,7 @@ class Pid(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
         """
@@ -23046,7 +23046,7 @@ class Pid(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
         """
@@ -23055,7 +23055,7 @@ class Pid(_Typed):
 
     @property
     def cranklength(self) -> _builtins.float | None:
-        """``cranklength``: double; no default (unset when absent).
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
         """
@@ -23064,7 +23064,7 @@ class Pid(_Typed):
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
-        """``joint``: reference to namespace ``joint``; no default (unset when absent).
+        """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-joint
         """
@@ -23073,7 +23073,7 @@ class Pid(_Typed):
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
-        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-jointinparent
         """
@@ -23082,7 +23082,7 @@ class Pid(_Typed):
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
-        """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-tendon
         """
@@ -23091,7 +23091,7 @@ class Pid(_Typed):
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
-        """``slidersite``: reference to namespace ``site``; no default (unset when absent).
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slidersite
         """
@@ -23100,7 +23100,7 @@ class Pid(_Typed):
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
-        """``cranksite``: reference to namespace ``site``; no default (unset when absent).
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranksite
         """
@@ -23109,7 +23109,7 @@ class Pid(_Typed):
 
     @property
     def site(self) -> _builtins.str | Site | None:
-        """``site``: reference to namespace ``site``; no default (unset when absent).
+        """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-site
         """
@@ -23118,7 +23118,7 @@ class Pid(_Typed):
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
-        """``refsite``: reference to namespace ``site``; no default (unset when absent).
+        """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-refsite
         """
@@ -23127,7 +23127,7 @@ class Pid(_Typed):
 
     @property
     def kp(self) -> _builtins.float | None:
-        """``kp``: double; no default (unset when absent).
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
         """
@@ -23136,7 +23136,7 @@ class Pid(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
@@ -23145,7 +23145,7 @@ class Pid(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
@@ -23154,7 +23154,7 @@ class Pid(_Typed):
 
     @property
     def ki(self) -> _builtins.float | None:
-        """``ki``: double; no default (unset when absent).
+        """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
         """
@@ -23163,7 +23163,7 @@ class Pid(_Typed):
 
     @property
     def imax(self) -> _builtins.float | None:
-        """``imax``: double; no default (unset when absent).
+        """``imax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
         """
@@ -23172,7 +23172,7 @@ class Pid(_Typed):
 
     @property
     def slewmax(self) -> _builtins.float | None:
-        """``slewmax``: double; no default (unset when absent).
+        """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
         """
@@ -23181,7 +23181,7 @@ class Pid(_Typed):
 
     @property
     def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
-        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent).
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
@@ -23385,7 +23385,7 @@ class Position(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
         """
@@ -23394,7 +23394,7 @@ class Position(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
         """
@@ -23403,7 +23403,7 @@ class Position(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
         """
@@ -23484,7 +23484,7 @@ class Position(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
         """
@@ -23493,7 +23493,7 @@ class Position(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
         """
@@ -23750,7 +23750,7 @@ class Rangefinder(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
         """
@@ -23759,7 +23759,7 @@ class Rangefinder(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
         """
@@ -23768,7 +23768,7 @@ class Rangefinder(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
         """
@@ -23777,7 +23777,7 @@ class Rangefinder(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
         """
@@ -23822,7 +23822,7 @@ class Rangefinder(_Typed):
 
     @property
     def camera(self) -> _builtins.str | Camera | None:
-        """``camera``: reference to namespace ``camera``; no default (unset when absent).
+        """``camera``: reference to namespace ``camera``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-camera
         """
@@ -23831,7 +23831,7 @@ class Rangefinder(_Typed):
 
     @property
     def data(self) -> tuple[RayData, ...] | None:
-        """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent).
+        """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
         """
@@ -23966,9 +23966,9 @@ class Replicate(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mocap: bool; no default (unset when absent).
             gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent).
-            simple: one of: false, auto; default "auto".
-            fuse: one of: false, auto; default "auto".
+            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
+            fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -24006,9 +24006,9 @@ class Replicate(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            scale: double[1..3] (1 to 3 values); default "1".
-            scaling: one of: similar, geometry; default "similar".
-            massscale: double; default "0".
+            scale: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0.
+            scaling: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0.
+            massscale: double; default "0"; in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
         """
 
@@ -24136,7 +24136,7 @@ class Replicate(_Typed, _Attachable):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             frictionloss: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
-            springyield: double; default "0".
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -24208,8 +24208,8 @@ class Replicate(_Typed, _Attachable):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             margin: double; no default (unset when absent).
             gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             fromto: double[6]; no default (unset when absent).
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
@@ -24224,7 +24224,7 @@ class Replicate(_Typed, _Attachable):
             fluidshape: one of: none, ellipsoid; no default (unset when absent).
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
-            castshadow: bool; default "true".
+            castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -24246,7 +24246,7 @@ class Replicate(_Typed, _Attachable):
         Args:
             model: reference to namespace ``model``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
-            frame: reference to namespace ``frame``; no default (unset when absent).
+            frame: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0.
             prefix: string; required.
         """
 
@@ -24290,7 +24290,7 @@ class Replicate(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
             fromto: double[6]; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
@@ -24334,11 +24334,11 @@ class Replicate(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent).
+            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -24403,7 +24403,7 @@ class Replicate(_Typed, _Attachable):
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
-            softness: float; default "0.2".
+            softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
             ambient: float[3]; no default (unset when absent).
             diffuse: float[3]; default "0.7 0.7 0.7".
@@ -24953,10 +24953,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -24985,10 +24985,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25017,10 +25017,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25049,10 +25049,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25081,10 +25081,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25113,10 +25113,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25145,10 +25145,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25178,10 +25178,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25213,16 +25213,16 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
-            camera: reference to namespace ``camera``; no default (unset when absent).
-            data: any of: dist, dir, origin, point, normal, depth; no default (unset when absent).
+            camera: reference to namespace ``camera``; no default (unset when absent); in MuJoCo >= 3.17.0.
+            data: any of: dist, dir, origin, point, normal, depth; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -25247,10 +25247,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25279,10 +25279,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25311,10 +25311,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25343,10 +25343,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25375,10 +25375,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25407,10 +25407,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25439,10 +25439,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25471,10 +25471,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25503,10 +25503,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25535,10 +25535,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25567,10 +25567,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25599,10 +25599,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25631,10 +25631,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25663,10 +25663,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25695,10 +25695,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25727,10 +25727,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25759,10 +25759,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25794,10 +25794,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25832,10 +25832,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25870,10 +25870,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25908,10 +25908,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25946,10 +25946,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -25984,10 +25984,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26022,10 +26022,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26058,10 +26058,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26092,10 +26092,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26125,10 +26125,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26157,10 +26157,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26189,10 +26189,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26224,17 +26224,17 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
-            enclosed: bool; default "false".
+            enclosed: bool; default "false"; in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -26262,10 +26262,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26300,10 +26300,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26338,10 +26338,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26382,13 +26382,13 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
-            user: double[] (any length); no default (unset when absent).
+            noise: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             geom1: reference to namespace ``geom``; no default (unset when absent).
             geom2: reference to namespace ``geom``; no default (unset when absent).
             body1: reference to namespace ``body``; no default (unset when absent).
@@ -26422,10 +26422,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26452,10 +26452,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26482,10 +26482,10 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -26515,11 +26515,11 @@ class Sensor(_Typed):
             name: name declared in namespace ``sensor``; no default (unset when absent).
             geom: reference to namespace ``geom``; required.
             mesh: reference to namespace ``mesh``; required.
-            nsample: int; no default (unset when absent).
-            interp: one of: zoh, linear, cubic; no default (unset when absent).
-            delay: double; no default (unset when absent).
-            interval: double[1..2] (1 to 2 values); no default (unset when absent).
-            cutoff: double; no default (unset when absent).
+            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            cutoff: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -26907,7 +26907,7 @@ class SensorContact(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
         """
@@ -26916,7 +26916,7 @@ class SensorContact(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
         """
@@ -26925,7 +26925,7 @@ class SensorContact(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
         """
@@ -26934,7 +26934,7 @@ class SensorContact(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
         """
@@ -26952,7 +26952,7 @@ class SensorContact(_Typed):
 
     @property
     def noise(self) -> _builtins.float | None:
-        """``noise``: double; no default (unset when absent).
+        """``noise``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
         """
@@ -26961,7 +26961,7 @@ class SensorContact(_Typed):
 
     @property
     def user(self) -> _t.Float64Array | None:
-        """``user``: double[] (any length); no default (unset when absent).
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-user
         """
@@ -27337,7 +27337,7 @@ class Site(_Typed, _Attachable):
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
-        """``mesh``: reference to namespace ``mesh``; no default (unset when absent).
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
         """
@@ -27914,7 +27914,7 @@ class Spatial(_Typed):
 
     @property
     def springyield(self) -> _builtins.float | None:
-        """``springyield``: double; default "0".
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springyield
         """
@@ -28173,7 +28173,7 @@ class Subtreeangmom(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
         """
@@ -28182,7 +28182,7 @@ class Subtreeangmom(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
         """
@@ -28191,7 +28191,7 @@ class Subtreeangmom(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
         """
@@ -28200,7 +28200,7 @@ class Subtreeangmom(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
         """
@@ -28283,7 +28283,7 @@ class Subtreecom(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
         """
@@ -28292,7 +28292,7 @@ class Subtreecom(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
         """
@@ -28301,7 +28301,7 @@ class Subtreecom(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
         """
@@ -28310,7 +28310,7 @@ class Subtreecom(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
         """
@@ -28393,7 +28393,7 @@ class Subtreelinvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
         """
@@ -28402,7 +28402,7 @@ class Subtreelinvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
         """
@@ -28411,7 +28411,7 @@ class Subtreelinvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
         """
@@ -28420,7 +28420,7 @@ class Subtreelinvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
         """
@@ -28521,7 +28521,7 @@ class Tactile(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
         """
@@ -28530,7 +28530,7 @@ class Tactile(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
         """
@@ -28539,7 +28539,7 @@ class Tactile(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
         """
@@ -28548,7 +28548,7 @@ class Tactile(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
         """
@@ -28557,7 +28557,7 @@ class Tactile(_Typed):
 
     @property
     def cutoff(self) -> _builtins.float | None:
-        """``cutoff``: double; no default (unset when absent).
+        """``cutoff``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
         """
@@ -28661,7 +28661,7 @@ class Tendon(_Typed):
             armature: double; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
-            springyield: double; default "0".
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -28715,7 +28715,7 @@ class Tendon(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             armature: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
-            springyield: double; default "0".
+            springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -28757,7 +28757,7 @@ class Tendonactuatorfrc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
         """
@@ -28766,7 +28766,7 @@ class Tendonactuatorfrc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
         """
@@ -28775,7 +28775,7 @@ class Tendonactuatorfrc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
         """
@@ -28784,7 +28784,7 @@ class Tendonactuatorfrc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
         """
@@ -28867,7 +28867,7 @@ class Tendonlimitfrc(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
         """
@@ -28876,7 +28876,7 @@ class Tendonlimitfrc(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
         """
@@ -28885,7 +28885,7 @@ class Tendonlimitfrc(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
         """
@@ -28894,7 +28894,7 @@ class Tendonlimitfrc(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
         """
@@ -28977,7 +28977,7 @@ class Tendonlimitpos(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
         """
@@ -28986,7 +28986,7 @@ class Tendonlimitpos(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
         """
@@ -28995,7 +28995,7 @@ class Tendonlimitpos(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
         """
@@ -29004,7 +29004,7 @@ class Tendonlimitpos(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
         """
@@ -29087,7 +29087,7 @@ class Tendonlimitvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
         """
@@ -29096,7 +29096,7 @@ class Tendonlimitvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
         """
@@ -29105,7 +29105,7 @@ class Tendonlimitvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
         """
@@ -29114,7 +29114,7 @@ class Tendonlimitvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
         """
@@ -29197,7 +29197,7 @@ class Tendonpos(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
         """
@@ -29206,7 +29206,7 @@ class Tendonpos(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
         """
@@ -29215,7 +29215,7 @@ class Tendonpos(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
         """
@@ -29224,7 +29224,7 @@ class Tendonpos(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
         """
@@ -29307,7 +29307,7 @@ class Tendonvel(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
         """
@@ -29316,7 +29316,7 @@ class Tendonvel(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
         """
@@ -29325,7 +29325,7 @@ class Tendonvel(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
         """
@@ -29334,7 +29334,7 @@ class Tendonvel(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
         """
@@ -29655,7 +29655,7 @@ class Texture(_Typed):
 
     @property
     def class_(self) -> _builtins.str | Default | None:
-        """``class``: reference to namespace ``default``; no default (unset when absent).
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-class
         """
@@ -29664,7 +29664,7 @@ class Texture(_Typed):
 
     @property
     def embed(self) -> FalseTrueAuto | None:
-        """``embed``: one of: false, true, auto; default "auto".
+        """``embed``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
         """
@@ -29745,7 +29745,7 @@ class Torque(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
         """
@@ -29754,7 +29754,7 @@ class Torque(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
         """
@@ -29763,7 +29763,7 @@ class Torque(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
         """
@@ -29772,7 +29772,7 @@ class Torque(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
         """
@@ -29855,7 +29855,7 @@ class Touch(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
         """
@@ -29864,7 +29864,7 @@ class Touch(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
         """
@@ -29873,7 +29873,7 @@ class Touch(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
         """
@@ -29882,7 +29882,7 @@ class Touch(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
         """
@@ -30179,7 +30179,7 @@ class Velocimeter(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
         """
@@ -30188,7 +30188,7 @@ class Velocimeter(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
         """
@@ -30197,7 +30197,7 @@ class Velocimeter(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
         """
@@ -30206,7 +30206,7 @@ class Velocimeter(_Typed):
 
     @property
     def interval(self) -> _t.Float64Array | None:
-        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
         """
@@ -30307,7 +30307,7 @@ class Velocity(_Typed):
 
     @property
     def nsample(self) -> _builtins.int | None:
-        """``nsample``: int; no default (unset when absent).
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
         """
@@ -30316,7 +30316,7 @@ class Velocity(_Typed):
 
     @property
     def interp(self) -> Interp | None:
-        """``interp``: one of: zoh, linear, cubic; no default (unset when absent).
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
         """
@@ -30325,7 +30325,7 @@ class Velocity(_Typed):
 
     @property
     def delay(self) -> _builtins.float | None:
-        """``delay``: double; no default (unset when absent).
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
         """
@@ -30397,7 +30397,7 @@ class Velocity(_Typed):
 
     @property
     def damping(self) -> _t.Float64Array | None:
-        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
         """
@@ -30406,7 +30406,7 @@ class Velocity(_Typed):
 
     @property
     def armature(self) -> _builtins.float | None:
-        """``armature``: double; no default (unset when absent).
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
         """
@@ -31032,9 +31032,9 @@ class Worldbody(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mocap: bool; no default (unset when absent).
             gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent).
-            simple: one of: false, auto; default "auto".
-            fuse: one of: false, auto; default "auto".
+            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
+            fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -31072,9 +31072,9 @@ class Worldbody(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            scale: double[1..3] (1 to 3 values); default "1".
-            scaling: one of: similar, geometry; default "similar".
-            massscale: double; default "0".
+            scale: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0.
+            scaling: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0.
+            massscale: double; default "0"; in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
         """
 
@@ -31174,8 +31174,8 @@ class Worldbody(_Typed, _Attachable):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             margin: double; no default (unset when absent).
             gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent).
-            adhesion: double; no default (unset when absent).
+            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             fromto: double[6]; no default (unset when absent).
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
@@ -31190,7 +31190,7 @@ class Worldbody(_Typed, _Attachable):
             fluidshape: one of: none, ellipsoid; no default (unset when absent).
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
-            castshadow: bool; default "true".
+            castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -31212,7 +31212,7 @@ class Worldbody(_Typed, _Attachable):
         Args:
             model: reference to namespace ``model``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
-            frame: reference to namespace ``frame``; no default (unset when absent).
+            frame: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0.
             prefix: string; required.
         """
 
@@ -31256,7 +31256,7 @@ class Worldbody(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
             fromto: double[6]; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
@@ -31300,11 +31300,11 @@ class Worldbody(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent).
+            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent).
+            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -31369,7 +31369,7 @@ class Worldbody(_Typed, _Attachable):
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
-            softness: float; default "0.2".
+            softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
             ambient: float[3]; no default (unset when absent).
             diffuse: float[3]; default "0.7 0.7 0.7".
@@ -31444,7 +31444,7 @@ class Worldbody(_Typed, _Attachable):
             dim: int; no default (unset when absent).
             dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
             count: int[3]; no default (unset when absent).
-            cellcount: int[3]; no default (unset when absent).
+            cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             spacing: double[3]; no default (unset when absent).
             radius: double; no default (unset when absent).
             rigid: bool; no default (unset when absent).
@@ -31465,7 +31465,7 @@ class Worldbody(_Typed, _Attachable):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             origin: double[3]; no default (unset when absent).
-            mesh: reference to namespace ``mesh``; no default (unset when absent).
+            mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
     @overload
