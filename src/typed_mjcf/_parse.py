@@ -45,6 +45,7 @@ from typed_mjcf._access import (
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._releases import note as release_note
 from typed_mjcf._sourcelines import SourceText
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (
@@ -561,9 +562,11 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
                 known = []
             _warn_ignored(element, _name(key), text, known, source, context.line(node, source))
             return later
+        missing = release_note(element.spec, key)
         context.refuse("unknown-attribute", element.path, context.error(
             f"<{element.spec.tag}> has no attribute {_name(key)!r}"
-            f"{did_you_mean(_name(key), known)}", source, context.line(node, source)))
+            + (f": it {missing}" if missing else did_you_mean(_name(key), known)),
+            source, context.line(node, source)))
         return later
     if attribute.kind == "id":
         try:
@@ -690,9 +693,11 @@ class _Builder:
             child_spec = child_specs.get(tag)
             if child_spec is None:
                 legal = list(child_specs)
+                missing = release_note(parent.spec, tag) if isinstance(tag, str) else None
                 context.refuse("illegal-child", parent.path, context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
-                    f"{did_you_mean(_name(tag), legal)}", source, context.line(child_node, source)))
+                    + (f": it {missing}" if missing else did_you_mean(_name(tag), legal)),
+                    source, context.line(child_node, source)))
                 continue  # read past: the child and what is inside it are left out
             if depth >= max_depth:
                 raise context.error(_limit_message(

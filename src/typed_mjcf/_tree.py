@@ -52,6 +52,8 @@ from typed_mjcf._compat import dm_control_namespace
 from typed_mjcf._debuginfo import RECORDER as _RECORDER
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._releases import keyword_note, restrict
+from typed_mjcf._releases import note as release_note
 from typed_mjcf._sourcelines import SourceText, file_start_line
 from typed_mjcf.errors import (
     ChildError,
@@ -110,6 +112,7 @@ def finish_grammar(facts: GrammarFacts) -> None:
                 attribute.mark_name_list(namespace)
         for child in cls.spec.children.values():
             child.cls = _CLASSES[child.class_name]
+    restrict(_CLASSES)  # the installed MuJoCo's grammar: what it lacks is refused
     document_adders()
 
 
@@ -302,6 +305,9 @@ class Element(_Layout):
         """``name`` is none of the row's attributes: the message says which are (reading,
         ``action`` says what was done, e.g. "can't set attribute")."""
         spec = self.spec
+        missing = release_note(spec, name)
+        if missing is not None:
+            return UnknownAttributeError(f"{self.path}: {name!r} of <{spec.tag}> {missing}")
         known = [a.py_name for a in spec.attributes]
         hint = did_you_mean(name, known + [c.py_name for c in spec.children.values()])
         what = f"{action} {name!r}" if action else (
@@ -312,9 +318,10 @@ class Element(_Layout):
         )
 
     def _reject(self, attribute: AttributeSpec, value: object, rejected: Rejected) -> Exception:
+        missing = keyword_note(self.spec, attribute, value) if attribute.keywords else None
         return rejected.error(
             f"{self.path}: invalid {attribute.py_name}={_short(value)} on <{self.spec.tag}>: "
-            f"expected {rejected.expected}"
+            f"expected {rejected.expected}" + (f" ({missing})" if missing else "")
         )
 
     def _assign(self, attribute: AttributeSpec, value: object) -> None:
@@ -488,6 +495,10 @@ class Element(_Layout):
             if not isinstance(tag, str):  # pyright: ignore[reportUnnecessaryIsInstance]
                 raise InvalidTypeError(f"{self.path}: a child tag must be a string, got {tag!r}")
             legal = list(self.spec.children)
+            missing = release_note(self.spec, tag)
+            if missing is not None:
+                raise IllegalChildError(f"{self.path}: <{tag}> as a child of "
+                                        f"<{self.spec.tag}> {missing}")
             raise IllegalChildError(
                 f"{self.path}: <{tag}> is not a valid child of <{self.spec.tag}>"
                 f"{did_you_mean(tag, legal)}; legal children: {', '.join(legal) or '(none)'}"
