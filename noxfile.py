@@ -1,5 +1,5 @@
 """Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
-``nox -s pictures``, ``nox -s bench_editor``.
+``nox -s pictures``, ``nox -s bench_editor``, ``nox -s releases``, ``nox -s install_matrix``.
 
 Every session runs on the first Python nox finds that the project supports (3.11 or newer);
 ``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
@@ -90,10 +90,17 @@ def generate(session: nox.Session) -> None:
     except ValueError as error:  # before installing anything: a mistake fails at once
         session.error(str(error))
     # The release generated for, whatever release the project depends on now (that is the
-    # pin being moved): the project without its dependencies, the rest by hand.
-    session.install(*_requirements("codegen"), f"mujoco-core=={version}")
+    # pin being moved): the project without its dependencies, the rest by hand. A release
+    # older than schema/mjcf.json's becomes schema/releases/<version>.json (codegen/releases.py).
+    session.install(*_requirements("codegen"), _mujoco_requirement(version))
     session.install("--no-deps", "-e", ".")
     session.run("python", "-m", "codegen", "generate", *args)
+
+
+def _mujoco_requirement(version: str) -> str:
+    """The package that installs MuJoCo ``version``: MuJoCo 4's engine is ``mujoco-core``
+    (``mujoco`` is a meta-package over it, with the viewer); MuJoCo 3 is ``mujoco`` alone."""
+    return f"mujoco-core=={version}" if int(version.split(".")[0]) >= 4 else f"mujoco=={version}"
 
 
 def _requirements(extra: str) -> list[str]:
@@ -150,3 +157,44 @@ def bench_editor(session: nox.Session) -> None:
     """
     session.install("-e", ".[dev]")
     session.run("python", "-m", "tests.bench.editor", *session.posargs)
+
+
+# The older MuJoCo releases schema/releases/ covers, each with the dm_control release that
+# pairs with it (dm_control pins MuJoCo exactly; its models are part of the corpus).
+OLDER_RELEASES = {"3.3.7": "dm_control==1.0.34", "3.17.0": "dm_control==1.0.49"}
+# The corpus tests: round trip, validate and compile every model the installed packages ship.
+CORPUS_TESTS = [
+    "tests/fidelity/test_round_trip.py",
+    "tests/fidelity/test_corpus_validate.py",
+    "tests/fidelity/test_defaults_corpus.py",
+    "tests/runtime/test_corpus.py",
+    "tests/runtime/test_corpus_asset_routes.py",
+    "tests/runtime/test_release_gates.py",
+]
+
+
+@nox.session(python=PYTHON)
+@nox.parametrize("mujoco", list(OLDER_RELEASES))
+def releases(session: nox.Session, mujoco: str) -> None:
+    """The corpus tests on an older MuJoCo (its grammar from schema/releases/), with the
+    dm_control that pairs with it. Not in ``nox -s tests`` (which runs the newest MuJoCo).
+
+    nox -s releases                       # every older release covered
+    nox -s "releases(mujoco='3.17.0')"    # one
+    """
+    # the dev extra less its MuJoCo and dm_control pins (the newest's)
+    dev = [r for r in _requirements("dev") if not r.startswith(("mujoco", "dm_control"))]
+    session.install(*dev, f"mujoco=={mujoco}", OLDER_RELEASES[mujoco])
+    session.install("--no-deps", "-e", ".")
+    session.run("pytest", "-n", "auto", "--dist", "loadfile", *CORPUS_TESTS, *session.posargs,
+                env={"MUJOCO_GL": "egl"})
+
+
+@nox.session(python=PYTHON)
+def install_matrix(session: nox.Session) -> None:
+    """Build the wheel and install it into fresh environments holding MuJoCo 3.3.7, 3.17.0,
+    4.0.0, mujoco-core 4.0.1 and an unsupported 3.2.7: ``import mujoco`` must keep working and
+    typed-mjcf must compile a model (tests/install; minutes, from the package registry)."""
+    session.install("pytest")
+    session.run("pytest", "-p", "no:cacheprovider", "-rA", "tests/install", *session.posargs,
+                env={"TYPED_MJCF_INSTALL_MATRIX": "1"})

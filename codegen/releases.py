@@ -62,8 +62,10 @@ def _keywords(schema: ir.Schema, a: ir.AttributeDef) -> tuple[str, ...]:
 
 
 def gates(newest: ir.Schema, older: dict[str, ir.Schema]) -> Gates:
-    """Compare each older release's grammar with the newest's."""
-    ordered = sorted(older, key=version_key)
+    """Compare each older release's grammar with the newest's (release files not older
+    than ``newest`` are left out: a new newest is being generated)."""
+    ordered = sorted((v for v in older if version_key(v) < version_key(newest.mujoco_version)),
+                     key=version_key)
     result = Gates((*ordered, newest.mujoco_version))
     for row, el in sorted(newest.elements.items()):
         for a in el.attributes:

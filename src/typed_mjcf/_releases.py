@@ -3,7 +3,7 @@
 The classes describe the newest release covered (the typing surface); the generated table
 ``releases.py`` says, per row, which releases have each attribute, child and keyword where
 not all do. The release is chosen once, at import, from the installed ``mujoco``'s package
-metadata (``mujoco`` itself is not imported): the newest covered release not newer than the
+metadata (``mujoco`` itself is not imported, nor pathlib or importlib.metadata): the newest covered release not newer than the
 installed one. :func:`restrict` then takes out of the grammar tables what that release lacks,
 so the hot paths (parse, assignment, export) pay nothing; the error paths ask :func:`note`
 why a name is unknown ("needs MuJoCo >= 4.0.0; installed 3.17.0").
@@ -11,10 +11,10 @@ why a name is unknown ("needs MuJoCo >= 4.0.0; installed 3.17.0").
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Mapping
 from importlib.util import find_spec
-from pathlib import Path
 from typing import TYPE_CHECKING, Final
 
 from typed_mjcf._codecs import make_codec
@@ -41,11 +41,16 @@ def installed_mujoco() -> str | None:
         return None
     if spec is None or spec.origin is None:
         return None
-    site = Path(spec.origin).parent.parent
+    site = os.path.dirname(os.path.dirname(spec.origin))
+    try:
+        names = os.listdir(site)
+    except OSError:
+        return None
     for distribution in _DISTRIBUTIONS:
-        found = sorted(site.glob(f"{distribution}-*.dist-info"))
+        found = [name[len(distribution) + 1 : -len(".dist-info")] for name in names
+                 if name.startswith(distribution + "-") and name.endswith(".dist-info")]
         if found:
-            return found[-1].name[len(distribution) + 1 : -len(".dist-info")]
+            return max(found, key=version_key)
     return None
 
 
@@ -106,7 +111,7 @@ def keyword_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> 
         if word in attribute.keywords:
             continue
         having = tuple(r for r in RELEASES
-                       if word in by_release.get(r, _newest_keywords(spec, attribute)))
+                       if word in by_release.get(r, newest_keywords(spec, attribute)))
         if having:
             return f"{word!r} {_needs(having)}"
     return None
@@ -115,7 +120,8 @@ def keyword_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> 
 _NEWEST_KEYWORDS: dict[tuple[str, str], tuple[str, ...]] = {}
 
 
-def _newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, ...]:
+def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, ...]:
+    """``attribute``'s keywords in the newest release (the typing surface's)."""
     return _NEWEST_KEYWORDS.get((spec.name, attribute.name), attribute.keywords)
 
 

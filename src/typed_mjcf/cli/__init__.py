@@ -17,6 +17,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 from typed_mjcf import __version__
+from typed_mjcf._releases import describe as describe_releases
 from typed_mjcf.cli import check, diff, fmt, render, to_python
 
 DESCRIPTION = """\
@@ -38,7 +39,8 @@ def parser() -> argparse.ArgumentParser:
     main_parser = argparse.ArgumentParser(
         prog="typed-mjcf", description=DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter)
-    main_parser.add_argument("--version", action="version", version=f"typed-mjcf {__version__}")
+    main_parser.add_argument("--version", action="version",
+                             version=f"typed-mjcf {__version__}\n{describe_releases()}")
     commands = main_parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for module in (to_python, check, fmt, diff, render):
         module.arguments(commands.add_parser(
