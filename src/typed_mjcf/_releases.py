@@ -22,6 +22,7 @@ from typed_mjcf._generated.releases import ATTRIBUTES, CHILDREN, KEYWORDS, RELEA
 
 if TYPE_CHECKING:
     from typed_mjcf._grammar import AttributeSpec, ElementSpec
+    from typed_mjcf._tree import Element
 
 # the distributions that install the `mujoco` module: MuJoCo 4's engine comes as
 # mujoco-core (with `mujoco` a meta-package over it), MuJoCo 3 as `mujoco` alone
@@ -125,11 +126,11 @@ def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, .
     return _NEWEST_KEYWORDS.get((spec.name, attribute.name), attribute.keywords)
 
 
-def restrict(classes: Mapping[str, type[object]], release: str = RELEASE) -> None:
+def restrict(classes: Mapping[str, type[Element]], release: str = RELEASE) -> None:
     """Take out of every row what ``release`` lacks: attributes (and their properties),
     children (their lists and ``add_<tag>()``), keywords (the codec is the release's)."""
     for cls in classes.values():
-        spec: ElementSpec = getattr(cls, "spec")
+        spec = cls.spec
         gone = {name: having for name, having in ATTRIBUTES.get(spec.name, {}).items()
                 if release not in having}
         if gone:
@@ -152,7 +153,7 @@ def restrict(classes: Mapping[str, type[object]], release: str = RELEASE) -> Non
             found[tag] = found[child.py_name] = having
 
 
-def _drop_attributes(cls: type[object], spec: ElementSpec,
+def _drop_attributes(cls: type[Element], spec: ElementSpec,
                      gone: dict[str, tuple[str, ...]]) -> None:
     dropped = [a for a in spec.attributes if a.name in gone]
     spec.attributes = tuple(a for a in spec.attributes if a.name not in gone)
@@ -170,7 +171,7 @@ def _drop_attributes(cls: type[object], spec: ElementSpec,
     spec.plans.clear()
 
 
-def _set_keywords(cls: type[object], attribute: AttributeSpec, words: tuple[str, ...]) -> None:
+def _set_keywords(cls: type[Element], attribute: AttributeSpec, words: tuple[str, ...]) -> None:
     attribute.keywords = words
     attribute.codec = make_codec(attribute.kind, dtype=attribute.dtype,
                                  is_array=attribute.is_array, lo=attribute.lo, hi=attribute.hi,
