@@ -11,6 +11,7 @@ runtime picks the installed release's gates once, at import (``typed_mjcf._relea
 
 from __future__ import annotations
 
+import importlib
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -138,9 +139,8 @@ def notes(result: Gates) -> Notes:
 
 def installed_version() -> str:
     """The installed ``mujoco``'s release (what ``generate`` syncs with)."""
-    import mujoco  # the codegen extra's; imported here so that rendering needs no MuJoCo
-
-    version = getattr(mujoco, "__version__", None)
+    # the codegen extra's; imported here so that rendering needs no MuJoCo
+    version = getattr(importlib.import_module("mujoco"), "__version__", None)
     if not isinstance(version, str):
         raise TypeError("mujoco.__version__ is not a string")
     return version

@@ -11,7 +11,12 @@ import typed_mjcf as mjcf
 from typed_mjcf import _releases
 from typed_mjcf._generated.releases import ATTRIBUTES, CHILDREN, KEYWORDS, RELEASES
 from typed_mjcf._tree import Attribute, element_classes
-from typed_mjcf.errors import IllegalChildError, InvalidValueError, UnknownAttributeError
+from typed_mjcf.errors import (
+    IllegalChildError,
+    InvalidValueError,
+    ParseError,
+    UnknownAttributeError,
+)
 
 CLASSES = {cls.spec.name: cls for cls in element_classes().values()}
 
@@ -131,7 +136,7 @@ def test_a_missing_attribute_is_refused_on_every_route_naming_the_release() -> N
     xml = (f'<mujoco><worldbody><body name="b" {name}="1"/></worldbody></mujoco>'
            if row == "body" else
            f'<mujoco><worldbody><body><{row} {name}="1"/></body></worldbody></mujoco>')
-    with pytest.raises(mjcf.errors.ParseError, match=expected):
+    with pytest.raises(ParseError, match=expected):
         mjcf.from_xml_string(xml)
     import mujoco
 
@@ -153,7 +158,7 @@ def test_a_missing_child_is_refused_naming_the_release() -> None:
         section.add(tag)
     xml = (f"<mujoco><{tag}/></mujoco>" if row == root else
            f"<mujoco><{row}><{tag}/></{row}></mujoco>")
-    with pytest.raises(mjcf.errors.ParseError, match=f"needs MuJoCo >= {having[0]}"):
+    with pytest.raises(ParseError, match=f"needs MuJoCo >= {having[0]}"):
         mjcf.from_xml_string(xml)
     import mujoco
 
