@@ -87,10 +87,26 @@ def _same_value(a: object, b: object) -> bool:
     return type(a) is type(b) and a == b
 
 
+
+def _not_in_this_release() -> str | None:
+    """Why DOCUMENT, written in the newest release's grammar, cannot be read here: it uses
+    what the installed (older) MuJoCo lacks (``nox -s releases``); None when it can."""
+    try:
+        mjcf.from_xml_string(DOCUMENT)
+    except mjcf.MjcfError as error:
+        return str(error) if "needs MuJoCo" in str(error) else None
+    return None
+
+
+_OLDER = _not_in_this_release()
+# the tests reading DOCUMENT: on an older MuJoCo lacking something it uses, skipped saying what
+needs_document = pytest.mark.skipif(_OLDER is not None, reason=f"DOCUMENT: {_OLDER}")
+
 def _elements(model: Element) -> list[tuple[str, object]]:
     return [(e.tag, e.get_attributes().get("name")) for e in model.iter_elements()]
 
 
+@needs_document
 def test_document_with_every_kind_of_value_round_trips() -> None:
     model = mjcf.from_xml_string(DOCUMENT)
     xml = model.to_xml_string()
@@ -112,6 +128,7 @@ def test_document_with_every_kind_of_value_round_trips() -> None:
     mujoco.MjSpec.from_string(xml)  # and MuJoCo reads what we wrote
 
 
+@needs_document
 def test_values_are_read_bit_for_bit() -> None:
     model = mjcf.from_xml_string(mjcf.from_xml_string(DOCUMENT).to_xml_string())
     upper = model.find("body", "upper")
@@ -132,10 +149,12 @@ def test_values_are_read_bit_for_bit() -> None:
     assert isinstance(key, mjcf.Key) and key.time == 1e-5
 
 
+@needs_document
 def test_the_document_is_one_mujoco_reads() -> None:
     mujoco.MjSpec.from_string(DOCUMENT)
 
 
+@needs_document
 def test_ints_keywords_and_flags_are_canonical() -> None:
     model = mjcf.from_xml_string(DOCUMENT)
     assert model.option.iterations == 2**31 - 1
@@ -164,6 +183,7 @@ def test_ints_keywords_and_flags_are_canonical() -> None:
     assert model.to_xml_string() == xml
 
 
+@needs_document
 def test_what_mujoco_writes_back_reads_the_same() -> None:
     model = mjcf.from_xml_string(DOCUMENT)
     spec = mujoco.MjSpec.from_string(model.to_xml_string())
