@@ -693,7 +693,7 @@ class _Builder:
             child_spec = child_specs.get(tag)
             if child_spec is None:
                 legal = list(child_specs)
-                missing = release_note(parent.spec, tag) if isinstance(tag, str) else None
+                missing = release_note(parent.spec, tag)
                 context.refuse("illegal-child", parent.path, context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
                     + (f": it {missing}" if missing else did_you_mean(_name(tag), legal)),
