@@ -34,6 +34,7 @@ class PropertyView:
     getter: str
     setter: str
     doc: str
+    setter_doc: str  # its first line: jedi documents a property by its setter, the last def
 
 
 @dataclass(frozen=True)
@@ -254,12 +255,15 @@ def _resolves(typer: Typer, el: ir.ElementDef) -> list[ResolveView]:
 
 def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef) -> ClassView:
     properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
-                               docs.property_doc(typer, el, a)) for a in el.attributes]
+                               docs.property_doc(typer, el, a),
+                               docs.property_doc(typer, el, a).split("\n")[0])
+                  for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     if any(a.name == schema.language.dclass for a in el.attributes):
         dclass = next(a for a in el.attributes if a.name == schema.language.dclass)
         properties.append(PropertyView("dclass", typer.getter(dclass), typer.setter(dclass),
-                                       "dm_control's name for ``class_``.\n        "))
+                                       "dm_control's name for ``class_``.\n        ",
+                                       "dm_control's name for ``class_``."))
         params.append(ParamView("dclass", typer.setter(dclass)))
     children: list[ChildView] = []
     for c in el.children:

@@ -778,7 +778,8 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco-model
         """
     @model.setter
-    def model(self, value: _builtins.str | None) -> None: ...
+    def model(self, value: _builtins.str | None) -> None:
+        """``model``: string; no default (unset when absent)."""
 
     @property
     def compiler(self) -> Compiler:
@@ -1300,7 +1301,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -1309,7 +1311,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -1318,7 +1321,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -1327,7 +1331,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -1336,7 +1341,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -1345,7 +1351,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -1354,7 +1361,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -1363,7 +1371,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -1372,7 +1381,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2417,7 +2427,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -2426,7 +2437,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -2435,7 +2447,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2444,7 +2457,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2453,7 +2467,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2462,7 +2477,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -2471,7 +2487,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -2480,7 +2497,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def plugin(self) -> _builtins.str | None:
@@ -2489,7 +2507,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; no default (unset when absent)."""
 
     @property
     def instance(self) -> _builtins.str | Instance | None:
@@ -2498,7 +2517,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-instance
         """
     @instance.setter
-    def instance(self, value: _builtins.str | Instance | None) -> None: ...
+    def instance(self, value: _builtins.str | Instance | None) -> None:
+        """``instance``: reference to namespace ``instance``; no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -2507,7 +2527,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -2516,7 +2537,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -2525,7 +2547,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -2534,7 +2557,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -2543,7 +2567,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -2552,7 +2577,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -2561,7 +2587,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -2570,7 +2597,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -2579,7 +2607,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -2588,7 +2617,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -2597,7 +2627,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -2606,7 +2637,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -2615,7 +2647,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def actdim(self) -> _builtins.int | None:
@@ -2624,7 +2657,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actdim
         """
     @actdim.setter
-    def actdim(self, value: _t.Integer | None) -> None: ...
+    def actdim(self, value: _t.Integer | None) -> None:
+        """``actdim``: int; default "-1"."""
 
     @property
     def dyntype(self) -> Dyn | None:
@@ -2633,7 +2667,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dyntype
         """
     @dyntype.setter
-    def dyntype(self, value: Dyn | None) -> None: ...
+    def dyntype(self, value: Dyn | None) -> None:
+        """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none"."""
 
     @property
     def dynprm(self) -> _t.Float64Array | None:
@@ -2642,7 +2677,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dynprm
         """
     @dynprm.setter
-    def dynprm(self, value: Reals1To10 | None) -> None: ...
+    def dynprm(self, value: Reals1To10 | None) -> None:
+        """``dynprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -2651,7 +2687,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -2660,7 +2697,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -2669,7 +2707,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def actearly(self) -> _builtins.bool | None:
@@ -2678,14 +2717,16 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actearly
         """
     @actearly.setter
-    def actearly(self, value: _builtins.bool | None) -> None: ...
+    def actearly(self, value: _builtins.bool | None) -> None:
+        """``actearly``: bool; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def config(self) -> _List[Config]:
@@ -2792,7 +2833,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2801,7 +2843,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2810,7 +2853,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2819,7 +2863,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -2828,7 +2873,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -2837,7 +2883,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -2846,7 +2893,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -2855,7 +2903,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuator(self) -> _builtins.str | AnyActuator | None:
@@ -2864,7 +2913,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-actuator
         """
     @actuator.setter
-    def actuator(self, value: _builtins.str | AnyActuator | None) -> None: ...
+    def actuator(self, value: _builtins.str | AnyActuator | None) -> None:
+        """``actuator``: reference to namespace ``actuator``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2902,7 +2952,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2911,7 +2962,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2920,7 +2972,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2929,7 +2982,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -2938,7 +2992,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -2947,7 +3002,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -2956,7 +3012,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -2965,7 +3022,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuator(self) -> _builtins.str | AnyActuator | None:
@@ -2974,7 +3032,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-actuator
         """
     @actuator.setter
-    def actuator(self, value: _builtins.str | AnyActuator | None) -> None: ...
+    def actuator(self, value: _builtins.str | AnyActuator | None) -> None:
+        """``actuator``: reference to namespace ``actuator``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3012,7 +3071,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3021,7 +3081,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3030,7 +3091,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3039,7 +3101,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -3048,7 +3111,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -3057,7 +3121,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -3066,7 +3131,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3075,7 +3141,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuator(self) -> _builtins.str | AnyActuator | None:
@@ -3084,7 +3151,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-actuator
         """
     @actuator.setter
-    def actuator(self, value: _builtins.str | AnyActuator | None) -> None: ...
+    def actuator(self, value: _builtins.str | AnyActuator | None) -> None:
+        """``actuator``: reference to namespace ``actuator``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3122,7 +3190,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -3131,7 +3200,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -3140,7 +3210,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3149,7 +3220,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3158,7 +3230,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3167,7 +3240,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -3176,7 +3250,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3185,7 +3260,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -3194,7 +3270,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -3203,7 +3280,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -3212,7 +3290,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def gain(self) -> _builtins.float | None:
@@ -3221,14 +3300,16 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
     @gain.setter
-    def gain(self, value: _t.Real | None) -> None: ...
+    def gain(self, value: _t.Real | None) -> None:
+        """``gain``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3573,7 +3654,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-model
         """
     @model.setter
-    def model(self, value: _builtins.str | Model | None) -> None: ...
+    def model(self, value: _builtins.str | Model | None) -> None:
+        """``model``: reference to namespace ``model``; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -3582,7 +3664,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def frame(self) -> _builtins.str | Frame | None:
@@ -3591,7 +3674,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-frame
         """
     @frame.setter
-    def frame(self, value: _builtins.str | Frame | None) -> None: ...
+    def frame(self, value: _builtins.str | Frame | None) -> None:
+        """``frame``: reference to namespace ``frame``; no default (unset when absent)."""
 
     @property
     def prefix(self) -> _builtins.str | None:
@@ -3600,7 +3684,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-prefix
         """
     @prefix.setter
-    def prefix(self, value: _builtins.str | None) -> None: ...
+    def prefix(self, value: _builtins.str | None) -> None:
+        """``prefix``: string; required."""
 
     @overload
     def resolve(self, name: Literal["model"]) -> _builtins.str | Model | None:
@@ -3632,7 +3717,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3641,7 +3727,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3650,7 +3737,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3659,7 +3747,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -3668,7 +3757,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -3677,7 +3767,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -3686,7 +3777,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3695,7 +3787,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -3704,7 +3797,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3742,7 +3836,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3751,7 +3846,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3760,7 +3856,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3769,7 +3866,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -3778,7 +3876,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -3787,7 +3886,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -3796,7 +3896,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3805,7 +3906,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -3814,7 +3916,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3852,7 +3955,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``body``; no default (unset when absent)."""
 
     @property
     def childclass(self) -> _builtins.str | Default | None:
@@ -3861,7 +3965,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-childclass
         """
     @childclass.setter
-    def childclass(self, value: _builtins.str | Default | None) -> None: ...
+    def childclass(self, value: _builtins.str | Default | None) -> None:
+        """``childclass``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -3870,7 +3975,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -3879,7 +3985,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -3888,7 +3995,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -3897,7 +4005,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -3906,7 +4015,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -3915,7 +4025,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def mocap(self) -> _builtins.bool | None:
@@ -3924,7 +4035,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-mocap
         """
     @mocap.setter
-    def mocap(self, value: _builtins.bool | None) -> None: ...
+    def mocap(self, value: _builtins.bool | None) -> None:
+        """``mocap``: bool; no default (unset when absent)."""
 
     @property
     def gravcomp(self) -> _builtins.float | None:
@@ -3933,7 +4045,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-gravcomp
         """
     @gravcomp.setter
-    def gravcomp(self, value: _t.Real | None) -> None: ...
+    def gravcomp(self, value: _t.Real | None) -> None:
+        """``gravcomp``: double; no default (unset when absent)."""
 
     @property
     def sleep(self) -> BodySleep | None:
@@ -3942,7 +4055,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
         """
     @sleep.setter
-    def sleep(self, value: BodySleep | None) -> None: ...
+    def sleep(self, value: BodySleep | None) -> None:
+        """``sleep``: one of: auto, never, allowed, init; no default (unset when absent)."""
 
     @property
     def simple(self) -> FalseAuto | None:
@@ -3951,7 +4065,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-simple
         """
     @simple.setter
-    def simple(self, value: FalseAuto | None) -> None: ...
+    def simple(self, value: FalseAuto | None) -> None:
+        """``simple``: one of: false, auto; default "auto"."""
 
     @property
     def fuse(self) -> FalseAuto | None:
@@ -3960,7 +4075,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-fuse
         """
     @fuse.setter
-    def fuse(self, value: FalseAuto | None) -> None: ...
+    def fuse(self, value: FalseAuto | None) -> None:
+        """``fuse``: one of: false, auto; default "auto"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3969,7 +4085,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _List[Body]:
@@ -4701,7 +4818,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @property
     def bindpos(self) -> _t.Float64Array | None:
@@ -4710,7 +4828,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindpos
         """
     @bindpos.setter
-    def bindpos(self, value: Reals3 | None) -> None: ...
+    def bindpos(self, value: Reals3 | None) -> None:
+        """``bindpos``: double[3]; no default (unset when absent)."""
 
     @property
     def bindquat(self) -> _t.Float64Array | None:
@@ -4719,7 +4838,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindquat
         """
     @bindquat.setter
-    def bindquat(self, value: Reals4 | None) -> None: ...
+    def bindquat(self, value: Reals4 | None) -> None:
+        """``bindquat``: double[4]; no default (unset when absent)."""
 
     @property
     def vertid(self) -> _t.Int32Array | None:
@@ -4728,7 +4848,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertid
         """
     @vertid.setter
-    def vertid(self, value: IntegersAny | None) -> None: ...
+    def vertid(self, value: IntegersAny | None) -> None:
+        """``vertid``: int[] (any length); no default (unset when absent)."""
 
     @property
     def vertweight(self) -> _t.Float32Array | None:
@@ -4737,7 +4858,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertweight
         """
     @vertweight.setter
-    def vertweight(self, value: RealsAny | None) -> None: ...
+    def vertweight(self, value: RealsAny | None) -> None:
+        """``vertweight``: float[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None:
@@ -4769,7 +4891,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``camera``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -4778,7 +4901,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def projection(self) -> Projection | None:
@@ -4787,7 +4911,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
         """
     @projection.setter
-    def projection(self, value: Projection | None) -> None: ...
+    def projection(self, value: Projection | None) -> None:
+        """``projection``: one of: perspective, orthographic; no default (unset when absent)."""
 
     @property
     def fovy(self) -> _builtins.float | None:
@@ -4796,7 +4921,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
         """
     @fovy.setter
-    def fovy(self, value: _t.Real | None) -> None: ...
+    def fovy(self, value: _t.Real | None) -> None:
+        """``fovy``: double; default "45"."""
 
     @property
     def ipd(self) -> _builtins.float | None:
@@ -4805,7 +4931,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
         """
     @ipd.setter
-    def ipd(self, value: _t.Real | None) -> None: ...
+    def ipd(self, value: _t.Real | None) -> None:
+        """``ipd``: double; default "0.068"."""
 
     @property
     def resolution(self) -> _t.Int32Array | None:
@@ -4814,7 +4941,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
         """
     @resolution.setter
-    def resolution(self, value: Integers2 | None) -> None: ...
+    def resolution(self, value: Integers2 | None) -> None:
+        """``resolution``: int[2]; default "1 1"."""
 
     @property
     def output(self) -> tuple[Camout, ...] | None:
@@ -4823,7 +4951,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
         """
     @output.setter
-    def output(self, value: Camout | Collection[Camout] | None) -> None: ...
+    def output(self, value: Camout | Collection[Camout] | None) -> None:
+        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -4832,7 +4961,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -4841,7 +4971,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -4850,7 +4981,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -4859,7 +4991,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -4868,7 +5001,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -4877,7 +5011,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -4886,7 +5021,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @property
     def target(self) -> _builtins.str | Body | None:
@@ -4895,7 +5031,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-target
         """
     @target.setter
-    def target(self, value: _builtins.str | Body | None) -> None: ...
+    def target(self, value: _builtins.str | Body | None) -> None:
+        """``target``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def focal(self) -> _t.Float32Array | None:
@@ -4904,7 +5041,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
         """
     @focal.setter
-    def focal(self, value: Reals2 | None) -> None: ...
+    def focal(self, value: Reals2 | None) -> None:
+        """``focal``: float[2]; no default (unset when absent)."""
 
     @property
     def focalpixel(self) -> _t.Float32Array | None:
@@ -4913,7 +5051,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
         """
     @focalpixel.setter
-    def focalpixel(self, value: Reals2 | None) -> None: ...
+    def focalpixel(self, value: Reals2 | None) -> None:
+        """``focalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def principal(self) -> _t.Float32Array | None:
@@ -4922,7 +5061,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
         """
     @principal.setter
-    def principal(self, value: Reals2 | None) -> None: ...
+    def principal(self, value: Reals2 | None) -> None:
+        """``principal``: float[2]; no default (unset when absent)."""
 
     @property
     def principalpixel(self) -> _t.Float32Array | None:
@@ -4931,7 +5071,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
         """
     @principalpixel.setter
-    def principalpixel(self, value: Reals2 | None) -> None: ...
+    def principalpixel(self, value: Reals2 | None) -> None:
+        """``principalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def sensorsize(self) -> _t.Float32Array | None:
@@ -4940,7 +5081,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
         """
     @sensorsize.setter
-    def sensorsize(self, value: Reals2 | None) -> None: ...
+    def sensorsize(self, value: Reals2 | None) -> None:
+        """``sensorsize``: float[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -4949,14 +5091,16 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5009,7 +5153,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -5018,7 +5163,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -5027,7 +5173,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -5036,7 +5183,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -5045,7 +5193,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -5054,7 +5203,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -5063,7 +5213,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -5072,7 +5223,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -5081,7 +5233,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @property
     def camera(self) -> _builtins.str | Camera | None:
@@ -5090,7 +5243,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-camera
         """
     @camera.setter
-    def camera(self, value: _builtins.str | Camera | None) -> None: ...
+    def camera(self, value: _builtins.str | Camera | None) -> None:
+        """``camera``: reference to namespace ``camera``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5131,7 +5285,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -5140,7 +5295,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -5149,7 +5305,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -5158,7 +5315,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -5167,7 +5325,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -5176,7 +5335,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -5185,7 +5345,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -5194,7 +5355,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5229,7 +5391,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-autolimits
         """
     @autolimits.setter
-    def autolimits(self, value: _builtins.bool | None) -> None: ...
+    def autolimits(self, value: _builtins.bool | None) -> None:
+        """``autolimits``: bool; default "true"."""
 
     @property
     def boundmass(self) -> _builtins.float | None:
@@ -5238,7 +5401,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundmass
         """
     @boundmass.setter
-    def boundmass(self, value: _t.Real | None) -> None: ...
+    def boundmass(self, value: _t.Real | None) -> None:
+        """``boundmass``: double; no default (unset when absent)."""
 
     @property
     def boundinertia(self) -> _builtins.float | None:
@@ -5247,7 +5411,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundinertia
         """
     @boundinertia.setter
-    def boundinertia(self, value: _t.Real | None) -> None: ...
+    def boundinertia(self, value: _t.Real | None) -> None:
+        """``boundinertia``: double; no default (unset when absent)."""
 
     @property
     def settotalmass(self) -> _builtins.float | None:
@@ -5256,7 +5421,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-settotalmass
         """
     @settotalmass.setter
-    def settotalmass(self, value: _t.Real | None) -> None: ...
+    def settotalmass(self, value: _t.Real | None) -> None:
+        """``settotalmass``: double; default "-1"."""
 
     @property
     def balanceinertia(self) -> _builtins.bool | None:
@@ -5265,7 +5431,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-balanceinertia
         """
     @balanceinertia.setter
-    def balanceinertia(self, value: _builtins.bool | None) -> None: ...
+    def balanceinertia(self, value: _builtins.bool | None) -> None:
+        """``balanceinertia``: bool; no default (unset when absent)."""
 
     @property
     def strippath(self) -> _builtins.bool | None:
@@ -5274,7 +5441,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-strippath
         """
     @strippath.setter
-    def strippath(self, value: _builtins.bool | None) -> None: ...
+    def strippath(self, value: _builtins.bool | None) -> None:
+        """``strippath``: bool; no default (unset when absent)."""
 
     @property
     def coordinate(self) -> Coordinate | None:
@@ -5283,7 +5451,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-coordinate
         """
     @coordinate.setter
-    def coordinate(self, value: Coordinate | None) -> None: ...
+    def coordinate(self, value: Coordinate | None) -> None:
+        """``coordinate``: one of: local, global; no default (unset when absent)."""
 
     @property
     def angle(self) -> Angle | None:
@@ -5292,7 +5461,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-angle
         """
     @angle.setter
-    def angle(self, value: Angle | None) -> None: ...
+    def angle(self, value: Angle | None) -> None:
+        """``angle``: one of: radian, degree; default "degree"."""
 
     @property
     def fitaabb(self) -> _builtins.bool | None:
@@ -5301,7 +5471,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fitaabb
         """
     @fitaabb.setter
-    def fitaabb(self, value: _builtins.bool | None) -> None: ...
+    def fitaabb(self, value: _builtins.bool | None) -> None:
+        """``fitaabb``: bool; no default (unset when absent)."""
 
     @property
     def eulerseq(self) -> _builtins.str | None:
@@ -5310,7 +5481,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-eulerseq
         """
     @eulerseq.setter
-    def eulerseq(self, value: _builtins.str | None) -> None: ...
+    def eulerseq(self, value: _builtins.str | None) -> None:
+        """``eulerseq``: chars[3]; no default (unset when absent); must match ``[xyzXYZ]{3}``."""
 
     @property
     def meshdir(self) -> _builtins.str | None:
@@ -5319,7 +5491,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-meshdir
         """
     @meshdir.setter
-    def meshdir(self, value: _builtins.str | None) -> None: ...
+    def meshdir(self, value: _builtins.str | None) -> None:
+        """``meshdir``: string; no default (unset when absent)."""
 
     @property
     def texturedir(self) -> _builtins.str | None:
@@ -5328,7 +5501,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-texturedir
         """
     @texturedir.setter
-    def texturedir(self, value: _builtins.str | None) -> None: ...
+    def texturedir(self, value: _builtins.str | None) -> None:
+        """``texturedir``: string; no default (unset when absent)."""
 
     @property
     def discardvisual(self) -> _builtins.bool | None:
@@ -5337,7 +5511,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-discardvisual
         """
     @discardvisual.setter
-    def discardvisual(self, value: _builtins.bool | None) -> None: ...
+    def discardvisual(self, value: _builtins.bool | None) -> None:
+        """``discardvisual``: bool; no default (unset when absent)."""
 
     @property
     def usethread(self) -> _builtins.bool | None:
@@ -5346,7 +5521,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-usethread
         """
     @usethread.setter
-    def usethread(self, value: _builtins.bool | None) -> None: ...
+    def usethread(self, value: _builtins.bool | None) -> None:
+        """``usethread``: bool; default "true"."""
 
     @property
     def fusestatic(self) -> _builtins.bool | None:
@@ -5355,7 +5531,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fusestatic
         """
     @fusestatic.setter
-    def fusestatic(self, value: _builtins.bool | None) -> None: ...
+    def fusestatic(self, value: _builtins.bool | None) -> None:
+        """``fusestatic``: bool; no default (unset when absent)."""
 
     @property
     def inertiafromgeom(self) -> FalseTrueAuto | None:
@@ -5364,7 +5541,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiafromgeom
         """
     @inertiafromgeom.setter
-    def inertiafromgeom(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def inertiafromgeom(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``inertiafromgeom``: one of: false, true, auto; default "auto"."""
 
     @property
     def inertiagrouprange(self) -> _t.Int32Array | None:
@@ -5373,7 +5551,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiagrouprange
         """
     @inertiagrouprange.setter
-    def inertiagrouprange(self, value: Integers2 | None) -> None: ...
+    def inertiagrouprange(self, value: Integers2 | None) -> None:
+        """``inertiagrouprange``: int[2]; default "0 5"."""
 
     @property
     def saveinertial(self) -> _builtins.bool | None:
@@ -5382,7 +5561,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-saveinertial
         """
     @saveinertial.setter
-    def saveinertial(self, value: _builtins.bool | None) -> None: ...
+    def saveinertial(self, value: _builtins.bool | None) -> None:
+        """``saveinertial``: bool; no default (unset when absent)."""
 
     @property
     def savecompiled(self) -> _builtins.bool | None:
@@ -5391,7 +5571,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecompiled
         """
     @savecompiled.setter
-    def savecompiled(self, value: _builtins.bool | None) -> None: ...
+    def savecompiled(self, value: _builtins.bool | None) -> None:
+        """``savecompiled``: bool; default "true"."""
 
     @property
     def savecanonical(self) -> _builtins.bool | None:
@@ -5400,7 +5581,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecanonical
         """
     @savecanonical.setter
-    def savecanonical(self, value: _builtins.bool | None) -> None: ...
+    def savecanonical(self, value: _builtins.bool | None) -> None:
+        """``savecanonical``: bool; default "true"."""
 
     @property
     def assetdir(self) -> _builtins.str | None:
@@ -5409,7 +5591,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-assetdir
         """
     @assetdir.setter
-    def assetdir(self, value: _builtins.str | None) -> None: ...
+    def assetdir(self, value: _builtins.str | None) -> None:
+        """``assetdir``: string; no default (unset when absent)."""
 
     @property
     def alignfree(self) -> _builtins.bool | None:
@@ -5418,7 +5601,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-alignfree
         """
     @alignfree.setter
-    def alignfree(self, value: _builtins.bool | None) -> None: ...
+    def alignfree(self, value: _builtins.bool | None) -> None:
+        """``alignfree``: bool; no default (unset when absent)."""
 
     @property
     def conflict(self) -> Conflict | None:
@@ -5427,7 +5611,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
         """
     @conflict.setter
-    def conflict(self, value: Conflict | None) -> None: ...
+    def conflict(self, value: Conflict | None) -> None:
+        """``conflict``: one of: warning, merge, error; no default (unset when absent)."""
 
     @property
     def passthrough(self) -> Passthrough | None:
@@ -5436,7 +5621,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-passthrough
         """
     @passthrough.setter
-    def passthrough(self, value: Passthrough | None) -> None: ...
+    def passthrough(self, value: Passthrough | None) -> None:
+        """``passthrough``: one of: none, textures; default "none"."""
 
     @property
     def lengthrange(self) -> Lengthrange:
@@ -5549,7 +5735,8 @@ class Config(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-key
         """
     @key.setter
-    def key(self, value: _builtins.str | None) -> None: ...
+    def key(self, value: _builtins.str | None) -> None:
+        """``key``: string; required."""
 
     @property
     def value(self) -> _builtins.str | None:
@@ -5558,7 +5745,8 @@ class Config(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
         """
     @value.setter
-    def value(self, value: _builtins.str | None) -> None: ...
+    def value(self, value: _builtins.str | None) -> None:
+        """``value``: string; no default (unset when absent)."""
 
     def resolve(self, name: Literal["key", "value"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -5580,7 +5768,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -5589,7 +5778,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -5598,7 +5788,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -5607,7 +5798,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -5616,7 +5808,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -5625,7 +5818,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -5634,7 +5828,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def anchor(self) -> _t.Float64Array | None:
@@ -5643,7 +5838,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-anchor
         """
     @anchor.setter
-    def anchor(self, value: Reals3 | None) -> None: ...
+    def anchor(self, value: Reals3 | None) -> None:
+        """``anchor``: double[3]; no default (unset when absent)."""
 
     @property
     def site1(self) -> _builtins.str | Site | None:
@@ -5652,7 +5848,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site1
         """
     @site1.setter
-    def site1(self, value: _builtins.str | Site | None) -> None: ...
+    def site1(self, value: _builtins.str | Site | None) -> None:
+        """``site1``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site2(self) -> _builtins.str | Site | None:
@@ -5661,14 +5858,16 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site2
         """
     @site2.setter
-    def site2(self, value: _builtins.str | Site | None) -> None: ...
+    def site2(self, value: _builtins.str | Site | None) -> None:
+        """``site2``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5907,7 +6106,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -5916,7 +6116,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -5925,7 +6126,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -5934,7 +6136,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -5943,7 +6146,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -5952,7 +6156,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -5961,7 +6166,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -5970,7 +6176,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -5979,7 +6186,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -5988,7 +6196,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -5997,7 +6206,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -6006,7 +6216,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -6015,7 +6226,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -6024,7 +6236,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -6033,7 +6246,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -6042,7 +6256,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -6051,7 +6266,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -6060,7 +6276,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -6069,7 +6286,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -6078,7 +6296,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -6087,7 +6306,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -6096,7 +6316,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -6105,7 +6326,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -6114,7 +6336,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @property
     def area(self) -> _builtins.float | None:
@@ -6123,7 +6346,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
         """
     @area.setter
-    def area(self, value: _t.Real | None) -> None: ...
+    def area(self, value: _t.Real | None) -> None:
+        """``area``: double; no default (unset when absent)."""
 
     @property
     def diameter(self) -> _builtins.float | None:
@@ -6132,7 +6356,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
         """
     @diameter.setter
-    def diameter(self, value: _t.Real | None) -> None: ...
+    def diameter(self, value: _t.Real | None) -> None:
+        """``diameter``: double; no default (unset when absent)."""
 
     @property
     def bias(self) -> _t.Float64Array | None:
@@ -6141,14 +6366,16 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
         """
     @bias.setter
-    def bias(self, value: Reals3 | None) -> None: ...
+    def bias(self, value: Reals3 | None) -> None:
+        """``bias``: double[3]; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -6201,7 +6428,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -6210,7 +6438,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -6219,7 +6448,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -6228,7 +6458,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -6237,7 +6468,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -6246,7 +6478,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -6255,7 +6488,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -6264,7 +6498,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -6273,7 +6508,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -6282,7 +6518,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -6291,7 +6528,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -6300,7 +6538,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -6309,7 +6548,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -6318,7 +6558,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -6327,7 +6568,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -6336,7 +6578,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -6345,7 +6588,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -6354,7 +6598,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -6363,7 +6608,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -6372,7 +6618,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -6381,7 +6628,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -6390,7 +6638,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -6399,14 +6648,16 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -6459,7 +6710,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -6468,7 +6720,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -6477,7 +6730,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -6486,7 +6740,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -6495,7 +6750,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -6504,7 +6760,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -6513,7 +6770,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -6522,7 +6780,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -6531,7 +6790,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -6540,7 +6800,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -6549,7 +6810,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -6558,7 +6820,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -6567,7 +6830,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -6576,7 +6840,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -6585,7 +6850,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -6594,7 +6860,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -6603,7 +6870,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -6612,7 +6880,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -6621,7 +6890,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -6630,7 +6900,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -6639,7 +6910,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
@@ -6648,7 +6920,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
     @motorconst.setter
-    def motorconst(self, value: Reals1To2 | None) -> None: ...
+    def motorconst(self, value: Reals1To2 | None) -> None:
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def resistance(self) -> _builtins.float | None:
@@ -6657,7 +6930,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
     @resistance.setter
-    def resistance(self, value: _t.Real | None) -> None: ...
+    def resistance(self, value: _t.Real | None) -> None:
+        """``resistance``: double; no default (unset when absent)."""
 
     @property
     def nominal(self) -> _t.Float64Array | None:
@@ -6666,7 +6940,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
         """
     @nominal.setter
-    def nominal(self, value: Reals1To3 | None) -> None: ...
+    def nominal(self, value: Reals1To3 | None) -> None:
+        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def saturation(self) -> _t.Float64Array | None:
@@ -6675,7 +6950,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
         """
     @saturation.setter
-    def saturation(self, value: Reals1To3 | None) -> None: ...
+    def saturation(self, value: Reals1To3 | None) -> None:
+        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def inductance(self) -> _t.Float64Array | None:
@@ -6684,7 +6960,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
         """
     @inductance.setter
-    def inductance(self, value: Reals1To2 | None) -> None: ...
+    def inductance(self, value: Reals1To2 | None) -> None:
+        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cogging(self) -> _t.Float64Array | None:
@@ -6693,7 +6970,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
         """
     @cogging.setter
-    def cogging(self, value: Reals1To3 | None) -> None: ...
+    def cogging(self, value: Reals1To3 | None) -> None:
+        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def controller(self) -> _t.Float64Array | None:
@@ -6702,7 +6980,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
         """
     @controller.setter
-    def controller(self, value: Reals1To6 | None) -> None: ...
+    def controller(self, value: Reals1To6 | None) -> None:
+        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent)."""
 
     @property
     def thermal(self) -> _t.Float64Array | None:
@@ -6711,7 +6990,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
         """
     @thermal.setter
-    def thermal(self, value: Reals1To6 | None) -> None: ...
+    def thermal(self, value: Reals1To6 | None) -> None:
+        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent)."""
 
     @property
     def lugre(self) -> _t.Float64Array | None:
@@ -6720,7 +7000,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
         """
     @lugre.setter
-    def lugre(self, value: Reals1To5 | None) -> None: ...
+    def lugre(self, value: Reals1To5 | None) -> None:
+        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
@@ -6729,14 +7010,16 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None: ...
+    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent). Token subset, or the none keyword."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -6792,14 +7075,16 @@ class Default(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | None) -> None: ...
+    def class_(self, value: _builtins.str | None) -> None:
+        """``class``: name declared in namespace ``default``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | None) -> None: ...
+    def dclass(self, value: _builtins.str | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def default(self) -> _List[Default]:
@@ -8119,7 +8404,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8128,7 +8414,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8137,7 +8424,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8146,7 +8434,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8155,7 +8444,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8164,7 +8454,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8173,7 +8464,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8182,7 +8474,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gain(self) -> _builtins.float | None:
@@ -8191,7 +8484,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
     @gain.setter
-    def gain(self, value: _t.Real | None) -> None: ...
+    def gain(self, value: _t.Real | None) -> None:
+        """``gain``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8226,7 +8520,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
         """
     @projection.setter
-    def projection(self, value: Projection | None) -> None: ...
+    def projection(self, value: Projection | None) -> None:
+        """``projection``: one of: perspective, orthographic; no default (unset when absent)."""
 
     @property
     def fovy(self) -> _builtins.float | None:
@@ -8235,7 +8530,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
         """
     @fovy.setter
-    def fovy(self, value: _t.Real | None) -> None: ...
+    def fovy(self, value: _t.Real | None) -> None:
+        """``fovy``: double; default "45"."""
 
     @property
     def ipd(self) -> _builtins.float | None:
@@ -8244,7 +8540,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
         """
     @ipd.setter
-    def ipd(self, value: _t.Real | None) -> None: ...
+    def ipd(self, value: _t.Real | None) -> None:
+        """``ipd``: double; default "0.068"."""
 
     @property
     def resolution(self) -> _t.Int32Array | None:
@@ -8253,7 +8550,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
         """
     @resolution.setter
-    def resolution(self, value: Integers2 | None) -> None: ...
+    def resolution(self, value: Integers2 | None) -> None:
+        """``resolution``: int[2]; default "1 1"."""
 
     @property
     def output(self) -> tuple[Camout, ...] | None:
@@ -8262,7 +8560,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
         """
     @output.setter
-    def output(self, value: Camout | Collection[Camout] | None) -> None: ...
+    def output(self, value: Camout | Collection[Camout] | None) -> None:
+        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -8271,7 +8570,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -8280,7 +8580,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -8289,7 +8590,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -8298,7 +8600,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -8307,7 +8610,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -8316,7 +8620,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -8325,7 +8630,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @property
     def focal(self) -> _t.Float32Array | None:
@@ -8334,7 +8640,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
         """
     @focal.setter
-    def focal(self, value: Reals2 | None) -> None: ...
+    def focal(self, value: Reals2 | None) -> None:
+        """``focal``: float[2]; no default (unset when absent)."""
 
     @property
     def focalpixel(self) -> _t.Float32Array | None:
@@ -8343,7 +8650,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
         """
     @focalpixel.setter
-    def focalpixel(self, value: Reals2 | None) -> None: ...
+    def focalpixel(self, value: Reals2 | None) -> None:
+        """``focalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def principal(self) -> _t.Float32Array | None:
@@ -8352,7 +8660,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
         """
     @principal.setter
-    def principal(self, value: Reals2 | None) -> None: ...
+    def principal(self, value: Reals2 | None) -> None:
+        """``principal``: float[2]; no default (unset when absent)."""
 
     @property
     def principalpixel(self) -> _t.Float32Array | None:
@@ -8361,7 +8670,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
         """
     @principalpixel.setter
-    def principalpixel(self, value: Reals2 | None) -> None: ...
+    def principalpixel(self, value: Reals2 | None) -> None:
+        """``principalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def sensorsize(self) -> _t.Float32Array | None:
@@ -8370,7 +8680,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
         """
     @sensorsize.setter
-    def sensorsize(self, value: Reals2 | None) -> None: ...
+    def sensorsize(self, value: Reals2 | None) -> None:
+        """``sensorsize``: float[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8379,7 +8690,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["projection"]) -> Projection | None:
@@ -8423,7 +8735,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8432,7 +8745,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8441,7 +8755,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8450,7 +8765,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8459,7 +8775,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8468,7 +8785,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -8477,7 +8795,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8486,7 +8805,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8495,7 +8815,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -8504,7 +8825,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -8513,7 +8835,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -8522,7 +8845,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -8531,7 +8855,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -8540,7 +8865,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @property
     def area(self) -> _builtins.float | None:
@@ -8549,7 +8875,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
         """
     @area.setter
-    def area(self, value: _t.Real | None) -> None: ...
+    def area(self, value: _t.Real | None) -> None:
+        """``area``: double; no default (unset when absent)."""
 
     @property
     def diameter(self) -> _builtins.float | None:
@@ -8558,7 +8885,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
         """
     @diameter.setter
-    def diameter(self, value: _t.Real | None) -> None: ...
+    def diameter(self, value: _t.Real | None) -> None:
+        """``diameter``: double; no default (unset when absent)."""
 
     @property
     def bias(self) -> _t.Float64Array | None:
@@ -8567,7 +8895,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
         """
     @bias.setter
-    def bias(self, value: Reals3 | None) -> None: ...
+    def bias(self, value: Reals3 | None) -> None:
+        """``bias``: double[3]; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8605,7 +8934,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8614,7 +8944,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8623,7 +8954,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8632,7 +8964,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8641,7 +8974,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8650,7 +8984,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8659,7 +8994,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8668,7 +9004,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -8677,7 +9014,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -8686,7 +9024,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -8695,7 +9034,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -8704,7 +9044,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -8713,7 +9054,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8751,7 +9093,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8760,7 +9103,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8769,7 +9113,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8778,7 +9123,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8787,7 +9133,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8796,7 +9143,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -8805,7 +9153,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -8814,7 +9163,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -8823,7 +9173,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -8832,7 +9183,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -8841,7 +9193,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
@@ -8850,7 +9203,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
     @motorconst.setter
-    def motorconst(self, value: Reals1To2 | None) -> None: ...
+    def motorconst(self, value: Reals1To2 | None) -> None:
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def resistance(self) -> _builtins.float | None:
@@ -8859,7 +9213,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
     @resistance.setter
-    def resistance(self, value: _t.Real | None) -> None: ...
+    def resistance(self, value: _t.Real | None) -> None:
+        """``resistance``: double; no default (unset when absent)."""
 
     @property
     def nominal(self) -> _t.Float64Array | None:
@@ -8868,7 +9223,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
         """
     @nominal.setter
-    def nominal(self, value: Reals1To3 | None) -> None: ...
+    def nominal(self, value: Reals1To3 | None) -> None:
+        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def saturation(self) -> _t.Float64Array | None:
@@ -8877,7 +9233,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
         """
     @saturation.setter
-    def saturation(self, value: Reals1To3 | None) -> None: ...
+    def saturation(self, value: Reals1To3 | None) -> None:
+        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def inductance(self) -> _t.Float64Array | None:
@@ -8886,7 +9243,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
         """
     @inductance.setter
-    def inductance(self, value: Reals1To2 | None) -> None: ...
+    def inductance(self, value: Reals1To2 | None) -> None:
+        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cogging(self) -> _t.Float64Array | None:
@@ -8895,7 +9253,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
         """
     @cogging.setter
-    def cogging(self, value: Reals1To3 | None) -> None: ...
+    def cogging(self, value: Reals1To3 | None) -> None:
+        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def controller(self) -> _t.Float64Array | None:
@@ -8904,7 +9263,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
         """
     @controller.setter
-    def controller(self, value: Reals1To6 | None) -> None: ...
+    def controller(self, value: Reals1To6 | None) -> None:
+        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent)."""
 
     @property
     def thermal(self) -> _t.Float64Array | None:
@@ -8913,7 +9273,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
         """
     @thermal.setter
-    def thermal(self, value: Reals1To6 | None) -> None: ...
+    def thermal(self, value: Reals1To6 | None) -> None:
+        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent)."""
 
     @property
     def lugre(self) -> _t.Float64Array | None:
@@ -8922,7 +9283,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
         """
     @lugre.setter
-    def lugre(self, value: Reals1To5 | None) -> None: ...
+    def lugre(self, value: Reals1To5 | None) -> None:
+        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
@@ -8931,7 +9293,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None: ...
+    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent). Token subset, or the none keyword."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8972,7 +9335,8 @@ class DefaultEquality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; no default (unset when absent)."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -8981,7 +9345,8 @@ class DefaultEquality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -8990,7 +9355,8 @@ class DefaultEquality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["active"]) -> _builtins.bool | None:
@@ -9016,7 +9382,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -9025,7 +9392,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -9034,7 +9402,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -9043,7 +9412,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -9052,7 +9422,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9061,7 +9432,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -9070,7 +9442,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -9079,7 +9452,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -9088,7 +9462,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -9097,7 +9472,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -9106,7 +9482,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -9115,7 +9492,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -9124,7 +9502,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -9133,7 +9512,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -9142,7 +9522,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def actdim(self) -> _builtins.int | None:
@@ -9151,7 +9532,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
         """
     @actdim.setter
-    def actdim(self, value: _t.Integer | None) -> None: ...
+    def actdim(self, value: _t.Integer | None) -> None:
+        """``actdim``: int; default "-1"."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -9160,7 +9542,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent). So3 chart keyword, or servo token subset."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -9169,7 +9552,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent)."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -9178,7 +9562,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -9187,7 +9572,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def dyntype(self) -> Dyn | None:
@@ -9196,7 +9582,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
         """
     @dyntype.setter
-    def dyntype(self, value: Dyn | None) -> None: ...
+    def dyntype(self, value: Dyn | None) -> None:
+        """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none"."""
 
     @property
     def gaintype(self) -> Gain | None:
@@ -9205,7 +9592,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
         """
     @gaintype.setter
-    def gaintype(self, value: Gain | None) -> None: ...
+    def gaintype(self, value: Gain | None) -> None:
+        """``gaintype``: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed"."""
 
     @property
     def biastype(self) -> Bias | None:
@@ -9214,7 +9602,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
         """
     @biastype.setter
-    def biastype(self, value: Bias | None) -> None: ...
+    def biastype(self, value: Bias | None) -> None:
+        """``biastype``: one of: none, affine, muscle, dcmotor, so3, user; default "none"."""
 
     @property
     def dynprm(self) -> _t.Float64Array | None:
@@ -9223,7 +9612,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
         """
     @dynprm.setter
-    def dynprm(self, value: Reals1To10 | None) -> None: ...
+    def dynprm(self, value: Reals1To10 | None) -> None:
+        """``dynprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def gainprm(self) -> _t.Float64Array | None:
@@ -9232,7 +9622,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
         """
     @gainprm.setter
-    def gainprm(self, value: Reals1To10 | None) -> None: ...
+    def gainprm(self, value: Reals1To10 | None) -> None:
+        """``gainprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def biasprm(self) -> _t.Float64Array | None:
@@ -9241,7 +9632,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
         """
     @biasprm.setter
-    def biasprm(self, value: Reals1To10 | None) -> None: ...
+    def biasprm(self, value: Reals1To10 | None) -> None:
+        """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent)."""
 
     @property
     def actearly(self) -> _builtins.bool | None:
@@ -9250,7 +9642,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
         """
     @actearly.setter
-    def actearly(self, value: _builtins.bool | None) -> None: ...
+    def actearly(self, value: _builtins.bool | None) -> None:
+        """``actearly``: bool; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9306,7 +9699,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
         """
     @type.setter
-    def type(self, value: GeomType | None) -> None: ...
+    def type(self, value: GeomType | None) -> None:
+        """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def contype(self) -> _builtins.int | None:
@@ -9315,7 +9709,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
         """
     @contype.setter
-    def contype(self, value: _t.Integer | None) -> None: ...
+    def contype(self, value: _t.Integer | None) -> None:
+        """``contype``: int; default "1"."""
 
     @property
     def conaffinity(self) -> _builtins.int | None:
@@ -9324,7 +9719,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
         """
     @conaffinity.setter
-    def conaffinity(self, value: _t.Integer | None) -> None: ...
+    def conaffinity(self, value: _t.Integer | None) -> None:
+        """``conaffinity``: int; default "1"."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -9333,7 +9729,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -9342,7 +9739,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def priority(self) -> _builtins.int | None:
@@ -9351,7 +9749,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
         """
     @priority.setter
-    def priority(self, value: _t.Integer | None) -> None: ...
+    def priority(self, value: _t.Integer | None) -> None:
+        """``priority``: int; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -9360,7 +9759,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -9369,7 +9769,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -9378,7 +9779,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To3 | None) -> None: ...
+    def friction(self, value: Reals1To3 | None) -> None:
+        """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001"."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -9387,7 +9789,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; no default (unset when absent)."""
 
     @property
     def density(self) -> _builtins.float | None:
@@ -9396,7 +9799,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
         """
     @density.setter
-    def density(self, value: _t.Real | None) -> None: ...
+    def density(self, value: _t.Real | None) -> None:
+        """``density``: double; default "1000"."""
 
     @property
     def shellinertia(self) -> _builtins.bool | None:
@@ -9405,7 +9809,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
         """
     @shellinertia.setter
-    def shellinertia(self, value: _builtins.bool | None) -> None: ...
+    def shellinertia(self, value: _builtins.bool | None) -> None:
+        """``shellinertia``: bool; no default (unset when absent)."""
 
     @property
     def solmix(self) -> _builtins.float | None:
@@ -9414,7 +9819,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
         """
     @solmix.setter
-    def solmix(self, value: _t.Real | None) -> None: ...
+    def solmix(self, value: _t.Real | None) -> None:
+        """``solmix``: double; default "1"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -9423,7 +9829,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -9432,7 +9839,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -9441,7 +9849,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -9450,7 +9859,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def surfacevel(self) -> _t.Float64Array | None:
@@ -9459,7 +9869,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
         """
     @surfacevel.setter
-    def surfacevel(self, value: Reals1To6 | None) -> None: ...
+    def surfacevel(self, value: Reals1To6 | None) -> None:
+        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent)."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -9468,7 +9879,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent)."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -9477,7 +9889,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -9486,7 +9899,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -9495,7 +9909,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -9504,7 +9919,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -9513,7 +9929,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -9522,7 +9939,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -9531,7 +9949,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def hfield(self) -> _builtins.str | Hfield | None:
@@ -9540,7 +9959,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
         """
     @hfield.setter
-    def hfield(self, value: _builtins.str | Hfield | None) -> None: ...
+    def hfield(self, value: _builtins.str | Hfield | None) -> None:
+        """``hfield``: reference to namespace ``hfield``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -9549,7 +9969,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def fitscale(self) -> _builtins.float | None:
@@ -9558,7 +9979,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
         """
     @fitscale.setter
-    def fitscale(self, value: _t.Real | None) -> None: ...
+    def fitscale(self, value: _t.Real | None) -> None:
+        """``fitscale``: double; default "1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -9567,7 +9989,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def fluidshape(self) -> Fluidshape | None:
@@ -9576,7 +9999,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
         """
     @fluidshape.setter
-    def fluidshape(self, value: Fluidshape | None) -> None: ...
+    def fluidshape(self, value: Fluidshape | None) -> None:
+        """``fluidshape``: one of: none, ellipsoid; no default (unset when absent)."""
 
     @property
     def fluidcoef(self) -> _t.Float64Array | None:
@@ -9585,7 +10009,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
         """
     @fluidcoef.setter
-    def fluidcoef(self, value: Reals1To5 | None) -> None: ...
+    def fluidcoef(self, value: Reals1To5 | None) -> None:
+        """``fluidcoef``: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9594,7 +10019,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -9603,7 +10029,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> GeomType:
@@ -9665,7 +10092,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -9674,7 +10102,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -9683,7 +10112,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -9692,7 +10122,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -9701,7 +10132,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9710,7 +10142,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -9719,7 +10152,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -9728,7 +10162,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -9737,7 +10172,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -9746,7 +10182,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -9755,7 +10192,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -9764,7 +10202,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -9773,7 +10212,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -9782,7 +10222,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -9791,7 +10232,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -9800,7 +10242,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -9809,7 +10252,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -9818,7 +10262,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -9827,7 +10272,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9865,7 +10311,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
         """
     @type.setter
-    def type(self, value: JointType | None) -> None: ...
+    def type(self, value: JointType | None) -> None:
+        """``type``: one of: free, ball, slide, hinge; default "hinge"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -9874,7 +10321,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -9883,7 +10331,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def axis(self) -> _t.Float64Array | None:
@@ -9892,7 +10341,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
         """
     @axis.setter
-    def axis(self, value: Reals3 | None) -> None: ...
+    def axis(self, value: Reals3 | None) -> None:
+        """``axis``: double[3]; default "0 0 1"."""
 
     @property
     def springdamper(self) -> _t.Float64Array | None:
@@ -9901,7 +10351,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
         """
     @springdamper.setter
-    def springdamper(self, value: Reals2 | None) -> None: ...
+    def springdamper(self, value: Reals2 | None) -> None:
+        """``springdamper``: double[2]; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -9910,7 +10361,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -9919,7 +10371,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -9928,7 +10381,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -9937,7 +10391,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -9946,7 +10401,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -9955,7 +10411,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -9964,7 +10421,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -9973,7 +10431,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -9982,7 +10441,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorgravcomp(self) -> _builtins.bool | None:
@@ -9991,7 +10451,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
         """
     @actuatorgravcomp.setter
-    def actuatorgravcomp(self, value: _builtins.bool | None) -> None: ...
+    def actuatorgravcomp(self, value: _builtins.bool | None) -> None:
+        """``actuatorgravcomp``: bool; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -10000,7 +10461,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def ref(self) -> _builtins.float | None:
@@ -10009,7 +10471,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
         """
     @ref.setter
-    def ref(self, value: _t.Real | None) -> None: ...
+    def ref(self, value: _t.Real | None) -> None:
+        """``ref``: double; no default (unset when absent)."""
 
     @property
     def springref(self) -> _builtins.float | None:
@@ -10018,7 +10481,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
         """
     @springref.setter
-    def springref(self, value: _t.Real | None) -> None: ...
+    def springref(self, value: _t.Real | None) -> None:
+        """``springref``: double; no default (unset when absent)."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -10027,7 +10491,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -10036,7 +10501,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -10045,7 +10511,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10054,7 +10521,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -10063,7 +10531,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> JointType:
@@ -10107,7 +10576,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
         """
     @directional.setter
-    def directional(self, value: _builtins.bool | None) -> None: ...
+    def directional(self, value: _builtins.bool | None) -> None:
+        """``directional``: bool; no default (unset when absent)."""
 
     @property
     def type(self) -> LightType | None:
@@ -10116,7 +10586,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
         """
     @type.setter
-    def type(self, value: LightType | None) -> None: ...
+    def type(self, value: LightType | None) -> None:
+        """``type``: one of: spot, directional, point, image; no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -10125,7 +10596,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -10134,7 +10606,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -10143,7 +10616,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def dir(self) -> _t.Float64Array | None:
@@ -10152,7 +10626,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
         """
     @dir.setter
-    def dir(self, value: Reals3 | None) -> None: ...
+    def dir(self, value: Reals3 | None) -> None:
+        """``dir``: double[3]; default "0 0 -1"."""
 
     @property
     def bulbradius(self) -> _builtins.float | None:
@@ -10161,7 +10636,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
         """
     @bulbradius.setter
-    def bulbradius(self, value: _t.Real | None) -> None: ...
+    def bulbradius(self, value: _t.Real | None) -> None:
+        """``bulbradius``: float; default "0.02"."""
 
     @property
     def intensity(self) -> _builtins.float | None:
@@ -10170,7 +10646,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
         """
     @intensity.setter
-    def intensity(self, value: _t.Real | None) -> None: ...
+    def intensity(self, value: _t.Real | None) -> None:
+        """``intensity``: float; no default (unset when absent)."""
 
     @property
     def range(self) -> _builtins.float | None:
@@ -10179,7 +10656,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
         """
     @range.setter
-    def range(self, value: _t.Real | None) -> None: ...
+    def range(self, value: _t.Real | None) -> None:
+        """``range``: float; default "10"."""
 
     @property
     def attenuation(self) -> _t.Float32Array | None:
@@ -10188,7 +10666,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
         """
     @attenuation.setter
-    def attenuation(self, value: Reals3 | None) -> None: ...
+    def attenuation(self, value: Reals3 | None) -> None:
+        """``attenuation``: float[3]; default "1 0 0"."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -10197,7 +10676,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: float; default "45"."""
 
     @property
     def softness(self) -> _builtins.float | None:
@@ -10206,7 +10686,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
         """
     @softness.setter
-    def softness(self, value: _t.Real | None) -> None: ...
+    def softness(self, value: _t.Real | None) -> None:
+        """``softness``: float; default "0.2"."""
 
     @property
     def exponent(self) -> _builtins.float | None:
@@ -10215,7 +10696,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
         """
     @exponent.setter
-    def exponent(self, value: _t.Real | None) -> None: ...
+    def exponent(self, value: _t.Real | None) -> None:
+        """``exponent``: float; default "10"."""
 
     @property
     def ambient(self) -> _t.Float32Array | None:
@@ -10224,7 +10706,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
         """
     @ambient.setter
-    def ambient(self, value: Reals3 | None) -> None: ...
+    def ambient(self, value: Reals3 | None) -> None:
+        """``ambient``: float[3]; no default (unset when absent)."""
 
     @property
     def diffuse(self) -> _t.Float32Array | None:
@@ -10233,7 +10716,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
         """
     @diffuse.setter
-    def diffuse(self, value: Reals3 | None) -> None: ...
+    def diffuse(self, value: Reals3 | None) -> None:
+        """``diffuse``: float[3]; default "0.7 0.7 0.7"."""
 
     @property
     def specular(self) -> _t.Float32Array | None:
@@ -10242,7 +10726,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
         """
     @specular.setter
-    def specular(self, value: Reals3 | None) -> None: ...
+    def specular(self, value: Reals3 | None) -> None:
+        """``specular``: float[3]; default "0.3 0.3 0.3"."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -10251,7 +10736,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @overload
     def resolve(self, name: Literal["directional"]) -> _builtins.bool | None:
@@ -10298,7 +10784,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def texrepeat(self) -> _t.Float32Array | None:
@@ -10307,7 +10794,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
         """
     @texrepeat.setter
-    def texrepeat(self, value: Reals2 | None) -> None: ...
+    def texrepeat(self, value: Reals2 | None) -> None:
+        """``texrepeat``: float[2]; default "1 1"."""
 
     @property
     def texuniform(self) -> _builtins.bool | None:
@@ -10316,7 +10804,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
         """
     @texuniform.setter
-    def texuniform(self, value: _builtins.bool | None) -> None: ...
+    def texuniform(self, value: _builtins.bool | None) -> None:
+        """``texuniform``: bool; no default (unset when absent)."""
 
     @property
     def emission(self) -> _builtins.float | None:
@@ -10325,7 +10814,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
         """
     @emission.setter
-    def emission(self, value: _t.Real | None) -> None: ...
+    def emission(self, value: _t.Real | None) -> None:
+        """``emission``: float; no default (unset when absent)."""
 
     @property
     def specular(self) -> _builtins.float | None:
@@ -10334,7 +10824,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
         """
     @specular.setter
-    def specular(self, value: _t.Real | None) -> None: ...
+    def specular(self, value: _t.Real | None) -> None:
+        """``specular``: float; default "0.5"."""
 
     @property
     def shininess(self) -> _builtins.float | None:
@@ -10343,7 +10834,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
         """
     @shininess.setter
-    def shininess(self, value: _t.Real | None) -> None: ...
+    def shininess(self, value: _t.Real | None) -> None:
+        """``shininess``: float; default "0.5"."""
 
     @property
     def reflectance(self) -> _builtins.float | None:
@@ -10352,7 +10844,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
         """
     @reflectance.setter
-    def reflectance(self, value: _t.Real | None) -> None: ...
+    def reflectance(self, value: _t.Real | None) -> None:
+        """``reflectance``: float; no default (unset when absent)."""
 
     @property
     def metallic(self) -> _builtins.float | None:
@@ -10361,7 +10854,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
         """
     @metallic.setter
-    def metallic(self, value: _t.Real | None) -> None: ...
+    def metallic(self, value: _t.Real | None) -> None:
+        """``metallic``: float; default "-1"."""
 
     @property
     def roughness(self) -> _builtins.float | None:
@@ -10370,7 +10864,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
         """
     @roughness.setter
-    def roughness(self, value: _t.Real | None) -> None: ...
+    def roughness(self, value: _t.Real | None) -> None:
+        """``roughness``: float; default "-1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -10379,7 +10874,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "1 1 1 1"."""
 
     @property
     def layer(self) -> _List[Layer]:
@@ -10456,7 +10952,8 @@ class DefaultMesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
         """
     @scale.setter
-    def scale(self, value: Reals3 | None) -> None: ...
+    def scale(self, value: Reals3 | None) -> None:
+        """``scale``: double[3]; default "1 1 1"."""
 
     @property
     def maxhullvert(self) -> _builtins.int | None:
@@ -10465,7 +10962,8 @@ class DefaultMesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
         """
     @maxhullvert.setter
-    def maxhullvert(self, value: _t.Integer | None) -> None: ...
+    def maxhullvert(self, value: _t.Integer | None) -> None:
+        """``maxhullvert``: int; default "-1"."""
 
     @property
     def inertia(self) -> MeshInertia | None:
@@ -10474,7 +10972,8 @@ class DefaultMesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
         """
     @inertia.setter
-    def inertia(self, value: MeshInertia | None) -> None: ...
+    def inertia(self, value: MeshInertia | None) -> None:
+        """``inertia``: one of: convex, legacy, exact, shell; default "legacy"."""
 
     @overload
     def resolve(self, name: Literal["scale"]) -> _t.Float64Array:
@@ -10503,7 +11002,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10512,7 +11012,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -10521,7 +11022,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -10530,7 +11032,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -10539,7 +11042,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10548,7 +11052,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -10557,7 +11062,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -10566,7 +11072,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -10575,7 +11082,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -10584,7 +11092,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -10593,7 +11102,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -10602,7 +11112,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -10611,7 +11122,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10649,7 +11161,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10658,7 +11171,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -10667,7 +11181,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -10676,7 +11191,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -10685,7 +11201,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10694,7 +11211,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -10703,7 +11221,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -10712,7 +11231,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -10721,7 +11241,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -10730,7 +11251,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -10739,7 +11261,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -10748,7 +11271,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -10757,7 +11281,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _t.Float64Array | None:
@@ -10766,7 +11291,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: Reals2 | None) -> None: ...
+    def timeconst(self, value: Reals2 | None) -> None:
+        """``timeconst``: double[2]; no default (unset when absent)."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -10775,7 +11301,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def force(self) -> _builtins.float | None:
@@ -10784,7 +11311,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
         """
     @force.setter
-    def force(self, value: _t.Real | None) -> None: ...
+    def force(self, value: _t.Real | None) -> None:
+        """``force``: double; no default (unset when absent)."""
 
     @property
     def scale(self) -> _builtins.float | None:
@@ -10793,7 +11321,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
         """
     @scale.setter
-    def scale(self, value: _t.Real | None) -> None: ...
+    def scale(self, value: _t.Real | None) -> None:
+        """``scale``: double; no default (unset when absent)."""
 
     @property
     def lmin(self) -> _builtins.float | None:
@@ -10802,7 +11331,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
         """
     @lmin.setter
-    def lmin(self, value: _t.Real | None) -> None: ...
+    def lmin(self, value: _t.Real | None) -> None:
+        """``lmin``: double; no default (unset when absent)."""
 
     @property
     def lmax(self) -> _builtins.float | None:
@@ -10811,7 +11341,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
         """
     @lmax.setter
-    def lmax(self, value: _t.Real | None) -> None: ...
+    def lmax(self, value: _t.Real | None) -> None:
+        """``lmax``: double; no default (unset when absent)."""
 
     @property
     def vmax(self) -> _builtins.float | None:
@@ -10820,7 +11351,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
         """
     @vmax.setter
-    def vmax(self, value: _t.Real | None) -> None: ...
+    def vmax(self, value: _t.Real | None) -> None:
+        """``vmax``: double; no default (unset when absent)."""
 
     @property
     def fpmax(self) -> _builtins.float | None:
@@ -10829,7 +11361,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
         """
     @fpmax.setter
-    def fpmax(self, value: _t.Real | None) -> None: ...
+    def fpmax(self, value: _t.Real | None) -> None:
+        """``fpmax``: double; no default (unset when absent)."""
 
     @property
     def fvmax(self) -> _builtins.float | None:
@@ -10838,7 +11371,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
         """
     @fvmax.setter
-    def fvmax(self, value: _t.Real | None) -> None: ...
+    def fvmax(self, value: _t.Real | None) -> None:
+        """``fvmax``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10876,7 +11410,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10885,7 +11420,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -10894,7 +11430,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -10903,7 +11440,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -10912,7 +11450,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10921,7 +11460,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -10930,7 +11470,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -10939,7 +11480,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -10948,7 +11490,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -10957,7 +11500,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -10966,7 +11510,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -10975,7 +11520,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -11013,7 +11559,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -11022,7 +11569,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To5 | None) -> None: ...
+    def friction(self, value: Reals1To5 | None) -> None:
+        """``friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -11031,7 +11579,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -11040,7 +11589,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -11049,7 +11599,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -11058,7 +11609,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -11067,7 +11619,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -11076,7 +11629,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["condim"]) -> _builtins.int:
@@ -11108,7 +11662,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -11117,7 +11672,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -11126,7 +11682,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -11135,7 +11692,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -11144,7 +11702,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11153,7 +11712,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -11162,7 +11722,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -11171,7 +11732,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def posrange(self) -> _t.Float64Array | None:
@@ -11180,7 +11742,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
         """
     @posrange.setter
-    def posrange(self, value: Reals2 | None) -> None: ...
+    def posrange(self, value: Reals2 | None) -> None:
+        """``posrange``: double[2]; no default (unset when absent). Alias - the position-setpoint range."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -11189,7 +11752,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent)."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -11198,7 +11762,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent)."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -11207,7 +11772,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -11216,7 +11782,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -11225,7 +11792,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -11234,7 +11802,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -11243,7 +11812,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -11252,7 +11822,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -11261,7 +11832,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -11270,7 +11842,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -11279,7 +11852,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def ki(self) -> _builtins.float | None:
@@ -11288,7 +11862,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
         """
     @ki.setter
-    def ki(self, value: _t.Real | None) -> None: ...
+    def ki(self, value: _t.Real | None) -> None:
+        """``ki``: double; no default (unset when absent)."""
 
     @property
     def imax(self) -> _builtins.float | None:
@@ -11297,7 +11872,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
         """
     @imax.setter
-    def imax(self, value: _t.Real | None) -> None: ...
+    def imax(self, value: _t.Real | None) -> None:
+        """``imax``: double; no default (unset when absent)."""
 
     @property
     def slewmax(self) -> _builtins.float | None:
@@ -11306,7 +11882,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
         """
     @slewmax.setter
-    def slewmax(self, value: _t.Real | None) -> None: ...
+    def slewmax(self, value: _t.Real | None) -> None:
+        """``slewmax``: double; no default (unset when absent)."""
 
     @property
     def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
@@ -11315,7 +11892,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None: ...
+    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -11356,7 +11934,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -11365,7 +11944,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -11374,7 +11954,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -11383,7 +11964,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -11392,7 +11974,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11401,7 +11984,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -11410,7 +11994,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -11419,7 +12004,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -11428,7 +12014,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -11437,7 +12024,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -11446,7 +12034,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -11455,7 +12044,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -11464,7 +12054,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -11473,7 +12064,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -11482,7 +12074,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -11491,7 +12084,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -11500,7 +12094,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -11509,7 +12104,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -11547,7 +12143,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
         """
     @type.setter
-    def type(self, value: SiteType | None) -> None: ...
+    def type(self, value: SiteType | None) -> None:
+        """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -11556,7 +12153,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -11565,7 +12163,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -11574,7 +12173,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -11583,7 +12183,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -11592,7 +12193,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -11601,7 +12203,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -11610,7 +12213,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -11619,7 +12223,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -11628,7 +12233,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -11637,7 +12243,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); default "0.005 0.005 0.005"."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -11646,7 +12253,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -11655,7 +12263,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11664,7 +12273,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> SiteType:
@@ -11705,7 +12315,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -11714,7 +12325,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -11723,7 +12335,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -11732,7 +12345,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -11741,7 +12355,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -11750,7 +12365,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -11759,7 +12375,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -11768,7 +12385,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def springlength(self) -> _t.Float64Array | None:
@@ -11777,7 +12395,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springlength
         """
     @springlength.setter
-    def springlength(self, value: Reals1To2 | None) -> None: ...
+    def springlength(self, value: Reals1To2 | None) -> None:
+        """``springlength``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def width(self) -> _builtins.float | None:
@@ -11786,7 +12405,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-width
         """
     @width.setter
-    def width(self, value: _t.Real | None) -> None: ...
+    def width(self, value: _t.Real | None) -> None:
+        """``width``: double; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -11795,7 +12415,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -11804,7 +12425,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -11813,7 +12435,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -11822,7 +12445,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -11831,7 +12455,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11840,7 +12465,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -11849,7 +12475,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -11858,7 +12485,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -11867,7 +12495,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -11876,7 +12505,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -11917,7 +12547,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
         """
     @type.setter
-    def type(self, value: TextureType | None) -> None: ...
+    def type(self, value: TextureType | None) -> None:
+        """``type``: one of: 2d, cube, skybox; default "cube"."""
 
     @property
     def colorspace(self) -> Colorspace | None:
@@ -11926,7 +12557,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
         """
     @colorspace.setter
-    def colorspace(self, value: Colorspace | None) -> None: ...
+    def colorspace(self, value: Colorspace | None) -> None:
+        """``colorspace``: one of: auto, linear, sRGB; default "auto"."""
 
     @property
     def gridsize(self) -> _t.Int32Array | None:
@@ -11935,7 +12567,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
         """
     @gridsize.setter
-    def gridsize(self, value: Integers2 | None) -> None: ...
+    def gridsize(self, value: Integers2 | None) -> None:
+        """``gridsize``: int[2]; default "1 1"."""
 
     @property
     def gridlayout(self) -> _builtins.str | None:
@@ -11944,7 +12577,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
         """
     @gridlayout.setter
-    def gridlayout(self, value: _builtins.str | None) -> None: ...
+    def gridlayout(self, value: _builtins.str | None) -> None:
+        """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent). Length must equal the gridsize product."""
 
     @property
     def builtin(self) -> Builtin | None:
@@ -11953,7 +12587,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
         """
     @builtin.setter
-    def builtin(self, value: Builtin | None) -> None: ...
+    def builtin(self, value: Builtin | None) -> None:
+        """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent)."""
 
     @property
     def rgb1(self) -> _t.Float64Array | None:
@@ -11962,7 +12597,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
         """
     @rgb1.setter
-    def rgb1(self, value: Reals3 | None) -> None: ...
+    def rgb1(self, value: Reals3 | None) -> None:
+        """``rgb1``: double[3]; default "0.8 0.8 0.8"."""
 
     @property
     def rgb2(self) -> _t.Float64Array | None:
@@ -11971,7 +12607,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
         """
     @rgb2.setter
-    def rgb2(self, value: Reals3 | None) -> None: ...
+    def rgb2(self, value: Reals3 | None) -> None:
+        """``rgb2``: double[3]; default "0.5 0.5 0.5"."""
 
     @property
     def mark(self) -> Mark | None:
@@ -11980,7 +12617,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
         """
     @mark.setter
-    def mark(self, value: Mark | None) -> None: ...
+    def mark(self, value: Mark | None) -> None:
+        """``mark``: one of: none, edge, cross, random; no default (unset when absent)."""
 
     @property
     def markrgb(self) -> _t.Float64Array | None:
@@ -11989,7 +12627,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
         """
     @markrgb.setter
-    def markrgb(self, value: Reals3 | None) -> None: ...
+    def markrgb(self, value: Reals3 | None) -> None:
+        """``markrgb``: double[3]; no default (unset when absent)."""
 
     @property
     def random(self) -> _builtins.float | None:
@@ -11998,7 +12637,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
         """
     @random.setter
-    def random(self, value: _t.Real | None) -> None: ...
+    def random(self, value: _t.Real | None) -> None:
+        """``random``: double; default "0.01"."""
 
     @property
     def width(self) -> _builtins.int | None:
@@ -12007,7 +12647,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
         """
     @width.setter
-    def width(self, value: _t.Integer | None) -> None: ...
+    def width(self, value: _t.Integer | None) -> None:
+        """``width``: int; no default (unset when absent)."""
 
     @property
     def height(self) -> _builtins.int | None:
@@ -12016,7 +12657,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
         """
     @height.setter
-    def height(self, value: _t.Integer | None) -> None: ...
+    def height(self, value: _t.Integer | None) -> None:
+        """``height``: int; no default (unset when absent)."""
 
     @property
     def hflip(self) -> _builtins.bool | None:
@@ -12025,7 +12667,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
         """
     @hflip.setter
-    def hflip(self, value: _builtins.bool | None) -> None: ...
+    def hflip(self, value: _builtins.bool | None) -> None:
+        """``hflip``: bool; no default (unset when absent)."""
 
     @property
     def vflip(self) -> _builtins.bool | None:
@@ -12034,7 +12677,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
         """
     @vflip.setter
-    def vflip(self, value: _builtins.bool | None) -> None: ...
+    def vflip(self, value: _builtins.bool | None) -> None:
+        """``vflip``: bool; no default (unset when absent)."""
 
     @property
     def nchannel(self) -> _builtins.int | None:
@@ -12043,7 +12687,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
         """
     @nchannel.setter
-    def nchannel(self, value: _t.Integer | None) -> None: ...
+    def nchannel(self, value: _t.Integer | None) -> None:
+        """``nchannel``: int; default "3"."""
 
     @property
     def embed(self) -> FalseTrueAuto | None:
@@ -12052,7 +12697,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
         """
     @embed.setter
-    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``embed``: one of: false, true, auto; default "auto"."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> TextureType:
@@ -12111,7 +12757,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12120,7 +12767,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12129,7 +12777,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12138,7 +12787,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -12147,7 +12797,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12156,7 +12807,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -12165,7 +12817,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -12174,7 +12827,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -12183,7 +12837,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -12192,7 +12847,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -12201,7 +12857,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -12210,7 +12867,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -12219,7 +12877,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -12228,7 +12887,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -12383,7 +13043,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12392,7 +13053,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12401,7 +13063,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12410,7 +13073,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -12419,7 +13083,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -12428,7 +13093,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -12437,7 +13103,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12446,7 +13113,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -12455,7 +13123,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -12464,7 +13133,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -12473,7 +13143,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -12482,7 +13153,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12523,7 +13195,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12532,7 +13205,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12541,7 +13215,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12550,7 +13225,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -12559,7 +13235,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -12568,7 +13245,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -12577,7 +13255,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12586,7 +13265,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12621,7 +13301,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12630,7 +13311,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12639,7 +13321,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12648,7 +13331,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -12657,7 +13341,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -12666,7 +13351,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -12675,7 +13361,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12684,7 +13371,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12719,7 +13407,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-young
         """
     @young.setter
-    def young(self, value: _t.Real | None) -> None: ...
+    def young(self, value: _t.Real | None) -> None:
+        """``young``: double; no default (unset when absent)."""
 
     @property
     def poisson(self) -> _builtins.float | None:
@@ -12728,7 +13417,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-poisson
         """
     @poisson.setter
-    def poisson(self, value: _t.Real | None) -> None: ...
+    def poisson(self, value: _t.Real | None) -> None:
+        """``poisson``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _builtins.float | None:
@@ -12737,7 +13427,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-damping
         """
     @damping.setter
-    def damping(self, value: _t.Real | None) -> None: ...
+    def damping(self, value: _t.Real | None) -> None:
+        """``damping``: double; no default (unset when absent)."""
 
     @property
     def thickness(self) -> _builtins.float | None:
@@ -12746,7 +13437,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-thickness
         """
     @thickness.setter
-    def thickness(self, value: _t.Real | None) -> None: ...
+    def thickness(self, value: _t.Real | None) -> None:
+        """``thickness``: double; default "-1"."""
 
     @property
     def elastic2d(self) -> Elastic2d | None:
@@ -12755,7 +13447,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-elastic2d
         """
     @elastic2d.setter
-    def elastic2d(self, value: Elastic2d | None) -> None: ...
+    def elastic2d(self, value: Elastic2d | None) -> None:
+        """``elastic2d``: one of: none, bend, stretch, both; no default (unset when absent)."""
 
     @property
     def shear(self) -> _builtins.float | None:
@@ -12764,7 +13457,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-shear
         """
     @shear.setter
-    def shear(self, value: _t.Real | None) -> None: ...
+    def shear(self, value: _t.Real | None) -> None:
+        """``shear``: double; default "0"."""
 
     @property
     def yield_(self) -> _t.Float64Array | None:
@@ -12773,7 +13467,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-yield
         """
     @yield_.setter
-    def yield_(self, value: Reals1To2 | None) -> None: ...
+    def yield_(self, value: Reals1To2 | None) -> None:
+        """``yield``: double[1..2] (1 to 2 values); default "0"."""
 
     @property
     def section(self) -> Section | None:
@@ -12782,7 +13477,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-section
         """
     @section.setter
-    def section(self, value: Section | None) -> None: ...
+    def section(self, value: Section | None) -> None:
+        """``section``: one of: circle, box; default "circle"."""
 
     @property
     def sectionsize(self) -> _t.Float64Array | None:
@@ -12791,7 +13487,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-sectionsize
         """
     @sectionsize.setter
-    def sectionsize(self, value: Reals2 | None) -> None: ...
+    def sectionsize(self, value: Reals2 | None) -> None:
+        """``sectionsize``: double[2]; default "0 0"."""
 
     @overload
     def resolve(self, name: Literal["young", "poisson", "damping"]) -> _builtins.float | None:
@@ -13087,7 +13784,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13096,7 +13794,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -13105,7 +13804,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -13114,7 +13814,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -13123,7 +13824,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def flex(self) -> _builtins.str | AnyFlex | None:
@@ -13132,14 +13834,16 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-flex
         """
     @flex.setter
-    def flex(self, value: _builtins.str | AnyFlex | None) -> None: ...
+    def flex(self, value: _builtins.str | AnyFlex | None) -> None:
+        """``flex``: reference to namespace ``flex``; required."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13174,7 +13878,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13183,7 +13888,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -13192,7 +13898,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -13201,7 +13908,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -13210,7 +13918,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def joint1(self) -> _builtins.str | AnyJoint | None:
@@ -13219,7 +13928,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint1
         """
     @joint1.setter
-    def joint1(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint1(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint1``: reference to namespace ``joint``; required."""
 
     @property
     def joint2(self) -> _builtins.str | AnyJoint | None:
@@ -13228,7 +13938,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint2
         """
     @joint2.setter
-    def joint2(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint2(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint2``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def polycoef(self) -> _t.Float64Array | None:
@@ -13237,14 +13948,16 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-polycoef
         """
     @polycoef.setter
-    def polycoef(self, value: Reals1To5 | None) -> None: ...
+    def polycoef(self, value: Reals1To5 | None) -> None:
+        """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13282,7 +13995,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13291,7 +14005,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -13300,7 +14015,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -13309,7 +14025,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -13318,7 +14035,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def tendon1(self) -> _builtins.str | AnyTendon | None:
@@ -13327,7 +14045,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon1
         """
     @tendon1.setter
-    def tendon1(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon1(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon1``: reference to namespace ``tendon``; required."""
 
     @property
     def tendon2(self) -> _builtins.str | AnyTendon | None:
@@ -13336,7 +14055,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon2
         """
     @tendon2.setter
-    def tendon2(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon2(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon2``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def polycoef(self) -> _t.Float64Array | None:
@@ -13345,14 +14065,16 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-polycoef
         """
     @polycoef.setter
-    def polycoef(self, value: Reals1To5 | None) -> None: ...
+    def polycoef(self, value: Reals1To5 | None) -> None:
+        """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13390,7 +14112,8 @@ class Exclude(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``exclude``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -13399,7 +14122,8 @@ class Exclude(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; required."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -13408,7 +14132,8 @@ class Exclude(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13483,7 +14208,8 @@ class ExtensionPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; required."""
 
     @property
     def instance(self) -> _List[Instance]:
@@ -13545,7 +14271,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13554,7 +14281,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -13563,7 +14291,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -13572,7 +14301,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -13581,7 +14311,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -13590,7 +14321,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -13599,7 +14331,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -13608,7 +14341,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -13617,7 +14351,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -13626,7 +14361,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -13635,7 +14371,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -13644,7 +14381,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def springlength(self) -> _t.Float64Array | None:
@@ -13653,7 +14391,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springlength
         """
     @springlength.setter
-    def springlength(self, value: Reals1To2 | None) -> None: ...
+    def springlength(self, value: Reals1To2 | None) -> None:
+        """``springlength``: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -13662,7 +14401,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -13671,7 +14411,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -13680,7 +14421,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -13689,7 +14431,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -13698,7 +14441,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -13707,14 +14451,16 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def joint(self) -> _List[FixedJoint]:
@@ -13800,7 +14546,8 @@ class FixedJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @property
     def coef(self) -> _builtins.float | None:
@@ -13809,7 +14556,8 @@ class FixedJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
         """
     @coef.setter
-    def coef(self, value: _t.Real | None) -> None: ...
+    def coef(self, value: _t.Real | None) -> None:
+        """``coef``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None:
@@ -13835,7 +14583,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-constraint
         """
     @constraint.setter
-    def constraint(self, value: Enable | None) -> None: ...
+    def constraint(self, value: Enable | None) -> None:
+        """``constraint``: one of: disable, enable; default "enable"."""
 
     @property
     def equality(self) -> Enable | None:
@@ -13844,7 +14593,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-equality
         """
     @equality.setter
-    def equality(self, value: Enable | None) -> None: ...
+    def equality(self, value: Enable | None) -> None:
+        """``equality``: one of: disable, enable; default "enable"."""
 
     @property
     def frictionloss(self) -> Enable | None:
@@ -13853,7 +14603,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: Enable | None) -> None: ...
+    def frictionloss(self, value: Enable | None) -> None:
+        """``frictionloss``: one of: disable, enable; default "enable"."""
 
     @property
     def limit(self) -> Enable | None:
@@ -13862,7 +14613,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-limit
         """
     @limit.setter
-    def limit(self, value: Enable | None) -> None: ...
+    def limit(self, value: Enable | None) -> None:
+        """``limit``: one of: disable, enable; default "enable"."""
 
     @property
     def contact(self) -> Enable | None:
@@ -13871,7 +14623,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-contact
         """
     @contact.setter
-    def contact(self, value: Enable | None) -> None: ...
+    def contact(self, value: Enable | None) -> None:
+        """``contact``: one of: disable, enable; default "enable"."""
 
     @property
     def spring(self) -> Enable | None:
@@ -13880,7 +14633,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-spring
         """
     @spring.setter
-    def spring(self, value: Enable | None) -> None: ...
+    def spring(self, value: Enable | None) -> None:
+        """``spring``: one of: disable, enable; default "enable"."""
 
     @property
     def damper(self) -> Enable | None:
@@ -13889,7 +14643,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-damper
         """
     @damper.setter
-    def damper(self, value: Enable | None) -> None: ...
+    def damper(self, value: Enable | None) -> None:
+        """``damper``: one of: disable, enable; default "enable"."""
 
     @property
     def gravity(self) -> Enable | None:
@@ -13898,7 +14653,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-gravity
         """
     @gravity.setter
-    def gravity(self, value: Enable | None) -> None: ...
+    def gravity(self, value: Enable | None) -> None:
+        """``gravity``: one of: disable, enable; default "enable"."""
 
     @property
     def clampctrl(self) -> Enable | None:
@@ -13907,7 +14663,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-clampctrl
         """
     @clampctrl.setter
-    def clampctrl(self, value: Enable | None) -> None: ...
+    def clampctrl(self, value: Enable | None) -> None:
+        """``clampctrl``: one of: disable, enable; default "enable"."""
 
     @property
     def warmstart(self) -> Enable | None:
@@ -13916,7 +14673,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-warmstart
         """
     @warmstart.setter
-    def warmstart(self, value: Enable | None) -> None: ...
+    def warmstart(self, value: Enable | None) -> None:
+        """``warmstart``: one of: disable, enable; default "enable"."""
 
     @property
     def filterparent(self) -> Enable | None:
@@ -13925,7 +14683,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-filterparent
         """
     @filterparent.setter
-    def filterparent(self, value: Enable | None) -> None: ...
+    def filterparent(self, value: Enable | None) -> None:
+        """``filterparent``: one of: disable, enable; default "enable"."""
 
     @property
     def actuation(self) -> Enable | None:
@@ -13934,7 +14693,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-actuation
         """
     @actuation.setter
-    def actuation(self, value: Enable | None) -> None: ...
+    def actuation(self, value: Enable | None) -> None:
+        """``actuation``: one of: disable, enable; default "enable"."""
 
     @property
     def refsafe(self) -> Enable | None:
@@ -13943,7 +14703,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-refsafe
         """
     @refsafe.setter
-    def refsafe(self, value: Enable | None) -> None: ...
+    def refsafe(self, value: Enable | None) -> None:
+        """``refsafe``: one of: disable, enable; default "enable"."""
 
     @property
     def sensor(self) -> Enable | None:
@@ -13952,7 +14713,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sensor
         """
     @sensor.setter
-    def sensor(self, value: Enable | None) -> None: ...
+    def sensor(self, value: Enable | None) -> None:
+        """``sensor``: one of: disable, enable; default "enable"."""
 
     @property
     def midphase(self) -> Enable | None:
@@ -13961,7 +14723,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-midphase
         """
     @midphase.setter
-    def midphase(self, value: Enable | None) -> None: ...
+    def midphase(self, value: Enable | None) -> None:
+        """``midphase``: one of: disable, enable; default "enable"."""
 
     @property
     def eulerdamp(self) -> Enable | None:
@@ -13970,7 +14733,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-eulerdamp
         """
     @eulerdamp.setter
-    def eulerdamp(self, value: Enable | None) -> None: ...
+    def eulerdamp(self, value: Enable | None) -> None:
+        """``eulerdamp``: one of: disable, enable; default "enable"."""
 
     @property
     def autoreset(self) -> Enable | None:
@@ -13979,7 +14743,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-autoreset
         """
     @autoreset.setter
-    def autoreset(self, value: Enable | None) -> None: ...
+    def autoreset(self, value: Enable | None) -> None:
+        """``autoreset``: one of: disable, enable; default "enable"."""
 
     @property
     def nativeccd(self) -> Enable | None:
@@ -13988,7 +14753,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-nativeccd
         """
     @nativeccd.setter
-    def nativeccd(self, value: Enable | None) -> None: ...
+    def nativeccd(self, value: Enable | None) -> None:
+        """``nativeccd``: one of: disable, enable; default "enable"."""
 
     @property
     def island(self) -> Enable | None:
@@ -13997,7 +14763,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-island
         """
     @island.setter
-    def island(self, value: Enable | None) -> None: ...
+    def island(self, value: Enable | None) -> None:
+        """``island``: one of: disable, enable; default "enable"."""
 
     @property
     def multiccd(self) -> Enable | None:
@@ -14006,7 +14773,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-multiccd
         """
     @multiccd.setter
-    def multiccd(self, value: Enable | None) -> None: ...
+    def multiccd(self, value: Enable | None) -> None:
+        """``multiccd``: one of: disable, enable; default "enable"."""
 
     @property
     def override(self) -> Enable | None:
@@ -14015,7 +14783,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-override
         """
     @override.setter
-    def override(self, value: Enable | None) -> None: ...
+    def override(self, value: Enable | None) -> None:
+        """``override``: one of: disable, enable; default "disable"."""
 
     @property
     def energy(self) -> Enable | None:
@@ -14024,7 +14793,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-energy
         """
     @energy.setter
-    def energy(self, value: Enable | None) -> None: ...
+    def energy(self, value: Enable | None) -> None:
+        """``energy``: one of: disable, enable; default "disable"."""
 
     @property
     def fwdinv(self) -> Enable | None:
@@ -14033,7 +14803,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-fwdinv
         """
     @fwdinv.setter
-    def fwdinv(self, value: Enable | None) -> None: ...
+    def fwdinv(self, value: Enable | None) -> None:
+        """``fwdinv``: one of: disable, enable; default "disable"."""
 
     @property
     def invdiscrete(self) -> Enable | None:
@@ -14042,7 +14813,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-invdiscrete
         """
     @invdiscrete.setter
-    def invdiscrete(self, value: Enable | None) -> None: ...
+    def invdiscrete(self, value: Enable | None) -> None:
+        """``invdiscrete``: one of: disable, enable; default "disable"."""
 
     @property
     def sleep(self) -> Enable | None:
@@ -14051,7 +14823,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sleep
         """
     @sleep.setter
-    def sleep(self, value: Enable | None) -> None: ...
+    def sleep(self, value: Enable | None) -> None:
+        """``sleep``: one of: disable, enable; default "disable"."""
 
     @property
     def diagexact(self) -> Enable | None:
@@ -14060,7 +14833,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-diagexact
         """
     @diagexact.setter
-    def diagexact(self, value: Enable | None) -> None: ...
+    def diagexact(self, value: Enable | None) -> None:
+        """``diagexact``: one of: disable, enable; default "disable"."""
 
     @property
     def ipc(self) -> Enable | None:
@@ -14069,7 +14843,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-ipc
         """
     @ipc.setter
-    def ipc(self, value: Enable | None) -> None: ...
+    def ipc(self, value: Enable | None) -> None:
+        """``ipc``: one of: disable, enable; default "disable"."""
 
     @property
     def speculative(self) -> Enable | None:
@@ -14078,7 +14853,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-speculative
         """
     @speculative.setter
-    def speculative(self, value: Enable | None) -> None: ...
+    def speculative(self, value: Enable | None) -> None:
+        """``speculative``: one of: disable, enable; default "disable"."""
 
     def resolve(self, name: Literal["constraint", "equality", "frictionloss", "limit", "contact", "spring", "damper", "gravity", "clampctrl", "warmstart", "filterparent", "actuation", "refsafe", "sensor", "midphase", "eulerdamp", "autoreset", "nativeccd", "island", "multiccd", "override", "energy", "fwdinv", "invdiscrete", "sleep", "diagexact", "ipc", "speculative"]) -> Enable:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -14100,7 +14876,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``flex``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -14109,7 +14886,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def dim(self) -> _builtins.int | None:
@@ -14118,7 +14896,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dim
         """
     @dim.setter
-    def dim(self, value: _t.Integer | None) -> None: ...
+    def dim(self, value: _t.Integer | None) -> None:
+        """``dim``: int; default "2"."""
 
     @property
     def radius(self) -> _builtins.float | None:
@@ -14127,7 +14906,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-radius
         """
     @radius.setter
-    def radius(self, value: _t.Real | None) -> None: ...
+    def radius(self, value: _t.Real | None) -> None:
+        """``radius``: double; default "0.005"."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -14136,7 +14916,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -14145,7 +14926,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def flatskin(self) -> _builtins.bool | None:
@@ -14154,7 +14936,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-flatskin
         """
     @flatskin.setter
-    def flatskin(self, value: _builtins.bool | None) -> None: ...
+    def flatskin(self, value: _builtins.bool | None) -> None:
+        """``flatskin``: bool; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | None:
@@ -14163,7 +14946,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-body
         """
     @body.setter
-    def body(self, value: _builtins.str | None) -> None: ...
+    def body(self, value: _builtins.str | None) -> None:
+        """``body``: string; required. Space-separated body names."""
 
     @property
     def vertex(self) -> _t.Float64Array | None:
@@ -14172,7 +14956,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-vertex
         """
     @vertex.setter
-    def vertex(self, value: RealsAny | None) -> None: ...
+    def vertex(self, value: RealsAny | None) -> None:
+        """``vertex``: double[] (any length); no default (unset when absent)."""
 
     @property
     def element(self) -> _t.Int32Array | None:
@@ -14181,7 +14966,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-element
         """
     @element.setter
-    def element(self, value: IntegersAny | None) -> None: ...
+    def element(self, value: IntegersAny | None) -> None:
+        """``element``: int[] (any length); required."""
 
     @property
     def texcoord(self) -> _t.Float32Array | None:
@@ -14190,7 +14976,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: float[] (any length); no default (unset when absent)."""
 
     @property
     def elemtexcoord(self) -> _t.Int32Array | None:
@@ -14199,7 +14986,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-elemtexcoord
         """
     @elemtexcoord.setter
-    def elemtexcoord(self, value: IntegersAny | None) -> None: ...
+    def elemtexcoord(self, value: IntegersAny | None) -> None:
+        """``elemtexcoord``: int[] (any length); no default (unset when absent)."""
 
     @property
     def node(self) -> _builtins.str | None:
@@ -14208,7 +14996,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-node
         """
     @node.setter
-    def node(self, value: _builtins.str | None) -> None: ...
+    def node(self, value: _builtins.str | None) -> None:
+        """``node``: string; no default (unset when absent). Space-separated body names."""
 
     @property
     def nodecoord(self) -> _t.Float64Array | None:
@@ -14217,7 +15006,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-nodecoord
         """
     @nodecoord.setter
-    def nodecoord(self, value: RealsAny | None) -> None: ...
+    def nodecoord(self, value: RealsAny | None) -> None:
+        """``nodecoord``: double[] (any length); no default (unset when absent)."""
 
     @property
     def cellcount(self) -> _t.Int32Array | None:
@@ -14226,7 +15016,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-cellcount
         """
     @cellcount.setter
-    def cellcount(self, value: Integers3 | None) -> None: ...
+    def cellcount(self, value: Integers3 | None) -> None:
+        """``cellcount``: int[3]; default "1 1 1"."""
 
     @property
     def dof(self) -> FDof | None:
@@ -14235,7 +15026,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dof
         """
     @dof.setter
-    def dof(self, value: FDof | None) -> None: ...
+    def dof(self, value: FDof | None) -> None:
+        """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent)."""
 
     @property
     def contact(self) -> FlexcompContact:
@@ -14423,7 +15215,8 @@ class FlexEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: _t.Real | None) -> None: ...
+    def stiffness(self, value: _t.Real | None) -> None:
+        """``stiffness``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _builtins.float | None:
@@ -14432,7 +15225,8 @@ class FlexEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-damping
         """
     @damping.setter
-    def damping(self, value: _t.Real | None) -> None: ...
+    def damping(self, value: _t.Real | None) -> None:
+        """``damping``: double; no default (unset when absent)."""
 
     def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -14454,7 +15248,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``flex``; required."""
 
     @property
     def type(self) -> Fcomp | None:
@@ -14463,7 +15258,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
         """
     @type.setter
-    def type(self, value: Fcomp | None) -> None: ...
+    def type(self, value: Fcomp | None) -> None:
+        """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -14472,7 +15268,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def dim(self) -> _builtins.int | None:
@@ -14481,7 +15278,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
         """
     @dim.setter
-    def dim(self, value: _t.Integer | None) -> None: ...
+    def dim(self, value: _t.Integer | None) -> None:
+        """``dim``: int; no default (unset when absent)."""
 
     @property
     def dof(self) -> FDof | None:
@@ -14490,7 +15288,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dof
         """
     @dof.setter
-    def dof(self, value: FDof | None) -> None: ...
+    def dof(self, value: FDof | None) -> None:
+        """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent)."""
 
     @property
     def count(self) -> _t.Int32Array | None:
@@ -14499,7 +15298,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-count
         """
     @count.setter
-    def count(self, value: Integers3 | None) -> None: ...
+    def count(self, value: Integers3 | None) -> None:
+        """``count``: int[3]; no default (unset when absent)."""
 
     @property
     def cellcount(self) -> _t.Int32Array | None:
@@ -14508,7 +15308,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-cellcount
         """
     @cellcount.setter
-    def cellcount(self, value: Integers3 | None) -> None: ...
+    def cellcount(self, value: Integers3 | None) -> None:
+        """``cellcount``: int[3]; no default (unset when absent)."""
 
     @property
     def spacing(self) -> _t.Float64Array | None:
@@ -14517,7 +15318,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
         """
     @spacing.setter
-    def spacing(self, value: Reals3 | None) -> None: ...
+    def spacing(self, value: Reals3 | None) -> None:
+        """``spacing``: double[3]; no default (unset when absent)."""
 
     @property
     def radius(self) -> _builtins.float | None:
@@ -14526,7 +15328,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
         """
     @radius.setter
-    def radius(self, value: _t.Real | None) -> None: ...
+    def radius(self, value: _t.Real | None) -> None:
+        """``radius``: double; no default (unset when absent)."""
 
     @property
     def rigid(self) -> _builtins.bool | None:
@@ -14535,7 +15338,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rigid
         """
     @rigid.setter
-    def rigid(self, value: _builtins.bool | None) -> None: ...
+    def rigid(self, value: _builtins.bool | None) -> None:
+        """``rigid``: bool; no default (unset when absent)."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -14544,7 +15348,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; no default (unset when absent)."""
 
     @property
     def inertiabox(self) -> _builtins.float | None:
@@ -14553,7 +15358,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-inertiabox
         """
     @inertiabox.setter
-    def inertiabox(self, value: _t.Real | None) -> None: ...
+    def inertiabox(self, value: _t.Real | None) -> None:
+        """``inertiabox``: double; no default (unset when absent)."""
 
     @property
     def scale(self) -> _t.Float64Array | None:
@@ -14562,7 +15368,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-scale
         """
     @scale.setter
-    def scale(self, value: Reals3 | None) -> None: ...
+    def scale(self, value: Reals3 | None) -> None:
+        """``scale``: double[3]; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -14571,7 +15378,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def point(self) -> _t.Float64Array | None:
@@ -14580,7 +15388,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-point
         """
     @point.setter
-    def point(self, value: RealsAny | None) -> None: ...
+    def point(self, value: RealsAny | None) -> None:
+        """``point``: double[] (any length); no default (unset when absent)."""
 
     @property
     def element(self) -> _t.Float64Array | None:
@@ -14589,7 +15398,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-element
         """
     @element.setter
-    def element(self, value: RealsAny | None) -> None: ...
+    def element(self, value: RealsAny | None) -> None:
+        """``element``: double[] (any length); no default (unset when absent)."""
 
     @property
     def texcoord(self) -> _t.Float64Array | None:
@@ -14598,7 +15408,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: double[] (any length); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -14607,7 +15418,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -14616,7 +15428,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; no default (unset when absent)."""
 
     @property
     def flatskin(self) -> _builtins.bool | None:
@@ -14625,7 +15438,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-flatskin
         """
     @flatskin.setter
-    def flatskin(self, value: _builtins.bool | None) -> None: ...
+    def flatskin(self, value: _builtins.bool | None) -> None:
+        """``flatskin``: bool; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -14634,7 +15448,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -14643,7 +15458,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; no default (unset when absent)."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -14652,7 +15468,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -14661,7 +15478,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -14670,7 +15488,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -14679,7 +15498,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def origin(self) -> _t.Float64Array | None:
@@ -14688,7 +15508,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-origin
         """
     @origin.setter
-    def origin(self, value: Reals3 | None) -> None: ...
+    def origin(self, value: Reals3 | None) -> None:
+        """``origin``: double[3]; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -14697,7 +15518,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def edge(self) -> FlexcompEdge:
@@ -14943,7 +15765,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-contype
         """
     @contype.setter
-    def contype(self, value: _t.Integer | None) -> None: ...
+    def contype(self, value: _t.Integer | None) -> None:
+        """``contype``: int; default "1"."""
 
     @property
     def conaffinity(self) -> _builtins.int | None:
@@ -14952,7 +15775,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-conaffinity
         """
     @conaffinity.setter
-    def conaffinity(self, value: _t.Integer | None) -> None: ...
+    def conaffinity(self, value: _t.Integer | None) -> None:
+        """``conaffinity``: int; default "1"."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -14961,7 +15785,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def priority(self) -> _builtins.int | None:
@@ -14970,7 +15795,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-priority
         """
     @priority.setter
-    def priority(self, value: _t.Integer | None) -> None: ...
+    def priority(self, value: _t.Integer | None) -> None:
+        """``priority``: int; no default (unset when absent)."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -14979,7 +15805,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To3 | None) -> None: ...
+    def friction(self, value: Reals1To3 | None) -> None:
+        """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001"."""
 
     @property
     def solmix(self) -> _builtins.float | None:
@@ -14988,7 +15815,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solmix
         """
     @solmix.setter
-    def solmix(self, value: _t.Real | None) -> None: ...
+    def solmix(self, value: _t.Real | None) -> None:
+        """``solmix``: double; default "1"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -14997,7 +15825,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -15006,7 +15835,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -15015,7 +15845,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -15024,7 +15855,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def selfcollide(self) -> Flexself | None:
@@ -15033,7 +15865,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-selfcollide
         """
     @selfcollide.setter
-    def selfcollide(self, value: Flexself | None) -> None: ...
+    def selfcollide(self, value: Flexself | None) -> None:
+        """``selfcollide``: one of: none, narrow, bvh, sap, auto; default "auto"."""
 
     @property
     def activelayers(self) -> _builtins.int | None:
@@ -15042,7 +15875,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-activelayers
         """
     @activelayers.setter
-    def activelayers(self, value: _t.Integer | None) -> None: ...
+    def activelayers(self, value: _t.Integer | None) -> None:
+        """``activelayers``: int; default "1"."""
 
     @property
     def passive(self) -> _builtins.bool | None:
@@ -15051,7 +15885,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-passive
         """
     @passive.setter
-    def passive(self, value: _builtins.bool | None) -> None: ...
+    def passive(self, value: _builtins.bool | None) -> None:
+        """``passive``: bool; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["contype", "conaffinity", "condim", "activelayers"]) -> _builtins.int:
@@ -15092,7 +15927,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
         """
     @equality.setter
-    def equality(self, value: Flexeq | _builtins.bool | None) -> None: ...
+    def equality(self, value: Flexeq | _builtins.bool | None) -> None:
+        """``equality``: one of: false, true, vert, strain; no default (unset when absent)."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -15101,7 +15937,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -15110,7 +15947,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _builtins.float | None:
@@ -15119,7 +15957,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: _t.Real | None) -> None: ...
+    def stiffness(self, value: _t.Real | None) -> None:
+        """``stiffness``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _builtins.float | None:
@@ -15128,7 +15967,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-damping
         """
     @damping.setter
-    def damping(self, value: _t.Real | None) -> None: ...
+    def damping(self, value: _t.Real | None) -> None:
+        """``damping``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["equality"]) -> Flexeq | None:
@@ -15157,7 +15997,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -15166,7 +16007,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -15175,7 +16017,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -15184,7 +16027,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -15193,7 +16037,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def flex(self) -> _builtins.str | AnyFlex | None:
@@ -15202,7 +16047,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-flex
         """
     @flex.setter
-    def flex(self, value: _builtins.str | AnyFlex | None) -> None: ...
+    def flex(self, value: _builtins.str | AnyFlex | None) -> None:
+        """``flex``: reference to namespace ``flex``; required."""
 
     @property
     def cell(self) -> _t.Float64Array | None:
@@ -15211,14 +16057,16 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-cell
         """
     @cell.setter
-    def cell(self, value: Reals3 | None) -> None: ...
+    def cell(self, value: Reals3 | None) -> None:
+        """``cell``: double[3]; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -15256,7 +16104,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -15265,7 +16114,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -15274,7 +16124,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -15283,7 +16134,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -15292,7 +16144,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -15301,7 +16154,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -15310,7 +16164,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -15319,7 +16174,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -15328,7 +16184,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -15366,7 +16223,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``frame``; no default (unset when absent)."""
 
     @property
     def childclass(self) -> _builtins.str | Default | None:
@@ -15375,7 +16233,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-childclass
         """
     @childclass.setter
-    def childclass(self, value: _builtins.str | Default | None) -> None: ...
+    def childclass(self, value: _builtins.str | Default | None) -> None:
+        """``childclass``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -15384,7 +16243,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -15393,7 +16253,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -15402,7 +16263,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -15411,7 +16273,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -15420,7 +16283,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -15429,7 +16293,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def scale(self) -> _t.Float64Array | None:
@@ -15438,7 +16303,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scale
         """
     @scale.setter
-    def scale(self, value: Reals1To3 | None) -> None: ...
+    def scale(self, value: Reals1To3 | None) -> None:
+        """``scale``: double[1..3] (1 to 3 values); default "1"."""
 
     @property
     def scaling(self) -> Scaling | None:
@@ -15447,7 +16313,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scaling
         """
     @scaling.setter
-    def scaling(self, value: Scaling | None) -> None: ...
+    def scaling(self, value: Scaling | None) -> None:
+        """``scaling``: one of: similar, geometry; default "similar"."""
 
     @property
     def massscale(self) -> _builtins.float | None:
@@ -15456,21 +16323,24 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-massscale
         """
     @massscale.setter
-    def massscale(self, value: _t.Real | None) -> None: ...
+    def massscale(self, value: _t.Real | None) -> None:
+        """``massscale``: double; default "0"."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
         """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def body(self) -> _List[Body]:
@@ -16196,7 +17066,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16205,7 +17076,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16214,7 +17086,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16223,7 +17096,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16232,7 +17106,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16241,7 +17116,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16250,7 +17126,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16259,7 +17136,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16268,7 +17146,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16277,7 +17156,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16318,7 +17198,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16327,7 +17208,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16336,7 +17218,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16345,7 +17228,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16354,7 +17238,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16363,7 +17248,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16372,7 +17258,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16381,7 +17268,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16390,7 +17278,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16399,7 +17288,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16408,7 +17298,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16417,7 +17308,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16458,7 +17350,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16467,7 +17360,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16476,7 +17370,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16485,7 +17380,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16494,7 +17390,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16503,7 +17400,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16512,7 +17410,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16521,7 +17420,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16530,7 +17430,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16539,7 +17440,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16580,7 +17482,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16589,7 +17492,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16598,7 +17502,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16607,7 +17512,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16616,7 +17522,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16625,7 +17532,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16634,7 +17542,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16643,7 +17552,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16652,7 +17562,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16661,7 +17572,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16670,7 +17582,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16679,7 +17592,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16720,7 +17634,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16729,7 +17644,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16738,7 +17654,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16747,7 +17664,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16756,7 +17674,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16765,7 +17684,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16774,7 +17694,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16783,7 +17704,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16792,7 +17714,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16801,7 +17724,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16810,7 +17734,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16819,7 +17744,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16860,7 +17786,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16869,7 +17796,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16878,7 +17806,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16887,7 +17816,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16896,7 +17826,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16905,7 +17836,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16914,7 +17846,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16923,7 +17856,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16932,7 +17866,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16941,7 +17876,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16950,7 +17886,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16959,7 +17896,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17000,7 +17938,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17009,7 +17948,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17018,7 +17958,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17027,7 +17968,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -17036,7 +17978,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -17045,7 +17988,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -17054,7 +17998,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17063,7 +18008,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -17072,7 +18018,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -17081,7 +18028,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -17090,7 +18038,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -17099,7 +18048,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17140,7 +18090,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17149,7 +18100,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17158,7 +18110,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17167,7 +18120,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -17176,7 +18130,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -17185,7 +18140,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -17194,7 +18150,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17203,7 +18160,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -17212,7 +18170,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -17221,7 +18180,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -17230,7 +18190,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -17239,7 +18200,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17280,7 +18242,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17289,7 +18252,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17298,7 +18262,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17307,7 +18272,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -17316,7 +18282,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -17325,7 +18292,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -17334,7 +18302,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17343,7 +18312,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -17352,7 +18322,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -17361,7 +18332,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -17370,7 +18342,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -17379,7 +18352,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17420,7 +18394,8 @@ class Freejoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``joint``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -17429,7 +18404,8 @@ class Freejoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def align(self) -> FalseTrueAuto | None:
@@ -17438,7 +18414,8 @@ class Freejoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-align
         """
     @align.setter
-    def align(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def align(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``align``: one of: false, true, auto; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17467,7 +18444,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17476,7 +18454,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17485,7 +18464,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17494,7 +18474,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -17503,7 +18484,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -17512,7 +18494,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -17521,7 +18504,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17530,7 +18514,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -17539,7 +18524,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -17548,7 +18534,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -17557,7 +18544,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -17566,7 +18554,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17607,7 +18596,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -17616,7 +18606,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -17625,7 +18616,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17634,7 +18626,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17643,7 +18636,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17652,7 +18646,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -17661,7 +18656,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17670,7 +18666,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -17679,7 +18676,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -17688,7 +18686,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -17697,7 +18696,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -17706,7 +18706,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -17715,7 +18716,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -17724,7 +18726,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -17733,7 +18736,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -17742,7 +18746,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -17751,7 +18756,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -17760,7 +18766,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -17769,7 +18776,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -17778,7 +18786,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -17787,7 +18796,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -17796,7 +18806,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -17805,7 +18816,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -17814,7 +18826,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -17823,7 +18836,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -17832,7 +18846,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def actdim(self) -> _builtins.int | None:
@@ -17841,7 +18856,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
         """
     @actdim.setter
-    def actdim(self, value: _t.Integer | None) -> None: ...
+    def actdim(self, value: _t.Integer | None) -> None:
+        """``actdim``: int; default "-1"."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -17850,7 +18866,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent). So3 chart keyword, or servo token subset."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -17859,7 +18876,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent)."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -17868,7 +18886,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -17877,7 +18896,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def dyntype(self) -> Dyn | None:
@@ -17886,7 +18906,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
         """
     @dyntype.setter
-    def dyntype(self, value: Dyn | None) -> None: ...
+    def dyntype(self, value: Dyn | None) -> None:
+        """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none"."""
 
     @property
     def gaintype(self) -> Gain | None:
@@ -17895,7 +18916,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
         """
     @gaintype.setter
-    def gaintype(self, value: Gain | None) -> None: ...
+    def gaintype(self, value: Gain | None) -> None:
+        """``gaintype``: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed"."""
 
     @property
     def biastype(self) -> Bias | None:
@@ -17904,7 +18926,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
         """
     @biastype.setter
-    def biastype(self, value: Bias | None) -> None: ...
+    def biastype(self, value: Bias | None) -> None:
+        """``biastype``: one of: none, affine, muscle, dcmotor, so3, user; default "none"."""
 
     @property
     def dynprm(self) -> _t.Float64Array | None:
@@ -17913,7 +18936,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
         """
     @dynprm.setter
-    def dynprm(self, value: Reals1To10 | None) -> None: ...
+    def dynprm(self, value: Reals1To10 | None) -> None:
+        """``dynprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def gainprm(self) -> _t.Float64Array | None:
@@ -17922,7 +18946,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
         """
     @gainprm.setter
-    def gainprm(self, value: Reals1To10 | None) -> None: ...
+    def gainprm(self, value: Reals1To10 | None) -> None:
+        """``gainprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def biasprm(self) -> _t.Float64Array | None:
@@ -17931,7 +18956,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
         """
     @biasprm.setter
-    def biasprm(self, value: Reals1To10 | None) -> None: ...
+    def biasprm(self, value: Reals1To10 | None) -> None:
+        """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent)."""
 
     @property
     def actearly(self) -> _builtins.bool | None:
@@ -17940,14 +18966,16 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
         """
     @actearly.setter
-    def actearly(self, value: _builtins.bool | None) -> None: ...
+    def actearly(self, value: _builtins.bool | None) -> None:
+        """``actearly``: bool; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18021,7 +19049,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``geom``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -18030,7 +19059,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def type(self) -> GeomType | None:
@@ -18039,7 +19069,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
         """
     @type.setter
-    def type(self, value: GeomType | None) -> None: ...
+    def type(self, value: GeomType | None) -> None:
+        """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def contype(self) -> _builtins.int | None:
@@ -18048,7 +19079,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
         """
     @contype.setter
-    def contype(self, value: _t.Integer | None) -> None: ...
+    def contype(self, value: _t.Integer | None) -> None:
+        """``contype``: int; default "1"."""
 
     @property
     def conaffinity(self) -> _builtins.int | None:
@@ -18057,7 +19089,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
         """
     @conaffinity.setter
-    def conaffinity(self, value: _t.Integer | None) -> None: ...
+    def conaffinity(self, value: _t.Integer | None) -> None:
+        """``conaffinity``: int; default "1"."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -18066,7 +19099,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -18075,7 +19109,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def priority(self) -> _builtins.int | None:
@@ -18084,7 +19119,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
         """
     @priority.setter
-    def priority(self, value: _t.Integer | None) -> None: ...
+    def priority(self, value: _t.Integer | None) -> None:
+        """``priority``: int; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -18093,7 +19129,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -18102,7 +19139,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -18111,7 +19149,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To3 | None) -> None: ...
+    def friction(self, value: Reals1To3 | None) -> None:
+        """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001"."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -18120,7 +19159,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; no default (unset when absent)."""
 
     @property
     def density(self) -> _builtins.float | None:
@@ -18129,7 +19169,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
         """
     @density.setter
-    def density(self, value: _t.Real | None) -> None: ...
+    def density(self, value: _t.Real | None) -> None:
+        """``density``: double; default "1000"."""
 
     @property
     def shellinertia(self) -> _builtins.bool | None:
@@ -18138,7 +19179,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
         """
     @shellinertia.setter
-    def shellinertia(self, value: _builtins.bool | None) -> None: ...
+    def shellinertia(self, value: _builtins.bool | None) -> None:
+        """``shellinertia``: bool; no default (unset when absent)."""
 
     @property
     def solmix(self) -> _builtins.float | None:
@@ -18147,7 +19189,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
         """
     @solmix.setter
-    def solmix(self, value: _t.Real | None) -> None: ...
+    def solmix(self, value: _t.Real | None) -> None:
+        """``solmix``: double; default "1"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -18156,7 +19199,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -18165,7 +19209,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -18174,7 +19219,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -18183,7 +19229,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def surfacevel(self) -> _t.Float64Array | None:
@@ -18192,7 +19239,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
         """
     @surfacevel.setter
-    def surfacevel(self, value: Reals1To6 | None) -> None: ...
+    def surfacevel(self, value: Reals1To6 | None) -> None:
+        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent)."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -18201,7 +19249,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent)."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -18210,7 +19259,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -18219,7 +19269,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -18228,7 +19279,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -18237,7 +19289,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -18246,7 +19299,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -18255,7 +19309,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -18264,7 +19319,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def hfield(self) -> _builtins.str | Hfield | None:
@@ -18273,7 +19329,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
         """
     @hfield.setter
-    def hfield(self, value: _builtins.str | Hfield | None) -> None: ...
+    def hfield(self, value: _builtins.str | Hfield | None) -> None:
+        """``hfield``: reference to namespace ``hfield``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -18282,7 +19339,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def fitscale(self) -> _builtins.float | None:
@@ -18291,7 +19349,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
         """
     @fitscale.setter
-    def fitscale(self, value: _t.Real | None) -> None: ...
+    def fitscale(self, value: _t.Real | None) -> None:
+        """``fitscale``: double; default "1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -18300,7 +19359,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def fluidshape(self) -> Fluidshape | None:
@@ -18309,7 +19369,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
         """
     @fluidshape.setter
-    def fluidshape(self, value: Fluidshape | None) -> None: ...
+    def fluidshape(self, value: Fluidshape | None) -> None:
+        """``fluidshape``: one of: none, ellipsoid; no default (unset when absent)."""
 
     @property
     def fluidcoef(self) -> _t.Float64Array | None:
@@ -18318,7 +19379,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
         """
     @fluidcoef.setter
-    def fluidcoef(self, value: Reals1To5 | None) -> None: ...
+    def fluidcoef(self, value: Reals1To5 | None) -> None:
+        """``fluidcoef``: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -18327,7 +19389,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -18336,14 +19399,16 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def plugin(self) -> _List[Plugin]:
@@ -18453,7 +19518,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-cameraid
         """
     @cameraid.setter
-    def cameraid(self, value: _t.Integer | None) -> None: ...
+    def cameraid(self, value: _t.Integer | None) -> None:
+        """``cameraid``: int; default "-1"."""
 
     @property
     def orthographic(self) -> _builtins.bool | None:
@@ -18462,7 +19528,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-orthographic
         """
     @orthographic.setter
-    def orthographic(self, value: _builtins.bool | None) -> None: ...
+    def orthographic(self, value: _builtins.bool | None) -> None:
+        """``orthographic``: bool; default "false"."""
 
     @property
     def fovy(self) -> _builtins.float | None:
@@ -18471,7 +19538,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-fovy
         """
     @fovy.setter
-    def fovy(self, value: _t.Real | None) -> None: ...
+    def fovy(self, value: _t.Real | None) -> None:
+        """``fovy``: float; default "45"."""
 
     @property
     def ipd(self) -> _builtins.float | None:
@@ -18480,7 +19548,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ipd
         """
     @ipd.setter
-    def ipd(self, value: _t.Real | None) -> None: ...
+    def ipd(self, value: _t.Real | None) -> None:
+        """``ipd``: float; default "0.068"."""
 
     @property
     def azimuth(self) -> _builtins.float | None:
@@ -18489,7 +19558,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-azimuth
         """
     @azimuth.setter
-    def azimuth(self, value: _t.Real | None) -> None: ...
+    def azimuth(self, value: _t.Real | None) -> None:
+        """``azimuth``: float; default "90"."""
 
     @property
     def elevation(self) -> _builtins.float | None:
@@ -18498,7 +19568,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-elevation
         """
     @elevation.setter
-    def elevation(self, value: _t.Real | None) -> None: ...
+    def elevation(self, value: _t.Real | None) -> None:
+        """``elevation``: float; default "-45"."""
 
     @property
     def linewidth(self) -> _builtins.float | None:
@@ -18507,7 +19578,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-linewidth
         """
     @linewidth.setter
-    def linewidth(self, value: _t.Real | None) -> None: ...
+    def linewidth(self, value: _t.Real | None) -> None:
+        """``linewidth``: float; default "1"."""
 
     @property
     def glow(self) -> _builtins.float | None:
@@ -18516,7 +19588,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-glow
         """
     @glow.setter
-    def glow(self, value: _t.Real | None) -> None: ...
+    def glow(self, value: _t.Real | None) -> None:
+        """``glow``: float; default "0.3"."""
 
     @property
     def offwidth(self) -> _builtins.int | None:
@@ -18525,7 +19598,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offwidth
         """
     @offwidth.setter
-    def offwidth(self, value: _t.Integer | None) -> None: ...
+    def offwidth(self, value: _t.Integer | None) -> None:
+        """``offwidth``: int; default "640"."""
 
     @property
     def offheight(self) -> _builtins.int | None:
@@ -18534,7 +19608,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offheight
         """
     @offheight.setter
-    def offheight(self, value: _t.Integer | None) -> None: ...
+    def offheight(self, value: _t.Integer | None) -> None:
+        """``offheight``: int; default "480"."""
 
     @property
     def realtime(self) -> _builtins.float | None:
@@ -18543,7 +19618,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
         """
     @realtime.setter
-    def realtime(self, value: _t.Real | None) -> None: ...
+    def realtime(self, value: _t.Real | None) -> None:
+        """``realtime``: float; default "1"."""
 
     @property
     def ellipsoidinertia(self) -> _builtins.bool | None:
@@ -18552,7 +19628,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ellipsoidinertia
         """
     @ellipsoidinertia.setter
-    def ellipsoidinertia(self, value: _builtins.bool | None) -> None: ...
+    def ellipsoidinertia(self, value: _builtins.bool | None) -> None:
+        """``ellipsoidinertia``: bool; default "false"."""
 
     @property
     def bvactive(self) -> _builtins.bool | None:
@@ -18561,7 +19638,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-bvactive
         """
     @bvactive.setter
-    def bvactive(self, value: _builtins.bool | None) -> None: ...
+    def bvactive(self, value: _builtins.bool | None) -> None:
+        """``bvactive``: bool; default "false"."""
 
     @overload
     def resolve(self, name: Literal["cameraid", "offwidth", "offheight"]) -> _builtins.int:
@@ -18590,7 +19668,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -18599,7 +19678,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -18608,7 +19688,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -18617,7 +19698,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -18626,7 +19708,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -18635,7 +19718,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -18644,7 +19728,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -18653,7 +19738,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -18662,7 +19748,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18700,7 +19787,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-ambient
         """
     @ambient.setter
-    def ambient(self, value: Reals3 | None) -> None: ...
+    def ambient(self, value: Reals3 | None) -> None:
+        """``ambient``: float[3]; default "0.1 0.1 0.1"."""
 
     @property
     def diffuse(self) -> _t.Float32Array | None:
@@ -18709,7 +19797,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-diffuse
         """
     @diffuse.setter
-    def diffuse(self, value: Reals3 | None) -> None: ...
+    def diffuse(self, value: Reals3 | None) -> None:
+        """``diffuse``: float[3]; default "0.4 0.4 0.4"."""
 
     @property
     def specular(self) -> _t.Float32Array | None:
@@ -18718,7 +19807,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-specular
         """
     @specular.setter
-    def specular(self, value: Reals3 | None) -> None: ...
+    def specular(self, value: Reals3 | None) -> None:
+        """``specular``: float[3]; default "0.5 0.5 0.5"."""
 
     @property
     def active(self) -> _builtins.int | None:
@@ -18727,7 +19817,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
         """
     @active.setter
-    def active(self, value: _t.Integer | None) -> None: ...
+    def active(self, value: _t.Integer | None) -> None:
+        """``active``: int; default "1"."""
 
     @overload
     def resolve(self, name: Literal["ambient", "diffuse", "specular"]) -> _t.Float32Array:
@@ -18753,7 +19844,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``hfield``; no default (unset when absent)."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -18762,7 +19854,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -18771,7 +19864,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def nrow(self) -> _builtins.int | None:
@@ -18780,7 +19874,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-nrow
         """
     @nrow.setter
-    def nrow(self, value: _t.Integer | None) -> None: ...
+    def nrow(self, value: _t.Integer | None) -> None:
+        """``nrow``: int; no default (unset when absent)."""
 
     @property
     def ncol(self) -> _builtins.int | None:
@@ -18789,7 +19884,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-ncol
         """
     @ncol.setter
-    def ncol(self, value: _t.Integer | None) -> None: ...
+    def ncol(self, value: _t.Integer | None) -> None:
+        """``ncol``: int; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -18798,7 +19894,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-size
         """
     @size.setter
-    def size(self, value: Reals4 | None) -> None: ...
+    def size(self, value: Reals4 | None) -> None:
+        """``size``: double[4]; required."""
 
     @property
     def elevation(self) -> _t.Float64Array | None:
@@ -18807,7 +19904,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-elevation
         """
     @elevation.setter
-    def elevation(self, value: RealsAny | None) -> None: ...
+    def elevation(self, value: RealsAny | None) -> None:
+        """``elevation``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type"]) -> _builtins.str | None:
@@ -18839,7 +19937,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; required."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -18848,7 +19947,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -18857,7 +19957,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; required."""
 
     @property
     def diaginertia(self) -> _t.Float64Array | None:
@@ -18866,7 +19967,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-diaginertia
         """
     @diaginertia.setter
-    def diaginertia(self, value: Reals3 | None) -> None: ...
+    def diaginertia(self, value: Reals3 | None) -> None:
+        """``diaginertia``: double[3]; no default (unset when absent)."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -18875,7 +19977,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -18884,7 +19987,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -18893,7 +19997,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -18902,7 +20007,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def fullinertia(self) -> _t.Float64Array | None:
@@ -18911,7 +20017,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-fullinertia
         """
     @fullinertia.setter
-    def fullinertia(self, value: Reals6 | None) -> None: ...
+    def fullinertia(self, value: Reals6 | None) -> None:
+        """``fullinertia``: double[6]; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["pos", "diaginertia", "axisangle", "xyaxes", "zaxis", "euler", "fullinertia"]) -> _t.Float64Array | None:
@@ -18940,7 +20047,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -18949,7 +20057,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -18958,7 +20067,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -18967,7 +20077,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -18976,7 +20087,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -18985,7 +20097,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -18994,7 +20107,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19003,7 +20117,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -19012,7 +20127,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -19021,7 +20137,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -19030,7 +20147,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def enclosed(self) -> _builtins.bool | None:
@@ -19039,7 +20157,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-enclosed
         """
     @enclosed.setter
-    def enclosed(self, value: _builtins.bool | None) -> None: ...
+    def enclosed(self, value: _builtins.bool | None) -> None:
+        """``enclosed``: bool; default "false"."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19086,7 +20205,8 @@ class Instance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``instance``; required."""
 
     @property
     def config(self) -> _List[Config]:
@@ -19150,7 +20270,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -19159,7 +20280,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -19168,7 +20290,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19177,7 +20300,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19186,7 +20310,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19195,7 +20320,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -19204,7 +20330,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19213,7 +20340,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -19222,7 +20350,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -19231,7 +20360,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -19240,7 +20370,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -19249,7 +20380,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -19258,7 +20390,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -19267,7 +20400,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -19276,7 +20410,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -19285,7 +20420,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -19294,7 +20430,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -19303,7 +20440,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -19312,7 +20450,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19321,7 +20460,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -19330,7 +20470,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -19339,7 +20480,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -19348,7 +20490,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -19357,7 +20500,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -19366,7 +20510,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -19375,7 +20520,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -19384,7 +20530,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -19393,7 +20540,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -19402,14 +20550,16 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19462,7 +20612,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``joint``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -19471,7 +20622,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def type(self) -> JointType | None:
@@ -19480,7 +20632,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
         """
     @type.setter
-    def type(self, value: JointType | None) -> None: ...
+    def type(self, value: JointType | None) -> None:
+        """``type``: one of: free, ball, slide, hinge; default "hinge"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -19489,7 +20642,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -19498,7 +20652,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def axis(self) -> _t.Float64Array | None:
@@ -19507,7 +20662,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
         """
     @axis.setter
-    def axis(self, value: Reals3 | None) -> None: ...
+    def axis(self, value: Reals3 | None) -> None:
+        """``axis``: double[3]; default "0 0 1"."""
 
     @property
     def springdamper(self) -> _t.Float64Array | None:
@@ -19516,7 +20672,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
         """
     @springdamper.setter
-    def springdamper(self, value: Reals2 | None) -> None: ...
+    def springdamper(self, value: Reals2 | None) -> None:
+        """``springdamper``: double[2]; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -19525,7 +20682,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -19534,7 +20692,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -19543,7 +20702,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -19552,7 +20712,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -19561,7 +20722,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -19570,7 +20732,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -19579,7 +20742,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -19588,7 +20752,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -19597,7 +20762,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorgravcomp(self) -> _builtins.bool | None:
@@ -19606,7 +20772,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
         """
     @actuatorgravcomp.setter
-    def actuatorgravcomp(self, value: _builtins.bool | None) -> None: ...
+    def actuatorgravcomp(self, value: _builtins.bool | None) -> None:
+        """``actuatorgravcomp``: bool; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -19615,7 +20782,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def ref(self) -> _builtins.float | None:
@@ -19624,7 +20792,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
         """
     @ref.setter
-    def ref(self, value: _t.Real | None) -> None: ...
+    def ref(self, value: _t.Real | None) -> None:
+        """``ref``: double; no default (unset when absent)."""
 
     @property
     def springref(self) -> _builtins.float | None:
@@ -19633,7 +20802,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
         """
     @springref.setter
-    def springref(self, value: _t.Real | None) -> None: ...
+    def springref(self, value: _t.Real | None) -> None:
+        """``springref``: double; no default (unset when absent)."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -19642,7 +20812,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -19651,7 +20822,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -19660,7 +20832,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19669,7 +20842,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -19678,14 +20852,16 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19735,7 +20911,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19744,7 +20921,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19753,7 +20931,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19762,7 +20941,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19771,7 +20951,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19780,7 +20961,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19789,7 +20971,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19798,7 +20981,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19807,7 +20991,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19845,7 +21030,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19854,7 +21040,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19863,7 +21050,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19872,7 +21060,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19881,7 +21070,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19890,7 +21080,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19899,7 +21090,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19908,7 +21100,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19917,7 +21110,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19955,7 +21149,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19964,7 +21159,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19973,7 +21169,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19982,7 +21179,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19991,7 +21189,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20000,7 +21199,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -20009,7 +21209,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -20018,7 +21219,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -20027,7 +21229,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20065,7 +21268,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -20074,7 +21278,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -20083,7 +21288,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -20092,7 +21298,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -20101,7 +21308,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20110,7 +21318,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -20119,7 +21328,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -20128,7 +21338,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -20137,7 +21348,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20175,7 +21387,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -20184,7 +21397,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -20193,7 +21407,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -20202,7 +21417,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -20211,7 +21427,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20220,7 +21437,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -20229,7 +21447,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -20238,7 +21457,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -20247,7 +21467,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20285,7 +21506,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -20294,7 +21516,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -20303,7 +21526,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -20312,7 +21536,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -20321,7 +21546,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20330,7 +21556,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -20339,7 +21566,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -20348,7 +21576,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -20357,7 +21586,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20395,7 +21625,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``key``; no default (unset when absent)."""
 
     @property
     def time(self) -> _builtins.float | None:
@@ -20404,7 +21635,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-time
         """
     @time.setter
-    def time(self, value: _t.Real | None) -> None: ...
+    def time(self, value: _t.Real | None) -> None:
+        """``time``: double; no default (unset when absent)."""
 
     @property
     def qpos(self) -> _t.Float64Array | None:
@@ -20413,7 +21645,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qpos
         """
     @qpos.setter
-    def qpos(self, value: RealsAny | None) -> None: ...
+    def qpos(self, value: RealsAny | None) -> None:
+        """``qpos``: double[] (any length); no default (unset when absent)."""
 
     @property
     def qvel(self) -> _t.Float64Array | None:
@@ -20422,7 +21655,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qvel
         """
     @qvel.setter
-    def qvel(self, value: RealsAny | None) -> None: ...
+    def qvel(self, value: RealsAny | None) -> None:
+        """``qvel``: double[] (any length); no default (unset when absent)."""
 
     @property
     def act(self) -> _t.Float64Array | None:
@@ -20431,7 +21665,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-act
         """
     @act.setter
-    def act(self, value: RealsAny | None) -> None: ...
+    def act(self, value: RealsAny | None) -> None:
+        """``act``: double[] (any length); no default (unset when absent)."""
 
     @property
     def mpos(self) -> _t.Float64Array | None:
@@ -20440,7 +21675,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mpos
         """
     @mpos.setter
-    def mpos(self, value: RealsAny | None) -> None: ...
+    def mpos(self, value: RealsAny | None) -> None:
+        """``mpos``: double[] (any length); no default (unset when absent)."""
 
     @property
     def mquat(self) -> _t.Float64Array | None:
@@ -20449,7 +21685,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mquat
         """
     @mquat.setter
-    def mquat(self, value: RealsAny | None) -> None: ...
+    def mquat(self, value: RealsAny | None) -> None:
+        """``mquat``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrl(self) -> _t.Float64Array | None:
@@ -20458,7 +21695,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-ctrl
         """
     @ctrl.setter
-    def ctrl(self, value: RealsAny | None) -> None: ...
+    def ctrl(self, value: RealsAny | None) -> None:
+        """``ctrl``: double[] (any length); no default (unset when absent)."""
 
     @property
     def plastic(self) -> _t.Float64Array | None:
@@ -20467,7 +21705,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-plastic
         """
     @plastic.setter
-    def plastic(self, value: RealsAny | None) -> None: ...
+    def plastic(self, value: RealsAny | None) -> None:
+        """``plastic``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20561,7 +21800,8 @@ class Layer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def role(self) -> _builtins.str | None:
@@ -20570,7 +21810,8 @@ class Layer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-role
         """
     @role.setter
-    def role(self, value: _builtins.str | None) -> None: ...
+    def role(self, value: _builtins.str | None) -> None:
+        """``role``: string; required."""
 
     @overload
     def resolve(self, name: Literal["texture"]) -> _builtins.str | Texture | None:
@@ -20596,7 +21837,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-mode
         """
     @mode.setter
-    def mode(self, value: LrMode | None) -> None: ...
+    def mode(self, value: LrMode | None) -> None:
+        """``mode``: one of: none, muscle, muscleuser, all; default "muscle"."""
 
     @property
     def useexisting(self) -> _builtins.bool | None:
@@ -20605,7 +21847,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-useexisting
         """
     @useexisting.setter
-    def useexisting(self, value: _builtins.bool | None) -> None: ...
+    def useexisting(self, value: _builtins.bool | None) -> None:
+        """``useexisting``: bool; default "true"."""
 
     @property
     def uselimit(self) -> _builtins.bool | None:
@@ -20614,7 +21857,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-uselimit
         """
     @uselimit.setter
-    def uselimit(self, value: _builtins.bool | None) -> None: ...
+    def uselimit(self, value: _builtins.bool | None) -> None:
+        """``uselimit``: bool; no default (unset when absent)."""
 
     @property
     def accel(self) -> _builtins.float | None:
@@ -20623,7 +21867,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-accel
         """
     @accel.setter
-    def accel(self, value: _t.Real | None) -> None: ...
+    def accel(self, value: _t.Real | None) -> None:
+        """``accel``: double; default "20"."""
 
     @property
     def maxforce(self) -> _builtins.float | None:
@@ -20632,7 +21877,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-maxforce
         """
     @maxforce.setter
-    def maxforce(self, value: _t.Real | None) -> None: ...
+    def maxforce(self, value: _t.Real | None) -> None:
+        """``maxforce``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -20641,7 +21887,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; default "1"."""
 
     @property
     def timestep(self) -> _builtins.float | None:
@@ -20650,7 +21897,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timestep
         """
     @timestep.setter
-    def timestep(self, value: _t.Real | None) -> None: ...
+    def timestep(self, value: _t.Real | None) -> None:
+        """``timestep``: double; default "0.01"."""
 
     @property
     def inttotal(self) -> _builtins.float | None:
@@ -20659,7 +21907,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-inttotal
         """
     @inttotal.setter
-    def inttotal(self, value: _t.Real | None) -> None: ...
+    def inttotal(self, value: _t.Real | None) -> None:
+        """``inttotal``: double; default "10"."""
 
     @property
     def interval(self) -> _builtins.float | None:
@@ -20668,7 +21917,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-interval
         """
     @interval.setter
-    def interval(self, value: _t.Real | None) -> None: ...
+    def interval(self, value: _t.Real | None) -> None:
+        """``interval``: double; default "2"."""
 
     @property
     def tolrange(self) -> _builtins.float | None:
@@ -20677,7 +21927,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-tolrange
         """
     @tolrange.setter
-    def tolrange(self, value: _t.Real | None) -> None: ...
+    def tolrange(self, value: _t.Real | None) -> None:
+        """``tolrange``: double; default "0.05"."""
 
     @overload
     def resolve(self, name: Literal["mode"]) -> LrMode:
@@ -20712,7 +21963,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``light``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -20721,7 +21973,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def directional(self) -> _builtins.bool | None:
@@ -20730,7 +21983,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
         """
     @directional.setter
-    def directional(self, value: _builtins.bool | None) -> None: ...
+    def directional(self, value: _builtins.bool | None) -> None:
+        """``directional``: bool; no default (unset when absent)."""
 
     @property
     def type(self) -> LightType | None:
@@ -20739,7 +21993,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
         """
     @type.setter
-    def type(self, value: LightType | None) -> None: ...
+    def type(self, value: LightType | None) -> None:
+        """``type``: one of: spot, directional, point, image; no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -20748,7 +22003,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -20757,7 +22013,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -20766,7 +22023,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def dir(self) -> _t.Float64Array | None:
@@ -20775,7 +22033,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
         """
     @dir.setter
-    def dir(self, value: Reals3 | None) -> None: ...
+    def dir(self, value: Reals3 | None) -> None:
+        """``dir``: double[3]; default "0 0 -1"."""
 
     @property
     def bulbradius(self) -> _builtins.float | None:
@@ -20784,7 +22043,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
         """
     @bulbradius.setter
-    def bulbradius(self, value: _t.Real | None) -> None: ...
+    def bulbradius(self, value: _t.Real | None) -> None:
+        """``bulbradius``: float; default "0.02"."""
 
     @property
     def intensity(self) -> _builtins.float | None:
@@ -20793,7 +22053,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
         """
     @intensity.setter
-    def intensity(self, value: _t.Real | None) -> None: ...
+    def intensity(self, value: _t.Real | None) -> None:
+        """``intensity``: float; no default (unset when absent)."""
 
     @property
     def range(self) -> _builtins.float | None:
@@ -20802,7 +22063,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
         """
     @range.setter
-    def range(self, value: _t.Real | None) -> None: ...
+    def range(self, value: _t.Real | None) -> None:
+        """``range``: float; default "10"."""
 
     @property
     def attenuation(self) -> _t.Float32Array | None:
@@ -20811,7 +22073,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
         """
     @attenuation.setter
-    def attenuation(self, value: Reals3 | None) -> None: ...
+    def attenuation(self, value: Reals3 | None) -> None:
+        """``attenuation``: float[3]; default "1 0 0"."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20820,7 +22083,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: float; default "45"."""
 
     @property
     def softness(self) -> _builtins.float | None:
@@ -20829,7 +22093,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
         """
     @softness.setter
-    def softness(self, value: _t.Real | None) -> None: ...
+    def softness(self, value: _t.Real | None) -> None:
+        """``softness``: float; default "0.2"."""
 
     @property
     def exponent(self) -> _builtins.float | None:
@@ -20838,7 +22103,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
         """
     @exponent.setter
-    def exponent(self, value: _t.Real | None) -> None: ...
+    def exponent(self, value: _t.Real | None) -> None:
+        """``exponent``: float; default "10"."""
 
     @property
     def ambient(self) -> _t.Float32Array | None:
@@ -20847,7 +22113,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
         """
     @ambient.setter
-    def ambient(self, value: Reals3 | None) -> None: ...
+    def ambient(self, value: Reals3 | None) -> None:
+        """``ambient``: float[3]; no default (unset when absent)."""
 
     @property
     def diffuse(self) -> _t.Float32Array | None:
@@ -20856,7 +22123,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
         """
     @diffuse.setter
-    def diffuse(self, value: Reals3 | None) -> None: ...
+    def diffuse(self, value: Reals3 | None) -> None:
+        """``diffuse``: float[3]; default "0.7 0.7 0.7"."""
 
     @property
     def specular(self) -> _t.Float32Array | None:
@@ -20865,7 +22133,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
         """
     @specular.setter
-    def specular(self, value: Reals3 | None) -> None: ...
+    def specular(self, value: Reals3 | None) -> None:
+        """``specular``: float[3]; default "0.3 0.3 0.3"."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -20874,7 +22143,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @property
     def target(self) -> _builtins.str | Body | None:
@@ -20883,7 +22153,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-target
         """
     @target.setter
-    def target(self, value: _builtins.str | Body | None) -> None: ...
+    def target(self, value: _builtins.str | Body | None) -> None:
+        """``target``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def texture(self) -> _builtins.str | Texture | None:
@@ -20892,14 +22163,16 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20958,7 +22231,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -20967,7 +22241,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -20976,7 +22251,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -20985,7 +22261,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -20994,7 +22271,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -21003,7 +22281,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -21012,7 +22291,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -21021,7 +22301,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -21030,7 +22311,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -21068,7 +22350,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: _t.Real | None) -> None: ...
+    def stiffness(self, value: _t.Real | None) -> None:
+        """``stiffness``: float; default "100"."""
 
     @property
     def stiffnessrot(self) -> _builtins.float | None:
@@ -21077,7 +22360,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffnessrot
         """
     @stiffnessrot.setter
-    def stiffnessrot(self, value: _t.Real | None) -> None: ...
+    def stiffnessrot(self, value: _t.Real | None) -> None:
+        """``stiffnessrot``: float; default "500"."""
 
     @property
     def force(self) -> _builtins.float | None:
@@ -21086,7 +22370,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-force
         """
     @force.setter
-    def force(self, value: _t.Real | None) -> None: ...
+    def force(self, value: _t.Real | None) -> None:
+        """``force``: float; default "0.005"."""
 
     @property
     def torque(self) -> _builtins.float | None:
@@ -21095,7 +22380,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-torque
         """
     @torque.setter
-    def torque(self, value: _t.Real | None) -> None: ...
+    def torque(self, value: _t.Real | None) -> None:
+        """``torque``: float; default "0.1"."""
 
     @property
     def alpha(self) -> _builtins.float | None:
@@ -21104,7 +22390,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-alpha
         """
     @alpha.setter
-    def alpha(self, value: _t.Real | None) -> None: ...
+    def alpha(self, value: _t.Real | None) -> None:
+        """``alpha``: float; default "0.3"."""
 
     @property
     def fogstart(self) -> _builtins.float | None:
@@ -21113,7 +22400,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogstart
         """
     @fogstart.setter
-    def fogstart(self, value: _t.Real | None) -> None: ...
+    def fogstart(self, value: _t.Real | None) -> None:
+        """``fogstart``: float; default "3"."""
 
     @property
     def fogend(self) -> _builtins.float | None:
@@ -21122,7 +22410,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogend
         """
     @fogend.setter
-    def fogend(self, value: _t.Real | None) -> None: ...
+    def fogend(self, value: _t.Real | None) -> None:
+        """``fogend``: float; default "10"."""
 
     @property
     def znear(self) -> _builtins.float | None:
@@ -21131,7 +22420,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
         """
     @znear.setter
-    def znear(self, value: _t.Real | None) -> None: ...
+    def znear(self, value: _t.Real | None) -> None:
+        """``znear``: float; default "0.01"."""
 
     @property
     def zfar(self) -> _builtins.float | None:
@@ -21140,7 +22430,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-zfar
         """
     @zfar.setter
-    def zfar(self, value: _t.Real | None) -> None: ...
+    def zfar(self, value: _t.Real | None) -> None:
+        """``zfar``: float; default "50"."""
 
     @property
     def haze(self) -> _builtins.float | None:
@@ -21149,7 +22440,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-haze
         """
     @haze.setter
-    def haze(self, value: _t.Real | None) -> None: ...
+    def haze(self, value: _t.Real | None) -> None:
+        """``haze``: float; default "0.3"."""
 
     @property
     def shadowclip(self) -> _builtins.float | None:
@@ -21158,7 +22450,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowclip
         """
     @shadowclip.setter
-    def shadowclip(self, value: _t.Real | None) -> None: ...
+    def shadowclip(self, value: _t.Real | None) -> None:
+        """``shadowclip``: float; default "1"."""
 
     @property
     def shadowscale(self) -> _builtins.float | None:
@@ -21167,7 +22460,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowscale
         """
     @shadowscale.setter
-    def shadowscale(self, value: _t.Real | None) -> None: ...
+    def shadowscale(self, value: _t.Real | None) -> None:
+        """``shadowscale``: float; default "0.6"."""
 
     @property
     def actuatortendon(self) -> _builtins.float | None:
@@ -21176,7 +22470,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-actuatortendon
         """
     @actuatortendon.setter
-    def actuatortendon(self, value: _t.Real | None) -> None: ...
+    def actuatortendon(self, value: _t.Real | None) -> None:
+        """``actuatortendon``: float; default "2"."""
 
     def resolve(self, name: Literal["stiffness", "stiffnessrot", "force", "torque", "alpha", "fogstart", "fogend", "znear", "zfar", "haze", "shadowclip", "shadowscale", "actuatortendon"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -21198,7 +22493,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``material``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21207,7 +22503,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def texture(self) -> _builtins.str | Texture | None:
@@ -21216,7 +22513,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def texrepeat(self) -> _t.Float32Array | None:
@@ -21225,7 +22523,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
         """
     @texrepeat.setter
-    def texrepeat(self, value: Reals2 | None) -> None: ...
+    def texrepeat(self, value: Reals2 | None) -> None:
+        """``texrepeat``: float[2]; default "1 1"."""
 
     @property
     def texuniform(self) -> _builtins.bool | None:
@@ -21234,7 +22533,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
         """
     @texuniform.setter
-    def texuniform(self, value: _builtins.bool | None) -> None: ...
+    def texuniform(self, value: _builtins.bool | None) -> None:
+        """``texuniform``: bool; no default (unset when absent)."""
 
     @property
     def emission(self) -> _builtins.float | None:
@@ -21243,7 +22543,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
         """
     @emission.setter
-    def emission(self, value: _t.Real | None) -> None: ...
+    def emission(self, value: _t.Real | None) -> None:
+        """``emission``: float; no default (unset when absent)."""
 
     @property
     def specular(self) -> _builtins.float | None:
@@ -21252,7 +22553,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
         """
     @specular.setter
-    def specular(self, value: _t.Real | None) -> None: ...
+    def specular(self, value: _t.Real | None) -> None:
+        """``specular``: float; default "0.5"."""
 
     @property
     def shininess(self) -> _builtins.float | None:
@@ -21261,7 +22563,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
         """
     @shininess.setter
-    def shininess(self, value: _t.Real | None) -> None: ...
+    def shininess(self, value: _t.Real | None) -> None:
+        """``shininess``: float; default "0.5"."""
 
     @property
     def reflectance(self) -> _builtins.float | None:
@@ -21270,7 +22573,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
         """
     @reflectance.setter
-    def reflectance(self, value: _t.Real | None) -> None: ...
+    def reflectance(self, value: _t.Real | None) -> None:
+        """``reflectance``: float; no default (unset when absent)."""
 
     @property
     def metallic(self) -> _builtins.float | None:
@@ -21279,7 +22583,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
         """
     @metallic.setter
-    def metallic(self, value: _t.Real | None) -> None: ...
+    def metallic(self, value: _t.Real | None) -> None:
+        """``metallic``: float; default "-1"."""
 
     @property
     def roughness(self) -> _builtins.float | None:
@@ -21288,7 +22593,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
         """
     @roughness.setter
-    def roughness(self, value: _t.Real | None) -> None: ...
+    def roughness(self, value: _t.Real | None) -> None:
+        """``roughness``: float; default "-1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -21297,14 +22603,16 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "1 1 1 1"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def layer(self) -> _List[Layer]:
@@ -21387,7 +22695,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21396,7 +22705,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -21405,7 +22715,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -21414,7 +22725,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def vertex(self) -> _t.Float32Array | None:
@@ -21423,7 +22735,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-vertex
         """
     @vertex.setter
-    def vertex(self, value: RealsAny | None) -> None: ...
+    def vertex(self, value: RealsAny | None) -> None:
+        """``vertex``: float[] (any length); no default (unset when absent)."""
 
     @property
     def normal(self) -> _t.Float32Array | None:
@@ -21432,7 +22745,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-normal
         """
     @normal.setter
-    def normal(self, value: RealsAny | None) -> None: ...
+    def normal(self, value: RealsAny | None) -> None:
+        """``normal``: float[] (any length); no default (unset when absent)."""
 
     @property
     def texcoord(self) -> _t.Float32Array | None:
@@ -21441,7 +22755,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: float[] (any length); no default (unset when absent)."""
 
     @property
     def face(self) -> _t.Int32Array | None:
@@ -21450,7 +22765,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-face
         """
     @face.setter
-    def face(self, value: IntegersAny | None) -> None: ...
+    def face(self, value: IntegersAny | None) -> None:
+        """``face``: int[] (any length); no default (unset when absent)."""
 
     @property
     def refpos(self) -> _t.Float64Array | None:
@@ -21459,7 +22775,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refpos
         """
     @refpos.setter
-    def refpos(self, value: Reals3 | None) -> None: ...
+    def refpos(self, value: Reals3 | None) -> None:
+        """``refpos``: double[3]; no default (unset when absent)."""
 
     @property
     def refquat(self) -> _t.Float64Array | None:
@@ -21468,7 +22785,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refquat
         """
     @refquat.setter
-    def refquat(self, value: Reals4 | None) -> None: ...
+    def refquat(self, value: Reals4 | None) -> None:
+        """``refquat``: double[4]; default "1 0 0 0"."""
 
     @property
     def scale(self) -> _t.Float64Array | None:
@@ -21477,7 +22795,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
         """
     @scale.setter
-    def scale(self, value: Reals3 | None) -> None: ...
+    def scale(self, value: Reals3 | None) -> None:
+        """``scale``: double[3]; default "1 1 1"."""
 
     @property
     def smoothnormal(self) -> _builtins.bool | None:
@@ -21486,7 +22805,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-smoothnormal
         """
     @smoothnormal.setter
-    def smoothnormal(self, value: _builtins.bool | None) -> None: ...
+    def smoothnormal(self, value: _builtins.bool | None) -> None:
+        """``smoothnormal``: bool; no default (unset when absent)."""
 
     @property
     def maxhullvert(self) -> _builtins.int | None:
@@ -21495,7 +22815,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
         """
     @maxhullvert.setter
-    def maxhullvert(self, value: _t.Integer | None) -> None: ...
+    def maxhullvert(self, value: _t.Integer | None) -> None:
+        """``maxhullvert``: int; default "-1"."""
 
     @property
     def inertia(self) -> MeshInertia | None:
@@ -21504,7 +22825,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
         """
     @inertia.setter
-    def inertia(self, value: MeshInertia | None) -> None: ...
+    def inertia(self, value: MeshInertia | None) -> None:
+        """``inertia``: one of: convex, legacy, exact, shell; default "legacy"."""
 
     @property
     def builtin(self) -> MeshBuiltin | None:
@@ -21513,7 +22835,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-builtin
         """
     @builtin.setter
-    def builtin(self, value: MeshBuiltin | None) -> None: ...
+    def builtin(self, value: MeshBuiltin | None) -> None:
+        """``builtin``: one of: none, sphere, hemisphere, cone, supertorus, supersphere, wedge, plate; no default (unset when absent)."""
 
     @property
     def params(self) -> _t.Float64Array | None:
@@ -21522,7 +22845,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-params
         """
     @params.setter
-    def params(self, value: RealsAny | None) -> None: ...
+    def params(self, value: RealsAny | None) -> None:
+        """``params``: double[] (any length); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -21531,14 +22855,16 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def plugin(self) -> _List[Plugin]:
@@ -21636,7 +22962,8 @@ class Model(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``model``; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -21645,7 +22972,8 @@ class Model(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; required."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -21654,7 +22982,8 @@ class Model(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type"]) -> _builtins.str | None:
@@ -21680,7 +23009,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21689,7 +23019,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -21698,7 +23029,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -21707,7 +23039,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -21716,7 +23049,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -21725,7 +23059,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -21734,7 +23069,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -21743,7 +23079,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -21752,7 +23089,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -21761,7 +23099,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -21770,7 +23109,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -21779,7 +23119,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -21788,7 +23129,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -21797,7 +23139,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -21806,7 +23149,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -21815,7 +23159,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -21824,7 +23169,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -21833,7 +23179,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -21842,7 +23189,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -21851,7 +23199,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -21860,7 +23209,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -21869,7 +23219,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -21878,14 +23229,16 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -21938,7 +23291,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21947,7 +23301,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -21956,7 +23311,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -21965,7 +23321,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -21974,7 +23331,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -21983,7 +23341,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -21992,7 +23351,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -22001,7 +23361,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -22010,7 +23371,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -22019,7 +23381,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -22028,7 +23391,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -22037,7 +23401,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -22046,7 +23411,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -22055,7 +23421,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -22064,7 +23431,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -22073,7 +23441,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -22082,7 +23451,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -22091,7 +23461,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -22100,7 +23471,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -22109,7 +23481,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -22118,7 +23491,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _t.Float64Array | None:
@@ -22127,7 +23501,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: Reals2 | None) -> None: ...
+    def timeconst(self, value: Reals2 | None) -> None:
+        """``timeconst``: double[2]; no default (unset when absent)."""
 
     @property
     def tausmooth(self) -> _builtins.float | None:
@@ -22136,7 +23511,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
         """
     @tausmooth.setter
-    def tausmooth(self, value: _t.Real | None) -> None: ...
+    def tausmooth(self, value: _t.Real | None) -> None:
+        """``tausmooth``: double; no default (unset when absent)."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -22145,7 +23521,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def force(self) -> _builtins.float | None:
@@ -22154,7 +23531,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
         """
     @force.setter
-    def force(self, value: _t.Real | None) -> None: ...
+    def force(self, value: _t.Real | None) -> None:
+        """``force``: double; no default (unset when absent)."""
 
     @property
     def scale(self) -> _builtins.float | None:
@@ -22163,7 +23541,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
         """
     @scale.setter
-    def scale(self, value: _t.Real | None) -> None: ...
+    def scale(self, value: _t.Real | None) -> None:
+        """``scale``: double; no default (unset when absent)."""
 
     @property
     def lmin(self) -> _builtins.float | None:
@@ -22172,7 +23551,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
         """
     @lmin.setter
-    def lmin(self, value: _t.Real | None) -> None: ...
+    def lmin(self, value: _t.Real | None) -> None:
+        """``lmin``: double; no default (unset when absent)."""
 
     @property
     def lmax(self) -> _builtins.float | None:
@@ -22181,7 +23561,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
         """
     @lmax.setter
-    def lmax(self, value: _t.Real | None) -> None: ...
+    def lmax(self, value: _t.Real | None) -> None:
+        """``lmax``: double; no default (unset when absent)."""
 
     @property
     def vmax(self) -> _builtins.float | None:
@@ -22190,7 +23571,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
         """
     @vmax.setter
-    def vmax(self, value: _t.Real | None) -> None: ...
+    def vmax(self, value: _t.Real | None) -> None:
+        """``vmax``: double; no default (unset when absent)."""
 
     @property
     def fpmax(self) -> _builtins.float | None:
@@ -22199,7 +23581,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
         """
     @fpmax.setter
-    def fpmax(self, value: _t.Real | None) -> None: ...
+    def fpmax(self, value: _t.Real | None) -> None:
+        """``fpmax``: double; no default (unset when absent)."""
 
     @property
     def fvmax(self) -> _builtins.float | None:
@@ -22208,14 +23591,16 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
         """
     @fvmax.setter
-    def fvmax(self, value: _t.Real | None) -> None: ...
+    def fvmax(self, value: _t.Real | None) -> None:
+        """``fvmax``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22268,7 +23653,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -22277,7 +23663,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -22286,7 +23673,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -22295,7 +23683,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -22304,7 +23693,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -22313,7 +23703,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -22322,7 +23713,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -22331,7 +23723,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -22340,7 +23733,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -22349,7 +23743,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -22358,7 +23753,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -22367,7 +23763,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22408,7 +23805,8 @@ class Numeric(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``numeric``; required."""
 
     @property
     def size(self) -> _builtins.int | None:
@@ -22417,7 +23815,8 @@ class Numeric(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
         """
     @size.setter
-    def size(self, value: _t.Integer | None) -> None: ...
+    def size(self, value: _t.Integer | None) -> None:
+        """``size``: int; no default (unset when absent)."""
 
     @property
     def data(self) -> _t.Float64Array | None:
@@ -22426,7 +23825,8 @@ class Numeric(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-data
         """
     @data.setter
-    def data(self, value: RealsAny | None) -> None: ...
+    def data(self, value: RealsAny | None) -> None:
+        """``data``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22455,7 +23855,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-timestep
         """
     @timestep.setter
-    def timestep(self, value: _t.Real | None) -> None: ...
+    def timestep(self, value: _t.Real | None) -> None:
+        """``timestep``: double; default "0.002"."""
 
     @property
     def impratio(self) -> _builtins.float | None:
@@ -22464,7 +23865,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-impratio
         """
     @impratio.setter
-    def impratio(self, value: _t.Real | None) -> None: ...
+    def impratio(self, value: _t.Real | None) -> None:
+        """``impratio``: double; default "1"."""
 
     @property
     def tolerance(self) -> _builtins.float | None:
@@ -22473,7 +23875,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-tolerance
         """
     @tolerance.setter
-    def tolerance(self, value: _t.Real | None) -> None: ...
+    def tolerance(self, value: _t.Real | None) -> None:
+        """``tolerance``: double; default "1e-08"."""
 
     @property
     def ls_tolerance(self) -> _builtins.float | None:
@@ -22482,7 +23885,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_tolerance
         """
     @ls_tolerance.setter
-    def ls_tolerance(self, value: _t.Real | None) -> None: ...
+    def ls_tolerance(self, value: _t.Real | None) -> None:
+        """``ls_tolerance``: double; default "0.01"."""
 
     @property
     def noslip_tolerance(self) -> _builtins.float | None:
@@ -22491,7 +23895,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_tolerance
         """
     @noslip_tolerance.setter
-    def noslip_tolerance(self, value: _t.Real | None) -> None: ...
+    def noslip_tolerance(self, value: _t.Real | None) -> None:
+        """``noslip_tolerance``: double; default "1e-06"."""
 
     @property
     def ccd_tolerance(self) -> _builtins.float | None:
@@ -22500,7 +23905,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_tolerance
         """
     @ccd_tolerance.setter
-    def ccd_tolerance(self, value: _t.Real | None) -> None: ...
+    def ccd_tolerance(self, value: _t.Real | None) -> None:
+        """``ccd_tolerance``: double; default "1e-06"."""
 
     @property
     def sleep_tolerance(self) -> _builtins.float | None:
@@ -22509,7 +23915,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sleep_tolerance
         """
     @sleep_tolerance.setter
-    def sleep_tolerance(self, value: _t.Real | None) -> None: ...
+    def sleep_tolerance(self, value: _t.Real | None) -> None:
+        """``sleep_tolerance``: double; default "0.001"."""
 
     @property
     def gravity(self) -> _t.Float64Array | None:
@@ -22518,7 +23925,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-gravity
         """
     @gravity.setter
-    def gravity(self, value: Reals3 | None) -> None: ...
+    def gravity(self, value: Reals3 | None) -> None:
+        """``gravity``: double[3]; default "0 0 -9.81"."""
 
     @property
     def wind(self) -> _t.Float64Array | None:
@@ -22527,7 +23935,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-wind
         """
     @wind.setter
-    def wind(self, value: Reals3 | None) -> None: ...
+    def wind(self, value: Reals3 | None) -> None:
+        """``wind``: double[3]; default "0 0 0"."""
 
     @property
     def magnetic(self) -> _t.Float64Array | None:
@@ -22536,7 +23945,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-magnetic
         """
     @magnetic.setter
-    def magnetic(self, value: Reals3 | None) -> None: ...
+    def magnetic(self, value: Reals3 | None) -> None:
+        """``magnetic``: double[3]; default "0 -0.5 0"."""
 
     @property
     def density(self) -> _builtins.float | None:
@@ -22545,7 +23955,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-density
         """
     @density.setter
-    def density(self, value: _t.Real | None) -> None: ...
+    def density(self, value: _t.Real | None) -> None:
+        """``density``: double; no default (unset when absent)."""
 
     @property
     def viscosity(self) -> _builtins.float | None:
@@ -22554,7 +23965,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-viscosity
         """
     @viscosity.setter
-    def viscosity(self, value: _t.Real | None) -> None: ...
+    def viscosity(self, value: _t.Real | None) -> None:
+        """``viscosity``: double; no default (unset when absent)."""
 
     @property
     def o_margin(self) -> _builtins.float | None:
@@ -22563,7 +23975,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_margin
         """
     @o_margin.setter
-    def o_margin(self, value: _t.Real | None) -> None: ...
+    def o_margin(self, value: _t.Real | None) -> None:
+        """``o_margin``: double; no default (unset when absent)."""
 
     @property
     def o_solref(self) -> _t.Float64Array | None:
@@ -22572,7 +23985,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solref
         """
     @o_solref.setter
-    def o_solref(self, value: Reals1To2 | None) -> None: ...
+    def o_solref(self, value: Reals1To2 | None) -> None:
+        """``o_solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def o_solimp(self) -> _t.Float64Array | None:
@@ -22581,7 +23995,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solimp
         """
     @o_solimp.setter
-    def o_solimp(self, value: Reals1To5 | None) -> None: ...
+    def o_solimp(self, value: Reals1To5 | None) -> None:
+        """``o_solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def o_friction(self) -> _t.Float64Array | None:
@@ -22590,7 +24005,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_friction
         """
     @o_friction.setter
-    def o_friction(self, value: Reals1To5 | None) -> None: ...
+    def o_friction(self, value: Reals1To5 | None) -> None:
+        """``o_friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001"."""
 
     @property
     def integrator(self) -> Integrator | None:
@@ -22599,7 +24015,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-integrator
         """
     @integrator.setter
-    def integrator(self, value: Integrator | None) -> None: ...
+    def integrator(self, value: Integrator | None) -> None:
+        """``integrator``: one of: Euler, RK4, implicit, implicitfast, discrete; default "Euler"."""
 
     @property
     def cone(self) -> Cone | None:
@@ -22608,7 +24025,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-cone
         """
     @cone.setter
-    def cone(self, value: Cone | None) -> None: ...
+    def cone(self, value: Cone | None) -> None:
+        """``cone``: one of: pyramidal, elliptic; default "pyramidal"."""
 
     @property
     def jacobian(self) -> Jacobian | None:
@@ -22617,7 +24035,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-jacobian
         """
     @jacobian.setter
-    def jacobian(self, value: Jacobian | None) -> None: ...
+    def jacobian(self, value: Jacobian | None) -> None:
+        """``jacobian``: one of: dense, sparse, auto; default "auto"."""
 
     @property
     def solver(self) -> Solver | None:
@@ -22626,7 +24045,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-solver
         """
     @solver.setter
-    def solver(self, value: Solver | None) -> None: ...
+    def solver(self, value: Solver | None) -> None:
+        """``solver``: one of: PGS, CG, Newton; default "Newton"."""
 
     @property
     def iterations(self) -> _builtins.int | None:
@@ -22635,7 +24055,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-iterations
         """
     @iterations.setter
-    def iterations(self, value: _t.Integer | None) -> None: ...
+    def iterations(self, value: _t.Integer | None) -> None:
+        """``iterations``: int; default "100"."""
 
     @property
     def ls_iterations(self) -> _builtins.int | None:
@@ -22644,7 +24065,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_iterations
         """
     @ls_iterations.setter
-    def ls_iterations(self, value: _t.Integer | None) -> None: ...
+    def ls_iterations(self, value: _t.Integer | None) -> None:
+        """``ls_iterations``: int; default "50"."""
 
     @property
     def noslip_iterations(self) -> _builtins.int | None:
@@ -22653,7 +24075,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_iterations
         """
     @noslip_iterations.setter
-    def noslip_iterations(self, value: _t.Integer | None) -> None: ...
+    def noslip_iterations(self, value: _t.Integer | None) -> None:
+        """``noslip_iterations``: int; no default (unset when absent)."""
 
     @property
     def ccd_iterations(self) -> _builtins.int | None:
@@ -22662,7 +24085,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_iterations
         """
     @ccd_iterations.setter
-    def ccd_iterations(self, value: _t.Integer | None) -> None: ...
+    def ccd_iterations(self, value: _t.Integer | None) -> None:
+        """``ccd_iterations``: int; default "35"."""
 
     @property
     def sdf_iterations(self) -> _builtins.int | None:
@@ -22671,7 +24095,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_iterations
         """
     @sdf_iterations.setter
-    def sdf_iterations(self, value: _t.Integer | None) -> None: ...
+    def sdf_iterations(self, value: _t.Integer | None) -> None:
+        """``sdf_iterations``: int; default "10"."""
 
     @property
     def sdf_initpoints(self) -> _builtins.int | None:
@@ -22680,7 +24105,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_initpoints
         """
     @sdf_initpoints.setter
-    def sdf_initpoints(self, value: _t.Integer | None) -> None: ...
+    def sdf_initpoints(self, value: _t.Integer | None) -> None:
+        """``sdf_initpoints``: int; default "40"."""
 
     @property
     def actuatorgroupdisable(self) -> _t.Int32Array | None:
@@ -22689,7 +24115,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
         """
     @actuatorgroupdisable.setter
-    def actuatorgroupdisable(self, value: IntegersAny | None) -> None: ...
+    def actuatorgroupdisable(self, value: IntegersAny | None) -> None:
+        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent). Bits of disableactuator."""
 
     @property
     def flag(self) -> Flag:
@@ -22835,7 +24262,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -22844,7 +24272,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -22853,7 +24282,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -22862,7 +24292,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -22871,7 +24302,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -22880,7 +24312,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -22889,7 +24322,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -22898,7 +24332,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -22907,7 +24342,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -22916,7 +24352,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -22925,7 +24362,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -22934,7 +24372,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -22943,7 +24382,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -22952,7 +24392,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -22961,7 +24402,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -22970,7 +24412,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -22979,14 +24422,16 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23036,7 +24481,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``pair``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -23045,7 +24491,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -23054,7 +24501,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -23063,7 +24511,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -23072,7 +24521,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -23081,7 +24531,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To5 | None) -> None: ...
+    def friction(self, value: Reals1To5 | None) -> None:
+        """``friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -23090,7 +24541,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -23099,7 +24551,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -23108,7 +24561,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -23117,7 +24571,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -23126,7 +24581,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -23135,14 +24591,16 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23183,7 +24641,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -23192,7 +24651,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -23201,7 +24661,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -23210,7 +24671,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -23219,7 +24681,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -23228,7 +24691,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -23237,7 +24701,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -23246,7 +24711,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -23255,7 +24721,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -23264,7 +24731,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def posrange(self) -> _t.Float64Array | None:
@@ -23273,7 +24741,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
         """
     @posrange.setter
-    def posrange(self, value: Reals2 | None) -> None: ...
+    def posrange(self, value: Reals2 | None) -> None:
+        """``posrange``: double[2]; no default (unset when absent). Alias - the position-setpoint range."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -23282,7 +24751,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent)."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -23291,7 +24761,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent)."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -23300,7 +24771,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -23309,7 +24781,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -23318,7 +24791,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -23327,7 +24801,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -23336,7 +24811,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -23345,7 +24821,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -23354,7 +24831,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -23363,7 +24841,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -23372,7 +24851,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -23381,7 +24861,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -23390,7 +24871,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -23399,7 +24881,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -23408,7 +24891,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -23417,7 +24901,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -23426,7 +24911,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -23435,7 +24921,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -23444,7 +24931,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def ki(self) -> _builtins.float | None:
@@ -23453,7 +24941,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
         """
     @ki.setter
-    def ki(self, value: _t.Real | None) -> None: ...
+    def ki(self, value: _t.Real | None) -> None:
+        """``ki``: double; no default (unset when absent)."""
 
     @property
     def imax(self) -> _builtins.float | None:
@@ -23462,7 +24951,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
         """
     @imax.setter
-    def imax(self, value: _t.Real | None) -> None: ...
+    def imax(self, value: _t.Real | None) -> None:
+        """``imax``: double; no default (unset when absent)."""
 
     @property
     def slewmax(self) -> _builtins.float | None:
@@ -23471,7 +24961,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
         """
     @slewmax.setter
-    def slewmax(self, value: _t.Real | None) -> None: ...
+    def slewmax(self, value: _t.Real | None) -> None:
+        """``slewmax``: double; no default (unset when absent)."""
 
     @property
     def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
@@ -23480,14 +24971,16 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None: ...
+    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23543,7 +25036,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-id
         """
     @id.setter
-    def id(self, value: RealsAny | None) -> None: ...
+    def id(self, value: RealsAny | None) -> None:
+        """``id``: double[] (any length); no default (unset when absent)."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -23552,7 +25046,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-range
         """
     @range.setter
-    def range(self, value: RealsAny | None) -> None: ...
+    def range(self, value: RealsAny | None) -> None:
+        """``range``: double[] (any length); no default (unset when absent)."""
 
     @property
     def grid(self) -> _t.Float64Array | None:
@@ -23561,7 +25056,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-grid
         """
     @grid.setter
-    def grid(self, value: RealsAny | None) -> None: ...
+    def grid(self, value: RealsAny | None) -> None:
+        """``grid``: double[] (any length); no default (unset when absent)."""
 
     @property
     def gridrange(self) -> _t.Float64Array | None:
@@ -23570,7 +25066,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-gridrange
         """
     @gridrange.setter
-    def gridrange(self, value: RealsAny | None) -> None: ...
+    def gridrange(self, value: RealsAny | None) -> None:
+        """``gridrange``: double[] (any length); no default (unset when absent)."""
 
     def resolve(self, name: Literal["id", "range", "grid", "gridrange"]) -> _t.Float64Array | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -23592,7 +25089,8 @@ class Plugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; no default (unset when absent)."""
 
     @property
     def instance(self) -> _builtins.str | Instance | None:
@@ -23601,7 +25099,8 @@ class Plugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-instance
         """
     @instance.setter
-    def instance(self, value: _builtins.str | Instance | None) -> None: ...
+    def instance(self, value: _builtins.str | Instance | None) -> None:
+        """``instance``: reference to namespace ``instance``; no default (unset when absent)."""
 
     @property
     def config(self) -> _List[Config]:
@@ -23669,7 +25168,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -23678,7 +25178,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -23687,7 +25188,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -23696,7 +25198,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -23705,7 +25208,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -23714,7 +25218,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -23723,7 +25228,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -23732,7 +25238,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -23741,7 +25248,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -23750,7 +25258,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -23759,7 +25268,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -23768,7 +25278,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -23777,7 +25288,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -23786,7 +25298,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -23795,7 +25308,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -23804,7 +25318,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -23813,7 +25328,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -23822,7 +25338,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -23831,7 +25348,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -23840,7 +25358,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -23849,7 +25368,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -23858,7 +25378,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -23867,7 +25388,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -23876,7 +25398,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -23885,7 +25408,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -23894,7 +25418,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -23903,7 +25428,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -23912,14 +25438,16 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23972,7 +25500,8 @@ class Pulley(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
         """
     @divisor.setter
-    def divisor(self, value: _t.Real | None) -> None: ...
+    def divisor(self, value: _t.Real | None) -> None:
+        """``divisor``: double; no default (unset when absent)."""
 
     def resolve(self, name: Literal["divisor"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -23994,7 +25523,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-shadowsize
         """
     @shadowsize.setter
-    def shadowsize(self, value: _t.Integer | None) -> None: ...
+    def shadowsize(self, value: _t.Integer | None) -> None:
+        """``shadowsize``: int; default "4096"."""
 
     @property
     def offsamples(self) -> _builtins.int | None:
@@ -24003,7 +25533,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-offsamples
         """
     @offsamples.setter
-    def offsamples(self, value: _t.Integer | None) -> None: ...
+    def offsamples(self, value: _t.Integer | None) -> None:
+        """``offsamples``: int; default "4"."""
 
     @property
     def numslices(self) -> _builtins.int | None:
@@ -24012,7 +25543,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numslices
         """
     @numslices.setter
-    def numslices(self, value: _t.Integer | None) -> None: ...
+    def numslices(self, value: _t.Integer | None) -> None:
+        """``numslices``: int; default "28"."""
 
     @property
     def numstacks(self) -> _builtins.int | None:
@@ -24021,7 +25553,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numstacks
         """
     @numstacks.setter
-    def numstacks(self, value: _t.Integer | None) -> None: ...
+    def numstacks(self, value: _t.Integer | None) -> None:
+        """``numstacks``: int; default "16"."""
 
     @property
     def numquads(self) -> _builtins.int | None:
@@ -24030,7 +25563,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numquads
         """
     @numquads.setter
-    def numquads(self, value: _t.Integer | None) -> None: ...
+    def numquads(self, value: _t.Integer | None) -> None:
+        """``numquads``: int; default "4"."""
 
     def resolve(self, name: Literal["shadowsize", "offsamples", "numslices", "numstacks", "numquads"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -24052,7 +25586,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -24061,7 +25596,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -24070,7 +25606,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -24079,7 +25616,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -24088,7 +25626,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -24097,7 +25636,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -24106,7 +25646,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -24115,7 +25656,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -24124,7 +25666,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def camera(self) -> _builtins.str | Camera | None:
@@ -24133,7 +25676,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-camera
         """
     @camera.setter
-    def camera(self, value: _builtins.str | Camera | None) -> None: ...
+    def camera(self, value: _builtins.str | Camera | None) -> None:
+        """``camera``: reference to namespace ``camera``; no default (unset when absent)."""
 
     @property
     def data(self) -> tuple[RayData, ...] | None:
@@ -24142,7 +25686,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
         """
     @data.setter
-    def data(self, value: RayData | Collection[RayData] | None) -> None: ...
+    def data(self, value: RayData | Collection[RayData] | None) -> None:
+        """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24186,7 +25731,8 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-count
         """
     @count.setter
-    def count(self, value: _t.Integer | None) -> None: ...
+    def count(self, value: _t.Integer | None) -> None:
+        """``count``: int; required."""
 
     @property
     def offset(self) -> _t.Float64Array | None:
@@ -24195,7 +25741,8 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-offset
         """
     @offset.setter
-    def offset(self, value: Reals3 | None) -> None: ...
+    def offset(self, value: Reals3 | None) -> None:
+        """``offset``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -24204,7 +25751,8 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def sep(self) -> _builtins.str | None:
@@ -24213,28 +25761,32 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-sep
         """
     @sep.setter
-    def sep(self, value: _builtins.str | None) -> None: ...
+    def sep(self, value: _builtins.str | None) -> None:
+        """``sep``: string; no default (unset when absent)."""
 
     @property
     def childclass(self) -> _builtins.str | Default | None:
         """``childclass``: reference to namespace ``default``; no default (unset when absent).
         """
     @childclass.setter
-    def childclass(self, value: _builtins.str | Default | None) -> None: ...
+    def childclass(self, value: _builtins.str | Default | None) -> None:
+        """``childclass``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
         """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the replicated children that name none (childclass takes precedence).
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the replicated children that name none (childclass takes precedence)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def body(self) -> _List[Body]:
@@ -24852,7 +26404,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-fog
         """
     @fog.setter
-    def fog(self, value: Reals4 | None) -> None: ...
+    def fog(self, value: Reals4 | None) -> None:
+        """``fog``: float[4]; default "0 0 0 1"."""
 
     @property
     def haze(self) -> _t.Float32Array | None:
@@ -24861,7 +26414,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-haze
         """
     @haze.setter
-    def haze(self, value: Reals4 | None) -> None: ...
+    def haze(self, value: Reals4 | None) -> None:
+        """``haze``: float[4]; default "1 1 1 1"."""
 
     @property
     def force(self) -> _t.Float32Array | None:
@@ -24870,7 +26424,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-force
         """
     @force.setter
-    def force(self, value: Reals4 | None) -> None: ...
+    def force(self, value: Reals4 | None) -> None:
+        """``force``: float[4]; default "1 0.5 0.5 1"."""
 
     @property
     def inertia(self) -> _t.Float32Array | None:
@@ -24879,7 +26434,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-inertia
         """
     @inertia.setter
-    def inertia(self, value: Reals4 | None) -> None: ...
+    def inertia(self, value: Reals4 | None) -> None:
+        """``inertia``: float[4]; default "0.8 0.2 0.2 0.6"."""
 
     @property
     def joint(self) -> _t.Float32Array | None:
@@ -24888,7 +26444,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-joint
         """
     @joint.setter
-    def joint(self, value: Reals4 | None) -> None: ...
+    def joint(self, value: Reals4 | None) -> None:
+        """``joint``: float[4]; default "0.2 0.6 0.8 1"."""
 
     @property
     def actuator(self) -> _t.Float32Array | None:
@@ -24897,7 +26454,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuator
         """
     @actuator.setter
-    def actuator(self, value: Reals4 | None) -> None: ...
+    def actuator(self, value: Reals4 | None) -> None:
+        """``actuator``: float[4]; default "0.2 0.25 0.2 1"."""
 
     @property
     def actuatornegative(self) -> _t.Float32Array | None:
@@ -24906,7 +26464,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatornegative
         """
     @actuatornegative.setter
-    def actuatornegative(self, value: Reals4 | None) -> None: ...
+    def actuatornegative(self, value: Reals4 | None) -> None:
+        """``actuatornegative``: float[4]; default "0.2 0.6 0.9 1"."""
 
     @property
     def actuatorpositive(self) -> _t.Float32Array | None:
@@ -24915,7 +26474,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatorpositive
         """
     @actuatorpositive.setter
-    def actuatorpositive(self, value: Reals4 | None) -> None: ...
+    def actuatorpositive(self, value: Reals4 | None) -> None:
+        """``actuatorpositive``: float[4]; default "0.9 0.4 0.2 1"."""
 
     @property
     def com(self) -> _t.Float32Array | None:
@@ -24924,7 +26484,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-com
         """
     @com.setter
-    def com(self, value: Reals4 | None) -> None: ...
+    def com(self, value: Reals4 | None) -> None:
+        """``com``: float[4]; default "0.9 0.9 0.9 1"."""
 
     @property
     def camera(self) -> _t.Float32Array | None:
@@ -24933,7 +26494,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-camera
         """
     @camera.setter
-    def camera(self, value: Reals4 | None) -> None: ...
+    def camera(self, value: Reals4 | None) -> None:
+        """``camera``: float[4]; default "0.6 0.9 0.6 1"."""
 
     @property
     def light(self) -> _t.Float32Array | None:
@@ -24942,7 +26504,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-light
         """
     @light.setter
-    def light(self, value: Reals4 | None) -> None: ...
+    def light(self, value: Reals4 | None) -> None:
+        """``light``: float[4]; default "0.6 0.6 0.9 1"."""
 
     @property
     def selectpoint(self) -> _t.Float32Array | None:
@@ -24951,7 +26514,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-selectpoint
         """
     @selectpoint.setter
-    def selectpoint(self, value: Reals4 | None) -> None: ...
+    def selectpoint(self, value: Reals4 | None) -> None:
+        """``selectpoint``: float[4]; default "0.9 0.9 0.1 1"."""
 
     @property
     def connect(self) -> _t.Float32Array | None:
@@ -24960,7 +26524,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-connect
         """
     @connect.setter
-    def connect(self, value: Reals4 | None) -> None: ...
+    def connect(self, value: Reals4 | None) -> None:
+        """``connect``: float[4]; default "0.2 0.2 0.8 1"."""
 
     @property
     def contactpoint(self) -> _t.Float32Array | None:
@@ -24969,7 +26534,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactpoint
         """
     @contactpoint.setter
-    def contactpoint(self, value: Reals4 | None) -> None: ...
+    def contactpoint(self, value: Reals4 | None) -> None:
+        """``contactpoint``: float[4]; default "0.9 0.6 0.2 1"."""
 
     @property
     def contactforce(self) -> _t.Float32Array | None:
@@ -24978,7 +26544,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactforce
         """
     @contactforce.setter
-    def contactforce(self, value: Reals4 | None) -> None: ...
+    def contactforce(self, value: Reals4 | None) -> None:
+        """``contactforce``: float[4]; default "0.7 0.9 0.9 1"."""
 
     @property
     def contactfriction(self) -> _t.Float32Array | None:
@@ -24987,7 +26554,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactfriction
         """
     @contactfriction.setter
-    def contactfriction(self, value: Reals4 | None) -> None: ...
+    def contactfriction(self, value: Reals4 | None) -> None:
+        """``contactfriction``: float[4]; default "0.9 0.8 0.4 1"."""
 
     @property
     def contacttorque(self) -> _t.Float32Array | None:
@@ -24996,7 +26564,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contacttorque
         """
     @contacttorque.setter
-    def contacttorque(self, value: Reals4 | None) -> None: ...
+    def contacttorque(self, value: Reals4 | None) -> None:
+        """``contacttorque``: float[4]; default "0.9 0.7 0.9 1"."""
 
     @property
     def contactgap(self) -> _t.Float32Array | None:
@@ -25005,7 +26574,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactgap
         """
     @contactgap.setter
-    def contactgap(self, value: Reals4 | None) -> None: ...
+    def contactgap(self, value: Reals4 | None) -> None:
+        """``contactgap``: float[4]; default "0.5 0.8 0.9 1"."""
 
     @property
     def rangefinder(self) -> _t.Float32Array | None:
@@ -25014,7 +26584,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-rangefinder
         """
     @rangefinder.setter
-    def rangefinder(self, value: Reals4 | None) -> None: ...
+    def rangefinder(self, value: Reals4 | None) -> None:
+        """``rangefinder``: float[4]; default "1 1 0.1 1"."""
 
     @property
     def constraint(self) -> _t.Float32Array | None:
@@ -25023,7 +26594,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-constraint
         """
     @constraint.setter
-    def constraint(self, value: Reals4 | None) -> None: ...
+    def constraint(self, value: Reals4 | None) -> None:
+        """``constraint``: float[4]; default "0.9 0 0 1"."""
 
     @property
     def slidercrank(self) -> _t.Float32Array | None:
@@ -25032,7 +26604,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-slidercrank
         """
     @slidercrank.setter
-    def slidercrank(self, value: Reals4 | None) -> None: ...
+    def slidercrank(self, value: Reals4 | None) -> None:
+        """``slidercrank``: float[4]; default "0.5 0.3 0.8 1"."""
 
     @property
     def crankbroken(self) -> _t.Float32Array | None:
@@ -25041,7 +26614,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-crankbroken
         """
     @crankbroken.setter
-    def crankbroken(self, value: Reals4 | None) -> None: ...
+    def crankbroken(self, value: Reals4 | None) -> None:
+        """``crankbroken``: float[4]; default "0.9 0 0 1"."""
 
     @property
     def frustum(self) -> _t.Float32Array | None:
@@ -25050,7 +26624,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-frustum
         """
     @frustum.setter
-    def frustum(self, value: Reals4 | None) -> None: ...
+    def frustum(self, value: Reals4 | None) -> None:
+        """``frustum``: float[4]; default "1 1 0 0.2"."""
 
     @property
     def bv(self) -> _t.Float32Array | None:
@@ -25059,7 +26634,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bv
         """
     @bv.setter
-    def bv(self, value: Reals4 | None) -> None: ...
+    def bv(self, value: Reals4 | None) -> None:
+        """``bv``: float[4]; default "0 1 0 0.5"."""
 
     @property
     def bvactive(self) -> _t.Float32Array | None:
@@ -25068,7 +26644,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bvactive
         """
     @bvactive.setter
-    def bvactive(self, value: Reals4 | None) -> None: ...
+    def bvactive(self, value: Reals4 | None) -> None:
+        """``bvactive``: float[4]; default "1 0 0 0.5"."""
 
     def resolve(self, name: Literal["fog", "haze", "force", "inertia", "joint", "actuator", "actuatornegative", "actuatorpositive", "com", "camera", "light", "selectpoint", "connect", "contactpoint", "contactforce", "contactfriction", "contacttorque", "contactgap", "rangefinder", "constraint", "slidercrank", "crankbroken", "frustum", "bv", "bvactive"]) -> _t.Float32Array:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -25090,7 +26667,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-forcewidth
         """
     @forcewidth.setter
-    def forcewidth(self, value: _t.Real | None) -> None: ...
+    def forcewidth(self, value: _t.Real | None) -> None:
+        """``forcewidth``: float; default "0.1"."""
 
     @property
     def contactwidth(self) -> _builtins.float | None:
@@ -25099,7 +26677,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactwidth
         """
     @contactwidth.setter
-    def contactwidth(self, value: _t.Real | None) -> None: ...
+    def contactwidth(self, value: _t.Real | None) -> None:
+        """``contactwidth``: float; default "0.3"."""
 
     @property
     def contactheight(self) -> _builtins.float | None:
@@ -25108,7 +26687,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactheight
         """
     @contactheight.setter
-    def contactheight(self, value: _t.Real | None) -> None: ...
+    def contactheight(self, value: _t.Real | None) -> None:
+        """``contactheight``: float; default "0.1"."""
 
     @property
     def connect(self) -> _builtins.float | None:
@@ -25117,7 +26697,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-connect
         """
     @connect.setter
-    def connect(self, value: _t.Real | None) -> None: ...
+    def connect(self, value: _t.Real | None) -> None:
+        """``connect``: float; default "0.2"."""
 
     @property
     def com(self) -> _builtins.float | None:
@@ -25126,7 +26707,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-com
         """
     @com.setter
-    def com(self, value: _t.Real | None) -> None: ...
+    def com(self, value: _t.Real | None) -> None:
+        """``com``: float; default "0.4"."""
 
     @property
     def camera(self) -> _builtins.float | None:
@@ -25135,7 +26717,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-camera
         """
     @camera.setter
-    def camera(self, value: _t.Real | None) -> None: ...
+    def camera(self, value: _t.Real | None) -> None:
+        """``camera``: float; default "0.3"."""
 
     @property
     def light(self) -> _builtins.float | None:
@@ -25144,7 +26727,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-light
         """
     @light.setter
-    def light(self, value: _t.Real | None) -> None: ...
+    def light(self, value: _t.Real | None) -> None:
+        """``light``: float; default "0.3"."""
 
     @property
     def selectpoint(self) -> _builtins.float | None:
@@ -25153,7 +26737,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-selectpoint
         """
     @selectpoint.setter
-    def selectpoint(self, value: _t.Real | None) -> None: ...
+    def selectpoint(self, value: _t.Real | None) -> None:
+        """``selectpoint``: float; default "0.2"."""
 
     @property
     def jointlength(self) -> _builtins.float | None:
@@ -25162,7 +26747,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointlength
         """
     @jointlength.setter
-    def jointlength(self, value: _t.Real | None) -> None: ...
+    def jointlength(self, value: _t.Real | None) -> None:
+        """``jointlength``: float; default "1"."""
 
     @property
     def jointwidth(self) -> _builtins.float | None:
@@ -25171,7 +26757,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointwidth
         """
     @jointwidth.setter
-    def jointwidth(self, value: _t.Real | None) -> None: ...
+    def jointwidth(self, value: _t.Real | None) -> None:
+        """``jointwidth``: float; default "0.1"."""
 
     @property
     def actuatorlength(self) -> _builtins.float | None:
@@ -25180,7 +26767,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorlength
         """
     @actuatorlength.setter
-    def actuatorlength(self, value: _t.Real | None) -> None: ...
+    def actuatorlength(self, value: _t.Real | None) -> None:
+        """``actuatorlength``: float; default "0.7"."""
 
     @property
     def actuatorwidth(self) -> _builtins.float | None:
@@ -25189,7 +26777,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorwidth
         """
     @actuatorwidth.setter
-    def actuatorwidth(self, value: _t.Real | None) -> None: ...
+    def actuatorwidth(self, value: _t.Real | None) -> None:
+        """``actuatorwidth``: float; default "0.2"."""
 
     @property
     def framelength(self) -> _builtins.float | None:
@@ -25198,7 +26787,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framelength
         """
     @framelength.setter
-    def framelength(self, value: _t.Real | None) -> None: ...
+    def framelength(self, value: _t.Real | None) -> None:
+        """``framelength``: float; default "1"."""
 
     @property
     def framewidth(self) -> _builtins.float | None:
@@ -25207,7 +26797,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framewidth
         """
     @framewidth.setter
-    def framewidth(self, value: _t.Real | None) -> None: ...
+    def framewidth(self, value: _t.Real | None) -> None:
+        """``framewidth``: float; default "0.1"."""
 
     @property
     def constraint(self) -> _builtins.float | None:
@@ -25216,7 +26807,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-constraint
         """
     @constraint.setter
-    def constraint(self, value: _t.Real | None) -> None: ...
+    def constraint(self, value: _t.Real | None) -> None:
+        """``constraint``: float; default "0.1"."""
 
     @property
     def slidercrank(self) -> _builtins.float | None:
@@ -25225,7 +26817,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-slidercrank
         """
     @slidercrank.setter
-    def slidercrank(self, value: _t.Real | None) -> None: ...
+    def slidercrank(self, value: _t.Real | None) -> None:
+        """``slidercrank``: float; default "0.2"."""
 
     @property
     def frustum(self) -> _builtins.float | None:
@@ -25234,7 +26827,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-frustum
         """
     @frustum.setter
-    def frustum(self, value: _t.Real | None) -> None: ...
+    def frustum(self, value: _t.Real | None) -> None:
+        """``frustum``: float; default "10"."""
 
     def resolve(self, name: Literal["forcewidth", "contactwidth", "contactheight", "connect", "com", "camera", "light", "selectpoint", "jointlength", "jointwidth", "actuatorlength", "actuatorwidth", "framelength", "framewidth", "constraint", "slidercrank", "frustum"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -27233,7 +28827,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -27242,7 +28837,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -27251,7 +28847,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -27260,7 +28857,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -27269,7 +28867,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -27278,7 +28877,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -27287,7 +28887,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -27296,7 +28897,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -27305,7 +28907,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -27314,7 +28917,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -27323,7 +28927,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -27332,7 +28937,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def subtree1(self) -> _builtins.str | Body | None:
@@ -27341,7 +28947,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree1
         """
     @subtree1.setter
-    def subtree1(self, value: _builtins.str | Body | None) -> None: ...
+    def subtree1(self, value: _builtins.str | Body | None) -> None:
+        """``subtree1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def subtree2(self) -> _builtins.str | Body | None:
@@ -27350,7 +28957,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree2
         """
     @subtree2.setter
-    def subtree2(self, value: _builtins.str | Body | None) -> None: ...
+    def subtree2(self, value: _builtins.str | Body | None) -> None:
+        """``subtree2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -27359,7 +28967,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def num(self) -> _builtins.int | None:
@@ -27368,7 +28977,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
         """
     @num.setter
-    def num(self, value: _t.Integer | None) -> None: ...
+    def num(self, value: _t.Integer | None) -> None:
+        """``num``: int; no default (unset when absent)."""
 
     @property
     def data(self) -> tuple[ConData, ...] | None:
@@ -27377,7 +28987,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
         """
     @data.setter
-    def data(self, value: ConData | Collection[ConData] | None) -> None: ...
+    def data(self, value: ConData | Collection[ConData] | None) -> None:
+        """``data``: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent)."""
 
     @property
     def reduce(self) -> Reduce | None:
@@ -27386,7 +28997,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
         """
     @reduce.setter
-    def reduce(self, value: Reduce | None) -> None: ...
+    def reduce(self, value: Reduce | None) -> None:
+        """``reduce``: one of: none, mindist, maxforce, netforce; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -27436,7 +29048,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def plugin(self) -> _builtins.str | None:
@@ -27445,7 +29058,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; no default (unset when absent)."""
 
     @property
     def instance(self) -> _builtins.str | Instance | None:
@@ -27454,7 +29068,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-instance
         """
     @instance.setter
-    def instance(self, value: _builtins.str | Instance | None) -> None: ...
+    def instance(self, value: _builtins.str | Instance | None) -> None:
+        """``instance``: reference to namespace ``instance``; no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -27463,7 +29078,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def objtype(self) -> _builtins.str | None:
@@ -27472,7 +29088,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objtype
         """
     @objtype.setter
-    def objtype(self, value: _builtins.str | None) -> None: ...
+    def objtype(self, value: _builtins.str | None) -> None:
+        """``objtype``: string; no default (unset when absent)."""
 
     @property
     def objname(self) -> AnyTarget | None:
@@ -27481,7 +29098,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objname
         """
     @objname.setter
-    def objname(self, value: AnyTarget | None) -> None: ...
+    def objname(self, value: AnyTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; no default (unset when absent)."""
 
     @property
     def reftype(self) -> _builtins.str | None:
@@ -27490,7 +29108,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-reftype
         """
     @reftype.setter
-    def reftype(self, value: _builtins.str | None) -> None: ...
+    def reftype(self, value: _builtins.str | None) -> None:
+        """``reftype``: string; no default (unset when absent)."""
 
     @property
     def refname(self) -> AnyTarget | None:
@@ -27499,7 +29118,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-refname
         """
     @refname.setter
-    def refname(self, value: AnyTarget | None) -> None: ...
+    def refname(self, value: AnyTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -27508,7 +29128,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def config(self) -> _List[Config]:
@@ -27585,7 +29206,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``site``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -27594,7 +29216,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def type(self) -> SiteType | None:
@@ -27603,7 +29226,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
         """
     @type.setter
-    def type(self, value: SiteType | None) -> None: ...
+    def type(self, value: SiteType | None) -> None:
+        """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -27612,7 +29236,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -27621,7 +29246,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -27630,7 +29256,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -27639,7 +29266,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -27648,7 +29276,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -27657,7 +29286,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -27666,7 +29296,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -27675,7 +29306,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -27684,7 +29316,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -27693,7 +29326,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); default "0.005 0.005 0.005"."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -27702,7 +29336,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -27711,7 +29346,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -27720,14 +29356,16 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -27774,7 +29412,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-memory
         """
     @memory.setter
-    def memory(self, value: _builtins.str | None) -> None: ...
+    def memory(self, value: _builtins.str | None) -> None:
+        """``memory``: string; no default (unset when absent)."""
 
     @property
     def njmax(self) -> _builtins.int | None:
@@ -27783,7 +29422,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-njmax
         """
     @njmax.setter
-    def njmax(self, value: _t.Integer | None) -> None: ...
+    def njmax(self, value: _t.Integer | None) -> None:
+        """``njmax``: int; default "-1"."""
 
     @property
     def nconmax(self) -> _builtins.int | None:
@@ -27792,7 +29432,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nconmax
         """
     @nconmax.setter
-    def nconmax(self, value: _t.Integer | None) -> None: ...
+    def nconmax(self, value: _t.Integer | None) -> None:
+        """``nconmax``: int; default "-1"."""
 
     @property
     def nstack(self) -> _builtins.int | None:
@@ -27801,7 +29442,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nstack
         """
     @nstack.setter
-    def nstack(self, value: _t.Integer | None) -> None: ...
+    def nstack(self, value: _t.Integer | None) -> None:
+        """``nstack``: int; default "-1"."""
 
     @property
     def nuserdata(self) -> _builtins.int | None:
@@ -27810,7 +29452,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuserdata
         """
     @nuserdata.setter
-    def nuserdata(self, value: _t.Integer | None) -> None: ...
+    def nuserdata(self, value: _t.Integer | None) -> None:
+        """``nuserdata``: int; no default (unset when absent)."""
 
     @property
     def nkey(self) -> _builtins.int | None:
@@ -27819,7 +29462,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nkey
         """
     @nkey.setter
-    def nkey(self, value: _t.Integer | None) -> None: ...
+    def nkey(self, value: _t.Integer | None) -> None:
+        """``nkey``: int; no default (unset when absent)."""
 
     @property
     def nuser_body(self) -> _builtins.int | None:
@@ -27828,7 +29472,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
         """
     @nuser_body.setter
-    def nuser_body(self, value: _t.Integer | None) -> None: ...
+    def nuser_body(self, value: _t.Integer | None) -> None:
+        """``nuser_body``: int; default "-1"."""
 
     @property
     def nuser_jnt(self) -> _builtins.int | None:
@@ -27837,7 +29482,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
         """
     @nuser_jnt.setter
-    def nuser_jnt(self, value: _t.Integer | None) -> None: ...
+    def nuser_jnt(self, value: _t.Integer | None) -> None:
+        """``nuser_jnt``: int; default "-1"."""
 
     @property
     def nuser_geom(self) -> _builtins.int | None:
@@ -27846,7 +29492,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
         """
     @nuser_geom.setter
-    def nuser_geom(self, value: _t.Integer | None) -> None: ...
+    def nuser_geom(self, value: _t.Integer | None) -> None:
+        """``nuser_geom``: int; default "-1"."""
 
     @property
     def nuser_site(self) -> _builtins.int | None:
@@ -27855,7 +29502,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
         """
     @nuser_site.setter
-    def nuser_site(self, value: _t.Integer | None) -> None: ...
+    def nuser_site(self, value: _t.Integer | None) -> None:
+        """``nuser_site``: int; default "-1"."""
 
     @property
     def nuser_cam(self) -> _builtins.int | None:
@@ -27864,7 +29512,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
         """
     @nuser_cam.setter
-    def nuser_cam(self, value: _t.Integer | None) -> None: ...
+    def nuser_cam(self, value: _t.Integer | None) -> None:
+        """``nuser_cam``: int; default "-1"."""
 
     @property
     def nuser_tendon(self) -> _builtins.int | None:
@@ -27873,7 +29522,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
         """
     @nuser_tendon.setter
-    def nuser_tendon(self, value: _t.Integer | None) -> None: ...
+    def nuser_tendon(self, value: _t.Integer | None) -> None:
+        """``nuser_tendon``: int; default "-1"."""
 
     @property
     def nuser_actuator(self) -> _builtins.int | None:
@@ -27882,7 +29532,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
         """
     @nuser_actuator.setter
-    def nuser_actuator(self, value: _t.Integer | None) -> None: ...
+    def nuser_actuator(self, value: _t.Integer | None) -> None:
+        """``nuser_actuator``: int; default "-1"."""
 
     @property
     def nuser_sensor(self) -> _builtins.int | None:
@@ -27891,7 +29542,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
         """
     @nuser_sensor.setter
-    def nuser_sensor(self, value: _t.Integer | None) -> None: ...
+    def nuser_sensor(self, value: _t.Integer | None) -> None:
+        """``nuser_sensor``: int; default "-1"."""
 
     @overload
     def resolve(self, name: Literal["memory"]) -> _builtins.str | None:
@@ -27920,7 +29572,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``skin``; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -27929,7 +29582,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -27938,7 +29592,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -27947,7 +29602,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def inflate(self) -> _builtins.float | None:
@@ -27956,7 +29612,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-inflate
         """
     @inflate.setter
-    def inflate(self, value: _t.Real | None) -> None: ...
+    def inflate(self, value: _t.Real | None) -> None:
+        """``inflate``: float; no default (unset when absent)."""
 
     @property
     def vertex(self) -> _t.Float32Array | None:
@@ -27965,7 +29622,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-vertex
         """
     @vertex.setter
-    def vertex(self, value: RealsAny | None) -> None: ...
+    def vertex(self, value: RealsAny | None) -> None:
+        """``vertex``: float[] (any length); no default (unset when absent)."""
 
     @property
     def texcoord(self) -> _t.Float32Array | None:
@@ -27974,7 +29632,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: float[] (any length); no default (unset when absent)."""
 
     @property
     def face(self) -> _t.Int32Array | None:
@@ -27983,7 +29642,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-face
         """
     @face.setter
-    def face(self, value: IntegersAny | None) -> None: ...
+    def face(self, value: IntegersAny | None) -> None:
+        """``face``: int[] (any length); no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -27992,7 +29652,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def bone(self) -> _List[Bone]:
@@ -28084,7 +29745,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -28093,7 +29755,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -28102,7 +29765,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -28111,7 +29775,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -28120,7 +29785,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -28129,7 +29795,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -28138,7 +29805,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -28147,7 +29815,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -28156,7 +29825,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -28165,7 +29835,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -28174,7 +29845,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -28183,7 +29855,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def springlength(self) -> _t.Float64Array | None:
@@ -28192,7 +29865,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springlength
         """
     @springlength.setter
-    def springlength(self, value: Reals1To2 | None) -> None: ...
+    def springlength(self, value: Reals1To2 | None) -> None:
+        """``springlength``: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both."""
 
     @property
     def width(self) -> _builtins.float | None:
@@ -28201,7 +29875,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-width
         """
     @width.setter
-    def width(self, value: _t.Real | None) -> None: ...
+    def width(self, value: _t.Real | None) -> None:
+        """``width``: double; default "0.003"."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -28210,7 +29885,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -28219,7 +29895,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -28228,7 +29905,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -28237,7 +29915,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -28246,7 +29925,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -28255,7 +29935,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28264,7 +29945,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -28273,14 +29955,16 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def site(self) -> _List[SpatialSite]:
@@ -28416,7 +30100,8 @@ class SpatialGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-geom
         """
     @geom.setter
-    def geom(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom(self, value: _builtins.str | Geom | None) -> None:
+        """``geom``: reference to namespace ``geom``; required."""
 
     @property
     def sidesite(self) -> _builtins.str | Site | None:
@@ -28425,7 +30110,8 @@ class SpatialGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-sidesite
         """
     @sidesite.setter
-    def sidesite(self, value: _builtins.str | Site | None) -> None: ...
+    def sidesite(self, value: _builtins.str | Site | None) -> None:
+        """``sidesite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["geom"]) -> _builtins.str | Geom | None:
@@ -28451,7 +30137,8 @@ class SpatialSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -28473,7 +30160,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meaninertia
         """
     @meaninertia.setter
-    def meaninertia(self, value: _t.Real | None) -> None: ...
+    def meaninertia(self, value: _t.Real | None) -> None:
+        """``meaninertia``: double; no default (unset when absent)."""
 
     @property
     def meanmass(self) -> _builtins.float | None:
@@ -28482,7 +30170,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meanmass
         """
     @meanmass.setter
-    def meanmass(self, value: _t.Real | None) -> None: ...
+    def meanmass(self, value: _t.Real | None) -> None:
+        """``meanmass``: double; no default (unset when absent)."""
 
     @property
     def meansize(self) -> _builtins.float | None:
@@ -28491,7 +30180,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meansize
         """
     @meansize.setter
-    def meansize(self, value: _t.Real | None) -> None: ...
+    def meansize(self, value: _t.Real | None) -> None:
+        """``meansize``: double; no default (unset when absent)."""
 
     @property
     def extent(self) -> _builtins.float | None:
@@ -28500,7 +30190,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
         """
     @extent.setter
-    def extent(self, value: _t.Real | None) -> None: ...
+    def extent(self, value: _t.Real | None) -> None:
+        """``extent``: double; no default (unset when absent)."""
 
     @property
     def center(self) -> _t.Float64Array | None:
@@ -28509,7 +30200,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-center
         """
     @center.setter
-    def center(self, value: Reals3 | None) -> None: ...
+    def center(self, value: Reals3 | None) -> None:
+        """``center``: double[3]; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["meaninertia", "meanmass", "meansize", "extent"]) -> _builtins.float | None:
@@ -28535,7 +30227,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28544,7 +30237,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28553,7 +30247,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28562,7 +30257,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28571,7 +30267,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28580,7 +30277,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28589,7 +30287,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28598,7 +30297,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -28607,7 +30307,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28645,7 +30346,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28654,7 +30356,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28663,7 +30366,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28672,7 +30376,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28681,7 +30386,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28690,7 +30396,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28699,7 +30406,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28708,7 +30416,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -28717,7 +30426,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28755,7 +30465,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28764,7 +30475,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28773,7 +30485,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28782,7 +30495,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28791,7 +30505,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28800,7 +30515,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28809,7 +30525,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28818,7 +30535,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -28827,7 +30545,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28865,7 +30584,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def geom(self) -> _builtins.str | Geom | None:
@@ -28874,7 +30594,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-geom
         """
     @geom.setter
-    def geom(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom(self, value: _builtins.str | Geom | None) -> None:
+        """``geom``: reference to namespace ``geom``; required."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -28883,7 +30604,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; required."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28892,7 +30614,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28901,7 +30624,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28910,7 +30634,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28919,7 +30644,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28928,7 +30654,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28937,7 +30664,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29131,7 +30859,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29140,7 +30869,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29149,7 +30879,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29158,7 +30889,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29167,7 +30899,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29176,7 +30909,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29185,7 +30919,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29194,7 +30929,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29203,7 +30939,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29241,7 +30978,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29250,7 +30988,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29259,7 +30998,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29268,7 +31008,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29277,7 +31018,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29286,7 +31028,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29295,7 +31038,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29304,7 +31048,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29313,7 +31058,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29351,7 +31097,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29360,7 +31107,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29369,7 +31117,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29378,7 +31127,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29387,7 +31137,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29396,7 +31147,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29405,7 +31157,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29414,7 +31167,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29423,7 +31177,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29461,7 +31216,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29470,7 +31226,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29479,7 +31236,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29488,7 +31246,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29497,7 +31256,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29506,7 +31266,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29515,7 +31276,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29524,7 +31286,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29533,7 +31296,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29571,7 +31335,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29580,7 +31345,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29589,7 +31355,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29598,7 +31365,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29607,7 +31375,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29616,7 +31385,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29625,7 +31395,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29634,7 +31405,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29643,7 +31415,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29681,7 +31454,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29690,7 +31464,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29699,7 +31474,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29708,7 +31484,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29717,7 +31494,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29726,7 +31504,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29735,7 +31514,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29744,7 +31524,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29753,7 +31534,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29791,7 +31573,8 @@ class Text(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``text``; required."""
 
     @property
     def data(self) -> _builtins.str | None:
@@ -29800,7 +31583,8 @@ class Text(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
         """
     @data.setter
-    def data(self, value: _builtins.str | None) -> None: ...
+    def data(self, value: _builtins.str | None) -> None:
+        """``data``: string; no default (unset when absent)."""
 
     def resolve(self, name: Literal["name", "data"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -29822,7 +31606,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``texture``; no default (unset when absent)."""
 
     @property
     def type(self) -> TextureType | None:
@@ -29831,7 +31616,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
         """
     @type.setter
-    def type(self, value: TextureType | None) -> None: ...
+    def type(self, value: TextureType | None) -> None:
+        """``type``: one of: 2d, cube, skybox; default "cube"."""
 
     @property
     def colorspace(self) -> Colorspace | None:
@@ -29840,7 +31626,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
         """
     @colorspace.setter
-    def colorspace(self, value: Colorspace | None) -> None: ...
+    def colorspace(self, value: Colorspace | None) -> None:
+        """``colorspace``: one of: auto, linear, sRGB; default "auto"."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -29849,7 +31636,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -29858,7 +31646,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def gridsize(self) -> _t.Int32Array | None:
@@ -29867,7 +31656,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
         """
     @gridsize.setter
-    def gridsize(self, value: Integers2 | None) -> None: ...
+    def gridsize(self, value: Integers2 | None) -> None:
+        """``gridsize``: int[2]; default "1 1"."""
 
     @property
     def gridlayout(self) -> _builtins.str | None:
@@ -29876,7 +31666,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
         """
     @gridlayout.setter
-    def gridlayout(self, value: _builtins.str | None) -> None: ...
+    def gridlayout(self, value: _builtins.str | None) -> None:
+        """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent). Length must equal the gridsize product."""
 
     @property
     def fileright(self) -> _builtins.str | _t.Asset | None:
@@ -29885,7 +31676,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileright
         """
     @fileright.setter
-    def fileright(self, value: _t.FileLike | None) -> None: ...
+    def fileright(self, value: _t.FileLike | None) -> None:
+        """``fileright``: file; no default (unset when absent)."""
 
     @property
     def fileleft(self) -> _builtins.str | _t.Asset | None:
@@ -29894,7 +31686,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileleft
         """
     @fileleft.setter
-    def fileleft(self, value: _t.FileLike | None) -> None: ...
+    def fileleft(self, value: _t.FileLike | None) -> None:
+        """``fileleft``: file; no default (unset when absent)."""
 
     @property
     def fileup(self) -> _builtins.str | _t.Asset | None:
@@ -29903,7 +31696,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileup
         """
     @fileup.setter
-    def fileup(self, value: _t.FileLike | None) -> None: ...
+    def fileup(self, value: _t.FileLike | None) -> None:
+        """``fileup``: file; no default (unset when absent)."""
 
     @property
     def filedown(self) -> _builtins.str | _t.Asset | None:
@@ -29912,7 +31706,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filedown
         """
     @filedown.setter
-    def filedown(self, value: _t.FileLike | None) -> None: ...
+    def filedown(self, value: _t.FileLike | None) -> None:
+        """``filedown``: file; no default (unset when absent)."""
 
     @property
     def filefront(self) -> _builtins.str | _t.Asset | None:
@@ -29921,7 +31716,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filefront
         """
     @filefront.setter
-    def filefront(self, value: _t.FileLike | None) -> None: ...
+    def filefront(self, value: _t.FileLike | None) -> None:
+        """``filefront``: file; no default (unset when absent)."""
 
     @property
     def fileback(self) -> _builtins.str | _t.Asset | None:
@@ -29930,7 +31726,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileback
         """
     @fileback.setter
-    def fileback(self, value: _t.FileLike | None) -> None: ...
+    def fileback(self, value: _t.FileLike | None) -> None:
+        """``fileback``: file; no default (unset when absent)."""
 
     @property
     def builtin(self) -> Builtin | None:
@@ -29939,7 +31736,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
         """
     @builtin.setter
-    def builtin(self, value: Builtin | None) -> None: ...
+    def builtin(self, value: Builtin | None) -> None:
+        """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent)."""
 
     @property
     def rgb1(self) -> _t.Float64Array | None:
@@ -29948,7 +31746,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
         """
     @rgb1.setter
-    def rgb1(self, value: Reals3 | None) -> None: ...
+    def rgb1(self, value: Reals3 | None) -> None:
+        """``rgb1``: double[3]; default "0.8 0.8 0.8"."""
 
     @property
     def rgb2(self) -> _t.Float64Array | None:
@@ -29957,7 +31756,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
         """
     @rgb2.setter
-    def rgb2(self, value: Reals3 | None) -> None: ...
+    def rgb2(self, value: Reals3 | None) -> None:
+        """``rgb2``: double[3]; default "0.5 0.5 0.5"."""
 
     @property
     def mark(self) -> Mark | None:
@@ -29966,7 +31766,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
         """
     @mark.setter
-    def mark(self, value: Mark | None) -> None: ...
+    def mark(self, value: Mark | None) -> None:
+        """``mark``: one of: none, edge, cross, random; no default (unset when absent)."""
 
     @property
     def markrgb(self) -> _t.Float64Array | None:
@@ -29975,7 +31776,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
         """
     @markrgb.setter
-    def markrgb(self, value: Reals3 | None) -> None: ...
+    def markrgb(self, value: Reals3 | None) -> None:
+        """``markrgb``: double[3]; no default (unset when absent)."""
 
     @property
     def random(self) -> _builtins.float | None:
@@ -29984,7 +31786,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
         """
     @random.setter
-    def random(self, value: _t.Real | None) -> None: ...
+    def random(self, value: _t.Real | None) -> None:
+        """``random``: double; default "0.01"."""
 
     @property
     def width(self) -> _builtins.int | None:
@@ -29993,7 +31796,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
         """
     @width.setter
-    def width(self, value: _t.Integer | None) -> None: ...
+    def width(self, value: _t.Integer | None) -> None:
+        """``width``: int; no default (unset when absent)."""
 
     @property
     def height(self) -> _builtins.int | None:
@@ -30002,7 +31806,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
         """
     @height.setter
-    def height(self, value: _t.Integer | None) -> None: ...
+    def height(self, value: _t.Integer | None) -> None:
+        """``height``: int; no default (unset when absent)."""
 
     @property
     def hflip(self) -> _builtins.bool | None:
@@ -30011,7 +31816,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
         """
     @hflip.setter
-    def hflip(self, value: _builtins.bool | None) -> None: ...
+    def hflip(self, value: _builtins.bool | None) -> None:
+        """``hflip``: bool; no default (unset when absent)."""
 
     @property
     def vflip(self) -> _builtins.bool | None:
@@ -30020,7 +31826,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
         """
     @vflip.setter
-    def vflip(self, value: _builtins.bool | None) -> None: ...
+    def vflip(self, value: _builtins.bool | None) -> None:
+        """``vflip``: bool; no default (unset when absent)."""
 
     @property
     def nchannel(self) -> _builtins.int | None:
@@ -30029,7 +31836,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
         """
     @nchannel.setter
-    def nchannel(self, value: _t.Integer | None) -> None: ...
+    def nchannel(self, value: _t.Integer | None) -> None:
+        """``nchannel``: int; default "3"."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -30038,7 +31846,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def embed(self) -> FalseTrueAuto | None:
@@ -30047,14 +31856,16 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
         """
     @embed.setter
-    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``embed``: one of: false, true, auto; default "auto"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type", "gridlayout"]) -> _builtins.str | None:
@@ -30119,7 +31930,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -30128,7 +31940,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -30137,7 +31950,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -30146,7 +31960,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -30155,7 +31970,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -30164,7 +31980,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -30173,7 +31990,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30182,7 +32000,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -30191,7 +32010,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -30229,7 +32049,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -30238,7 +32059,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -30247,7 +32069,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -30256,7 +32079,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -30265,7 +32089,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -30274,7 +32099,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -30283,7 +32109,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30292,7 +32119,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -30301,7 +32129,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -30339,7 +32168,8 @@ class Tuple(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``tuple``; required."""
 
     @property
     def element(self) -> _List[TupleElement]:
@@ -30405,7 +32235,8 @@ class TupleElement(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objtype
         """
     @objtype.setter
-    def objtype(self, value: _builtins.str | None) -> None: ...
+    def objtype(self, value: _builtins.str | None) -> None:
+        """``objtype``: string; required."""
 
     @property
     def objname(self) -> AnyTarget | None:
@@ -30414,7 +32245,8 @@ class TupleElement(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objname
         """
     @objname.setter
-    def objname(self, value: AnyTarget | None) -> None: ...
+    def objname(self, value: AnyTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def prm(self) -> _builtins.float | None:
@@ -30423,7 +32255,8 @@ class TupleElement(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
         """
     @prm.setter
-    def prm(self, value: _t.Real | None) -> None: ...
+    def prm(self, value: _t.Real | None) -> None:
+        """``prm``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["objtype"]) -> _builtins.str | None:
@@ -30452,7 +32285,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def objtype(self) -> _builtins.str | None:
@@ -30461,7 +32295,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objtype
         """
     @objtype.setter
-    def objtype(self, value: _builtins.str | None) -> None: ...
+    def objtype(self, value: _builtins.str | None) -> None:
+        """``objtype``: string; no default (unset when absent)."""
 
     @property
     def objname(self) -> AnyTarget | None:
@@ -30470,7 +32305,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objname
         """
     @objname.setter
-    def objname(self, value: AnyTarget | None) -> None: ...
+    def objname(self, value: AnyTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; no default (unset when absent)."""
 
     @property
     def datatype(self) -> Datatype | None:
@@ -30479,7 +32315,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-datatype
         """
     @datatype.setter
-    def datatype(self, value: Datatype | None) -> None: ...
+    def datatype(self, value: Datatype | None) -> None:
+        """``datatype``: one of: real, positive, axis, quaternion; default "real"."""
 
     @property
     def needstage(self) -> Stage | None:
@@ -30488,7 +32325,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-needstage
         """
     @needstage.setter
-    def needstage(self, value: Stage | None) -> None: ...
+    def needstage(self, value: Stage | None) -> None:
+        """``needstage``: one of: none, pos, vel, acc; default "acc"."""
 
     @property
     def dim(self) -> _builtins.int | None:
@@ -30497,7 +32335,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
         """
     @dim.setter
-    def dim(self, value: _t.Integer | None) -> None: ...
+    def dim(self, value: _t.Integer | None) -> None:
+        """``dim``: int; no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -30506,7 +32345,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -30515,7 +32355,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30524,7 +32365,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name", "objtype"]) -> _builtins.str | None:
@@ -30565,7 +32407,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -30574,7 +32417,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -30583,7 +32427,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -30592,7 +32437,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -30601,7 +32447,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -30610,7 +32457,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -30619,7 +32467,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30628,7 +32477,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -30637,7 +32487,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -30675,7 +32526,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -30684,7 +32536,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -30693,7 +32546,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -30702,7 +32556,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent)."""
 
     @property
     def interp(self) -> Interp | None:
@@ -30711,7 +32566,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent)."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -30720,7 +32576,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent)."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -30729,7 +32586,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30738,7 +32596,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -30747,7 +32606,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -30756,7 +32616,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -30765,7 +32626,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -30774,7 +32636,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -30783,7 +32646,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -30792,7 +32656,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -30801,7 +32666,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -30810,7 +32676,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -30819,7 +32686,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -30828,7 +32696,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -30837,7 +32706,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -30846,7 +32716,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -30855,7 +32726,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -30864,7 +32736,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -30873,7 +32746,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -30882,14 +32756,16 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -31255,7 +33131,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -31264,7 +33141,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -31273,7 +33151,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -31282,7 +33161,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -31291,7 +33171,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -31300,7 +33181,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -31309,7 +33191,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def relpose(self) -> _t.Float64Array | None:
@@ -31318,7 +33201,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-relpose
         """
     @relpose.setter
-    def relpose(self, value: Reals7 | None) -> None: ...
+    def relpose(self, value: Reals7 | None) -> None:
+        """``relpose``: double[7]; no default (unset when absent)."""
 
     @property
     def anchor(self) -> _t.Float64Array | None:
@@ -31327,7 +33211,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-anchor
         """
     @anchor.setter
-    def anchor(self, value: Reals3 | None) -> None: ...
+    def anchor(self, value: Reals3 | None) -> None:
+        """``anchor``: double[3]; no default (unset when absent)."""
 
     @property
     def site1(self) -> _builtins.str | Site | None:
@@ -31336,7 +33221,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site1
         """
     @site1.setter
-    def site1(self, value: _builtins.str | Site | None) -> None: ...
+    def site1(self, value: _builtins.str | Site | None) -> None:
+        """``site1``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site2(self) -> _builtins.str | Site | None:
@@ -31345,7 +33231,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site2
         """
     @site2.setter
-    def site2(self, value: _builtins.str | Site | None) -> None: ...
+    def site2(self, value: _builtins.str | Site | None) -> None:
+        """``site2``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def torquescale(self) -> _builtins.float | None:
@@ -31354,14 +33241,16 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-torquescale
         """
     @torquescale.setter
-    def torquescale(self, value: _t.Real | None) -> None: ...
+    def torquescale(self, value: _t.Real | None) -> None:
+        """``torquescale``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
