@@ -6,13 +6,16 @@ Drives ``pyright-langserver --stdio`` (the engine of VS Code's Pylance) through 
 - completion after ``<element>.add_`` lists exactly the legal children of that element;
 - completion of keyword arguments inside ``add_geom(`` lists the attributes of ``<geom>``;
 - hover on a property (``joint.type``) shows its type and its docstring: the MJCF type,
-  the default, the allowed values and the link to MuJoCo's XML reference.
+  the default, the allowed values and the link to MuJoCo's XML reference;
+- signature help and hover on a keyword of ``add_<tag>(`` show that keyword's own line, the
+  one ``test_docs.py`` predicts for every keyword from the docstring.
 
 One server per module; each request waits at most ``TIMEOUT`` seconds.
 """
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 
@@ -20,6 +23,7 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.lsp import JSON, LanguageServer
+from tests.typing.test_docs import pyright_parameter_doc
 from typed_mjcf import Element
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -129,3 +133,37 @@ def test_hover_on_an_add_method_names_the_child(server: LanguageServer) -> None:
     text = hover_on(server, "add_geom", "body.add_geom")
     assert "-> Geom" in text, text
     assert "<geom>" in text, text
+
+
+# (variable in SOURCE, adder, keyword): the entries the issue found wrong (density= showed
+# "one is saved."), a name that ends another (range/ctrlrange), a reference union, a keyword set
+SIGNATURE_CASES = [
+    ("body", "add_geom", "density"),
+    ("body", "add_geom", "type"),
+    ("body", "add_joint", "range"),
+    ("model.actuator", "add_motor", "ctrlrange"),
+    ("model.sensor", "add_framepos", "objname"),
+    ("model.worldbody", "add_body", "childclass"),
+]
+
+
+@pytest.mark.parametrize(("expression", "adder", "keyword"), SIGNATURE_CASES,
+                         ids=[f"{a}-{k}" for _, a, k in SIGNATURE_CASES])
+def test_signature_help_and_hover_show_the_keywords_own_line(
+        server: LanguageServer, expression: str, adder: str, keyword: str) -> None:
+    """What pyright really shows for a keyword (signature help while typing it, hover on it)
+    is the line ``tests/typing/test_docs.py`` predicts from the docstring: the keyword's
+    own ``Args:`` entry, which starts with its facts."""
+    cls = ELEMENTS[expression]
+    function = getattr(cls, adder)
+    predicted = pyright_parameter_doc(inspect.getdoc(function) or "", keyword)
+    assert predicted is not None and predicted.startswith(f"{keyword}: "), predicted
+    call = f"{expression}.{adder}({keyword}="
+    source = SOURCE + call + ")\n"
+    uri = server.open(PROBES / f"_ide_signature_{adder}_{keyword}.py", source)
+    line = source.count("\n") - 1
+    label, shown = server.signature_help(uri, line, len(call))
+    assert f"{keyword}: " in label, label
+    assert shown.strip() == predicted, f"signature help for {call}: {shown!r}"
+    hover = server.hover(uri, line, len(f"{expression}.{adder}(") + 1)
+    assert predicted in hover, f"hover on {keyword}= in {call}: {hover!r}"
