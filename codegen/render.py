@@ -34,6 +34,7 @@ class PropertyView:
     getter: str
     setter: str
     doc: str
+    setter_doc: str  # its first line: jedi documents a property by its setter, the last def
 
 
 @dataclass(frozen=True)
@@ -72,6 +73,9 @@ class ClassView:
     resolves: list[ResolveView]
     is_root: bool
     init_params: list[ParamView]  # the root's keyword arguments besides its name
+    child_tags: str  # the Literal's arguments: '"body", "geom"'
+    misused_child: str  # add()'s deprecation messages, as Python string literals
+    not_a_child: str
 
 
 @dataclass(frozen=True)
@@ -255,13 +259,15 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
     notes = {} if notes is None else notes  # row -> attribute -> the releases that have it
     mine = notes.get(el.name, {})
     properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
-                               docs.property_doc(typer, el, a, mine.get(a.name)))
+                               docs.property_doc(typer, el, a, mine.get(a.name)),
+                               docs.property_doc(typer, el, a, mine.get(a.name)).split("\n")[0])
                   for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     if any(a.name == schema.language.dclass for a in el.attributes):
         dclass = next(a for a in el.attributes if a.name == schema.language.dclass)
         properties.append(PropertyView("dclass", typer.getter(dclass), typer.setter(dclass),
-                                       "dm_control's name for ``class_``.\n        "))
+                                       "dm_control's name for ``class_``.\n        ",
+                                       "dm_control's name for ``class_``."))
         params.append(ParamView("dclass", typer.setter(dclass)))
     children: list[ChildView] = []
     for c in el.children:
@@ -280,12 +286,38 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         bases += ", Attachable"
         stub_bases += ", _Attachable"
     resolves = _resolves(typer, el)
+    child_tags = sorted({schema.elements[c.element].tag for c in el.children})
     return ClassView(
         class_name=el.class_name, bases=bases, stub_bases=stub_bases,
         short_doc=docs.escape(f"``<{el.tag}>``."), doc=_class_doc(el),
         table=_element_spec(schema, typer, el, notes), properties=properties, children=children,
         params=params, resolves=resolves, is_root=is_root,
-        init_params=[p for p in params if p.py_name != schema.language.model_name])
+        init_params=[p for p in params if p.py_name != schema.language.model_name],
+        child_tags=", ".join(f'"{tag}"' for tag in child_tags),
+        misused_child=_python_string(misused_child(el.tag)),
+        not_a_child=_python_string(not_a_child(el.tag)))
+
+
+# add()/insert() with a literal tag: a call that fails the tag's own overload (a keyword the
+# child lacks, a value of the wrong type) or names a tag that is no child would otherwise match
+# the `str` overload, which must stay for tags known only at run time. A deprecated overload
+# between the two takes those literal tags instead: the one standard way (PEP 702) to make a
+# checker report a call that some overload accepts (pyright strict: reportDeprecated; mypy:
+# the `deprecated` error code). The messages say what is wrong, since "deprecated" does not.
+
+
+def misused_child(tag: str) -> str:
+    return (f"wrong keywords: add()/insert() with the tag of a child of <{tag}> take that "
+            f"child's attributes, as its add_<tag>() does; a keyword is not one of them or "
+            f"its value has the wrong type")
+
+
+def not_a_child(tag: str) -> str:
+    return f"wrong tag: the grammar allows no such child under <{tag}> (see its add_<tag>())"
+
+
+def _python_string(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
 def _tuple_repr(values: list[str]) -> str:
@@ -354,6 +386,8 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
                             *(f"{c.class_name}Attributes" for c in classes)]),
         "namespaces": namespaces,
         "namespace_literals": ", ".join(f'"{ns.name}"' for ns in namespaces),
+        "tag_literals": ", ".join(f'"{tag}"' for tag in sorted(
+            {el.tag for el in schema.elements.values()})),
     }
     table = bindings.load() if binding_table is None else binding_table
     binding_context = {**bindings.render_context(schema, table),

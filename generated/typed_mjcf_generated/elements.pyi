@@ -7,6 +7,8 @@ import builtins as _builtins
 from collections.abc import Collection, Sequence
 from typing import ClassVar, Literal, TypeAlias, TypedDict, Unpack, overload
 
+from typing_extensions import deprecated as _deprecated
+
 from typed_mjcf import types as _t
 from typed_mjcf._base import Attachable as _Attachable
 from typed_mjcf._base import Element as _Element
@@ -629,6 +631,10 @@ FrameobjTarget: TypeAlias = _builtins.str | Body | Camera | Geom | Site
 Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple", "attachment_frame"]
 """The identifier namespaces (``find()``'s first argument)."""
 
+_Tag: TypeAlias = Literal["accelerometer", "actuator", "actuatorfrc", "actuatorpos", "actuatorvel", "adhesion", "asset", "attach", "ballangvel", "ballquat", "body", "bone", "camera", "camprojection", "clock", "compiler", "config", "connect", "contact", "custom", "cylinder", "damper", "dcmotor", "default", "deformable", "distance", "e_kinetic", "e_potential", "edge", "elasticity", "element", "equality", "exclude", "extension", "fixed", "flag", "flex", "flexcomp", "flexstrain", "force", "frame", "frameangacc", "frameangvel", "framelinacc", "framelinvel", "framepos", "framequat", "framexaxis", "frameyaxis", "framezaxis", "freejoint", "fromto", "general", "geom", "global", "gyro", "headlight", "hfield", "inertial", "insidesite", "instance", "intvelocity", "joint", "jointactuatorfrc", "jointlimitfrc", "jointlimitpos", "jointlimitvel", "jointpos", "jointvel", "key", "keyframe", "layer", "lengthrange", "light", "magnetometer", "map", "material", "mesh", "model", "motor", "mujoco", "muscle", "normal", "numeric", "option", "orientation", "pair", "pid", "pin", "plugin", "position", "pulley", "quality", "rangefinder", "replicate", "rgba", "scale", "sensor", "site", "size", "skin", "spatial", "statistic", "subtreeangmom", "subtreecom", "subtreelinvel", "tactile", "tendon", "tendonactuatorfrc", "tendonlimitfrc", "tendonlimitpos", "tendonlimitvel", "tendonpos", "tendonvel", "text", "texture", "torque", "touch", "tuple", "user", "velocimeter", "velocity", "visual", "weld", "worldbody"]
+"""Every tag of the grammar: ``add()``/``insert()`` with a tag that is no child of the element
+match the deprecated overload taking it, so checkers report the call."""
+
 
 class _Typed(_Element):
     """What every generated class can look up: elements by namespace, typed per namespace."""
@@ -772,7 +778,8 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco-model
         """
     @model.setter
-    def model(self, value: _builtins.str | None) -> None: ...
+    def model(self, value: _builtins.str | None) -> None:
+        """``model``: string; no default (unset when absent)."""
 
     @property
     def compiler(self) -> Compiler:
@@ -1206,6 +1213,12 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
     def add(self, tag: Literal["keyframe"], /, **kwargs: Unpack[KeyframeAttributes]) -> Keyframe: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <mujoco> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["actuator", "asset", "compiler", "contact", "custom", "default", "deformable", "equality", "extension", "keyframe", "option", "sensor", "size", "statistic", "tendon", "visual", "worldbody"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <mujoco> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -1260,6 +1273,12 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
     def insert(self, tag: Literal["keyframe"], /, position: _builtins.int, **kwargs: Unpack[KeyframeAttributes]) -> Keyframe: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <mujoco> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["actuator", "asset", "compiler", "contact", "custom", "default", "deformable", "equality", "extension", "keyframe", "option", "sensor", "size", "statistic", "tendon", "visual", "worldbody"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <mujoco> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     def resolve(self, name: Literal["model"]) -> _builtins.str | None:
@@ -1282,7 +1301,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -1291,7 +1311,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -1300,7 +1321,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -1309,7 +1331,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -1318,7 +1341,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -1327,7 +1351,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -1336,7 +1361,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -1345,7 +1371,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -1354,7 +1381,8 @@ class Accelerometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2327,6 +2355,12 @@ class Actuator(_Typed):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[ActuatorPluginAttributes]) -> ActuatorPlugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <actuator> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["adhesion", "cylinder", "damper", "dcmotor", "general", "intvelocity", "motor", "muscle", "orientation", "pid", "plugin", "position", "velocity"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <actuator> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -2369,6 +2403,12 @@ class Actuator(_Typed):
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[ActuatorPluginAttributes]) -> ActuatorPlugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <actuator> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["adhesion", "cylinder", "damper", "dcmotor", "general", "intvelocity", "motor", "muscle", "orientation", "pid", "plugin", "position", "velocity"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <actuator> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
 
@@ -2387,7 +2427,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -2396,7 +2437,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -2405,7 +2447,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2414,7 +2457,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2423,7 +2467,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2432,7 +2477,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -2441,7 +2487,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -2450,7 +2497,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def plugin(self) -> _builtins.str | None:
@@ -2459,7 +2507,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; no default (unset when absent)."""
 
     @property
     def instance(self) -> _builtins.str | Instance | None:
@@ -2468,7 +2517,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-instance
         """
     @instance.setter
-    def instance(self, value: _builtins.str | Instance | None) -> None: ...
+    def instance(self, value: _builtins.str | Instance | None) -> None:
+        """``instance``: reference to namespace ``instance``; no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -2477,7 +2527,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -2486,7 +2537,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -2495,7 +2547,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -2504,7 +2557,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -2513,7 +2567,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -2522,7 +2577,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -2531,7 +2587,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -2540,7 +2597,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -2549,7 +2607,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -2558,7 +2617,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -2567,7 +2627,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -2576,7 +2637,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -2585,7 +2647,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def actdim(self) -> _builtins.int | None:
@@ -2594,7 +2657,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actdim
         """
     @actdim.setter
-    def actdim(self, value: _t.Integer | None) -> None: ...
+    def actdim(self, value: _t.Integer | None) -> None:
+        """``actdim``: int; default "-1"."""
 
     @property
     def dyntype(self) -> Dyn | None:
@@ -2603,7 +2667,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dyntype
         """
     @dyntype.setter
-    def dyntype(self, value: Dyn | None) -> None: ...
+    def dyntype(self, value: Dyn | None) -> None:
+        """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none"."""
 
     @property
     def dynprm(self) -> _t.Float64Array | None:
@@ -2612,7 +2677,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dynprm
         """
     @dynprm.setter
-    def dynprm(self, value: Reals1To10 | None) -> None: ...
+    def dynprm(self, value: Reals1To10 | None) -> None:
+        """``dynprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -2621,7 +2687,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -2630,7 +2697,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -2639,7 +2707,8 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def actearly(self) -> _builtins.bool | None:
@@ -2648,14 +2717,16 @@ class ActuatorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actearly
         """
     @actearly.setter
-    def actearly(self, value: _builtins.bool | None) -> None: ...
+    def actearly(self, value: _builtins.bool | None) -> None:
+        """``actearly``: bool; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def config(self) -> _List[Config]:
@@ -2679,11 +2750,23 @@ class ActuatorPlugin(_Typed):
     def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["config"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -2750,7 +2833,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2759,7 +2843,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2768,7 +2853,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2777,7 +2863,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -2786,7 +2873,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -2795,7 +2883,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -2804,7 +2893,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -2813,7 +2903,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuator(self) -> _builtins.str | AnyActuator | None:
@@ -2822,7 +2913,8 @@ class Actuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-actuator
         """
     @actuator.setter
-    def actuator(self, value: _builtins.str | AnyActuator | None) -> None: ...
+    def actuator(self, value: _builtins.str | AnyActuator | None) -> None:
+        """``actuator``: reference to namespace ``actuator``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2860,7 +2952,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2869,7 +2962,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2878,7 +2972,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2887,7 +2982,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -2896,7 +2992,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -2905,7 +3002,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -2914,7 +3012,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -2923,7 +3022,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuator(self) -> _builtins.str | AnyActuator | None:
@@ -2932,7 +3032,8 @@ class Actuatorpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-actuator
         """
     @actuator.setter
-    def actuator(self, value: _builtins.str | AnyActuator | None) -> None: ...
+    def actuator(self, value: _builtins.str | AnyActuator | None) -> None:
+        """``actuator``: reference to namespace ``actuator``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2970,7 +3071,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -2979,7 +3081,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -2988,7 +3091,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -2997,7 +3101,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -3006,7 +3111,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -3015,7 +3121,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -3024,7 +3131,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3033,7 +3141,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuator(self) -> _builtins.str | AnyActuator | None:
@@ -3042,7 +3151,8 @@ class Actuatorvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-actuator
         """
     @actuator.setter
-    def actuator(self, value: _builtins.str | AnyActuator | None) -> None: ...
+    def actuator(self, value: _builtins.str | AnyActuator | None) -> None:
+        """``actuator``: reference to namespace ``actuator``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3080,7 +3190,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -3089,7 +3200,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -3098,7 +3210,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3107,7 +3220,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3116,7 +3230,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3125,7 +3240,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -3134,7 +3250,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3143,7 +3260,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -3152,7 +3270,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -3161,7 +3280,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -3170,7 +3290,8 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def gain(self) -> _builtins.float | None:
@@ -3179,14 +3300,16 @@ class Adhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
     @gain.setter
-    def gain(self, value: _t.Real | None) -> None: ...
+    def gain(self, value: _t.Real | None) -> None:
+        """``gain``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3480,6 +3603,12 @@ class AssetSection(_Typed):
     def add(self, tag: Literal["model"], /, **kwargs: Unpack[ModelAttributes]) -> Model: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <asset> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["hfield", "material", "mesh", "model", "skin", "texture"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <asset> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -3501,6 +3630,12 @@ class AssetSection(_Typed):
     def insert(self, tag: Literal["model"], /, position: _builtins.int, **kwargs: Unpack[ModelAttributes]) -> Model: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <asset> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["hfield", "material", "mesh", "model", "skin", "texture"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <asset> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
 
@@ -3519,7 +3654,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-model
         """
     @model.setter
-    def model(self, value: _builtins.str | Model | None) -> None: ...
+    def model(self, value: _builtins.str | Model | None) -> None:
+        """``model``: reference to namespace ``model``; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -3528,7 +3664,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def frame(self) -> _builtins.str | Frame | None:
@@ -3537,7 +3674,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-frame
         """
     @frame.setter
-    def frame(self, value: _builtins.str | Frame | None) -> None: ...
+    def frame(self, value: _builtins.str | Frame | None) -> None:
+        """``frame``: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def prefix(self) -> _builtins.str | None:
@@ -3546,7 +3684,8 @@ class Attach(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-prefix
         """
     @prefix.setter
-    def prefix(self, value: _builtins.str | None) -> None: ...
+    def prefix(self, value: _builtins.str | None) -> None:
+        """``prefix``: string; required."""
 
     @overload
     def resolve(self, name: Literal["model"]) -> _builtins.str | Model | None:
@@ -3578,7 +3717,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3587,7 +3727,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3596,7 +3737,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3605,7 +3747,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -3614,7 +3757,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -3623,7 +3767,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -3632,7 +3777,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3641,7 +3787,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -3650,7 +3797,8 @@ class Ballangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3688,7 +3836,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -3697,7 +3846,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -3706,7 +3856,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -3715,7 +3866,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -3724,7 +3876,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -3733,7 +3886,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -3742,7 +3896,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3751,7 +3906,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -3760,7 +3916,8 @@ class Ballquat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3798,7 +3955,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``body``; no default (unset when absent)."""
 
     @property
     def childclass(self) -> _builtins.str | Default | None:
@@ -3807,7 +3965,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-childclass
         """
     @childclass.setter
-    def childclass(self, value: _builtins.str | Default | None) -> None: ...
+    def childclass(self, value: _builtins.str | Default | None) -> None:
+        """``childclass``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -3816,7 +3975,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -3825,7 +3985,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -3834,7 +3995,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -3843,7 +4005,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -3852,7 +4015,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -3861,7 +4025,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def mocap(self) -> _builtins.bool | None:
@@ -3870,7 +4035,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-mocap
         """
     @mocap.setter
-    def mocap(self, value: _builtins.bool | None) -> None: ...
+    def mocap(self, value: _builtins.bool | None) -> None:
+        """``mocap``: bool; no default (unset when absent)."""
 
     @property
     def gravcomp(self) -> _builtins.float | None:
@@ -3879,7 +4045,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-gravcomp
         """
     @gravcomp.setter
-    def gravcomp(self, value: _t.Real | None) -> None: ...
+    def gravcomp(self, value: _t.Real | None) -> None:
+        """``gravcomp``: double; no default (unset when absent)."""
 
     @property
     def sleep(self) -> BodySleep | None:
@@ -3888,7 +4055,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
         """
     @sleep.setter
-    def sleep(self, value: BodySleep | None) -> None: ...
+    def sleep(self, value: BodySleep | None) -> None:
+        """``sleep``: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def simple(self) -> FalseAuto | None:
@@ -3897,7 +4065,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-simple
         """
     @simple.setter
-    def simple(self, value: FalseAuto | None) -> None: ...
+    def simple(self, value: FalseAuto | None) -> None:
+        """``simple``: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def fuse(self) -> FalseAuto | None:
@@ -3906,7 +4075,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-fuse
         """
     @fuse.setter
-    def fuse(self, value: FalseAuto | None) -> None: ...
+    def fuse(self, value: FalseAuto | None) -> None:
+        """``fuse``: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -3915,7 +4085,8 @@ class Body(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _List[Body]:
@@ -4549,6 +4720,12 @@ class Body(_Typed, _Attachable):
     def add(self, tag: Literal["flexcomp"], /, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <body> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["attach", "body", "camera", "flexcomp", "frame", "freejoint", "geom", "inertial", "joint", "light", "plugin", "replicate", "site"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <body> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -4590,6 +4767,12 @@ class Body(_Typed, _Attachable):
     @overload
     def insert(self, tag: Literal["flexcomp"], /, position: _builtins.int, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <body> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["attach", "body", "camera", "flexcomp", "frame", "freejoint", "geom", "inertial", "joint", "light", "plugin", "replicate", "site"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <body> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -4635,7 +4818,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @property
     def bindpos(self) -> _t.Float64Array | None:
@@ -4644,7 +4828,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindpos
         """
     @bindpos.setter
-    def bindpos(self, value: Reals3 | None) -> None: ...
+    def bindpos(self, value: Reals3 | None) -> None:
+        """``bindpos``: double[3]; no default (unset when absent)."""
 
     @property
     def bindquat(self) -> _t.Float64Array | None:
@@ -4653,7 +4838,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindquat
         """
     @bindquat.setter
-    def bindquat(self, value: Reals4 | None) -> None: ...
+    def bindquat(self, value: Reals4 | None) -> None:
+        """``bindquat``: double[4]; no default (unset when absent)."""
 
     @property
     def vertid(self) -> _t.Int32Array | None:
@@ -4662,7 +4848,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertid
         """
     @vertid.setter
-    def vertid(self, value: IntegersAny | None) -> None: ...
+    def vertid(self, value: IntegersAny | None) -> None:
+        """``vertid``: int[] (any length); no default (unset when absent)."""
 
     @property
     def vertweight(self) -> _t.Float32Array | None:
@@ -4671,7 +4858,8 @@ class Bone(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertweight
         """
     @vertweight.setter
-    def vertweight(self, value: RealsAny | None) -> None: ...
+    def vertweight(self, value: RealsAny | None) -> None:
+        """``vertweight``: float[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None:
@@ -4703,7 +4891,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``camera``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -4712,7 +4901,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def projection(self) -> Projection | None:
@@ -4721,7 +4911,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
         """
     @projection.setter
-    def projection(self, value: Projection | None) -> None: ...
+    def projection(self, value: Projection | None) -> None:
+        """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def fovy(self) -> _builtins.float | None:
@@ -4730,7 +4921,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
         """
     @fovy.setter
-    def fovy(self, value: _t.Real | None) -> None: ...
+    def fovy(self, value: _t.Real | None) -> None:
+        """``fovy``: double; default "45"."""
 
     @property
     def ipd(self) -> _builtins.float | None:
@@ -4739,7 +4931,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
         """
     @ipd.setter
-    def ipd(self, value: _t.Real | None) -> None: ...
+    def ipd(self, value: _t.Real | None) -> None:
+        """``ipd``: double; default "0.068"."""
 
     @property
     def resolution(self) -> _t.Int32Array | None:
@@ -4748,7 +4941,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
         """
     @resolution.setter
-    def resolution(self, value: Integers2 | None) -> None: ...
+    def resolution(self, value: Integers2 | None) -> None:
+        """``resolution``: int[2]; default "1 1"."""
 
     @property
     def output(self) -> tuple[Camout, ...] | None:
@@ -4757,7 +4951,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
         """
     @output.setter
-    def output(self, value: Camout | Collection[Camout] | None) -> None: ...
+    def output(self, value: Camout | Collection[Camout] | None) -> None:
+        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -4766,7 +4961,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -4775,7 +4971,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -4784,7 +4981,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -4793,7 +4991,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -4802,7 +5001,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -4811,7 +5011,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -4820,7 +5021,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @property
     def target(self) -> _builtins.str | Body | None:
@@ -4829,7 +5031,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-target
         """
     @target.setter
-    def target(self, value: _builtins.str | Body | None) -> None: ...
+    def target(self, value: _builtins.str | Body | None) -> None:
+        """``target``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def focal(self) -> _t.Float32Array | None:
@@ -4838,7 +5041,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
         """
     @focal.setter
-    def focal(self, value: Reals2 | None) -> None: ...
+    def focal(self, value: Reals2 | None) -> None:
+        """``focal``: float[2]; no default (unset when absent)."""
 
     @property
     def focalpixel(self) -> _t.Float32Array | None:
@@ -4847,7 +5051,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
         """
     @focalpixel.setter
-    def focalpixel(self, value: Reals2 | None) -> None: ...
+    def focalpixel(self, value: Reals2 | None) -> None:
+        """``focalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def principal(self) -> _t.Float32Array | None:
@@ -4856,7 +5061,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
         """
     @principal.setter
-    def principal(self, value: Reals2 | None) -> None: ...
+    def principal(self, value: Reals2 | None) -> None:
+        """``principal``: float[2]; no default (unset when absent)."""
 
     @property
     def principalpixel(self) -> _t.Float32Array | None:
@@ -4865,7 +5071,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
         """
     @principalpixel.setter
-    def principalpixel(self, value: Reals2 | None) -> None: ...
+    def principalpixel(self, value: Reals2 | None) -> None:
+        """``principalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def sensorsize(self) -> _t.Float32Array | None:
@@ -4874,7 +5081,8 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
         """
     @sensorsize.setter
-    def sensorsize(self, value: Reals2 | None) -> None: ...
+    def sensorsize(self, value: Reals2 | None) -> None:
+        """``sensorsize``: float[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -4883,14 +5091,16 @@ class Camera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -4943,7 +5153,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -4952,7 +5163,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -4961,7 +5173,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -4970,7 +5183,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -4979,7 +5193,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -4988,7 +5203,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -4997,7 +5213,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -5006,7 +5223,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -5015,7 +5233,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @property
     def camera(self) -> _builtins.str | Camera | None:
@@ -5024,7 +5243,8 @@ class Camprojection(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-camera
         """
     @camera.setter
-    def camera(self, value: _builtins.str | Camera | None) -> None: ...
+    def camera(self, value: _builtins.str | Camera | None) -> None:
+        """``camera``: reference to namespace ``camera``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5065,7 +5285,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -5074,7 +5295,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -5083,7 +5305,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -5092,7 +5315,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -5101,7 +5325,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -5110,7 +5335,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -5119,7 +5345,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -5128,7 +5355,8 @@ class Clock(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5163,7 +5391,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-autolimits
         """
     @autolimits.setter
-    def autolimits(self, value: _builtins.bool | None) -> None: ...
+    def autolimits(self, value: _builtins.bool | None) -> None:
+        """``autolimits``: bool; default "true"."""
 
     @property
     def boundmass(self) -> _builtins.float | None:
@@ -5172,7 +5401,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundmass
         """
     @boundmass.setter
-    def boundmass(self, value: _t.Real | None) -> None: ...
+    def boundmass(self, value: _t.Real | None) -> None:
+        """``boundmass``: double; no default (unset when absent)."""
 
     @property
     def boundinertia(self) -> _builtins.float | None:
@@ -5181,7 +5411,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundinertia
         """
     @boundinertia.setter
-    def boundinertia(self, value: _t.Real | None) -> None: ...
+    def boundinertia(self, value: _t.Real | None) -> None:
+        """``boundinertia``: double; no default (unset when absent)."""
 
     @property
     def settotalmass(self) -> _builtins.float | None:
@@ -5190,7 +5421,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-settotalmass
         """
     @settotalmass.setter
-    def settotalmass(self, value: _t.Real | None) -> None: ...
+    def settotalmass(self, value: _t.Real | None) -> None:
+        """``settotalmass``: double; default "-1"."""
 
     @property
     def balanceinertia(self) -> _builtins.bool | None:
@@ -5199,7 +5431,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-balanceinertia
         """
     @balanceinertia.setter
-    def balanceinertia(self, value: _builtins.bool | None) -> None: ...
+    def balanceinertia(self, value: _builtins.bool | None) -> None:
+        """``balanceinertia``: bool; no default (unset when absent)."""
 
     @property
     def strippath(self) -> _builtins.bool | None:
@@ -5208,7 +5441,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-strippath
         """
     @strippath.setter
-    def strippath(self, value: _builtins.bool | None) -> None: ...
+    def strippath(self, value: _builtins.bool | None) -> None:
+        """``strippath``: bool; no default (unset when absent)."""
 
     @property
     def coordinate(self) -> Coordinate | None:
@@ -5217,7 +5451,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-coordinate
         """
     @coordinate.setter
-    def coordinate(self, value: Coordinate | None) -> None: ...
+    def coordinate(self, value: Coordinate | None) -> None:
+        """``coordinate``: one of: local, global; no default (unset when absent)."""
 
     @property
     def angle(self) -> Angle | None:
@@ -5226,7 +5461,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-angle
         """
     @angle.setter
-    def angle(self, value: Angle | None) -> None: ...
+    def angle(self, value: Angle | None) -> None:
+        """``angle``: one of: radian, degree; default "degree"."""
 
     @property
     def fitaabb(self) -> _builtins.bool | None:
@@ -5235,7 +5471,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fitaabb
         """
     @fitaabb.setter
-    def fitaabb(self, value: _builtins.bool | None) -> None: ...
+    def fitaabb(self, value: _builtins.bool | None) -> None:
+        """``fitaabb``: bool; no default (unset when absent)."""
 
     @property
     def eulerseq(self) -> _builtins.str | None:
@@ -5244,7 +5481,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-eulerseq
         """
     @eulerseq.setter
-    def eulerseq(self, value: _builtins.str | None) -> None: ...
+    def eulerseq(self, value: _builtins.str | None) -> None:
+        """``eulerseq``: chars[3]; no default (unset when absent); must match ``[xyzXYZ]{3}``."""
 
     @property
     def meshdir(self) -> _builtins.str | None:
@@ -5253,7 +5491,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-meshdir
         """
     @meshdir.setter
-    def meshdir(self, value: _builtins.str | None) -> None: ...
+    def meshdir(self, value: _builtins.str | None) -> None:
+        """``meshdir``: string; no default (unset when absent)."""
 
     @property
     def texturedir(self) -> _builtins.str | None:
@@ -5262,7 +5501,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-texturedir
         """
     @texturedir.setter
-    def texturedir(self, value: _builtins.str | None) -> None: ...
+    def texturedir(self, value: _builtins.str | None) -> None:
+        """``texturedir``: string; no default (unset when absent)."""
 
     @property
     def discardvisual(self) -> _builtins.bool | None:
@@ -5271,7 +5511,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-discardvisual
         """
     @discardvisual.setter
-    def discardvisual(self, value: _builtins.bool | None) -> None: ...
+    def discardvisual(self, value: _builtins.bool | None) -> None:
+        """``discardvisual``: bool; no default (unset when absent)."""
 
     @property
     def usethread(self) -> _builtins.bool | None:
@@ -5280,7 +5521,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-usethread
         """
     @usethread.setter
-    def usethread(self, value: _builtins.bool | None) -> None: ...
+    def usethread(self, value: _builtins.bool | None) -> None:
+        """``usethread``: bool; default "true"."""
 
     @property
     def fusestatic(self) -> _builtins.bool | None:
@@ -5289,7 +5531,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fusestatic
         """
     @fusestatic.setter
-    def fusestatic(self, value: _builtins.bool | None) -> None: ...
+    def fusestatic(self, value: _builtins.bool | None) -> None:
+        """``fusestatic``: bool; no default (unset when absent)."""
 
     @property
     def inertiafromgeom(self) -> FalseTrueAuto | None:
@@ -5298,7 +5541,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiafromgeom
         """
     @inertiafromgeom.setter
-    def inertiafromgeom(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def inertiafromgeom(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``inertiafromgeom``: one of: false, true, auto; default "auto"."""
 
     @property
     def inertiagrouprange(self) -> _t.Int32Array | None:
@@ -5307,7 +5551,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiagrouprange
         """
     @inertiagrouprange.setter
-    def inertiagrouprange(self, value: Integers2 | None) -> None: ...
+    def inertiagrouprange(self, value: Integers2 | None) -> None:
+        """``inertiagrouprange``: int[2]; default "0 5"."""
 
     @property
     def saveinertial(self) -> _builtins.bool | None:
@@ -5316,7 +5561,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-saveinertial
         """
     @saveinertial.setter
-    def saveinertial(self, value: _builtins.bool | None) -> None: ...
+    def saveinertial(self, value: _builtins.bool | None) -> None:
+        """``saveinertial``: bool; no default (unset when absent)."""
 
     @property
     def savecompiled(self) -> _builtins.bool | None:
@@ -5325,7 +5571,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecompiled
         """
     @savecompiled.setter
-    def savecompiled(self, value: _builtins.bool | None) -> None: ...
+    def savecompiled(self, value: _builtins.bool | None) -> None:
+        """``savecompiled``: bool; default "true"; in MuJoCo >= 3.17.0."""
 
     @property
     def savecanonical(self) -> _builtins.bool | None:
@@ -5334,7 +5581,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecanonical
         """
     @savecanonical.setter
-    def savecanonical(self, value: _builtins.bool | None) -> None: ...
+    def savecanonical(self, value: _builtins.bool | None) -> None:
+        """``savecanonical``: bool; default "true"; in MuJoCo >= 3.17.0."""
 
     @property
     def assetdir(self) -> _builtins.str | None:
@@ -5343,7 +5591,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-assetdir
         """
     @assetdir.setter
-    def assetdir(self, value: _builtins.str | None) -> None: ...
+    def assetdir(self, value: _builtins.str | None) -> None:
+        """``assetdir``: string; no default (unset when absent)."""
 
     @property
     def alignfree(self) -> _builtins.bool | None:
@@ -5352,7 +5601,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-alignfree
         """
     @alignfree.setter
-    def alignfree(self, value: _builtins.bool | None) -> None: ...
+    def alignfree(self, value: _builtins.bool | None) -> None:
+        """``alignfree``: bool; no default (unset when absent)."""
 
     @property
     def conflict(self) -> Conflict | None:
@@ -5361,7 +5611,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
         """
     @conflict.setter
-    def conflict(self, value: Conflict | None) -> None: ...
+    def conflict(self, value: Conflict | None) -> None:
+        """``conflict``: one of: warning, merge, error; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def passthrough(self) -> Passthrough | None:
@@ -5370,7 +5621,8 @@ class Compiler(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-passthrough
         """
     @passthrough.setter
-    def passthrough(self, value: Passthrough | None) -> None: ...
+    def passthrough(self, value: Passthrough | None) -> None:
+        """``passthrough``: one of: none, textures; default "none"; in MuJoCo >= 3.17.0."""
 
     @property
     def lengthrange(self) -> Lengthrange:
@@ -5412,11 +5664,23 @@ class Compiler(_Typed):
     def add(self, tag: Literal["lengthrange"], /, **kwargs: Unpack[LengthrangeAttributes]) -> Lengthrange: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <compiler> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["lengthrange"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <compiler> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["lengthrange"], /, position: _builtins.int, **kwargs: Unpack[LengthrangeAttributes]) -> Lengthrange: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <compiler> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["lengthrange"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <compiler> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -5471,7 +5735,8 @@ class Config(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-key
         """
     @key.setter
-    def key(self, value: _builtins.str | None) -> None: ...
+    def key(self, value: _builtins.str | None) -> None:
+        """``key``: string; required."""
 
     @property
     def value(self) -> _builtins.str | None:
@@ -5480,7 +5745,8 @@ class Config(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
         """
     @value.setter
-    def value(self, value: _builtins.str | None) -> None: ...
+    def value(self, value: _builtins.str | None) -> None:
+        """``value``: string; no default (unset when absent)."""
 
     def resolve(self, name: Literal["key", "value"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -5502,7 +5768,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -5511,7 +5778,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -5520,7 +5788,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -5529,7 +5798,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -5538,7 +5808,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -5547,7 +5818,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -5556,7 +5828,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def anchor(self) -> _t.Float64Array | None:
@@ -5565,7 +5838,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-anchor
         """
     @anchor.setter
-    def anchor(self, value: Reals3 | None) -> None: ...
+    def anchor(self, value: Reals3 | None) -> None:
+        """``anchor``: double[3]; no default (unset when absent)."""
 
     @property
     def site1(self) -> _builtins.str | Site | None:
@@ -5574,7 +5848,8 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site1
         """
     @site1.setter
-    def site1(self, value: _builtins.str | Site | None) -> None: ...
+    def site1(self, value: _builtins.str | Site | None) -> None:
+        """``site1``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site2(self) -> _builtins.str | Site | None:
@@ -5583,14 +5858,16 @@ class Connect(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site2
         """
     @site2.setter
-    def site2(self, value: _builtins.str | Site | None) -> None: ...
+    def site2(self, value: _builtins.str | Site | None) -> None:
+        """``site2``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5691,6 +5968,12 @@ class Contact(_Typed):
     def add(self, tag: Literal["exclude"], /, **kwargs: Unpack[ExcludeAttributes]) -> Exclude: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <contact> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["exclude", "pair"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <contact> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -5699,6 +5982,12 @@ class Contact(_Typed):
     @overload
     def insert(self, tag: Literal["exclude"], /, position: _builtins.int, **kwargs: Unpack[ExcludeAttributes]) -> Exclude: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <contact> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["exclude", "pair"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <contact> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -5775,6 +6064,12 @@ class Custom(_Typed):
     def add(self, tag: Literal["tuple"], /, **kwargs: Unpack[TupleAttributes]) -> Tuple: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <custom> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["numeric", "text", "tuple"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <custom> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -5786,6 +6081,12 @@ class Custom(_Typed):
     @overload
     def insert(self, tag: Literal["tuple"], /, position: _builtins.int, **kwargs: Unpack[TupleAttributes]) -> Tuple: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <custom> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["numeric", "text", "tuple"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <custom> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -5805,7 +6106,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -5814,7 +6116,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -5823,7 +6126,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -5832,7 +6136,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -5841,7 +6146,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -5850,7 +6156,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -5859,7 +6166,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -5868,7 +6176,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -5877,7 +6186,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -5886,7 +6196,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -5895,7 +6206,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -5904,7 +6216,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -5913,7 +6226,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -5922,7 +6236,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -5931,7 +6246,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -5940,7 +6256,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -5949,7 +6266,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -5958,7 +6276,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -5967,7 +6286,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -5976,7 +6296,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -5985,7 +6306,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -5994,7 +6316,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -6003,7 +6326,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -6012,7 +6336,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @property
     def area(self) -> _builtins.float | None:
@@ -6021,7 +6346,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
         """
     @area.setter
-    def area(self, value: _t.Real | None) -> None: ...
+    def area(self, value: _t.Real | None) -> None:
+        """``area``: double; no default (unset when absent)."""
 
     @property
     def diameter(self) -> _builtins.float | None:
@@ -6030,7 +6356,8 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
         """
     @diameter.setter
-    def diameter(self, value: _t.Real | None) -> None: ...
+    def diameter(self, value: _t.Real | None) -> None:
+        """``diameter``: double; no default (unset when absent)."""
 
     @property
     def bias(self) -> _t.Float64Array | None:
@@ -6039,14 +6366,16 @@ class Cylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
         """
     @bias.setter
-    def bias(self, value: Reals3 | None) -> None: ...
+    def bias(self, value: Reals3 | None) -> None:
+        """``bias``: double[3]; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -6099,7 +6428,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -6108,7 +6438,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -6117,7 +6448,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -6126,7 +6458,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -6135,7 +6468,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -6144,7 +6478,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -6153,7 +6488,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -6162,7 +6498,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -6171,7 +6508,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -6180,7 +6518,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -6189,7 +6528,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -6198,7 +6538,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -6207,7 +6548,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -6216,7 +6558,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -6225,7 +6568,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -6234,7 +6578,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -6243,7 +6588,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -6252,7 +6598,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -6261,7 +6608,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -6270,7 +6618,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -6279,7 +6628,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -6288,7 +6638,8 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -6297,14 +6648,16 @@ class Damper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -6357,7 +6710,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -6366,7 +6720,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -6375,7 +6730,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -6384,7 +6740,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -6393,7 +6750,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -6402,7 +6760,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -6411,7 +6770,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -6420,7 +6780,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -6429,7 +6790,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -6438,7 +6800,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -6447,7 +6810,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -6456,7 +6820,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -6465,7 +6830,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -6474,7 +6840,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -6483,7 +6850,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -6492,7 +6860,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -6501,7 +6870,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -6510,7 +6880,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -6519,7 +6890,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -6528,7 +6900,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -6537,7 +6910,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
@@ -6546,7 +6920,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
     @motorconst.setter
-    def motorconst(self, value: Reals1To2 | None) -> None: ...
+    def motorconst(self, value: Reals1To2 | None) -> None:
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def resistance(self) -> _builtins.float | None:
@@ -6555,7 +6930,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
     @resistance.setter
-    def resistance(self, value: _t.Real | None) -> None: ...
+    def resistance(self, value: _t.Real | None) -> None:
+        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nominal(self) -> _t.Float64Array | None:
@@ -6564,7 +6940,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
         """
     @nominal.setter
-    def nominal(self, value: Reals1To3 | None) -> None: ...
+    def nominal(self, value: Reals1To3 | None) -> None:
+        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def saturation(self) -> _t.Float64Array | None:
@@ -6573,7 +6950,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
         """
     @saturation.setter
-    def saturation(self, value: Reals1To3 | None) -> None: ...
+    def saturation(self, value: Reals1To3 | None) -> None:
+        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def inductance(self) -> _t.Float64Array | None:
@@ -6582,7 +6960,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
         """
     @inductance.setter
-    def inductance(self, value: Reals1To2 | None) -> None: ...
+    def inductance(self, value: Reals1To2 | None) -> None:
+        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cogging(self) -> _t.Float64Array | None:
@@ -6591,7 +6970,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
         """
     @cogging.setter
-    def cogging(self, value: Reals1To3 | None) -> None: ...
+    def cogging(self, value: Reals1To3 | None) -> None:
+        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def controller(self) -> _t.Float64Array | None:
@@ -6600,7 +6980,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
         """
     @controller.setter
-    def controller(self, value: Reals1To6 | None) -> None: ...
+    def controller(self, value: Reals1To6 | None) -> None:
+        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def thermal(self) -> _t.Float64Array | None:
@@ -6609,7 +6990,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
         """
     @thermal.setter
-    def thermal(self, value: Reals1To6 | None) -> None: ...
+    def thermal(self, value: Reals1To6 | None) -> None:
+        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def lugre(self) -> _t.Float64Array | None:
@@ -6618,7 +7000,8 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
         """
     @lugre.setter
-    def lugre(self, value: Reals1To5 | None) -> None: ...
+    def lugre(self, value: Reals1To5 | None) -> None:
+        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
@@ -6627,14 +7010,16 @@ class Dcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None: ...
+    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -6690,14 +7075,16 @@ class Default(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | None) -> None: ...
+    def class_(self, value: _builtins.str | None) -> None:
+        """``class``: name declared in namespace ``default``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | None) -> None: ...
+    def dclass(self, value: _builtins.str | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def default(self) -> _List[Default]:
@@ -7908,6 +8295,12 @@ class Default(_Typed):
     def add(self, tag: Literal["texture"], /, **kwargs: Unpack[DefaultTextureAttributes]) -> DefaultTexture: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <default> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["adhesion", "camera", "cylinder", "damper", "dcmotor", "default", "equality", "general", "geom", "intvelocity", "joint", "light", "material", "mesh", "motor", "muscle", "orientation", "pair", "pid", "position", "site", "tendon", "texture", "velocity"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <default> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -7983,6 +8376,12 @@ class Default(_Typed):
     def insert(self, tag: Literal["texture"], /, position: _builtins.int, **kwargs: Unpack[DefaultTextureAttributes]) -> DefaultTexture: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <default> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["adhesion", "camera", "cylinder", "damper", "dcmotor", "default", "equality", "general", "geom", "intvelocity", "joint", "light", "material", "mesh", "motor", "muscle", "orientation", "pair", "pid", "position", "site", "tendon", "texture", "velocity"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <default> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     def resolve(self, name: Literal["class_"]) -> _builtins.str | None:
@@ -8005,7 +8404,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8014,7 +8414,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8023,7 +8424,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8032,7 +8434,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8041,7 +8444,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8050,7 +8454,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8059,7 +8464,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8068,7 +8474,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gain(self) -> _builtins.float | None:
@@ -8077,7 +8484,8 @@ class DefaultAdhesion(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
     @gain.setter
-    def gain(self, value: _t.Real | None) -> None: ...
+    def gain(self, value: _t.Real | None) -> None:
+        """``gain``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8112,7 +8520,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
         """
     @projection.setter
-    def projection(self, value: Projection | None) -> None: ...
+    def projection(self, value: Projection | None) -> None:
+        """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def fovy(self) -> _builtins.float | None:
@@ -8121,7 +8530,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
         """
     @fovy.setter
-    def fovy(self, value: _t.Real | None) -> None: ...
+    def fovy(self, value: _t.Real | None) -> None:
+        """``fovy``: double; default "45"."""
 
     @property
     def ipd(self) -> _builtins.float | None:
@@ -8130,7 +8540,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
         """
     @ipd.setter
-    def ipd(self, value: _t.Real | None) -> None: ...
+    def ipd(self, value: _t.Real | None) -> None:
+        """``ipd``: double; default "0.068"."""
 
     @property
     def resolution(self) -> _t.Int32Array | None:
@@ -8139,7 +8550,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
         """
     @resolution.setter
-    def resolution(self, value: Integers2 | None) -> None: ...
+    def resolution(self, value: Integers2 | None) -> None:
+        """``resolution``: int[2]; default "1 1"."""
 
     @property
     def output(self) -> tuple[Camout, ...] | None:
@@ -8148,7 +8560,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
         """
     @output.setter
-    def output(self, value: Camout | Collection[Camout] | None) -> None: ...
+    def output(self, value: Camout | Collection[Camout] | None) -> None:
+        """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -8157,7 +8570,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -8166,7 +8580,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -8175,7 +8590,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -8184,7 +8600,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -8193,7 +8610,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -8202,7 +8620,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -8211,7 +8630,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @property
     def focal(self) -> _t.Float32Array | None:
@@ -8220,7 +8640,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
         """
     @focal.setter
-    def focal(self, value: Reals2 | None) -> None: ...
+    def focal(self, value: Reals2 | None) -> None:
+        """``focal``: float[2]; no default (unset when absent)."""
 
     @property
     def focalpixel(self) -> _t.Float32Array | None:
@@ -8229,7 +8650,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
         """
     @focalpixel.setter
-    def focalpixel(self, value: Reals2 | None) -> None: ...
+    def focalpixel(self, value: Reals2 | None) -> None:
+        """``focalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def principal(self) -> _t.Float32Array | None:
@@ -8238,7 +8660,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
         """
     @principal.setter
-    def principal(self, value: Reals2 | None) -> None: ...
+    def principal(self, value: Reals2 | None) -> None:
+        """``principal``: float[2]; no default (unset when absent)."""
 
     @property
     def principalpixel(self) -> _t.Float32Array | None:
@@ -8247,7 +8670,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
         """
     @principalpixel.setter
-    def principalpixel(self, value: Reals2 | None) -> None: ...
+    def principalpixel(self, value: Reals2 | None) -> None:
+        """``principalpixel``: float[2]; no default (unset when absent)."""
 
     @property
     def sensorsize(self) -> _t.Float32Array | None:
@@ -8256,7 +8680,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
         """
     @sensorsize.setter
-    def sensorsize(self, value: Reals2 | None) -> None: ...
+    def sensorsize(self, value: Reals2 | None) -> None:
+        """``sensorsize``: float[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8265,7 +8690,8 @@ class DefaultCamera(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["projection"]) -> Projection | None:
@@ -8309,7 +8735,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8318,7 +8745,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8327,7 +8755,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8336,7 +8765,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8345,7 +8775,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8354,7 +8785,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -8363,7 +8795,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8372,7 +8805,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8381,7 +8815,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -8390,7 +8825,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -8399,7 +8835,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -8408,7 +8845,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -8417,7 +8855,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -8426,7 +8865,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @property
     def area(self) -> _builtins.float | None:
@@ -8435,7 +8875,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
         """
     @area.setter
-    def area(self, value: _t.Real | None) -> None: ...
+    def area(self, value: _t.Real | None) -> None:
+        """``area``: double; no default (unset when absent)."""
 
     @property
     def diameter(self) -> _builtins.float | None:
@@ -8444,7 +8885,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
         """
     @diameter.setter
-    def diameter(self, value: _t.Real | None) -> None: ...
+    def diameter(self, value: _t.Real | None) -> None:
+        """``diameter``: double; no default (unset when absent)."""
 
     @property
     def bias(self) -> _t.Float64Array | None:
@@ -8453,7 +8895,8 @@ class DefaultCylinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
         """
     @bias.setter
-    def bias(self, value: Reals3 | None) -> None: ...
+    def bias(self, value: Reals3 | None) -> None:
+        """``bias``: double[3]; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8491,7 +8934,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8500,7 +8944,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8509,7 +8954,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8518,7 +8964,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8527,7 +8974,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8536,7 +8984,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8545,7 +8994,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8554,7 +9004,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -8563,7 +9014,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -8572,7 +9024,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -8581,7 +9034,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -8590,7 +9044,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -8599,7 +9054,8 @@ class DefaultDamper(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8637,7 +9093,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8646,7 +9103,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8655,7 +9113,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8664,7 +9123,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8673,7 +9133,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8682,7 +9143,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -8691,7 +9153,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -8700,7 +9163,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -8709,7 +9173,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -8718,7 +9183,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -8727,7 +9193,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
@@ -8736,7 +9203,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
     @motorconst.setter
-    def motorconst(self, value: Reals1To2 | None) -> None: ...
+    def motorconst(self, value: Reals1To2 | None) -> None:
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def resistance(self) -> _builtins.float | None:
@@ -8745,7 +9213,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
     @resistance.setter
-    def resistance(self, value: _t.Real | None) -> None: ...
+    def resistance(self, value: _t.Real | None) -> None:
+        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nominal(self) -> _t.Float64Array | None:
@@ -8754,7 +9223,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
         """
     @nominal.setter
-    def nominal(self, value: Reals1To3 | None) -> None: ...
+    def nominal(self, value: Reals1To3 | None) -> None:
+        """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def saturation(self) -> _t.Float64Array | None:
@@ -8763,7 +9233,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
         """
     @saturation.setter
-    def saturation(self, value: Reals1To3 | None) -> None: ...
+    def saturation(self, value: Reals1To3 | None) -> None:
+        """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def inductance(self) -> _t.Float64Array | None:
@@ -8772,7 +9243,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
         """
     @inductance.setter
-    def inductance(self, value: Reals1To2 | None) -> None: ...
+    def inductance(self, value: Reals1To2 | None) -> None:
+        """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cogging(self) -> _t.Float64Array | None:
@@ -8781,7 +9253,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
         """
     @cogging.setter
-    def cogging(self, value: Reals1To3 | None) -> None: ...
+    def cogging(self, value: Reals1To3 | None) -> None:
+        """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def controller(self) -> _t.Float64Array | None:
@@ -8790,7 +9263,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
         """
     @controller.setter
-    def controller(self, value: Reals1To6 | None) -> None: ...
+    def controller(self, value: Reals1To6 | None) -> None:
+        """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def thermal(self) -> _t.Float64Array | None:
@@ -8799,7 +9273,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
         """
     @thermal.setter
-    def thermal(self, value: Reals1To6 | None) -> None: ...
+    def thermal(self, value: Reals1To6 | None) -> None:
+        """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def lugre(self) -> _t.Float64Array | None:
@@ -8808,7 +9283,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
         """
     @lugre.setter
-    def lugre(self, value: Reals1To5 | None) -> None: ...
+    def lugre(self, value: Reals1To5 | None) -> None:
+        """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def input(self) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None:
@@ -8817,7 +9293,8 @@ class DefaultDcmotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
         """
     @input.setter
-    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None: ...
+    def input(self, value: DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8858,7 +9335,8 @@ class DefaultEquality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; no default (unset when absent)."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -8867,7 +9345,8 @@ class DefaultEquality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -8876,7 +9355,8 @@ class DefaultEquality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["active"]) -> _builtins.bool | None:
@@ -8902,7 +9382,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -8911,7 +9392,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -8920,7 +9402,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -8929,7 +9412,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -8938,7 +9422,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -8947,7 +9432,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -8956,7 +9442,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -8965,7 +9452,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -8974,7 +9462,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -8983,7 +9472,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -8992,7 +9482,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -9001,7 +9492,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -9010,7 +9502,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -9019,7 +9512,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -9028,7 +9522,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def actdim(self) -> _builtins.int | None:
@@ -9037,7 +9532,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
         """
     @actdim.setter
-    def actdim(self, value: _t.Integer | None) -> None: ...
+    def actdim(self, value: _t.Integer | None) -> None:
+        """``actdim``: int; default "-1"."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -9046,7 +9542,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -9055,7 +9552,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -9064,7 +9562,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -9073,7 +9572,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dyntype(self) -> Dyn | None:
@@ -9082,7 +9582,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
         """
     @dyntype.setter
-    def dyntype(self, value: Dyn | None) -> None: ...
+    def dyntype(self, value: Dyn | None) -> None:
+        """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none"."""
 
     @property
     def gaintype(self) -> Gain | None:
@@ -9091,7 +9592,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
         """
     @gaintype.setter
-    def gaintype(self, value: Gain | None) -> None: ...
+    def gaintype(self, value: Gain | None) -> None:
+        """``gaintype``: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed"."""
 
     @property
     def biastype(self) -> Bias | None:
@@ -9100,7 +9602,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
         """
     @biastype.setter
-    def biastype(self, value: Bias | None) -> None: ...
+    def biastype(self, value: Bias | None) -> None:
+        """``biastype``: one of: none, affine, muscle, dcmotor, so3, user; default "none"."""
 
     @property
     def dynprm(self) -> _t.Float64Array | None:
@@ -9109,7 +9612,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
         """
     @dynprm.setter
-    def dynprm(self, value: Reals1To10 | None) -> None: ...
+    def dynprm(self, value: Reals1To10 | None) -> None:
+        """``dynprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def gainprm(self) -> _t.Float64Array | None:
@@ -9118,7 +9622,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
         """
     @gainprm.setter
-    def gainprm(self, value: Reals1To10 | None) -> None: ...
+    def gainprm(self, value: Reals1To10 | None) -> None:
+        """``gainprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def biasprm(self) -> _t.Float64Array | None:
@@ -9127,7 +9632,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
         """
     @biasprm.setter
-    def biasprm(self, value: Reals1To10 | None) -> None: ...
+    def biasprm(self, value: Reals1To10 | None) -> None:
+        """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent)."""
 
     @property
     def actearly(self) -> _builtins.bool | None:
@@ -9136,7 +9642,8 @@ class DefaultGeneral(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
         """
     @actearly.setter
-    def actearly(self, value: _builtins.bool | None) -> None: ...
+    def actearly(self, value: _builtins.bool | None) -> None:
+        """``actearly``: bool; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9192,7 +9699,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
         """
     @type.setter
-    def type(self, value: GeomType | None) -> None: ...
+    def type(self, value: GeomType | None) -> None:
+        """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def contype(self) -> _builtins.int | None:
@@ -9201,7 +9709,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
         """
     @contype.setter
-    def contype(self, value: _t.Integer | None) -> None: ...
+    def contype(self, value: _t.Integer | None) -> None:
+        """``contype``: int; default "1"."""
 
     @property
     def conaffinity(self) -> _builtins.int | None:
@@ -9210,7 +9719,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
         """
     @conaffinity.setter
-    def conaffinity(self, value: _t.Integer | None) -> None: ...
+    def conaffinity(self, value: _t.Integer | None) -> None:
+        """``conaffinity``: int; default "1"."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -9219,7 +9729,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -9228,7 +9739,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def priority(self) -> _builtins.int | None:
@@ -9237,7 +9749,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
         """
     @priority.setter
-    def priority(self, value: _t.Integer | None) -> None: ...
+    def priority(self, value: _t.Integer | None) -> None:
+        """``priority``: int; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -9246,7 +9759,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -9255,7 +9769,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -9264,7 +9779,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To3 | None) -> None: ...
+    def friction(self, value: Reals1To3 | None) -> None:
+        """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001"."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -9273,7 +9789,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; no default (unset when absent)."""
 
     @property
     def density(self) -> _builtins.float | None:
@@ -9282,7 +9799,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
         """
     @density.setter
-    def density(self, value: _t.Real | None) -> None: ...
+    def density(self, value: _t.Real | None) -> None:
+        """``density``: double; default "1000"."""
 
     @property
     def shellinertia(self) -> _builtins.bool | None:
@@ -9291,7 +9809,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
         """
     @shellinertia.setter
-    def shellinertia(self, value: _builtins.bool | None) -> None: ...
+    def shellinertia(self, value: _builtins.bool | None) -> None:
+        """``shellinertia``: bool; no default (unset when absent)."""
 
     @property
     def solmix(self) -> _builtins.float | None:
@@ -9300,7 +9819,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
         """
     @solmix.setter
-    def solmix(self, value: _t.Real | None) -> None: ...
+    def solmix(self, value: _t.Real | None) -> None:
+        """``solmix``: double; default "1"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -9309,7 +9829,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -9318,7 +9839,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -9327,7 +9849,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -9336,7 +9859,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def surfacevel(self) -> _t.Float64Array | None:
@@ -9345,7 +9869,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
         """
     @surfacevel.setter
-    def surfacevel(self, value: Reals1To6 | None) -> None: ...
+    def surfacevel(self, value: Reals1To6 | None) -> None:
+        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -9354,7 +9879,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -9363,7 +9889,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -9372,7 +9899,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -9381,7 +9909,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -9390,7 +9919,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -9399,7 +9929,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -9408,7 +9939,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -9417,7 +9949,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def hfield(self) -> _builtins.str | Hfield | None:
@@ -9426,7 +9959,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
         """
     @hfield.setter
-    def hfield(self, value: _builtins.str | Hfield | None) -> None: ...
+    def hfield(self, value: _builtins.str | Hfield | None) -> None:
+        """``hfield``: reference to namespace ``hfield``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -9435,7 +9969,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def fitscale(self) -> _builtins.float | None:
@@ -9444,7 +9979,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
         """
     @fitscale.setter
-    def fitscale(self, value: _t.Real | None) -> None: ...
+    def fitscale(self, value: _t.Real | None) -> None:
+        """``fitscale``: double; default "1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -9453,7 +9989,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def fluidshape(self) -> Fluidshape | None:
@@ -9462,7 +9999,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
         """
     @fluidshape.setter
-    def fluidshape(self, value: Fluidshape | None) -> None: ...
+    def fluidshape(self, value: Fluidshape | None) -> None:
+        """``fluidshape``: one of: none, ellipsoid; no default (unset when absent)."""
 
     @property
     def fluidcoef(self) -> _t.Float64Array | None:
@@ -9471,7 +10009,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
         """
     @fluidcoef.setter
-    def fluidcoef(self, value: Reals1To5 | None) -> None: ...
+    def fluidcoef(self, value: Reals1To5 | None) -> None:
+        """``fluidcoef``: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9480,7 +10019,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -9489,7 +10029,8 @@ class DefaultGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"; in MuJoCo >= 4.0.0."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> GeomType:
@@ -9551,7 +10092,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -9560,7 +10102,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -9569,7 +10112,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -9578,7 +10122,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -9587,7 +10132,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9596,7 +10142,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -9605,7 +10152,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -9614,7 +10162,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -9623,7 +10172,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -9632,7 +10182,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -9641,7 +10192,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -9650,7 +10202,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -9659,7 +10212,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -9668,7 +10222,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -9677,7 +10232,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -9686,7 +10242,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -9695,7 +10252,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -9704,7 +10262,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -9713,7 +10272,8 @@ class DefaultIntvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9751,7 +10311,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
         """
     @type.setter
-    def type(self, value: JointType | None) -> None: ...
+    def type(self, value: JointType | None) -> None:
+        """``type``: one of: free, ball, slide, hinge; default "hinge"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -9760,7 +10321,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -9769,7 +10331,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def axis(self) -> _t.Float64Array | None:
@@ -9778,7 +10341,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
         """
     @axis.setter
-    def axis(self, value: Reals3 | None) -> None: ...
+    def axis(self, value: Reals3 | None) -> None:
+        """``axis``: double[3]; default "0 0 1"."""
 
     @property
     def springdamper(self) -> _t.Float64Array | None:
@@ -9787,7 +10351,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
         """
     @springdamper.setter
-    def springdamper(self, value: Reals2 | None) -> None: ...
+    def springdamper(self, value: Reals2 | None) -> None:
+        """``springdamper``: double[2]; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -9796,7 +10361,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -9805,7 +10371,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -9814,7 +10381,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -9823,7 +10391,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -9832,7 +10401,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -9841,7 +10411,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -9850,7 +10421,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -9859,7 +10431,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -9868,7 +10441,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorgravcomp(self) -> _builtins.bool | None:
@@ -9877,7 +10451,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
         """
     @actuatorgravcomp.setter
-    def actuatorgravcomp(self, value: _builtins.bool | None) -> None: ...
+    def actuatorgravcomp(self, value: _builtins.bool | None) -> None:
+        """``actuatorgravcomp``: bool; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -9886,7 +10461,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def ref(self) -> _builtins.float | None:
@@ -9895,7 +10471,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
         """
     @ref.setter
-    def ref(self, value: _t.Real | None) -> None: ...
+    def ref(self, value: _t.Real | None) -> None:
+        """``ref``: double; no default (unset when absent)."""
 
     @property
     def springref(self) -> _builtins.float | None:
@@ -9904,7 +10481,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
         """
     @springref.setter
-    def springref(self, value: _t.Real | None) -> None: ...
+    def springref(self, value: _t.Real | None) -> None:
+        """``springref``: double; no default (unset when absent)."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -9913,7 +10491,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -9922,7 +10501,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -9931,7 +10511,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9940,7 +10521,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -9949,7 +10531,8 @@ class DefaultJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> JointType:
@@ -9993,7 +10576,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
         """
     @directional.setter
-    def directional(self, value: _builtins.bool | None) -> None: ...
+    def directional(self, value: _builtins.bool | None) -> None:
+        """``directional``: bool; no default (unset when absent)."""
 
     @property
     def type(self) -> LightType | None:
@@ -10002,7 +10586,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
         """
     @type.setter
-    def type(self, value: LightType | None) -> None: ...
+    def type(self, value: LightType | None) -> None:
+        """``type``: one of: spot, directional, point, image; no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -10011,7 +10596,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -10020,7 +10606,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -10029,7 +10616,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def dir(self) -> _t.Float64Array | None:
@@ -10038,7 +10626,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
         """
     @dir.setter
-    def dir(self, value: Reals3 | None) -> None: ...
+    def dir(self, value: Reals3 | None) -> None:
+        """``dir``: double[3]; default "0 0 -1"."""
 
     @property
     def bulbradius(self) -> _builtins.float | None:
@@ -10047,7 +10636,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
         """
     @bulbradius.setter
-    def bulbradius(self, value: _t.Real | None) -> None: ...
+    def bulbradius(self, value: _t.Real | None) -> None:
+        """``bulbradius``: float; default "0.02"."""
 
     @property
     def intensity(self) -> _builtins.float | None:
@@ -10056,7 +10646,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
         """
     @intensity.setter
-    def intensity(self, value: _t.Real | None) -> None: ...
+    def intensity(self, value: _t.Real | None) -> None:
+        """``intensity``: float; no default (unset when absent)."""
 
     @property
     def range(self) -> _builtins.float | None:
@@ -10065,7 +10656,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
         """
     @range.setter
-    def range(self, value: _t.Real | None) -> None: ...
+    def range(self, value: _t.Real | None) -> None:
+        """``range``: float; default "10"."""
 
     @property
     def attenuation(self) -> _t.Float32Array | None:
@@ -10074,7 +10666,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
         """
     @attenuation.setter
-    def attenuation(self, value: Reals3 | None) -> None: ...
+    def attenuation(self, value: Reals3 | None) -> None:
+        """``attenuation``: float[3]; default "1 0 0"."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -10083,7 +10676,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: float; default "45"."""
 
     @property
     def softness(self) -> _builtins.float | None:
@@ -10092,7 +10686,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
         """
     @softness.setter
-    def softness(self, value: _t.Real | None) -> None: ...
+    def softness(self, value: _t.Real | None) -> None:
+        """``softness``: float; default "0.2"; in MuJoCo >= 3.17.0."""
 
     @property
     def exponent(self) -> _builtins.float | None:
@@ -10101,7 +10696,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
         """
     @exponent.setter
-    def exponent(self, value: _t.Real | None) -> None: ...
+    def exponent(self, value: _t.Real | None) -> None:
+        """``exponent``: float; default "10"."""
 
     @property
     def ambient(self) -> _t.Float32Array | None:
@@ -10110,7 +10706,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
         """
     @ambient.setter
-    def ambient(self, value: Reals3 | None) -> None: ...
+    def ambient(self, value: Reals3 | None) -> None:
+        """``ambient``: float[3]; no default (unset when absent)."""
 
     @property
     def diffuse(self) -> _t.Float32Array | None:
@@ -10119,7 +10716,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
         """
     @diffuse.setter
-    def diffuse(self, value: Reals3 | None) -> None: ...
+    def diffuse(self, value: Reals3 | None) -> None:
+        """``diffuse``: float[3]; default "0.7 0.7 0.7"."""
 
     @property
     def specular(self) -> _t.Float32Array | None:
@@ -10128,7 +10726,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
         """
     @specular.setter
-    def specular(self, value: Reals3 | None) -> None: ...
+    def specular(self, value: Reals3 | None) -> None:
+        """``specular``: float[3]; default "0.3 0.3 0.3"."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -10137,7 +10736,8 @@ class DefaultLight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @overload
     def resolve(self, name: Literal["directional"]) -> _builtins.bool | None:
@@ -10184,7 +10784,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def texrepeat(self) -> _t.Float32Array | None:
@@ -10193,7 +10794,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
         """
     @texrepeat.setter
-    def texrepeat(self, value: Reals2 | None) -> None: ...
+    def texrepeat(self, value: Reals2 | None) -> None:
+        """``texrepeat``: float[2]; default "1 1"."""
 
     @property
     def texuniform(self) -> _builtins.bool | None:
@@ -10202,7 +10804,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
         """
     @texuniform.setter
-    def texuniform(self, value: _builtins.bool | None) -> None: ...
+    def texuniform(self, value: _builtins.bool | None) -> None:
+        """``texuniform``: bool; no default (unset when absent)."""
 
     @property
     def emission(self) -> _builtins.float | None:
@@ -10211,7 +10814,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
         """
     @emission.setter
-    def emission(self, value: _t.Real | None) -> None: ...
+    def emission(self, value: _t.Real | None) -> None:
+        """``emission``: float; no default (unset when absent)."""
 
     @property
     def specular(self) -> _builtins.float | None:
@@ -10220,7 +10824,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
         """
     @specular.setter
-    def specular(self, value: _t.Real | None) -> None: ...
+    def specular(self, value: _t.Real | None) -> None:
+        """``specular``: float; default "0.5"."""
 
     @property
     def shininess(self) -> _builtins.float | None:
@@ -10229,7 +10834,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
         """
     @shininess.setter
-    def shininess(self, value: _t.Real | None) -> None: ...
+    def shininess(self, value: _t.Real | None) -> None:
+        """``shininess``: float; default "0.5"."""
 
     @property
     def reflectance(self) -> _builtins.float | None:
@@ -10238,7 +10844,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
         """
     @reflectance.setter
-    def reflectance(self, value: _t.Real | None) -> None: ...
+    def reflectance(self, value: _t.Real | None) -> None:
+        """``reflectance``: float; no default (unset when absent)."""
 
     @property
     def metallic(self) -> _builtins.float | None:
@@ -10247,7 +10854,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
         """
     @metallic.setter
-    def metallic(self, value: _t.Real | None) -> None: ...
+    def metallic(self, value: _t.Real | None) -> None:
+        """``metallic``: float; default "-1"."""
 
     @property
     def roughness(self) -> _builtins.float | None:
@@ -10256,7 +10864,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
         """
     @roughness.setter
-    def roughness(self, value: _t.Real | None) -> None: ...
+    def roughness(self, value: _t.Real | None) -> None:
+        """``roughness``: float; default "-1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -10265,7 +10874,8 @@ class DefaultMaterial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "1 1 1 1"."""
 
     @property
     def layer(self) -> _List[Layer]:
@@ -10289,11 +10899,23 @@ class DefaultMaterial(_Typed):
     def add(self, tag: Literal["layer"], /, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <material> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["layer"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <material> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["layer"], /, position: _builtins.int, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <material> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["layer"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <material> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -10330,7 +10952,8 @@ class DefaultMesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
         """
     @scale.setter
-    def scale(self, value: Reals3 | None) -> None: ...
+    def scale(self, value: Reals3 | None) -> None:
+        """``scale``: double[3]; default "1 1 1"."""
 
     @property
     def maxhullvert(self) -> _builtins.int | None:
@@ -10339,7 +10962,8 @@ class DefaultMesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
         """
     @maxhullvert.setter
-    def maxhullvert(self, value: _t.Integer | None) -> None: ...
+    def maxhullvert(self, value: _t.Integer | None) -> None:
+        """``maxhullvert``: int; default "-1"."""
 
     @property
     def inertia(self) -> MeshInertia | None:
@@ -10348,7 +10972,8 @@ class DefaultMesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
         """
     @inertia.setter
-    def inertia(self, value: MeshInertia | None) -> None: ...
+    def inertia(self, value: MeshInertia | None) -> None:
+        """``inertia``: one of: convex, legacy, exact, shell; default "legacy"."""
 
     @overload
     def resolve(self, name: Literal["scale"]) -> _t.Float64Array:
@@ -10377,7 +11002,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10386,7 +11012,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -10395,7 +11022,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -10404,7 +11032,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -10413,7 +11042,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10422,7 +11052,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -10431,7 +11062,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -10440,7 +11072,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -10449,7 +11082,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -10458,7 +11092,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -10467,7 +11102,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -10476,7 +11112,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -10485,7 +11122,8 @@ class DefaultMotor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10523,7 +11161,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10532,7 +11171,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -10541,7 +11181,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -10550,7 +11191,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -10559,7 +11201,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10568,7 +11211,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -10577,7 +11221,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -10586,7 +11231,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -10595,7 +11241,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -10604,7 +11251,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -10613,7 +11261,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -10622,7 +11271,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -10631,7 +11281,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _t.Float64Array | None:
@@ -10640,7 +11291,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: Reals2 | None) -> None: ...
+    def timeconst(self, value: Reals2 | None) -> None:
+        """``timeconst``: double[2]; no default (unset when absent)."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -10649,7 +11301,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def force(self) -> _builtins.float | None:
@@ -10658,7 +11311,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
         """
     @force.setter
-    def force(self, value: _t.Real | None) -> None: ...
+    def force(self, value: _t.Real | None) -> None:
+        """``force``: double; no default (unset when absent)."""
 
     @property
     def scale(self) -> _builtins.float | None:
@@ -10667,7 +11321,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
         """
     @scale.setter
-    def scale(self, value: _t.Real | None) -> None: ...
+    def scale(self, value: _t.Real | None) -> None:
+        """``scale``: double; no default (unset when absent)."""
 
     @property
     def lmin(self) -> _builtins.float | None:
@@ -10676,7 +11331,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
         """
     @lmin.setter
-    def lmin(self, value: _t.Real | None) -> None: ...
+    def lmin(self, value: _t.Real | None) -> None:
+        """``lmin``: double; no default (unset when absent)."""
 
     @property
     def lmax(self) -> _builtins.float | None:
@@ -10685,7 +11341,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
         """
     @lmax.setter
-    def lmax(self, value: _t.Real | None) -> None: ...
+    def lmax(self, value: _t.Real | None) -> None:
+        """``lmax``: double; no default (unset when absent)."""
 
     @property
     def vmax(self) -> _builtins.float | None:
@@ -10694,7 +11351,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
         """
     @vmax.setter
-    def vmax(self, value: _t.Real | None) -> None: ...
+    def vmax(self, value: _t.Real | None) -> None:
+        """``vmax``: double; no default (unset when absent)."""
 
     @property
     def fpmax(self) -> _builtins.float | None:
@@ -10703,7 +11361,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
         """
     @fpmax.setter
-    def fpmax(self, value: _t.Real | None) -> None: ...
+    def fpmax(self, value: _t.Real | None) -> None:
+        """``fpmax``: double; no default (unset when absent)."""
 
     @property
     def fvmax(self) -> _builtins.float | None:
@@ -10712,7 +11371,8 @@ class DefaultMuscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
         """
     @fvmax.setter
-    def fvmax(self, value: _t.Real | None) -> None: ...
+    def fvmax(self, value: _t.Real | None) -> None:
+        """``fvmax``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10750,7 +11410,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10759,7 +11420,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -10768,7 +11430,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -10777,7 +11440,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -10786,7 +11450,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -10795,7 +11460,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -10804,7 +11470,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -10813,7 +11480,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -10822,7 +11490,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -10831,7 +11500,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -10840,7 +11510,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -10849,7 +11520,8 @@ class DefaultOrientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10887,7 +11559,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -10896,7 +11569,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To5 | None) -> None: ...
+    def friction(self, value: Reals1To5 | None) -> None:
+        """``friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -10905,7 +11579,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -10914,7 +11589,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -10923,7 +11599,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -10932,7 +11609,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -10941,7 +11619,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -10950,7 +11629,8 @@ class DefaultPair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["condim"]) -> _builtins.int:
@@ -10982,7 +11662,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -10991,7 +11672,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -11000,7 +11682,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -11009,7 +11692,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -11018,7 +11702,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11027,7 +11712,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -11036,7 +11722,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -11045,7 +11732,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def posrange(self) -> _t.Float64Array | None:
@@ -11054,7 +11742,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
         """
     @posrange.setter
-    def posrange(self, value: Reals2 | None) -> None: ...
+    def posrange(self, value: Reals2 | None) -> None:
+        """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -11063,7 +11752,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -11072,7 +11762,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -11081,7 +11772,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -11090,7 +11782,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -11099,7 +11792,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -11108,7 +11802,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -11117,7 +11812,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -11126,7 +11822,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -11135,7 +11832,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -11144,7 +11842,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -11153,7 +11852,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ki(self) -> _builtins.float | None:
@@ -11162,7 +11862,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
         """
     @ki.setter
-    def ki(self, value: _t.Real | None) -> None: ...
+    def ki(self, value: _t.Real | None) -> None:
+        """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def imax(self) -> _builtins.float | None:
@@ -11171,7 +11872,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
         """
     @imax.setter
-    def imax(self, value: _t.Real | None) -> None: ...
+    def imax(self, value: _t.Real | None) -> None:
+        """``imax``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def slewmax(self) -> _builtins.float | None:
@@ -11180,7 +11882,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
         """
     @slewmax.setter
-    def slewmax(self, value: _t.Real | None) -> None: ...
+    def slewmax(self, value: _t.Real | None) -> None:
+        """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
@@ -11189,7 +11892,8 @@ class DefaultPid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None: ...
+    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -11230,7 +11934,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -11239,7 +11944,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -11248,7 +11954,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -11257,7 +11964,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -11266,7 +11974,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11275,7 +11984,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -11284,7 +11994,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -11293,7 +12004,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -11302,7 +12014,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -11311,7 +12024,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -11320,7 +12034,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -11329,7 +12044,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -11338,7 +12054,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -11347,7 +12064,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -11356,7 +12074,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -11365,7 +12084,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -11374,7 +12094,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -11383,7 +12104,8 @@ class DefaultPosition(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -11421,7 +12143,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
         """
     @type.setter
-    def type(self, value: SiteType | None) -> None: ...
+    def type(self, value: SiteType | None) -> None:
+        """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -11430,7 +12153,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -11439,7 +12163,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -11448,7 +12173,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -11457,7 +12183,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -11466,7 +12193,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -11475,7 +12203,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -11484,7 +12213,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -11493,7 +12223,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -11502,7 +12233,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -11511,7 +12243,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); default "0.005 0.005 0.005"."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -11520,7 +12253,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -11529,7 +12263,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11538,7 +12273,8 @@ class DefaultSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> SiteType:
@@ -11579,7 +12315,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -11588,7 +12325,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -11597,7 +12335,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -11606,7 +12345,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -11615,7 +12355,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -11624,7 +12365,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -11633,7 +12375,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -11642,7 +12385,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def springlength(self) -> _t.Float64Array | None:
@@ -11651,7 +12395,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springlength
         """
     @springlength.setter
-    def springlength(self, value: Reals1To2 | None) -> None: ...
+    def springlength(self, value: Reals1To2 | None) -> None:
+        """``springlength``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def width(self) -> _builtins.float | None:
@@ -11660,7 +12405,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-width
         """
     @width.setter
-    def width(self, value: _t.Real | None) -> None: ...
+    def width(self, value: _t.Real | None) -> None:
+        """``width``: double; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -11669,7 +12415,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -11678,7 +12425,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -11687,7 +12435,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -11696,7 +12445,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -11705,7 +12455,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -11714,7 +12465,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -11723,7 +12475,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 4.0.0."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -11732,7 +12485,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent); in MuJoCo >= 4.0.0."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -11741,7 +12495,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -11750,7 +12505,8 @@ class DefaultTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 4.0.0."""
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -11791,7 +12547,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
         """
     @type.setter
-    def type(self, value: TextureType | None) -> None: ...
+    def type(self, value: TextureType | None) -> None:
+        """``type``: one of: 2d, cube, skybox; default "cube"; in MuJoCo >= 3.17.0."""
 
     @property
     def colorspace(self) -> Colorspace | None:
@@ -11800,7 +12557,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
         """
     @colorspace.setter
-    def colorspace(self, value: Colorspace | None) -> None: ...
+    def colorspace(self, value: Colorspace | None) -> None:
+        """``colorspace``: one of: auto, linear, sRGB; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def gridsize(self) -> _t.Int32Array | None:
@@ -11809,7 +12567,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
         """
     @gridsize.setter
-    def gridsize(self, value: Integers2 | None) -> None: ...
+    def gridsize(self, value: Integers2 | None) -> None:
+        """``gridsize``: int[2]; default "1 1"; in MuJoCo >= 3.17.0."""
 
     @property
     def gridlayout(self) -> _builtins.str | None:
@@ -11818,7 +12577,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
         """
     @gridlayout.setter
-    def gridlayout(self, value: _builtins.str | None) -> None: ...
+    def gridlayout(self, value: _builtins.str | None) -> None:
+        """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent); in MuJoCo >= 3.17.0. Length must equal the gridsize product."""
 
     @property
     def builtin(self) -> Builtin | None:
@@ -11827,7 +12587,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
         """
     @builtin.setter
-    def builtin(self, value: Builtin | None) -> None: ...
+    def builtin(self, value: Builtin | None) -> None:
+        """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def rgb1(self) -> _t.Float64Array | None:
@@ -11836,7 +12597,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
         """
     @rgb1.setter
-    def rgb1(self, value: Reals3 | None) -> None: ...
+    def rgb1(self, value: Reals3 | None) -> None:
+        """``rgb1``: double[3]; default "0.8 0.8 0.8"; in MuJoCo >= 3.17.0."""
 
     @property
     def rgb2(self) -> _t.Float64Array | None:
@@ -11845,7 +12607,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
         """
     @rgb2.setter
-    def rgb2(self, value: Reals3 | None) -> None: ...
+    def rgb2(self, value: Reals3 | None) -> None:
+        """``rgb2``: double[3]; default "0.5 0.5 0.5"; in MuJoCo >= 3.17.0."""
 
     @property
     def mark(self) -> Mark | None:
@@ -11854,7 +12617,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
         """
     @mark.setter
-    def mark(self, value: Mark | None) -> None: ...
+    def mark(self, value: Mark | None) -> None:
+        """``mark``: one of: none, edge, cross, random; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def markrgb(self) -> _t.Float64Array | None:
@@ -11863,7 +12627,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
         """
     @markrgb.setter
-    def markrgb(self, value: Reals3 | None) -> None: ...
+    def markrgb(self, value: Reals3 | None) -> None:
+        """``markrgb``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def random(self) -> _builtins.float | None:
@@ -11872,7 +12637,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
         """
     @random.setter
-    def random(self, value: _t.Real | None) -> None: ...
+    def random(self, value: _t.Real | None) -> None:
+        """``random``: double; default "0.01"; in MuJoCo >= 3.17.0."""
 
     @property
     def width(self) -> _builtins.int | None:
@@ -11881,7 +12647,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
         """
     @width.setter
-    def width(self, value: _t.Integer | None) -> None: ...
+    def width(self, value: _t.Integer | None) -> None:
+        """``width``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def height(self) -> _builtins.int | None:
@@ -11890,7 +12657,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
         """
     @height.setter
-    def height(self, value: _t.Integer | None) -> None: ...
+    def height(self, value: _t.Integer | None) -> None:
+        """``height``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def hflip(self) -> _builtins.bool | None:
@@ -11899,7 +12667,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
         """
     @hflip.setter
-    def hflip(self, value: _builtins.bool | None) -> None: ...
+    def hflip(self, value: _builtins.bool | None) -> None:
+        """``hflip``: bool; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def vflip(self) -> _builtins.bool | None:
@@ -11908,7 +12677,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
         """
     @vflip.setter
-    def vflip(self, value: _builtins.bool | None) -> None: ...
+    def vflip(self, value: _builtins.bool | None) -> None:
+        """``vflip``: bool; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nchannel(self) -> _builtins.int | None:
@@ -11917,7 +12687,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
         """
     @nchannel.setter
-    def nchannel(self, value: _t.Integer | None) -> None: ...
+    def nchannel(self, value: _t.Integer | None) -> None:
+        """``nchannel``: int; default "3"; in MuJoCo >= 3.17.0."""
 
     @property
     def embed(self) -> FalseTrueAuto | None:
@@ -11926,7 +12697,8 @@ class DefaultTexture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
         """
     @embed.setter
-    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``embed``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["type"]) -> TextureType:
@@ -11985,7 +12757,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -11994,7 +12767,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12003,7 +12777,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12012,7 +12787,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -12021,7 +12797,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12030,7 +12807,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -12039,7 +12817,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -12048,7 +12827,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -12057,7 +12837,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -12066,7 +12847,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -12075,7 +12857,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -12084,7 +12867,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -12093,7 +12877,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -12102,7 +12887,8 @@ class DefaultVelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -12218,6 +13004,12 @@ class Deformable(_Typed):
     def add(self, tag: Literal["skin"], /, **kwargs: Unpack[SkinAttributes]) -> Skin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <deformable> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["flex", "skin"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <deformable> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -12226,6 +13018,12 @@ class Deformable(_Typed):
     @overload
     def insert(self, tag: Literal["skin"], /, position: _builtins.int, **kwargs: Unpack[SkinAttributes]) -> Skin: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <deformable> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["flex", "skin"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <deformable> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -12245,7 +13043,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12254,7 +13053,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12263,7 +13063,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12272,7 +13073,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -12281,7 +13083,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -12290,7 +13093,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -12299,7 +13103,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12308,7 +13113,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -12317,7 +13123,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -12326,7 +13133,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -12335,7 +13143,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -12344,7 +13153,8 @@ class Distance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12385,7 +13195,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12394,7 +13205,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12403,7 +13215,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12412,7 +13225,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -12421,7 +13235,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -12430,7 +13245,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -12439,7 +13255,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12448,7 +13265,8 @@ class EKinetic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12483,7 +13301,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -12492,7 +13311,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -12501,7 +13321,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -12510,7 +13331,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -12519,7 +13341,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -12528,7 +13351,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -12537,7 +13361,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -12546,7 +13371,8 @@ class EPotential(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12581,7 +13407,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-young
         """
     @young.setter
-    def young(self, value: _t.Real | None) -> None: ...
+    def young(self, value: _t.Real | None) -> None:
+        """``young``: double; no default (unset when absent)."""
 
     @property
     def poisson(self) -> _builtins.float | None:
@@ -12590,7 +13417,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-poisson
         """
     @poisson.setter
-    def poisson(self, value: _t.Real | None) -> None: ...
+    def poisson(self, value: _t.Real | None) -> None:
+        """``poisson``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _builtins.float | None:
@@ -12599,7 +13427,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-damping
         """
     @damping.setter
-    def damping(self, value: _t.Real | None) -> None: ...
+    def damping(self, value: _t.Real | None) -> None:
+        """``damping``: double; no default (unset when absent)."""
 
     @property
     def thickness(self) -> _builtins.float | None:
@@ -12608,7 +13437,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-thickness
         """
     @thickness.setter
-    def thickness(self, value: _t.Real | None) -> None: ...
+    def thickness(self, value: _t.Real | None) -> None:
+        """``thickness``: double; default "-1"."""
 
     @property
     def elastic2d(self) -> Elastic2d | None:
@@ -12617,7 +13447,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-elastic2d
         """
     @elastic2d.setter
-    def elastic2d(self, value: Elastic2d | None) -> None: ...
+    def elastic2d(self, value: Elastic2d | None) -> None:
+        """``elastic2d``: one of: none, bend, stretch, both; no default (unset when absent)."""
 
     @property
     def shear(self) -> _builtins.float | None:
@@ -12626,7 +13457,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-shear
         """
     @shear.setter
-    def shear(self, value: _t.Real | None) -> None: ...
+    def shear(self, value: _t.Real | None) -> None:
+        """``shear``: double; default "0"; in MuJoCo >= 4.0.0."""
 
     @property
     def yield_(self) -> _t.Float64Array | None:
@@ -12635,7 +13467,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-yield
         """
     @yield_.setter
-    def yield_(self, value: Reals1To2 | None) -> None: ...
+    def yield_(self, value: Reals1To2 | None) -> None:
+        """``yield``: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0."""
 
     @property
     def section(self) -> Section | None:
@@ -12644,7 +13477,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-section
         """
     @section.setter
-    def section(self, value: Section | None) -> None: ...
+    def section(self, value: Section | None) -> None:
+        """``section``: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0."""
 
     @property
     def sectionsize(self) -> _t.Float64Array | None:
@@ -12653,7 +13487,8 @@ class Elasticity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-sectionsize
         """
     @sectionsize.setter
-    def sectionsize(self, value: Reals2 | None) -> None: ...
+    def sectionsize(self, value: Reals2 | None) -> None:
+        """``sectionsize``: double[2]; default "0 0"; in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["young", "poisson", "damping"]) -> _builtins.float | None:
@@ -12898,6 +13733,12 @@ class Equality(_Typed):
     def add(self, tag: Literal["flexstrain"], /, **kwargs: Unpack[FlexstrainAttributes]) -> Flexstrain: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <equality> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["connect", "flex", "flexstrain", "joint", "tendon", "weld"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <equality> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -12919,6 +13760,12 @@ class Equality(_Typed):
     def insert(self, tag: Literal["flexstrain"], /, position: _builtins.int, **kwargs: Unpack[FlexstrainAttributes]) -> Flexstrain: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <equality> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["connect", "flex", "flexstrain", "joint", "tendon", "weld"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <equality> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
 
@@ -12937,7 +13784,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -12946,7 +13794,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -12955,7 +13804,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -12964,7 +13814,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -12973,7 +13824,8 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def flex(self) -> _builtins.str | AnyFlex | None:
@@ -12982,14 +13834,16 @@ class EqualityFlex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-flex
         """
     @flex.setter
-    def flex(self, value: _builtins.str | AnyFlex | None) -> None: ...
+    def flex(self, value: _builtins.str | AnyFlex | None) -> None:
+        """``flex``: reference to namespace ``flex``; required."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13024,7 +13878,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13033,7 +13888,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -13042,7 +13898,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -13051,7 +13908,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -13060,7 +13918,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def joint1(self) -> _builtins.str | AnyJoint | None:
@@ -13069,7 +13928,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint1
         """
     @joint1.setter
-    def joint1(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint1(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint1``: reference to namespace ``joint``; required."""
 
     @property
     def joint2(self) -> _builtins.str | AnyJoint | None:
@@ -13078,7 +13938,8 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint2
         """
     @joint2.setter
-    def joint2(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint2(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint2``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def polycoef(self) -> _t.Float64Array | None:
@@ -13087,14 +13948,16 @@ class EqualityJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-polycoef
         """
     @polycoef.setter
-    def polycoef(self, value: Reals1To5 | None) -> None: ...
+    def polycoef(self, value: Reals1To5 | None) -> None:
+        """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13132,7 +13995,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13141,7 +14005,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -13150,7 +14015,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -13159,7 +14025,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -13168,7 +14035,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def tendon1(self) -> _builtins.str | AnyTendon | None:
@@ -13177,7 +14045,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon1
         """
     @tendon1.setter
-    def tendon1(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon1(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon1``: reference to namespace ``tendon``; required."""
 
     @property
     def tendon2(self) -> _builtins.str | AnyTendon | None:
@@ -13186,7 +14055,8 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon2
         """
     @tendon2.setter
-    def tendon2(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon2(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon2``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def polycoef(self) -> _t.Float64Array | None:
@@ -13195,14 +14065,16 @@ class EqualityTendon(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-polycoef
         """
     @polycoef.setter
-    def polycoef(self, value: Reals1To5 | None) -> None: ...
+    def polycoef(self, value: Reals1To5 | None) -> None:
+        """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13240,7 +14112,8 @@ class Exclude(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``exclude``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -13249,7 +14122,8 @@ class Exclude(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; required."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -13258,7 +14132,8 @@ class Exclude(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13297,11 +14172,23 @@ class Extension(_Typed):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[ExtensionPluginAttributes]) -> ExtensionPlugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <extension> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["plugin"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <extension> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[ExtensionPluginAttributes]) -> ExtensionPlugin: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <extension> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <extension> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -13321,7 +14208,8 @@ class ExtensionPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; required."""
 
     @property
     def instance(self) -> _List[Instance]:
@@ -13343,11 +14231,23 @@ class ExtensionPlugin(_Typed):
     def add(self, tag: Literal["instance"], /, **kwargs: Unpack[InstanceAttributes]) -> Instance: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["instance"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["instance"], /, position: _builtins.int, **kwargs: Unpack[InstanceAttributes]) -> Instance: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["instance"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -13371,7 +14271,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -13380,7 +14281,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -13389,7 +14291,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -13398,7 +14301,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -13407,7 +14311,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -13416,7 +14321,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -13425,7 +14331,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -13434,7 +14341,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -13443,7 +14351,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -13452,7 +14361,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -13461,7 +14371,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -13470,7 +14381,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def springlength(self) -> _t.Float64Array | None:
@@ -13479,7 +14391,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springlength
         """
     @springlength.setter
-    def springlength(self, value: Reals1To2 | None) -> None: ...
+    def springlength(self, value: Reals1To2 | None) -> None:
+        """``springlength``: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -13488,7 +14401,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -13497,7 +14411,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -13506,7 +14421,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -13515,7 +14431,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -13524,7 +14441,8 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -13533,14 +14451,16 @@ class Fixed(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def joint(self) -> _List[FixedJoint]:
@@ -13564,11 +14484,23 @@ class Fixed(_Typed):
     def add(self, tag: Literal["joint"], /, **kwargs: Unpack[FixedJointAttributes]) -> FixedJoint: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <fixed> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["joint"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <fixed> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["joint"], /, position: _builtins.int, **kwargs: Unpack[FixedJointAttributes]) -> FixedJoint: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <fixed> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["joint"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <fixed> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -13614,7 +14546,8 @@ class FixedJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @property
     def coef(self) -> _builtins.float | None:
@@ -13623,7 +14556,8 @@ class FixedJoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
         """
     @coef.setter
-    def coef(self, value: _t.Real | None) -> None: ...
+    def coef(self, value: _t.Real | None) -> None:
+        """``coef``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None:
@@ -13649,7 +14583,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-constraint
         """
     @constraint.setter
-    def constraint(self, value: Enable | None) -> None: ...
+    def constraint(self, value: Enable | None) -> None:
+        """``constraint``: one of: disable, enable; default "enable"."""
 
     @property
     def equality(self) -> Enable | None:
@@ -13658,7 +14593,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-equality
         """
     @equality.setter
-    def equality(self, value: Enable | None) -> None: ...
+    def equality(self, value: Enable | None) -> None:
+        """``equality``: one of: disable, enable; default "enable"."""
 
     @property
     def frictionloss(self) -> Enable | None:
@@ -13667,7 +14603,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: Enable | None) -> None: ...
+    def frictionloss(self, value: Enable | None) -> None:
+        """``frictionloss``: one of: disable, enable; default "enable"."""
 
     @property
     def limit(self) -> Enable | None:
@@ -13676,7 +14613,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-limit
         """
     @limit.setter
-    def limit(self, value: Enable | None) -> None: ...
+    def limit(self, value: Enable | None) -> None:
+        """``limit``: one of: disable, enable; default "enable"."""
 
     @property
     def contact(self) -> Enable | None:
@@ -13685,7 +14623,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-contact
         """
     @contact.setter
-    def contact(self, value: Enable | None) -> None: ...
+    def contact(self, value: Enable | None) -> None:
+        """``contact``: one of: disable, enable; default "enable"."""
 
     @property
     def spring(self) -> Enable | None:
@@ -13694,7 +14633,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-spring
         """
     @spring.setter
-    def spring(self, value: Enable | None) -> None: ...
+    def spring(self, value: Enable | None) -> None:
+        """``spring``: one of: disable, enable; default "enable"."""
 
     @property
     def damper(self) -> Enable | None:
@@ -13703,7 +14643,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-damper
         """
     @damper.setter
-    def damper(self, value: Enable | None) -> None: ...
+    def damper(self, value: Enable | None) -> None:
+        """``damper``: one of: disable, enable; default "enable"."""
 
     @property
     def gravity(self) -> Enable | None:
@@ -13712,7 +14653,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-gravity
         """
     @gravity.setter
-    def gravity(self, value: Enable | None) -> None: ...
+    def gravity(self, value: Enable | None) -> None:
+        """``gravity``: one of: disable, enable; default "enable"."""
 
     @property
     def clampctrl(self) -> Enable | None:
@@ -13721,7 +14663,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-clampctrl
         """
     @clampctrl.setter
-    def clampctrl(self, value: Enable | None) -> None: ...
+    def clampctrl(self, value: Enable | None) -> None:
+        """``clampctrl``: one of: disable, enable; default "enable"."""
 
     @property
     def warmstart(self) -> Enable | None:
@@ -13730,7 +14673,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-warmstart
         """
     @warmstart.setter
-    def warmstart(self, value: Enable | None) -> None: ...
+    def warmstart(self, value: Enable | None) -> None:
+        """``warmstart``: one of: disable, enable; default "enable"."""
 
     @property
     def filterparent(self) -> Enable | None:
@@ -13739,7 +14683,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-filterparent
         """
     @filterparent.setter
-    def filterparent(self, value: Enable | None) -> None: ...
+    def filterparent(self, value: Enable | None) -> None:
+        """``filterparent``: one of: disable, enable; default "enable"."""
 
     @property
     def actuation(self) -> Enable | None:
@@ -13748,7 +14693,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-actuation
         """
     @actuation.setter
-    def actuation(self, value: Enable | None) -> None: ...
+    def actuation(self, value: Enable | None) -> None:
+        """``actuation``: one of: disable, enable; default "enable"."""
 
     @property
     def refsafe(self) -> Enable | None:
@@ -13757,7 +14703,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-refsafe
         """
     @refsafe.setter
-    def refsafe(self, value: Enable | None) -> None: ...
+    def refsafe(self, value: Enable | None) -> None:
+        """``refsafe``: one of: disable, enable; default "enable"."""
 
     @property
     def sensor(self) -> Enable | None:
@@ -13766,7 +14713,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sensor
         """
     @sensor.setter
-    def sensor(self, value: Enable | None) -> None: ...
+    def sensor(self, value: Enable | None) -> None:
+        """``sensor``: one of: disable, enable; default "enable"."""
 
     @property
     def midphase(self) -> Enable | None:
@@ -13775,7 +14723,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-midphase
         """
     @midphase.setter
-    def midphase(self, value: Enable | None) -> None: ...
+    def midphase(self, value: Enable | None) -> None:
+        """``midphase``: one of: disable, enable; default "enable"."""
 
     @property
     def eulerdamp(self) -> Enable | None:
@@ -13784,7 +14733,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-eulerdamp
         """
     @eulerdamp.setter
-    def eulerdamp(self, value: Enable | None) -> None: ...
+    def eulerdamp(self, value: Enable | None) -> None:
+        """``eulerdamp``: one of: disable, enable; default "enable"."""
 
     @property
     def autoreset(self) -> Enable | None:
@@ -13793,7 +14743,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-autoreset
         """
     @autoreset.setter
-    def autoreset(self, value: Enable | None) -> None: ...
+    def autoreset(self, value: Enable | None) -> None:
+        """``autoreset``: one of: disable, enable; default "enable"."""
 
     @property
     def nativeccd(self) -> Enable | None:
@@ -13802,7 +14753,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-nativeccd
         """
     @nativeccd.setter
-    def nativeccd(self, value: Enable | None) -> None: ...
+    def nativeccd(self, value: Enable | None) -> None:
+        """``nativeccd``: one of: disable, enable; default "enable"."""
 
     @property
     def island(self) -> Enable | None:
@@ -13811,7 +14763,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-island
         """
     @island.setter
-    def island(self, value: Enable | None) -> None: ...
+    def island(self, value: Enable | None) -> None:
+        """``island``: one of: disable, enable; default "enable"."""
 
     @property
     def multiccd(self) -> Enable | None:
@@ -13820,7 +14773,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-multiccd
         """
     @multiccd.setter
-    def multiccd(self, value: Enable | None) -> None: ...
+    def multiccd(self, value: Enable | None) -> None:
+        """``multiccd``: one of: disable, enable; default "enable"."""
 
     @property
     def override(self) -> Enable | None:
@@ -13829,7 +14783,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-override
         """
     @override.setter
-    def override(self, value: Enable | None) -> None: ...
+    def override(self, value: Enable | None) -> None:
+        """``override``: one of: disable, enable; default "disable"."""
 
     @property
     def energy(self) -> Enable | None:
@@ -13838,7 +14793,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-energy
         """
     @energy.setter
-    def energy(self, value: Enable | None) -> None: ...
+    def energy(self, value: Enable | None) -> None:
+        """``energy``: one of: disable, enable; default "disable"."""
 
     @property
     def fwdinv(self) -> Enable | None:
@@ -13847,7 +14803,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-fwdinv
         """
     @fwdinv.setter
-    def fwdinv(self, value: Enable | None) -> None: ...
+    def fwdinv(self, value: Enable | None) -> None:
+        """``fwdinv``: one of: disable, enable; default "disable"."""
 
     @property
     def invdiscrete(self) -> Enable | None:
@@ -13856,7 +14813,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-invdiscrete
         """
     @invdiscrete.setter
-    def invdiscrete(self, value: Enable | None) -> None: ...
+    def invdiscrete(self, value: Enable | None) -> None:
+        """``invdiscrete``: one of: disable, enable; default "disable"."""
 
     @property
     def sleep(self) -> Enable | None:
@@ -13865,7 +14823,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sleep
         """
     @sleep.setter
-    def sleep(self, value: Enable | None) -> None: ...
+    def sleep(self, value: Enable | None) -> None:
+        """``sleep``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0."""
 
     @property
     def diagexact(self) -> Enable | None:
@@ -13874,7 +14833,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-diagexact
         """
     @diagexact.setter
-    def diagexact(self, value: Enable | None) -> None: ...
+    def diagexact(self, value: Enable | None) -> None:
+        """``diagexact``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0."""
 
     @property
     def ipc(self) -> Enable | None:
@@ -13883,7 +14843,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-ipc
         """
     @ipc.setter
-    def ipc(self, value: Enable | None) -> None: ...
+    def ipc(self, value: Enable | None) -> None:
+        """``ipc``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0."""
 
     @property
     def speculative(self) -> Enable | None:
@@ -13892,7 +14853,8 @@ class Flag(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-speculative
         """
     @speculative.setter
-    def speculative(self, value: Enable | None) -> None: ...
+    def speculative(self, value: Enable | None) -> None:
+        """``speculative``: one of: disable, enable; default "disable"; in MuJoCo >= 4.0.0."""
 
     def resolve(self, name: Literal["constraint", "equality", "frictionloss", "limit", "contact", "spring", "damper", "gravity", "clampctrl", "warmstart", "filterparent", "actuation", "refsafe", "sensor", "midphase", "eulerdamp", "autoreset", "nativeccd", "island", "multiccd", "override", "energy", "fwdinv", "invdiscrete", "sleep", "diagexact", "ipc", "speculative"]) -> Enable:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -13914,7 +14876,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``flex``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -13923,7 +14886,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def dim(self) -> _builtins.int | None:
@@ -13932,7 +14896,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dim
         """
     @dim.setter
-    def dim(self, value: _t.Integer | None) -> None: ...
+    def dim(self, value: _t.Integer | None) -> None:
+        """``dim``: int; default "2"."""
 
     @property
     def radius(self) -> _builtins.float | None:
@@ -13941,7 +14906,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-radius
         """
     @radius.setter
-    def radius(self, value: _t.Real | None) -> None: ...
+    def radius(self, value: _t.Real | None) -> None:
+        """``radius``: double; default "0.005"."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -13950,7 +14916,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -13959,7 +14926,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def flatskin(self) -> _builtins.bool | None:
@@ -13968,7 +14936,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-flatskin
         """
     @flatskin.setter
-    def flatskin(self, value: _builtins.bool | None) -> None: ...
+    def flatskin(self, value: _builtins.bool | None) -> None:
+        """``flatskin``: bool; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | None:
@@ -13977,7 +14946,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-body
         """
     @body.setter
-    def body(self, value: _builtins.str | None) -> None: ...
+    def body(self, value: _builtins.str | None) -> None:
+        """``body``: string; required. Space-separated body names."""
 
     @property
     def vertex(self) -> _t.Float64Array | None:
@@ -13986,7 +14956,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-vertex
         """
     @vertex.setter
-    def vertex(self, value: RealsAny | None) -> None: ...
+    def vertex(self, value: RealsAny | None) -> None:
+        """``vertex``: double[] (any length); no default (unset when absent)."""
 
     @property
     def element(self) -> _t.Int32Array | None:
@@ -13995,7 +14966,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-element
         """
     @element.setter
-    def element(self, value: IntegersAny | None) -> None: ...
+    def element(self, value: IntegersAny | None) -> None:
+        """``element``: int[] (any length); required."""
 
     @property
     def texcoord(self) -> _t.Float32Array | None:
@@ -14004,7 +14976,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: float[] (any length); no default (unset when absent)."""
 
     @property
     def elemtexcoord(self) -> _t.Int32Array | None:
@@ -14013,7 +14986,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-elemtexcoord
         """
     @elemtexcoord.setter
-    def elemtexcoord(self, value: IntegersAny | None) -> None: ...
+    def elemtexcoord(self, value: IntegersAny | None) -> None:
+        """``elemtexcoord``: int[] (any length); no default (unset when absent)."""
 
     @property
     def node(self) -> _builtins.str | None:
@@ -14022,7 +14996,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-node
         """
     @node.setter
-    def node(self, value: _builtins.str | None) -> None: ...
+    def node(self, value: _builtins.str | None) -> None:
+        """``node``: string; no default (unset when absent). Space-separated body names."""
 
     @property
     def nodecoord(self) -> _t.Float64Array | None:
@@ -14031,7 +15006,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-nodecoord
         """
     @nodecoord.setter
-    def nodecoord(self, value: RealsAny | None) -> None: ...
+    def nodecoord(self, value: RealsAny | None) -> None:
+        """``nodecoord``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cellcount(self) -> _t.Int32Array | None:
@@ -14040,7 +15016,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-cellcount
         """
     @cellcount.setter
-    def cellcount(self, value: Integers3 | None) -> None: ...
+    def cellcount(self, value: Integers3 | None) -> None:
+        """``cellcount``: int[3]; default "1 1 1"; in MuJoCo >= 3.17.0."""
 
     @property
     def dof(self) -> FDof | None:
@@ -14049,7 +15026,8 @@ class Flex(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dof
         """
     @dof.setter
-    def dof(self, value: FDof | None) -> None: ...
+    def dof(self, value: FDof | None) -> None:
+        """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def contact(self) -> FlexcompContact:
@@ -14157,6 +15135,12 @@ class Flex(_Typed):
     def add(self, tag: Literal["elasticity"], /, **kwargs: Unpack[ElasticityAttributes]) -> Elasticity: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <flex> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["contact", "edge", "elasticity"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <flex> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -14168,6 +15152,12 @@ class Flex(_Typed):
     @overload
     def insert(self, tag: Literal["elasticity"], /, position: _builtins.int, **kwargs: Unpack[ElasticityAttributes]) -> Elasticity: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <flex> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["contact", "edge", "elasticity"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <flex> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -14225,7 +15215,8 @@ class FlexEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: _t.Real | None) -> None: ...
+    def stiffness(self, value: _t.Real | None) -> None:
+        """``stiffness``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _builtins.float | None:
@@ -14234,7 +15225,8 @@ class FlexEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-damping
         """
     @damping.setter
-    def damping(self, value: _t.Real | None) -> None: ...
+    def damping(self, value: _t.Real | None) -> None:
+        """``damping``: double; no default (unset when absent)."""
 
     def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -14256,7 +15248,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``flex``; required."""
 
     @property
     def type(self) -> Fcomp | None:
@@ -14265,7 +15258,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
         """
     @type.setter
-    def type(self, value: Fcomp | None) -> None: ...
+    def type(self, value: Fcomp | None) -> None:
+        """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -14274,7 +15268,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def dim(self) -> _builtins.int | None:
@@ -14283,7 +15278,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
         """
     @dim.setter
-    def dim(self, value: _t.Integer | None) -> None: ...
+    def dim(self, value: _t.Integer | None) -> None:
+        """``dim``: int; no default (unset when absent)."""
 
     @property
     def dof(self) -> FDof | None:
@@ -14292,7 +15288,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dof
         """
     @dof.setter
-    def dof(self, value: FDof | None) -> None: ...
+    def dof(self, value: FDof | None) -> None:
+        """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent)."""
 
     @property
     def count(self) -> _t.Int32Array | None:
@@ -14301,7 +15298,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-count
         """
     @count.setter
-    def count(self, value: Integers3 | None) -> None: ...
+    def count(self, value: Integers3 | None) -> None:
+        """``count``: int[3]; no default (unset when absent)."""
 
     @property
     def cellcount(self) -> _t.Int32Array | None:
@@ -14310,7 +15308,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-cellcount
         """
     @cellcount.setter
-    def cellcount(self, value: Integers3 | None) -> None: ...
+    def cellcount(self, value: Integers3 | None) -> None:
+        """``cellcount``: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def spacing(self) -> _t.Float64Array | None:
@@ -14319,7 +15318,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
         """
     @spacing.setter
-    def spacing(self, value: Reals3 | None) -> None: ...
+    def spacing(self, value: Reals3 | None) -> None:
+        """``spacing``: double[3]; no default (unset when absent)."""
 
     @property
     def radius(self) -> _builtins.float | None:
@@ -14328,7 +15328,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
         """
     @radius.setter
-    def radius(self, value: _t.Real | None) -> None: ...
+    def radius(self, value: _t.Real | None) -> None:
+        """``radius``: double; no default (unset when absent)."""
 
     @property
     def rigid(self) -> _builtins.bool | None:
@@ -14337,7 +15338,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rigid
         """
     @rigid.setter
-    def rigid(self, value: _builtins.bool | None) -> None: ...
+    def rigid(self, value: _builtins.bool | None) -> None:
+        """``rigid``: bool; no default (unset when absent)."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -14346,7 +15348,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; no default (unset when absent)."""
 
     @property
     def inertiabox(self) -> _builtins.float | None:
@@ -14355,7 +15358,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-inertiabox
         """
     @inertiabox.setter
-    def inertiabox(self, value: _t.Real | None) -> None: ...
+    def inertiabox(self, value: _t.Real | None) -> None:
+        """``inertiabox``: double; no default (unset when absent)."""
 
     @property
     def scale(self) -> _t.Float64Array | None:
@@ -14364,7 +15368,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-scale
         """
     @scale.setter
-    def scale(self, value: Reals3 | None) -> None: ...
+    def scale(self, value: Reals3 | None) -> None:
+        """``scale``: double[3]; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -14373,7 +15378,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def point(self) -> _t.Float64Array | None:
@@ -14382,7 +15388,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-point
         """
     @point.setter
-    def point(self, value: RealsAny | None) -> None: ...
+    def point(self, value: RealsAny | None) -> None:
+        """``point``: double[] (any length); no default (unset when absent)."""
 
     @property
     def element(self) -> _t.Float64Array | None:
@@ -14391,7 +15398,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-element
         """
     @element.setter
-    def element(self, value: RealsAny | None) -> None: ...
+    def element(self, value: RealsAny | None) -> None:
+        """``element``: double[] (any length); no default (unset when absent)."""
 
     @property
     def texcoord(self) -> _t.Float64Array | None:
@@ -14400,7 +15408,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: double[] (any length); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -14409,7 +15418,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -14418,7 +15428,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; no default (unset when absent)."""
 
     @property
     def flatskin(self) -> _builtins.bool | None:
@@ -14427,7 +15438,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-flatskin
         """
     @flatskin.setter
-    def flatskin(self, value: _builtins.bool | None) -> None: ...
+    def flatskin(self, value: _builtins.bool | None) -> None:
+        """``flatskin``: bool; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -14436,7 +15448,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -14445,7 +15458,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; no default (unset when absent)."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -14454,7 +15468,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -14463,7 +15478,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -14472,7 +15488,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -14481,7 +15498,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def origin(self) -> _t.Float64Array | None:
@@ -14490,7 +15508,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-origin
         """
     @origin.setter
-    def origin(self, value: Reals3 | None) -> None: ...
+    def origin(self, value: Reals3 | None) -> None:
+        """``origin``: double[3]; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -14499,7 +15518,8 @@ class Flexcomp(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def edge(self) -> FlexcompEdge:
@@ -14659,6 +15679,12 @@ class Flexcomp(_Typed):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <flexcomp> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["contact", "edge", "elasticity", "pin", "plugin"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <flexcomp> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -14676,6 +15702,12 @@ class Flexcomp(_Typed):
     @overload
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <flexcomp> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["contact", "edge", "elasticity", "pin", "plugin"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <flexcomp> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -14733,7 +15765,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-contype
         """
     @contype.setter
-    def contype(self, value: _t.Integer | None) -> None: ...
+    def contype(self, value: _t.Integer | None) -> None:
+        """``contype``: int; default "1"."""
 
     @property
     def conaffinity(self) -> _builtins.int | None:
@@ -14742,7 +15775,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-conaffinity
         """
     @conaffinity.setter
-    def conaffinity(self, value: _t.Integer | None) -> None: ...
+    def conaffinity(self, value: _t.Integer | None) -> None:
+        """``conaffinity``: int; default "1"."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -14751,7 +15785,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def priority(self) -> _builtins.int | None:
@@ -14760,7 +15795,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-priority
         """
     @priority.setter
-    def priority(self, value: _t.Integer | None) -> None: ...
+    def priority(self, value: _t.Integer | None) -> None:
+        """``priority``: int; no default (unset when absent)."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -14769,7 +15805,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To3 | None) -> None: ...
+    def friction(self, value: Reals1To3 | None) -> None:
+        """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001"."""
 
     @property
     def solmix(self) -> _builtins.float | None:
@@ -14778,7 +15815,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solmix
         """
     @solmix.setter
-    def solmix(self, value: _t.Real | None) -> None: ...
+    def solmix(self, value: _t.Real | None) -> None:
+        """``solmix``: double; default "1"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -14787,7 +15825,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -14796,7 +15835,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -14805,7 +15845,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -14814,7 +15855,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def selfcollide(self) -> Flexself | None:
@@ -14823,7 +15865,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-selfcollide
         """
     @selfcollide.setter
-    def selfcollide(self, value: Flexself | None) -> None: ...
+    def selfcollide(self, value: Flexself | None) -> None:
+        """``selfcollide``: one of: none, narrow, bvh, sap, auto; default "auto"."""
 
     @property
     def activelayers(self) -> _builtins.int | None:
@@ -14832,7 +15875,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-activelayers
         """
     @activelayers.setter
-    def activelayers(self, value: _t.Integer | None) -> None: ...
+    def activelayers(self, value: _t.Integer | None) -> None:
+        """``activelayers``: int; default "1"."""
 
     @property
     def passive(self) -> _builtins.bool | None:
@@ -14841,7 +15885,8 @@ class FlexcompContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-passive
         """
     @passive.setter
-    def passive(self, value: _builtins.bool | None) -> None: ...
+    def passive(self, value: _builtins.bool | None) -> None:
+        """``passive``: bool; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["contype", "conaffinity", "condim", "activelayers"]) -> _builtins.int:
@@ -14882,7 +15927,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
         """
     @equality.setter
-    def equality(self, value: Flexeq | _builtins.bool | None) -> None: ...
+    def equality(self, value: Flexeq | _builtins.bool | None) -> None:
+        """``equality``: one of: false, true, vert, strain; no default (unset when absent)."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -14891,7 +15937,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -14900,7 +15947,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _builtins.float | None:
@@ -14909,7 +15957,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: _t.Real | None) -> None: ...
+    def stiffness(self, value: _t.Real | None) -> None:
+        """``stiffness``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _builtins.float | None:
@@ -14918,7 +15967,8 @@ class FlexcompEdge(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-damping
         """
     @damping.setter
-    def damping(self, value: _t.Real | None) -> None: ...
+    def damping(self, value: _t.Real | None) -> None:
+        """``damping``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["equality"]) -> Flexeq | None:
@@ -14947,7 +15997,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -14956,7 +16007,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -14965,7 +16017,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"; in MuJoCo >= 3.17.0."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -14974,7 +16027,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"; in MuJoCo >= 3.17.0."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -14983,7 +16037,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"; in MuJoCo >= 3.17.0."""
 
     @property
     def flex(self) -> _builtins.str | AnyFlex | None:
@@ -14992,7 +16047,8 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-flex
         """
     @flex.setter
-    def flex(self, value: _builtins.str | AnyFlex | None) -> None: ...
+    def flex(self, value: _builtins.str | AnyFlex | None) -> None:
+        """``flex``: reference to namespace ``flex``; required; in MuJoCo >= 3.17.0."""
 
     @property
     def cell(self) -> _t.Float64Array | None:
@@ -15001,14 +16057,16 @@ class Flexstrain(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-cell
         """
     @cell.setter
-    def cell(self, value: Reals3 | None) -> None: ...
+    def cell(self, value: Reals3 | None) -> None:
+        """``cell``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -15046,7 +16104,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -15055,7 +16114,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -15064,7 +16124,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -15073,7 +16134,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -15082,7 +16144,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -15091,7 +16154,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -15100,7 +16164,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -15109,7 +16174,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -15118,7 +16184,8 @@ class Force(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -15156,7 +16223,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``frame``; no default (unset when absent)."""
 
     @property
     def childclass(self) -> _builtins.str | Default | None:
@@ -15165,7 +16233,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-childclass
         """
     @childclass.setter
-    def childclass(self, value: _builtins.str | Default | None) -> None: ...
+    def childclass(self, value: _builtins.str | Default | None) -> None:
+        """``childclass``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -15174,7 +16243,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -15183,7 +16253,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -15192,7 +16263,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -15201,7 +16273,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -15210,7 +16283,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -15219,7 +16293,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def scale(self) -> _t.Float64Array | None:
@@ -15228,7 +16303,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scale
         """
     @scale.setter
-    def scale(self, value: Reals1To3 | None) -> None: ...
+    def scale(self, value: Reals1To3 | None) -> None:
+        """``scale``: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0."""
 
     @property
     def scaling(self) -> Scaling | None:
@@ -15237,7 +16313,8 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scaling
         """
     @scaling.setter
-    def scaling(self, value: Scaling | None) -> None: ...
+    def scaling(self, value: Scaling | None) -> None:
+        """``scaling``: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0."""
 
     @property
     def massscale(self) -> _builtins.float | None:
@@ -15246,21 +16323,24 @@ class Frame(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-massscale
         """
     @massscale.setter
-    def massscale(self, value: _t.Real | None) -> None: ...
+    def massscale(self, value: _t.Real | None) -> None:
+        """``massscale``: double; default "0"; in MuJoCo >= 3.17.0."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
         """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def body(self) -> _List[Body]:
@@ -15894,6 +16974,12 @@ class Frame(_Typed, _Attachable):
     def add(self, tag: Literal["flexcomp"], /, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <frame> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["attach", "body", "camera", "flexcomp", "frame", "freejoint", "geom", "inertial", "joint", "light", "plugin", "replicate", "site"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <frame> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -15936,6 +17022,12 @@ class Frame(_Typed, _Attachable):
     def insert(self, tag: Literal["flexcomp"], /, position: _builtins.int, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <frame> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["attach", "body", "camera", "flexcomp", "frame", "freejoint", "geom", "inertial", "joint", "light", "plugin", "replicate", "site"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <frame> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     @overload
@@ -15974,7 +17066,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -15983,7 +17076,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -15992,7 +17086,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16001,7 +17096,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16010,7 +17106,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16019,7 +17116,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16028,7 +17126,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16037,7 +17136,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16046,7 +17146,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16055,7 +17156,8 @@ class Frameangacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16096,7 +17198,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16105,7 +17208,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16114,7 +17218,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16123,7 +17228,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16132,7 +17238,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16141,7 +17248,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16150,7 +17258,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16159,7 +17268,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16168,7 +17278,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16177,7 +17288,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16186,7 +17298,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16195,7 +17308,8 @@ class Frameangvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16236,7 +17350,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16245,7 +17360,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16254,7 +17370,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16263,7 +17380,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16272,7 +17390,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16281,7 +17400,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16290,7 +17410,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16299,7 +17420,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16308,7 +17430,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16317,7 +17440,8 @@ class Framelinacc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16358,7 +17482,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16367,7 +17492,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16376,7 +17502,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16385,7 +17512,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16394,7 +17522,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16403,7 +17532,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16412,7 +17542,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16421,7 +17552,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16430,7 +17562,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16439,7 +17572,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16448,7 +17582,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16457,7 +17592,8 @@ class Framelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16498,7 +17634,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16507,7 +17644,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16516,7 +17654,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16525,7 +17664,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16534,7 +17674,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16543,7 +17684,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16552,7 +17694,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16561,7 +17704,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16570,7 +17714,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16579,7 +17724,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16588,7 +17734,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16597,7 +17744,8 @@ class Framepos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16638,7 +17786,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16647,7 +17796,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16656,7 +17806,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16665,7 +17816,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16674,7 +17826,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16683,7 +17836,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16692,7 +17846,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16701,7 +17856,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16710,7 +17866,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16719,7 +17876,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16728,7 +17886,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16737,7 +17896,8 @@ class Framequat(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16778,7 +17938,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16787,7 +17948,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16796,7 +17958,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16805,7 +17968,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16814,7 +17978,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16823,7 +17988,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16832,7 +17998,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16841,7 +18008,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16850,7 +18018,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16859,7 +18028,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -16868,7 +18038,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -16877,7 +18048,8 @@ class Framexaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16918,7 +18090,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -16927,7 +18100,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -16936,7 +18110,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -16945,7 +18120,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -16954,7 +18130,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -16963,7 +18140,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -16972,7 +18150,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -16981,7 +18160,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -16990,7 +18170,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -16999,7 +18180,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -17008,7 +18190,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -17017,7 +18200,8 @@ class Frameyaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17058,7 +18242,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17067,7 +18252,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17076,7 +18262,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17085,7 +18272,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -17094,7 +18282,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -17103,7 +18292,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -17112,7 +18302,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17121,7 +18312,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -17130,7 +18322,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -17139,7 +18332,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def reftype(self) -> Frameobj | None:
@@ -17148,7 +18342,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-reftype
         """
     @reftype.setter
-    def reftype(self, value: Frameobj | None) -> None: ...
+    def reftype(self, value: Frameobj | None) -> None:
+        """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent)."""
 
     @property
     def refname(self) -> FrameobjTarget | None:
@@ -17157,7 +18352,8 @@ class Framezaxis(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-refname
         """
     @refname.setter
-    def refname(self, value: FrameobjTarget | None) -> None: ...
+    def refname(self, value: FrameobjTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17198,7 +18394,8 @@ class Freejoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``joint``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -17207,7 +18404,8 @@ class Freejoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def align(self) -> FalseTrueAuto | None:
@@ -17216,7 +18414,8 @@ class Freejoint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-align
         """
     @align.setter
-    def align(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def align(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``align``: one of: false, true, auto; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17245,7 +18444,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17254,7 +18454,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17263,7 +18464,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17272,7 +18474,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -17281,7 +18484,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -17290,7 +18494,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -17299,7 +18504,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17308,7 +18514,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -17317,7 +18524,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -17326,7 +18534,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -17335,7 +18544,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -17344,7 +18554,8 @@ class Fromto(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17385,7 +18596,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -17394,7 +18606,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -17403,7 +18616,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -17412,7 +18626,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -17421,7 +18636,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -17430,7 +18646,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -17439,7 +18656,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -17448,7 +18666,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -17457,7 +18676,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -17466,7 +18686,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -17475,7 +18696,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -17484,7 +18706,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -17493,7 +18716,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -17502,7 +18726,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -17511,7 +18736,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -17520,7 +18746,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -17529,7 +18756,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -17538,7 +18766,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -17547,7 +18776,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -17556,7 +18786,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -17565,7 +18796,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -17574,7 +18806,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -17583,7 +18816,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -17592,7 +18826,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -17601,7 +18836,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -17610,7 +18846,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def actdim(self) -> _builtins.int | None:
@@ -17619,7 +18856,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
         """
     @actdim.setter
-    def actdim(self, value: _t.Integer | None) -> None: ...
+    def actdim(self, value: _t.Integer | None) -> None:
+        """``actdim``: int; default "-1"."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -17628,7 +18866,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -17637,7 +18876,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -17646,7 +18886,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -17655,7 +18896,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dyntype(self) -> Dyn | None:
@@ -17664,7 +18906,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
         """
     @dyntype.setter
-    def dyntype(self, value: Dyn | None) -> None: ...
+    def dyntype(self, value: Dyn | None) -> None:
+        """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none"."""
 
     @property
     def gaintype(self) -> Gain | None:
@@ -17673,7 +18916,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
         """
     @gaintype.setter
-    def gaintype(self, value: Gain | None) -> None: ...
+    def gaintype(self, value: Gain | None) -> None:
+        """``gaintype``: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed"."""
 
     @property
     def biastype(self) -> Bias | None:
@@ -17682,7 +18926,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
         """
     @biastype.setter
-    def biastype(self, value: Bias | None) -> None: ...
+    def biastype(self, value: Bias | None) -> None:
+        """``biastype``: one of: none, affine, muscle, dcmotor, so3, user; default "none"."""
 
     @property
     def dynprm(self) -> _t.Float64Array | None:
@@ -17691,7 +18936,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
         """
     @dynprm.setter
-    def dynprm(self, value: Reals1To10 | None) -> None: ...
+    def dynprm(self, value: Reals1To10 | None) -> None:
+        """``dynprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def gainprm(self) -> _t.Float64Array | None:
@@ -17700,7 +18946,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
         """
     @gainprm.setter
-    def gainprm(self, value: Reals1To10 | None) -> None: ...
+    def gainprm(self, value: Reals1To10 | None) -> None:
+        """``gainprm``: double[1..10] (1 to 10 values); default "1"."""
 
     @property
     def biasprm(self) -> _t.Float64Array | None:
@@ -17709,7 +18956,8 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
         """
     @biasprm.setter
-    def biasprm(self, value: Reals1To10 | None) -> None: ...
+    def biasprm(self, value: Reals1To10 | None) -> None:
+        """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent)."""
 
     @property
     def actearly(self) -> _builtins.bool | None:
@@ -17718,14 +18966,16 @@ class General(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
         """
     @actearly.setter
-    def actearly(self, value: _builtins.bool | None) -> None: ...
+    def actearly(self, value: _builtins.bool | None) -> None:
+        """``actearly``: bool; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17799,7 +19049,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``geom``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -17808,7 +19059,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def type(self) -> GeomType | None:
@@ -17817,7 +19069,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
         """
     @type.setter
-    def type(self, value: GeomType | None) -> None: ...
+    def type(self, value: GeomType | None) -> None:
+        """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def contype(self) -> _builtins.int | None:
@@ -17826,7 +19079,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
         """
     @contype.setter
-    def contype(self, value: _t.Integer | None) -> None: ...
+    def contype(self, value: _t.Integer | None) -> None:
+        """``contype``: int; default "1"."""
 
     @property
     def conaffinity(self) -> _builtins.int | None:
@@ -17835,7 +19089,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
         """
     @conaffinity.setter
-    def conaffinity(self, value: _t.Integer | None) -> None: ...
+    def conaffinity(self, value: _t.Integer | None) -> None:
+        """``conaffinity``: int; default "1"."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -17844,7 +19099,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -17853,7 +19109,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def priority(self) -> _builtins.int | None:
@@ -17862,7 +19119,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
         """
     @priority.setter
-    def priority(self, value: _t.Integer | None) -> None: ...
+    def priority(self, value: _t.Integer | None) -> None:
+        """``priority``: int; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -17871,7 +19129,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -17880,7 +19139,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -17889,7 +19149,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To3 | None) -> None: ...
+    def friction(self, value: Reals1To3 | None) -> None:
+        """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001"."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -17898,7 +19159,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; no default (unset when absent)."""
 
     @property
     def density(self) -> _builtins.float | None:
@@ -17907,7 +19169,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
         """
     @density.setter
-    def density(self, value: _t.Real | None) -> None: ...
+    def density(self, value: _t.Real | None) -> None:
+        """``density``: double; default "1000"."""
 
     @property
     def shellinertia(self) -> _builtins.bool | None:
@@ -17916,7 +19179,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
         """
     @shellinertia.setter
-    def shellinertia(self, value: _builtins.bool | None) -> None: ...
+    def shellinertia(self, value: _builtins.bool | None) -> None:
+        """``shellinertia``: bool; no default (unset when absent)."""
 
     @property
     def solmix(self) -> _builtins.float | None:
@@ -17925,7 +19189,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
         """
     @solmix.setter
-    def solmix(self, value: _t.Real | None) -> None: ...
+    def solmix(self, value: _t.Real | None) -> None:
+        """``solmix``: double; default "1"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -17934,7 +19199,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -17943,7 +19209,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -17952,7 +19219,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -17961,7 +19229,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def surfacevel(self) -> _t.Float64Array | None:
@@ -17970,7 +19239,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
         """
     @surfacevel.setter
-    def surfacevel(self, value: Reals1To6 | None) -> None: ...
+    def surfacevel(self, value: Reals1To6 | None) -> None:
+        """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -17979,7 +19249,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -17988,7 +19259,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -17997,7 +19269,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -18006,7 +19279,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -18015,7 +19289,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -18024,7 +19299,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -18033,7 +19309,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -18042,7 +19319,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def hfield(self) -> _builtins.str | Hfield | None:
@@ -18051,7 +19329,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
         """
     @hfield.setter
-    def hfield(self, value: _builtins.str | Hfield | None) -> None: ...
+    def hfield(self, value: _builtins.str | Hfield | None) -> None:
+        """``hfield``: reference to namespace ``hfield``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -18060,7 +19339,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def fitscale(self) -> _builtins.float | None:
@@ -18069,7 +19349,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
         """
     @fitscale.setter
-    def fitscale(self, value: _t.Real | None) -> None: ...
+    def fitscale(self, value: _t.Real | None) -> None:
+        """``fitscale``: double; default "1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -18078,7 +19359,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def fluidshape(self) -> Fluidshape | None:
@@ -18087,7 +19369,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
         """
     @fluidshape.setter
-    def fluidshape(self, value: Fluidshape | None) -> None: ...
+    def fluidshape(self, value: Fluidshape | None) -> None:
+        """``fluidshape``: one of: none, ellipsoid; no default (unset when absent)."""
 
     @property
     def fluidcoef(self) -> _t.Float64Array | None:
@@ -18096,7 +19379,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
         """
     @fluidcoef.setter
-    def fluidcoef(self, value: Reals1To5 | None) -> None: ...
+    def fluidcoef(self, value: Reals1To5 | None) -> None:
+        """``fluidcoef``: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -18105,7 +19389,8 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -18114,14 +19399,16 @@ class Geom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"; in MuJoCo >= 4.0.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def plugin(self) -> _List[Plugin]:
@@ -18145,11 +19432,23 @@ class Geom(_Typed):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <geom> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["plugin"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <geom> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <geom> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <geom> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -18219,7 +19518,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-cameraid
         """
     @cameraid.setter
-    def cameraid(self, value: _t.Integer | None) -> None: ...
+    def cameraid(self, value: _t.Integer | None) -> None:
+        """``cameraid``: int; default "-1"."""
 
     @property
     def orthographic(self) -> _builtins.bool | None:
@@ -18228,7 +19528,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-orthographic
         """
     @orthographic.setter
-    def orthographic(self, value: _builtins.bool | None) -> None: ...
+    def orthographic(self, value: _builtins.bool | None) -> None:
+        """``orthographic``: bool; default "false"."""
 
     @property
     def fovy(self) -> _builtins.float | None:
@@ -18237,7 +19538,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-fovy
         """
     @fovy.setter
-    def fovy(self, value: _t.Real | None) -> None: ...
+    def fovy(self, value: _t.Real | None) -> None:
+        """``fovy``: float; default "45"."""
 
     @property
     def ipd(self) -> _builtins.float | None:
@@ -18246,7 +19548,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ipd
         """
     @ipd.setter
-    def ipd(self, value: _t.Real | None) -> None: ...
+    def ipd(self, value: _t.Real | None) -> None:
+        """``ipd``: float; default "0.068"."""
 
     @property
     def azimuth(self) -> _builtins.float | None:
@@ -18255,7 +19558,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-azimuth
         """
     @azimuth.setter
-    def azimuth(self, value: _t.Real | None) -> None: ...
+    def azimuth(self, value: _t.Real | None) -> None:
+        """``azimuth``: float; default "90"."""
 
     @property
     def elevation(self) -> _builtins.float | None:
@@ -18264,7 +19568,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-elevation
         """
     @elevation.setter
-    def elevation(self, value: _t.Real | None) -> None: ...
+    def elevation(self, value: _t.Real | None) -> None:
+        """``elevation``: float; default "-45"."""
 
     @property
     def linewidth(self) -> _builtins.float | None:
@@ -18273,7 +19578,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-linewidth
         """
     @linewidth.setter
-    def linewidth(self, value: _t.Real | None) -> None: ...
+    def linewidth(self, value: _t.Real | None) -> None:
+        """``linewidth``: float; default "1"."""
 
     @property
     def glow(self) -> _builtins.float | None:
@@ -18282,7 +19588,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-glow
         """
     @glow.setter
-    def glow(self, value: _t.Real | None) -> None: ...
+    def glow(self, value: _t.Real | None) -> None:
+        """``glow``: float; default "0.3"."""
 
     @property
     def offwidth(self) -> _builtins.int | None:
@@ -18291,7 +19598,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offwidth
         """
     @offwidth.setter
-    def offwidth(self, value: _t.Integer | None) -> None: ...
+    def offwidth(self, value: _t.Integer | None) -> None:
+        """``offwidth``: int; default "640"."""
 
     @property
     def offheight(self) -> _builtins.int | None:
@@ -18300,7 +19608,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offheight
         """
     @offheight.setter
-    def offheight(self, value: _t.Integer | None) -> None: ...
+    def offheight(self, value: _t.Integer | None) -> None:
+        """``offheight``: int; default "480"."""
 
     @property
     def realtime(self) -> _builtins.float | None:
@@ -18309,7 +19618,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
         """
     @realtime.setter
-    def realtime(self, value: _t.Real | None) -> None: ...
+    def realtime(self, value: _t.Real | None) -> None:
+        """``realtime``: float; default "1"."""
 
     @property
     def ellipsoidinertia(self) -> _builtins.bool | None:
@@ -18318,7 +19628,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ellipsoidinertia
         """
     @ellipsoidinertia.setter
-    def ellipsoidinertia(self, value: _builtins.bool | None) -> None: ...
+    def ellipsoidinertia(self, value: _builtins.bool | None) -> None:
+        """``ellipsoidinertia``: bool; default "false"."""
 
     @property
     def bvactive(self) -> _builtins.bool | None:
@@ -18327,7 +19638,8 @@ class Global(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-bvactive
         """
     @bvactive.setter
-    def bvactive(self, value: _builtins.bool | None) -> None: ...
+    def bvactive(self, value: _builtins.bool | None) -> None:
+        """``bvactive``: bool; default "false"."""
 
     @overload
     def resolve(self, name: Literal["cameraid", "offwidth", "offheight"]) -> _builtins.int:
@@ -18356,7 +19668,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -18365,7 +19678,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -18374,7 +19688,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -18383,7 +19698,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -18392,7 +19708,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -18401,7 +19718,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -18410,7 +19728,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -18419,7 +19738,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -18428,7 +19748,8 @@ class Gyro(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18466,7 +19787,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-ambient
         """
     @ambient.setter
-    def ambient(self, value: Reals3 | None) -> None: ...
+    def ambient(self, value: Reals3 | None) -> None:
+        """``ambient``: float[3]; default "0.1 0.1 0.1"."""
 
     @property
     def diffuse(self) -> _t.Float32Array | None:
@@ -18475,7 +19797,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-diffuse
         """
     @diffuse.setter
-    def diffuse(self, value: Reals3 | None) -> None: ...
+    def diffuse(self, value: Reals3 | None) -> None:
+        """``diffuse``: float[3]; default "0.4 0.4 0.4"."""
 
     @property
     def specular(self) -> _t.Float32Array | None:
@@ -18484,7 +19807,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-specular
         """
     @specular.setter
-    def specular(self, value: Reals3 | None) -> None: ...
+    def specular(self, value: Reals3 | None) -> None:
+        """``specular``: float[3]; default "0.5 0.5 0.5"."""
 
     @property
     def active(self) -> _builtins.int | None:
@@ -18493,7 +19817,8 @@ class Headlight(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
         """
     @active.setter
-    def active(self, value: _t.Integer | None) -> None: ...
+    def active(self, value: _t.Integer | None) -> None:
+        """``active``: int; default "1"."""
 
     @overload
     def resolve(self, name: Literal["ambient", "diffuse", "specular"]) -> _t.Float32Array:
@@ -18519,7 +19844,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``hfield``; no default (unset when absent)."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -18528,7 +19854,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -18537,7 +19864,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def nrow(self) -> _builtins.int | None:
@@ -18546,7 +19874,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-nrow
         """
     @nrow.setter
-    def nrow(self, value: _t.Integer | None) -> None: ...
+    def nrow(self, value: _t.Integer | None) -> None:
+        """``nrow``: int; no default (unset when absent)."""
 
     @property
     def ncol(self) -> _builtins.int | None:
@@ -18555,7 +19884,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-ncol
         """
     @ncol.setter
-    def ncol(self, value: _t.Integer | None) -> None: ...
+    def ncol(self, value: _t.Integer | None) -> None:
+        """``ncol``: int; no default (unset when absent)."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -18564,7 +19894,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-size
         """
     @size.setter
-    def size(self, value: Reals4 | None) -> None: ...
+    def size(self, value: Reals4 | None) -> None:
+        """``size``: double[4]; required."""
 
     @property
     def elevation(self) -> _t.Float64Array | None:
@@ -18573,7 +19904,8 @@ class Hfield(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-elevation
         """
     @elevation.setter
-    def elevation(self, value: RealsAny | None) -> None: ...
+    def elevation(self, value: RealsAny | None) -> None:
+        """``elevation``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type"]) -> _builtins.str | None:
@@ -18605,7 +19937,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; required."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -18614,7 +19947,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def mass(self) -> _builtins.float | None:
@@ -18623,7 +19957,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-mass
         """
     @mass.setter
-    def mass(self, value: _t.Real | None) -> None: ...
+    def mass(self, value: _t.Real | None) -> None:
+        """``mass``: double; required."""
 
     @property
     def diaginertia(self) -> _t.Float64Array | None:
@@ -18632,7 +19967,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-diaginertia
         """
     @diaginertia.setter
-    def diaginertia(self, value: Reals3 | None) -> None: ...
+    def diaginertia(self, value: Reals3 | None) -> None:
+        """``diaginertia``: double[3]; no default (unset when absent)."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -18641,7 +19977,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -18650,7 +19987,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -18659,7 +19997,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -18668,7 +20007,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def fullinertia(self) -> _t.Float64Array | None:
@@ -18677,7 +20017,8 @@ class Inertial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-fullinertia
         """
     @fullinertia.setter
-    def fullinertia(self, value: Reals6 | None) -> None: ...
+    def fullinertia(self, value: Reals6 | None) -> None:
+        """``fullinertia``: double[6]; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["pos", "diaginertia", "axisangle", "xyaxes", "zaxis", "euler", "fullinertia"]) -> _t.Float64Array | None:
@@ -18706,7 +20047,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -18715,7 +20057,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -18724,7 +20067,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -18733,7 +20077,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -18742,7 +20087,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -18751,7 +20097,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -18760,7 +20107,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -18769,7 +20117,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -18778,7 +20127,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @property
     def objtype(self) -> Frameobj | None:
@@ -18787,7 +20137,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objtype
         """
     @objtype.setter
-    def objtype(self, value: Frameobj | None) -> None: ...
+    def objtype(self, value: Frameobj | None) -> None:
+        """``objtype``: one of: body, xbody, geom, site, camera; required."""
 
     @property
     def objname(self) -> FrameobjTarget | None:
@@ -18796,7 +20147,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objname
         """
     @objname.setter
-    def objname(self, value: FrameobjTarget | None) -> None: ...
+    def objname(self, value: FrameobjTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def enclosed(self) -> _builtins.bool | None:
@@ -18805,7 +20157,8 @@ class Insidesite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-enclosed
         """
     @enclosed.setter
-    def enclosed(self, value: _builtins.bool | None) -> None: ...
+    def enclosed(self, value: _builtins.bool | None) -> None:
+        """``enclosed``: bool; default "false"; in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18852,7 +20205,8 @@ class Instance(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``instance``; required."""
 
     @property
     def config(self) -> _List[Config]:
@@ -18876,11 +20230,23 @@ class Instance(_Typed):
     def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <instance> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["config"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <instance> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <instance> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <instance> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -18904,7 +20270,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -18913,7 +20280,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -18922,7 +20290,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -18931,7 +20300,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -18940,7 +20310,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -18949,7 +20320,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -18958,7 +20330,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -18967,7 +20340,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -18976,7 +20350,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -18985,7 +20360,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actlimited(self) -> FalseTrueAuto | None:
@@ -18994,7 +20370,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
         """
     @actlimited.setter
-    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actlimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actlimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -19003,7 +20380,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def actrange(self) -> _t.Float64Array | None:
@@ -19012,7 +20390,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
         """
     @actrange.setter
-    def actrange(self, value: Reals2 | None) -> None: ...
+    def actrange(self, value: Reals2 | None) -> None:
+        """``actrange``: double[2]; no default (unset when absent)."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -19021,7 +20400,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -19030,7 +20410,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -19039,7 +20420,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -19048,7 +20430,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -19057,7 +20440,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -19066,7 +20450,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19075,7 +20460,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -19084,7 +20470,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -19093,7 +20480,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -19102,7 +20490,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -19111,7 +20500,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -19120,7 +20510,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -19129,7 +20520,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -19138,7 +20530,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -19147,7 +20540,8 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -19156,14 +20550,16 @@ class Intvelocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19216,7 +20612,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``joint``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -19225,7 +20622,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def type(self) -> JointType | None:
@@ -19234,7 +20632,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
         """
     @type.setter
-    def type(self, value: JointType | None) -> None: ...
+    def type(self, value: JointType | None) -> None:
+        """``type``: one of: free, ball, slide, hinge; default "hinge"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -19243,7 +20642,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -19252,7 +20652,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; no default (unset when absent)."""
 
     @property
     def axis(self) -> _t.Float64Array | None:
@@ -19261,7 +20662,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
         """
     @axis.setter
-    def axis(self, value: Reals3 | None) -> None: ...
+    def axis(self, value: Reals3 | None) -> None:
+        """``axis``: double[3]; default "0 0 1"."""
 
     @property
     def springdamper(self) -> _t.Float64Array | None:
@@ -19270,7 +20672,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
         """
     @springdamper.setter
-    def springdamper(self, value: Reals2 | None) -> None: ...
+    def springdamper(self, value: Reals2 | None) -> None:
+        """``springdamper``: double[2]; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -19279,7 +20682,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -19288,7 +20692,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -19297,7 +20702,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -19306,7 +20712,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -19315,7 +20722,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -19324,7 +20732,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -19333,7 +20742,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -19342,7 +20752,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -19351,7 +20762,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorgravcomp(self) -> _builtins.bool | None:
@@ -19360,7 +20772,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
         """
     @actuatorgravcomp.setter
-    def actuatorgravcomp(self, value: _builtins.bool | None) -> None: ...
+    def actuatorgravcomp(self, value: _builtins.bool | None) -> None:
+        """``actuatorgravcomp``: bool; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -19369,7 +20782,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def ref(self) -> _builtins.float | None:
@@ -19378,7 +20792,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
         """
     @ref.setter
-    def ref(self, value: _t.Real | None) -> None: ...
+    def ref(self, value: _t.Real | None) -> None:
+        """``ref``: double; no default (unset when absent)."""
 
     @property
     def springref(self) -> _builtins.float | None:
@@ -19387,7 +20802,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
         """
     @springref.setter
-    def springref(self, value: _t.Real | None) -> None: ...
+    def springref(self, value: _t.Real | None) -> None:
+        """``springref``: double; no default (unset when absent)."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -19396,7 +20812,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -19405,7 +20822,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -19414,7 +20832,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19423,7 +20842,8 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -19432,14 +20852,16 @@ class Joint(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19489,7 +20911,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19498,7 +20921,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19507,7 +20931,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19516,7 +20941,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19525,7 +20951,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19534,7 +20961,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19543,7 +20971,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19552,7 +20981,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19561,7 +20991,8 @@ class Jointactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19599,7 +21030,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19608,7 +21040,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19617,7 +21050,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19626,7 +21060,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19635,7 +21070,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19644,7 +21080,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19653,7 +21090,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19662,7 +21100,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19671,7 +21110,8 @@ class Jointlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19709,7 +21149,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19718,7 +21159,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19727,7 +21169,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19736,7 +21179,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19745,7 +21189,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19754,7 +21199,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19763,7 +21209,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19772,7 +21219,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19781,7 +21229,8 @@ class Jointlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19819,7 +21268,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19828,7 +21278,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19837,7 +21288,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19846,7 +21298,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19855,7 +21308,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19864,7 +21318,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19873,7 +21328,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19882,7 +21338,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -19891,7 +21348,8 @@ class Jointlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19929,7 +21387,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -19938,7 +21397,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -19947,7 +21407,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -19956,7 +21417,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -19965,7 +21427,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -19974,7 +21437,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -19983,7 +21447,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -19992,7 +21457,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -20001,7 +21467,8 @@ class Jointpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20039,7 +21506,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -20048,7 +21516,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -20057,7 +21526,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -20066,7 +21536,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -20075,7 +21546,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20084,7 +21556,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -20093,7 +21566,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -20102,7 +21576,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -20111,7 +21586,8 @@ class Jointvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20149,7 +21625,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``key``; no default (unset when absent)."""
 
     @property
     def time(self) -> _builtins.float | None:
@@ -20158,7 +21635,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-time
         """
     @time.setter
-    def time(self, value: _t.Real | None) -> None: ...
+    def time(self, value: _t.Real | None) -> None:
+        """``time``: double; no default (unset when absent)."""
 
     @property
     def qpos(self) -> _t.Float64Array | None:
@@ -20167,7 +21645,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qpos
         """
     @qpos.setter
-    def qpos(self, value: RealsAny | None) -> None: ...
+    def qpos(self, value: RealsAny | None) -> None:
+        """``qpos``: double[] (any length); no default (unset when absent)."""
 
     @property
     def qvel(self) -> _t.Float64Array | None:
@@ -20176,7 +21655,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qvel
         """
     @qvel.setter
-    def qvel(self, value: RealsAny | None) -> None: ...
+    def qvel(self, value: RealsAny | None) -> None:
+        """``qvel``: double[] (any length); no default (unset when absent)."""
 
     @property
     def act(self) -> _t.Float64Array | None:
@@ -20185,7 +21665,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-act
         """
     @act.setter
-    def act(self, value: RealsAny | None) -> None: ...
+    def act(self, value: RealsAny | None) -> None:
+        """``act``: double[] (any length); no default (unset when absent)."""
 
     @property
     def mpos(self) -> _t.Float64Array | None:
@@ -20194,7 +21675,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mpos
         """
     @mpos.setter
-    def mpos(self, value: RealsAny | None) -> None: ...
+    def mpos(self, value: RealsAny | None) -> None:
+        """``mpos``: double[] (any length); no default (unset when absent)."""
 
     @property
     def mquat(self) -> _t.Float64Array | None:
@@ -20203,7 +21685,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mquat
         """
     @mquat.setter
-    def mquat(self, value: RealsAny | None) -> None: ...
+    def mquat(self, value: RealsAny | None) -> None:
+        """``mquat``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrl(self) -> _t.Float64Array | None:
@@ -20212,7 +21695,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-ctrl
         """
     @ctrl.setter
-    def ctrl(self, value: RealsAny | None) -> None: ...
+    def ctrl(self, value: RealsAny | None) -> None:
+        """``ctrl``: double[] (any length); no default (unset when absent)."""
 
     @property
     def plastic(self) -> _t.Float64Array | None:
@@ -20221,7 +21705,8 @@ class Key(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-plastic
         """
     @plastic.setter
-    def plastic(self, value: RealsAny | None) -> None: ...
+    def plastic(self, value: RealsAny | None) -> None:
+        """``plastic``: double[] (any length); no default (unset when absent); in MuJoCo >= 4.0.0."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20279,11 +21764,23 @@ class Keyframe(_Typed):
     def add(self, tag: Literal["key"], /, **kwargs: Unpack[KeyAttributes]) -> Key: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <keyframe> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["key"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <keyframe> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["key"], /, position: _builtins.int, **kwargs: Unpack[KeyAttributes]) -> Key: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <keyframe> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["key"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <keyframe> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -20303,7 +21800,8 @@ class Layer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def role(self) -> _builtins.str | None:
@@ -20312,7 +21810,8 @@ class Layer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-role
         """
     @role.setter
-    def role(self, value: _builtins.str | None) -> None: ...
+    def role(self, value: _builtins.str | None) -> None:
+        """``role``: string; required."""
 
     @overload
     def resolve(self, name: Literal["texture"]) -> _builtins.str | Texture | None:
@@ -20338,7 +21837,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-mode
         """
     @mode.setter
-    def mode(self, value: LrMode | None) -> None: ...
+    def mode(self, value: LrMode | None) -> None:
+        """``mode``: one of: none, muscle, muscleuser, all; default "muscle"."""
 
     @property
     def useexisting(self) -> _builtins.bool | None:
@@ -20347,7 +21847,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-useexisting
         """
     @useexisting.setter
-    def useexisting(self, value: _builtins.bool | None) -> None: ...
+    def useexisting(self, value: _builtins.bool | None) -> None:
+        """``useexisting``: bool; default "true"."""
 
     @property
     def uselimit(self) -> _builtins.bool | None:
@@ -20356,7 +21857,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-uselimit
         """
     @uselimit.setter
-    def uselimit(self, value: _builtins.bool | None) -> None: ...
+    def uselimit(self, value: _builtins.bool | None) -> None:
+        """``uselimit``: bool; no default (unset when absent)."""
 
     @property
     def accel(self) -> _builtins.float | None:
@@ -20365,7 +21867,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-accel
         """
     @accel.setter
-    def accel(self, value: _t.Real | None) -> None: ...
+    def accel(self, value: _t.Real | None) -> None:
+        """``accel``: double; default "20"."""
 
     @property
     def maxforce(self) -> _builtins.float | None:
@@ -20374,7 +21877,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-maxforce
         """
     @maxforce.setter
-    def maxforce(self, value: _t.Real | None) -> None: ...
+    def maxforce(self, value: _t.Real | None) -> None:
+        """``maxforce``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -20383,7 +21887,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; default "1"."""
 
     @property
     def timestep(self) -> _builtins.float | None:
@@ -20392,7 +21897,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timestep
         """
     @timestep.setter
-    def timestep(self, value: _t.Real | None) -> None: ...
+    def timestep(self, value: _t.Real | None) -> None:
+        """``timestep``: double; default "0.01"."""
 
     @property
     def inttotal(self) -> _builtins.float | None:
@@ -20401,7 +21907,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-inttotal
         """
     @inttotal.setter
-    def inttotal(self, value: _t.Real | None) -> None: ...
+    def inttotal(self, value: _t.Real | None) -> None:
+        """``inttotal``: double; default "10"."""
 
     @property
     def interval(self) -> _builtins.float | None:
@@ -20410,7 +21917,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-interval
         """
     @interval.setter
-    def interval(self, value: _t.Real | None) -> None: ...
+    def interval(self, value: _t.Real | None) -> None:
+        """``interval``: double; default "2"."""
 
     @property
     def tolrange(self) -> _builtins.float | None:
@@ -20419,7 +21927,8 @@ class Lengthrange(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-tolrange
         """
     @tolrange.setter
-    def tolrange(self, value: _t.Real | None) -> None: ...
+    def tolrange(self, value: _t.Real | None) -> None:
+        """``tolrange``: double; default "0.05"."""
 
     @overload
     def resolve(self, name: Literal["mode"]) -> LrMode:
@@ -20454,7 +21963,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``light``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -20463,7 +21973,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def directional(self) -> _builtins.bool | None:
@@ -20472,7 +21983,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
         """
     @directional.setter
-    def directional(self, value: _builtins.bool | None) -> None: ...
+    def directional(self, value: _builtins.bool | None) -> None:
+        """``directional``: bool; no default (unset when absent)."""
 
     @property
     def type(self) -> LightType | None:
@@ -20481,7 +21993,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
         """
     @type.setter
-    def type(self, value: LightType | None) -> None: ...
+    def type(self, value: LightType | None) -> None:
+        """``type``: one of: spot, directional, point, image; no default (unset when absent)."""
 
     @property
     def castshadow(self) -> _builtins.bool | None:
@@ -20490,7 +22003,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
         """
     @castshadow.setter
-    def castshadow(self, value: _builtins.bool | None) -> None: ...
+    def castshadow(self, value: _builtins.bool | None) -> None:
+        """``castshadow``: bool; default "true"."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -20499,7 +22013,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -20508,7 +22023,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def dir(self) -> _t.Float64Array | None:
@@ -20517,7 +22033,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
         """
     @dir.setter
-    def dir(self, value: Reals3 | None) -> None: ...
+    def dir(self, value: Reals3 | None) -> None:
+        """``dir``: double[3]; default "0 0 -1"."""
 
     @property
     def bulbradius(self) -> _builtins.float | None:
@@ -20526,7 +22043,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
         """
     @bulbradius.setter
-    def bulbradius(self, value: _t.Real | None) -> None: ...
+    def bulbradius(self, value: _t.Real | None) -> None:
+        """``bulbradius``: float; default "0.02"."""
 
     @property
     def intensity(self) -> _builtins.float | None:
@@ -20535,7 +22053,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
         """
     @intensity.setter
-    def intensity(self, value: _t.Real | None) -> None: ...
+    def intensity(self, value: _t.Real | None) -> None:
+        """``intensity``: float; no default (unset when absent)."""
 
     @property
     def range(self) -> _builtins.float | None:
@@ -20544,7 +22063,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
         """
     @range.setter
-    def range(self, value: _t.Real | None) -> None: ...
+    def range(self, value: _t.Real | None) -> None:
+        """``range``: float; default "10"."""
 
     @property
     def attenuation(self) -> _t.Float32Array | None:
@@ -20553,7 +22073,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
         """
     @attenuation.setter
-    def attenuation(self, value: Reals3 | None) -> None: ...
+    def attenuation(self, value: Reals3 | None) -> None:
+        """``attenuation``: float[3]; default "1 0 0"."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20562,7 +22083,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: float; default "45"."""
 
     @property
     def softness(self) -> _builtins.float | None:
@@ -20571,7 +22093,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
         """
     @softness.setter
-    def softness(self, value: _t.Real | None) -> None: ...
+    def softness(self, value: _t.Real | None) -> None:
+        """``softness``: float; default "0.2"; in MuJoCo >= 3.17.0."""
 
     @property
     def exponent(self) -> _builtins.float | None:
@@ -20580,7 +22103,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
         """
     @exponent.setter
-    def exponent(self, value: _t.Real | None) -> None: ...
+    def exponent(self, value: _t.Real | None) -> None:
+        """``exponent``: float; default "10"."""
 
     @property
     def ambient(self) -> _t.Float32Array | None:
@@ -20589,7 +22113,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
         """
     @ambient.setter
-    def ambient(self, value: Reals3 | None) -> None: ...
+    def ambient(self, value: Reals3 | None) -> None:
+        """``ambient``: float[3]; no default (unset when absent)."""
 
     @property
     def diffuse(self) -> _t.Float32Array | None:
@@ -20598,7 +22123,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
         """
     @diffuse.setter
-    def diffuse(self, value: Reals3 | None) -> None: ...
+    def diffuse(self, value: Reals3 | None) -> None:
+        """``diffuse``: float[3]; default "0.7 0.7 0.7"."""
 
     @property
     def specular(self) -> _t.Float32Array | None:
@@ -20607,7 +22133,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
         """
     @specular.setter
-    def specular(self, value: Reals3 | None) -> None: ...
+    def specular(self, value: Reals3 | None) -> None:
+        """``specular``: float[3]; default "0.3 0.3 0.3"."""
 
     @property
     def mode(self) -> Camlight | None:
@@ -20616,7 +22143,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
         """
     @mode.setter
-    def mode(self, value: Camlight | None) -> None: ...
+    def mode(self, value: Camlight | None) -> None:
+        """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed"."""
 
     @property
     def target(self) -> _builtins.str | Body | None:
@@ -20625,7 +22153,8 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-target
         """
     @target.setter
-    def target(self, value: _builtins.str | Body | None) -> None: ...
+    def target(self, value: _builtins.str | Body | None) -> None:
+        """``target``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def texture(self) -> _builtins.str | Texture | None:
@@ -20634,14 +22163,16 @@ class Light(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20700,7 +22231,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -20709,7 +22241,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -20718,7 +22251,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -20727,7 +22261,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -20736,7 +22271,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -20745,7 +22281,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -20754,7 +22291,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -20763,7 +22301,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -20772,7 +22311,8 @@ class Magnetometer(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -20810,7 +22350,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: _t.Real | None) -> None: ...
+    def stiffness(self, value: _t.Real | None) -> None:
+        """``stiffness``: float; default "100"."""
 
     @property
     def stiffnessrot(self) -> _builtins.float | None:
@@ -20819,7 +22360,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffnessrot
         """
     @stiffnessrot.setter
-    def stiffnessrot(self, value: _t.Real | None) -> None: ...
+    def stiffnessrot(self, value: _t.Real | None) -> None:
+        """``stiffnessrot``: float; default "500"."""
 
     @property
     def force(self) -> _builtins.float | None:
@@ -20828,7 +22370,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-force
         """
     @force.setter
-    def force(self, value: _t.Real | None) -> None: ...
+    def force(self, value: _t.Real | None) -> None:
+        """``force``: float; default "0.005"."""
 
     @property
     def torque(self) -> _builtins.float | None:
@@ -20837,7 +22380,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-torque
         """
     @torque.setter
-    def torque(self, value: _t.Real | None) -> None: ...
+    def torque(self, value: _t.Real | None) -> None:
+        """``torque``: float; default "0.1"."""
 
     @property
     def alpha(self) -> _builtins.float | None:
@@ -20846,7 +22390,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-alpha
         """
     @alpha.setter
-    def alpha(self, value: _t.Real | None) -> None: ...
+    def alpha(self, value: _t.Real | None) -> None:
+        """``alpha``: float; default "0.3"."""
 
     @property
     def fogstart(self) -> _builtins.float | None:
@@ -20855,7 +22400,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogstart
         """
     @fogstart.setter
-    def fogstart(self, value: _t.Real | None) -> None: ...
+    def fogstart(self, value: _t.Real | None) -> None:
+        """``fogstart``: float; default "3"."""
 
     @property
     def fogend(self) -> _builtins.float | None:
@@ -20864,7 +22410,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogend
         """
     @fogend.setter
-    def fogend(self, value: _t.Real | None) -> None: ...
+    def fogend(self, value: _t.Real | None) -> None:
+        """``fogend``: float; default "10"."""
 
     @property
     def znear(self) -> _builtins.float | None:
@@ -20873,7 +22420,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
         """
     @znear.setter
-    def znear(self, value: _t.Real | None) -> None: ...
+    def znear(self, value: _t.Real | None) -> None:
+        """``znear``: float; default "0.01"."""
 
     @property
     def zfar(self) -> _builtins.float | None:
@@ -20882,7 +22430,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-zfar
         """
     @zfar.setter
-    def zfar(self, value: _t.Real | None) -> None: ...
+    def zfar(self, value: _t.Real | None) -> None:
+        """``zfar``: float; default "50"."""
 
     @property
     def haze(self) -> _builtins.float | None:
@@ -20891,7 +22440,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-haze
         """
     @haze.setter
-    def haze(self, value: _t.Real | None) -> None: ...
+    def haze(self, value: _t.Real | None) -> None:
+        """``haze``: float; default "0.3"."""
 
     @property
     def shadowclip(self) -> _builtins.float | None:
@@ -20900,7 +22450,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowclip
         """
     @shadowclip.setter
-    def shadowclip(self, value: _t.Real | None) -> None: ...
+    def shadowclip(self, value: _t.Real | None) -> None:
+        """``shadowclip``: float; default "1"."""
 
     @property
     def shadowscale(self) -> _builtins.float | None:
@@ -20909,7 +22460,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowscale
         """
     @shadowscale.setter
-    def shadowscale(self, value: _t.Real | None) -> None: ...
+    def shadowscale(self, value: _t.Real | None) -> None:
+        """``shadowscale``: float; default "0.6"."""
 
     @property
     def actuatortendon(self) -> _builtins.float | None:
@@ -20918,7 +22470,8 @@ class Map(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-actuatortendon
         """
     @actuatortendon.setter
-    def actuatortendon(self, value: _t.Real | None) -> None: ...
+    def actuatortendon(self, value: _t.Real | None) -> None:
+        """``actuatortendon``: float; default "2"."""
 
     def resolve(self, name: Literal["stiffness", "stiffnessrot", "force", "torque", "alpha", "fogstart", "fogend", "znear", "zfar", "haze", "shadowclip", "shadowscale", "actuatortendon"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -20940,7 +22493,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``material``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -20949,7 +22503,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def texture(self) -> _builtins.str | Texture | None:
@@ -20958,7 +22513,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
         """
     @texture.setter
-    def texture(self, value: _builtins.str | Texture | None) -> None: ...
+    def texture(self, value: _builtins.str | Texture | None) -> None:
+        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
 
     @property
     def texrepeat(self) -> _t.Float32Array | None:
@@ -20967,7 +22523,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
         """
     @texrepeat.setter
-    def texrepeat(self, value: Reals2 | None) -> None: ...
+    def texrepeat(self, value: Reals2 | None) -> None:
+        """``texrepeat``: float[2]; default "1 1"."""
 
     @property
     def texuniform(self) -> _builtins.bool | None:
@@ -20976,7 +22533,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
         """
     @texuniform.setter
-    def texuniform(self, value: _builtins.bool | None) -> None: ...
+    def texuniform(self, value: _builtins.bool | None) -> None:
+        """``texuniform``: bool; no default (unset when absent)."""
 
     @property
     def emission(self) -> _builtins.float | None:
@@ -20985,7 +22543,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
         """
     @emission.setter
-    def emission(self, value: _t.Real | None) -> None: ...
+    def emission(self, value: _t.Real | None) -> None:
+        """``emission``: float; no default (unset when absent)."""
 
     @property
     def specular(self) -> _builtins.float | None:
@@ -20994,7 +22553,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
         """
     @specular.setter
-    def specular(self, value: _t.Real | None) -> None: ...
+    def specular(self, value: _t.Real | None) -> None:
+        """``specular``: float; default "0.5"."""
 
     @property
     def shininess(self) -> _builtins.float | None:
@@ -21003,7 +22563,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
         """
     @shininess.setter
-    def shininess(self, value: _t.Real | None) -> None: ...
+    def shininess(self, value: _t.Real | None) -> None:
+        """``shininess``: float; default "0.5"."""
 
     @property
     def reflectance(self) -> _builtins.float | None:
@@ -21012,7 +22573,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
         """
     @reflectance.setter
-    def reflectance(self, value: _t.Real | None) -> None: ...
+    def reflectance(self, value: _t.Real | None) -> None:
+        """``reflectance``: float; no default (unset when absent)."""
 
     @property
     def metallic(self) -> _builtins.float | None:
@@ -21021,7 +22583,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
         """
     @metallic.setter
-    def metallic(self, value: _t.Real | None) -> None: ...
+    def metallic(self, value: _t.Real | None) -> None:
+        """``metallic``: float; default "-1"."""
 
     @property
     def roughness(self) -> _builtins.float | None:
@@ -21030,7 +22593,8 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
         """
     @roughness.setter
-    def roughness(self, value: _t.Real | None) -> None: ...
+    def roughness(self, value: _t.Real | None) -> None:
+        """``roughness``: float; default "-1"."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -21039,14 +22603,16 @@ class Material(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "1 1 1 1"."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def layer(self) -> _List[Layer]:
@@ -21070,11 +22636,23 @@ class Material(_Typed):
     def add(self, tag: Literal["layer"], /, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <material> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["layer"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <material> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["layer"], /, position: _builtins.int, **kwargs: Unpack[LayerAttributes]) -> Layer: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <material> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["layer"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <material> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -21117,7 +22695,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``mesh``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21126,7 +22705,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -21135,7 +22715,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -21144,7 +22725,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def vertex(self) -> _t.Float32Array | None:
@@ -21153,7 +22735,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-vertex
         """
     @vertex.setter
-    def vertex(self, value: RealsAny | None) -> None: ...
+    def vertex(self, value: RealsAny | None) -> None:
+        """``vertex``: float[] (any length); no default (unset when absent)."""
 
     @property
     def normal(self) -> _t.Float32Array | None:
@@ -21162,7 +22745,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-normal
         """
     @normal.setter
-    def normal(self, value: RealsAny | None) -> None: ...
+    def normal(self, value: RealsAny | None) -> None:
+        """``normal``: float[] (any length); no default (unset when absent)."""
 
     @property
     def texcoord(self) -> _t.Float32Array | None:
@@ -21171,7 +22755,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: float[] (any length); no default (unset when absent)."""
 
     @property
     def face(self) -> _t.Int32Array | None:
@@ -21180,7 +22765,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-face
         """
     @face.setter
-    def face(self, value: IntegersAny | None) -> None: ...
+    def face(self, value: IntegersAny | None) -> None:
+        """``face``: int[] (any length); no default (unset when absent)."""
 
     @property
     def refpos(self) -> _t.Float64Array | None:
@@ -21189,7 +22775,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refpos
         """
     @refpos.setter
-    def refpos(self, value: Reals3 | None) -> None: ...
+    def refpos(self, value: Reals3 | None) -> None:
+        """``refpos``: double[3]; no default (unset when absent)."""
 
     @property
     def refquat(self) -> _t.Float64Array | None:
@@ -21198,7 +22785,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refquat
         """
     @refquat.setter
-    def refquat(self, value: Reals4 | None) -> None: ...
+    def refquat(self, value: Reals4 | None) -> None:
+        """``refquat``: double[4]; default "1 0 0 0"."""
 
     @property
     def scale(self) -> _t.Float64Array | None:
@@ -21207,7 +22795,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
         """
     @scale.setter
-    def scale(self, value: Reals3 | None) -> None: ...
+    def scale(self, value: Reals3 | None) -> None:
+        """``scale``: double[3]; default "1 1 1"."""
 
     @property
     def smoothnormal(self) -> _builtins.bool | None:
@@ -21216,7 +22805,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-smoothnormal
         """
     @smoothnormal.setter
-    def smoothnormal(self, value: _builtins.bool | None) -> None: ...
+    def smoothnormal(self, value: _builtins.bool | None) -> None:
+        """``smoothnormal``: bool; no default (unset when absent)."""
 
     @property
     def maxhullvert(self) -> _builtins.int | None:
@@ -21225,7 +22815,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
         """
     @maxhullvert.setter
-    def maxhullvert(self, value: _t.Integer | None) -> None: ...
+    def maxhullvert(self, value: _t.Integer | None) -> None:
+        """``maxhullvert``: int; default "-1"."""
 
     @property
     def inertia(self) -> MeshInertia | None:
@@ -21234,7 +22825,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
         """
     @inertia.setter
-    def inertia(self, value: MeshInertia | None) -> None: ...
+    def inertia(self, value: MeshInertia | None) -> None:
+        """``inertia``: one of: convex, legacy, exact, shell; default "legacy"."""
 
     @property
     def builtin(self) -> MeshBuiltin | None:
@@ -21243,7 +22835,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-builtin
         """
     @builtin.setter
-    def builtin(self, value: MeshBuiltin | None) -> None: ...
+    def builtin(self, value: MeshBuiltin | None) -> None:
+        """``builtin``: one of: none, sphere, hemisphere, cone, supertorus, supersphere, wedge, plate; no default (unset when absent)."""
 
     @property
     def params(self) -> _t.Float64Array | None:
@@ -21252,7 +22845,8 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-params
         """
     @params.setter
-    def params(self, value: RealsAny | None) -> None: ...
+    def params(self, value: RealsAny | None) -> None:
+        """``params``: double[] (any length); no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -21261,14 +22855,16 @@ class Mesh(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def plugin(self) -> _List[Plugin]:
@@ -21292,11 +22888,23 @@ class Mesh(_Typed):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <mesh> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["plugin"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <mesh> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <mesh> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <mesh> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -21354,7 +22962,8 @@ class Model(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``model``; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -21363,7 +22972,8 @@ class Model(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; required."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -21372,7 +22982,8 @@ class Model(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type"]) -> _builtins.str | None:
@@ -21398,7 +23009,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21407,7 +23019,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -21416,7 +23029,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -21425,7 +23039,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -21434,7 +23049,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -21443,7 +23059,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -21452,7 +23069,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -21461,7 +23079,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -21470,7 +23089,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -21479,7 +23099,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -21488,7 +23109,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -21497,7 +23119,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -21506,7 +23129,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -21515,7 +23139,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -21524,7 +23149,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -21533,7 +23159,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -21542,7 +23169,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -21551,7 +23179,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -21560,7 +23189,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -21569,7 +23199,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -21578,7 +23209,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -21587,7 +23219,8 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -21596,14 +23229,16 @@ class Motor(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -21656,7 +23291,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -21665,7 +23301,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -21674,7 +23311,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -21683,7 +23321,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -21692,7 +23331,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -21701,7 +23341,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -21710,7 +23351,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -21719,7 +23361,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -21728,7 +23371,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -21737,7 +23381,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -21746,7 +23391,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -21755,7 +23401,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -21764,7 +23411,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -21773,7 +23421,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -21782,7 +23431,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -21791,7 +23441,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -21800,7 +23451,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -21809,7 +23461,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -21818,7 +23471,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -21827,7 +23481,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -21836,7 +23491,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _t.Float64Array | None:
@@ -21845,7 +23501,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: Reals2 | None) -> None: ...
+    def timeconst(self, value: Reals2 | None) -> None:
+        """``timeconst``: double[2]; no default (unset when absent)."""
 
     @property
     def tausmooth(self) -> _builtins.float | None:
@@ -21854,7 +23511,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
         """
     @tausmooth.setter
-    def tausmooth(self, value: _t.Real | None) -> None: ...
+    def tausmooth(self, value: _t.Real | None) -> None:
+        """``tausmooth``: double; no default (unset when absent)."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -21863,7 +23521,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def force(self) -> _builtins.float | None:
@@ -21872,7 +23531,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
         """
     @force.setter
-    def force(self, value: _t.Real | None) -> None: ...
+    def force(self, value: _t.Real | None) -> None:
+        """``force``: double; no default (unset when absent)."""
 
     @property
     def scale(self) -> _builtins.float | None:
@@ -21881,7 +23541,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
         """
     @scale.setter
-    def scale(self, value: _t.Real | None) -> None: ...
+    def scale(self, value: _t.Real | None) -> None:
+        """``scale``: double; no default (unset when absent)."""
 
     @property
     def lmin(self) -> _builtins.float | None:
@@ -21890,7 +23551,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
         """
     @lmin.setter
-    def lmin(self, value: _t.Real | None) -> None: ...
+    def lmin(self, value: _t.Real | None) -> None:
+        """``lmin``: double; no default (unset when absent)."""
 
     @property
     def lmax(self) -> _builtins.float | None:
@@ -21899,7 +23561,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
         """
     @lmax.setter
-    def lmax(self, value: _t.Real | None) -> None: ...
+    def lmax(self, value: _t.Real | None) -> None:
+        """``lmax``: double; no default (unset when absent)."""
 
     @property
     def vmax(self) -> _builtins.float | None:
@@ -21908,7 +23571,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
         """
     @vmax.setter
-    def vmax(self, value: _t.Real | None) -> None: ...
+    def vmax(self, value: _t.Real | None) -> None:
+        """``vmax``: double; no default (unset when absent)."""
 
     @property
     def fpmax(self) -> _builtins.float | None:
@@ -21917,7 +23581,8 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
         """
     @fpmax.setter
-    def fpmax(self, value: _t.Real | None) -> None: ...
+    def fpmax(self, value: _t.Real | None) -> None:
+        """``fpmax``: double; no default (unset when absent)."""
 
     @property
     def fvmax(self) -> _builtins.float | None:
@@ -21926,14 +23591,16 @@ class Muscle(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
         """
     @fvmax.setter
-    def fvmax(self, value: _t.Real | None) -> None: ...
+    def fvmax(self, value: _t.Real | None) -> None:
+        """``fvmax``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -21986,7 +23653,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -21995,7 +23663,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -22004,7 +23673,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -22013,7 +23683,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -22022,7 +23693,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -22031,7 +23703,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -22040,7 +23713,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -22049,7 +23723,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -22058,7 +23733,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -22067,7 +23743,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -22076,7 +23753,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -22085,7 +23763,8 @@ class Normal(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22126,7 +23805,8 @@ class Numeric(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``numeric``; required."""
 
     @property
     def size(self) -> _builtins.int | None:
@@ -22135,7 +23815,8 @@ class Numeric(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
         """
     @size.setter
-    def size(self, value: _t.Integer | None) -> None: ...
+    def size(self, value: _t.Integer | None) -> None:
+        """``size``: int; no default (unset when absent)."""
 
     @property
     def data(self) -> _t.Float64Array | None:
@@ -22144,7 +23825,8 @@ class Numeric(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-data
         """
     @data.setter
-    def data(self, value: RealsAny | None) -> None: ...
+    def data(self, value: RealsAny | None) -> None:
+        """``data``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22173,7 +23855,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-timestep
         """
     @timestep.setter
-    def timestep(self, value: _t.Real | None) -> None: ...
+    def timestep(self, value: _t.Real | None) -> None:
+        """``timestep``: double; default "0.002"."""
 
     @property
     def impratio(self) -> _builtins.float | None:
@@ -22182,7 +23865,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-impratio
         """
     @impratio.setter
-    def impratio(self, value: _t.Real | None) -> None: ...
+    def impratio(self, value: _t.Real | None) -> None:
+        """``impratio``: double; default "1"."""
 
     @property
     def tolerance(self) -> _builtins.float | None:
@@ -22191,7 +23875,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-tolerance
         """
     @tolerance.setter
-    def tolerance(self, value: _t.Real | None) -> None: ...
+    def tolerance(self, value: _t.Real | None) -> None:
+        """``tolerance``: double; default "1e-08"."""
 
     @property
     def ls_tolerance(self) -> _builtins.float | None:
@@ -22200,7 +23885,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_tolerance
         """
     @ls_tolerance.setter
-    def ls_tolerance(self, value: _t.Real | None) -> None: ...
+    def ls_tolerance(self, value: _t.Real | None) -> None:
+        """``ls_tolerance``: double; default "0.01"."""
 
     @property
     def noslip_tolerance(self) -> _builtins.float | None:
@@ -22209,7 +23895,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_tolerance
         """
     @noslip_tolerance.setter
-    def noslip_tolerance(self, value: _t.Real | None) -> None: ...
+    def noslip_tolerance(self, value: _t.Real | None) -> None:
+        """``noslip_tolerance``: double; default "1e-06"."""
 
     @property
     def ccd_tolerance(self) -> _builtins.float | None:
@@ -22218,7 +23905,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_tolerance
         """
     @ccd_tolerance.setter
-    def ccd_tolerance(self, value: _t.Real | None) -> None: ...
+    def ccd_tolerance(self, value: _t.Real | None) -> None:
+        """``ccd_tolerance``: double; default "1e-06"."""
 
     @property
     def sleep_tolerance(self) -> _builtins.float | None:
@@ -22227,7 +23915,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sleep_tolerance
         """
     @sleep_tolerance.setter
-    def sleep_tolerance(self, value: _t.Real | None) -> None: ...
+    def sleep_tolerance(self, value: _t.Real | None) -> None:
+        """``sleep_tolerance``: double; default "0.001"; in MuJoCo >= 3.17.0."""
 
     @property
     def gravity(self) -> _t.Float64Array | None:
@@ -22236,7 +23925,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-gravity
         """
     @gravity.setter
-    def gravity(self, value: Reals3 | None) -> None: ...
+    def gravity(self, value: Reals3 | None) -> None:
+        """``gravity``: double[3]; default "0 0 -9.81"."""
 
     @property
     def wind(self) -> _t.Float64Array | None:
@@ -22245,7 +23935,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-wind
         """
     @wind.setter
-    def wind(self, value: Reals3 | None) -> None: ...
+    def wind(self, value: Reals3 | None) -> None:
+        """``wind``: double[3]; default "0 0 0"."""
 
     @property
     def magnetic(self) -> _t.Float64Array | None:
@@ -22254,7 +23945,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-magnetic
         """
     @magnetic.setter
-    def magnetic(self, value: Reals3 | None) -> None: ...
+    def magnetic(self, value: Reals3 | None) -> None:
+        """``magnetic``: double[3]; default "0 -0.5 0"."""
 
     @property
     def density(self) -> _builtins.float | None:
@@ -22263,7 +23955,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-density
         """
     @density.setter
-    def density(self, value: _t.Real | None) -> None: ...
+    def density(self, value: _t.Real | None) -> None:
+        """``density``: double; no default (unset when absent)."""
 
     @property
     def viscosity(self) -> _builtins.float | None:
@@ -22272,7 +23965,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-viscosity
         """
     @viscosity.setter
-    def viscosity(self, value: _t.Real | None) -> None: ...
+    def viscosity(self, value: _t.Real | None) -> None:
+        """``viscosity``: double; no default (unset when absent)."""
 
     @property
     def o_margin(self) -> _builtins.float | None:
@@ -22281,7 +23975,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_margin
         """
     @o_margin.setter
-    def o_margin(self, value: _t.Real | None) -> None: ...
+    def o_margin(self, value: _t.Real | None) -> None:
+        """``o_margin``: double; no default (unset when absent)."""
 
     @property
     def o_solref(self) -> _t.Float64Array | None:
@@ -22290,7 +23985,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solref
         """
     @o_solref.setter
-    def o_solref(self, value: Reals1To2 | None) -> None: ...
+    def o_solref(self, value: Reals1To2 | None) -> None:
+        """``o_solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def o_solimp(self) -> _t.Float64Array | None:
@@ -22299,7 +23995,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solimp
         """
     @o_solimp.setter
-    def o_solimp(self, value: Reals1To5 | None) -> None: ...
+    def o_solimp(self, value: Reals1To5 | None) -> None:
+        """``o_solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def o_friction(self) -> _t.Float64Array | None:
@@ -22308,7 +24005,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_friction
         """
     @o_friction.setter
-    def o_friction(self, value: Reals1To5 | None) -> None: ...
+    def o_friction(self, value: Reals1To5 | None) -> None:
+        """``o_friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001"."""
 
     @property
     def integrator(self) -> Integrator | None:
@@ -22317,7 +24015,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-integrator
         """
     @integrator.setter
-    def integrator(self, value: Integrator | None) -> None: ...
+    def integrator(self, value: Integrator | None) -> None:
+        """``integrator``: one of: Euler, RK4, implicit, implicitfast, discrete; default "Euler"."""
 
     @property
     def cone(self) -> Cone | None:
@@ -22326,7 +24025,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-cone
         """
     @cone.setter
-    def cone(self, value: Cone | None) -> None: ...
+    def cone(self, value: Cone | None) -> None:
+        """``cone``: one of: pyramidal, elliptic; default "pyramidal"."""
 
     @property
     def jacobian(self) -> Jacobian | None:
@@ -22335,7 +24035,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-jacobian
         """
     @jacobian.setter
-    def jacobian(self, value: Jacobian | None) -> None: ...
+    def jacobian(self, value: Jacobian | None) -> None:
+        """``jacobian``: one of: dense, sparse, auto; default "auto"."""
 
     @property
     def solver(self) -> Solver | None:
@@ -22344,7 +24045,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-solver
         """
     @solver.setter
-    def solver(self, value: Solver | None) -> None: ...
+    def solver(self, value: Solver | None) -> None:
+        """``solver``: one of: PGS, CG, Newton; default "Newton"."""
 
     @property
     def iterations(self) -> _builtins.int | None:
@@ -22353,7 +24055,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-iterations
         """
     @iterations.setter
-    def iterations(self, value: _t.Integer | None) -> None: ...
+    def iterations(self, value: _t.Integer | None) -> None:
+        """``iterations``: int; default "100"."""
 
     @property
     def ls_iterations(self) -> _builtins.int | None:
@@ -22362,7 +24065,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_iterations
         """
     @ls_iterations.setter
-    def ls_iterations(self, value: _t.Integer | None) -> None: ...
+    def ls_iterations(self, value: _t.Integer | None) -> None:
+        """``ls_iterations``: int; default "50"."""
 
     @property
     def noslip_iterations(self) -> _builtins.int | None:
@@ -22371,7 +24075,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_iterations
         """
     @noslip_iterations.setter
-    def noslip_iterations(self, value: _t.Integer | None) -> None: ...
+    def noslip_iterations(self, value: _t.Integer | None) -> None:
+        """``noslip_iterations``: int; no default (unset when absent)."""
 
     @property
     def ccd_iterations(self) -> _builtins.int | None:
@@ -22380,7 +24085,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_iterations
         """
     @ccd_iterations.setter
-    def ccd_iterations(self, value: _t.Integer | None) -> None: ...
+    def ccd_iterations(self, value: _t.Integer | None) -> None:
+        """``ccd_iterations``: int; default "35"."""
 
     @property
     def sdf_iterations(self) -> _builtins.int | None:
@@ -22389,7 +24095,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_iterations
         """
     @sdf_iterations.setter
-    def sdf_iterations(self, value: _t.Integer | None) -> None: ...
+    def sdf_iterations(self, value: _t.Integer | None) -> None:
+        """``sdf_iterations``: int; default "10"."""
 
     @property
     def sdf_initpoints(self) -> _builtins.int | None:
@@ -22398,7 +24105,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_initpoints
         """
     @sdf_initpoints.setter
-    def sdf_initpoints(self, value: _t.Integer | None) -> None: ...
+    def sdf_initpoints(self, value: _t.Integer | None) -> None:
+        """``sdf_initpoints``: int; default "40"."""
 
     @property
     def actuatorgroupdisable(self) -> _t.Int32Array | None:
@@ -22407,7 +24115,8 @@ class Option(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
         """
     @actuatorgroupdisable.setter
-    def actuatorgroupdisable(self, value: IntegersAny | None) -> None: ...
+    def actuatorgroupdisable(self, value: IntegersAny | None) -> None:
+        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent). Bits of disableactuator."""
 
     @property
     def flag(self) -> Flag:
@@ -22485,11 +24194,23 @@ class Option(_Typed):
     def add(self, tag: Literal["flag"], /, **kwargs: Unpack[FlagAttributes]) -> Flag: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <option> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["flag"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <option> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["flag"], /, position: _builtins.int, **kwargs: Unpack[FlagAttributes]) -> Flag: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <option> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["flag"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <option> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -22541,7 +24262,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -22550,7 +24272,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -22559,7 +24282,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -22568,7 +24292,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -22577,7 +24302,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -22586,7 +24312,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -22595,7 +24322,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -22604,7 +24332,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -22613,7 +24342,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -22622,7 +24352,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -22631,7 +24362,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -22640,7 +24372,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -22649,7 +24382,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -22658,7 +24392,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -22667,7 +24402,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -22676,7 +24412,8 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def input(self) -> tuple[Inputbit, ...] | InputbitAlone | None:
@@ -22685,14 +24422,16 @@ class Orientation(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
         """
     @input.setter
-    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None: ...
+    def input(self, value: Inputbit | Collection[Inputbit] | InputbitAlone | None) -> None:
+        """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22742,7 +24481,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``pair``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -22751,7 +24491,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -22760,7 +24501,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -22769,7 +24511,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def condim(self) -> _builtins.int | None:
@@ -22778,7 +24521,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
         """
     @condim.setter
-    def condim(self, value: _t.Integer | None) -> None: ...
+    def condim(self, value: _t.Integer | None) -> None:
+        """``condim``: int; default "3"."""
 
     @property
     def friction(self) -> _t.Float64Array | None:
@@ -22787,7 +24531,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
         """
     @friction.setter
-    def friction(self, value: Reals1To5 | None) -> None: ...
+    def friction(self, value: Reals1To5 | None) -> None:
+        """``friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -22796,7 +24541,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -22805,7 +24551,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent)."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -22814,7 +24561,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def gap(self) -> _builtins.float | None:
@@ -22823,7 +24571,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
         """
     @gap.setter
-    def gap(self, value: _t.Real | None) -> None: ...
+    def gap(self, value: _t.Real | None) -> None:
+        """``gap``: double; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -22832,7 +24581,8 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def adhesion(self) -> _builtins.float | None:
@@ -22841,14 +24591,16 @@ class Pair(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
         """
     @adhesion.setter
-    def adhesion(self, value: _t.Real | None) -> None: ...
+    def adhesion(self, value: _t.Real | None) -> None:
+        """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22889,7 +24641,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -22898,7 +24651,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -22907,7 +24661,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -22916,7 +24671,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -22925,7 +24681,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -22934,7 +24691,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -22943,7 +24701,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -22952,7 +24711,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -22961,7 +24721,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -22970,7 +24731,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def posrange(self) -> _t.Float64Array | None:
@@ -22979,7 +24741,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
         """
     @posrange.setter
-    def posrange(self, value: Reals2 | None) -> None: ...
+    def posrange(self, value: Reals2 | None) -> None:
+        """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range."""
 
     @property
     def velrange(self) -> _t.Float64Array | None:
@@ -22988,7 +24751,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
         """
     @velrange.setter
-    def velrange(self, value: Reals2 | None) -> None: ...
+    def velrange(self, value: Reals2 | None) -> None:
+        """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ffrange(self) -> _t.Float64Array | None:
@@ -22997,7 +24761,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
         """
     @ffrange.setter
-    def ffrange(self, value: Reals2 | None) -> None: ...
+    def ffrange(self, value: Reals2 | None) -> None:
+        """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -23006,7 +24771,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -23015,7 +24781,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -23024,7 +24791,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -23033,7 +24801,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -23042,7 +24811,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -23051,7 +24821,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -23060,7 +24831,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -23069,7 +24841,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -23078,7 +24851,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -23087,7 +24861,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -23096,7 +24871,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -23105,7 +24881,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -23114,7 +24891,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -23123,7 +24901,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -23132,7 +24911,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -23141,7 +24921,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -23150,7 +24931,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ki(self) -> _builtins.float | None:
@@ -23159,7 +24941,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
         """
     @ki.setter
-    def ki(self, value: _t.Real | None) -> None: ...
+    def ki(self, value: _t.Real | None) -> None:
+        """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def imax(self) -> _builtins.float | None:
@@ -23168,7 +24951,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
         """
     @imax.setter
-    def imax(self, value: _t.Real | None) -> None: ...
+    def imax(self, value: _t.Real | None) -> None:
+        """``imax``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def slewmax(self) -> _builtins.float | None:
@@ -23177,7 +24961,8 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
         """
     @slewmax.setter
-    def slewmax(self, value: _t.Real | None) -> None: ...
+    def slewmax(self, value: _t.Real | None) -> None:
+        """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def input(self) -> tuple[PidInput, ...] | PidInputAlone | None:
@@ -23186,14 +24971,16 @@ class Pid(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
         """
     @input.setter
-    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None: ...
+    def input(self, value: PidInput | Collection[PidInput] | PidInputAlone | None) -> None:
+        """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23249,7 +25036,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-id
         """
     @id.setter
-    def id(self, value: RealsAny | None) -> None: ...
+    def id(self, value: RealsAny | None) -> None:
+        """``id``: double[] (any length); no default (unset when absent)."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -23258,7 +25046,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-range
         """
     @range.setter
-    def range(self, value: RealsAny | None) -> None: ...
+    def range(self, value: RealsAny | None) -> None:
+        """``range``: double[] (any length); no default (unset when absent)."""
 
     @property
     def grid(self) -> _t.Float64Array | None:
@@ -23267,7 +25056,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-grid
         """
     @grid.setter
-    def grid(self, value: RealsAny | None) -> None: ...
+    def grid(self, value: RealsAny | None) -> None:
+        """``grid``: double[] (any length); no default (unset when absent)."""
 
     @property
     def gridrange(self) -> _t.Float64Array | None:
@@ -23276,7 +25066,8 @@ class Pin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-gridrange
         """
     @gridrange.setter
-    def gridrange(self, value: RealsAny | None) -> None: ...
+    def gridrange(self, value: RealsAny | None) -> None:
+        """``gridrange``: double[] (any length); no default (unset when absent)."""
 
     def resolve(self, name: Literal["id", "range", "grid", "gridrange"]) -> _t.Float64Array | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -23298,7 +25089,8 @@ class Plugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; no default (unset when absent)."""
 
     @property
     def instance(self) -> _builtins.str | Instance | None:
@@ -23307,7 +25099,8 @@ class Plugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-instance
         """
     @instance.setter
-    def instance(self, value: _builtins.str | Instance | None) -> None: ...
+    def instance(self, value: _builtins.str | Instance | None) -> None:
+        """``instance``: reference to namespace ``instance``; no default (unset when absent)."""
 
     @property
     def config(self) -> _List[Config]:
@@ -23331,11 +25124,23 @@ class Plugin(_Typed):
     def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["config"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -23363,7 +25168,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -23372,7 +25178,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -23381,7 +25188,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -23390,7 +25198,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -23399,7 +25208,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -23408,7 +25218,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -23417,7 +25228,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -23426,7 +25238,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -23435,7 +25248,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -23444,7 +25258,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def inheritrange(self) -> _builtins.float | None:
@@ -23453,7 +25268,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
         """
     @inheritrange.setter
-    def inheritrange(self, value: _t.Real | None) -> None: ...
+    def inheritrange(self, value: _t.Real | None) -> None:
+        """``inheritrange``: double; no default (unset when absent)."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -23462,7 +25278,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -23471,7 +25288,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -23480,7 +25298,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -23489,7 +25308,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -23498,7 +25318,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -23507,7 +25328,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -23516,7 +25338,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -23525,7 +25348,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -23534,7 +25358,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -23543,7 +25368,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -23552,7 +25378,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -23561,7 +25388,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -23570,7 +25398,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kp(self) -> _builtins.float | None:
@@ -23579,7 +25408,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
         """
     @kp.setter
-    def kp(self, value: _t.Real | None) -> None: ...
+    def kp(self, value: _t.Real | None) -> None:
+        """``kp``: double; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -23588,7 +25418,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
@@ -23597,7 +25428,8 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
     @dampratio.setter
-    def dampratio(self, value: _t.Real | None) -> None: ...
+    def dampratio(self, value: _t.Real | None) -> None:
+        """``dampratio``: double; no default (unset when absent)."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -23606,14 +25438,16 @@ class Position(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
         """
     @timeconst.setter
-    def timeconst(self, value: _t.Real | None) -> None: ...
+    def timeconst(self, value: _t.Real | None) -> None:
+        """``timeconst``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23666,7 +25500,8 @@ class Pulley(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
         """
     @divisor.setter
-    def divisor(self, value: _t.Real | None) -> None: ...
+    def divisor(self, value: _t.Real | None) -> None:
+        """``divisor``: double; no default (unset when absent)."""
 
     def resolve(self, name: Literal["divisor"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -23688,7 +25523,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-shadowsize
         """
     @shadowsize.setter
-    def shadowsize(self, value: _t.Integer | None) -> None: ...
+    def shadowsize(self, value: _t.Integer | None) -> None:
+        """``shadowsize``: int; default "4096"."""
 
     @property
     def offsamples(self) -> _builtins.int | None:
@@ -23697,7 +25533,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-offsamples
         """
     @offsamples.setter
-    def offsamples(self, value: _t.Integer | None) -> None: ...
+    def offsamples(self, value: _t.Integer | None) -> None:
+        """``offsamples``: int; default "4"."""
 
     @property
     def numslices(self) -> _builtins.int | None:
@@ -23706,7 +25543,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numslices
         """
     @numslices.setter
-    def numslices(self, value: _t.Integer | None) -> None: ...
+    def numslices(self, value: _t.Integer | None) -> None:
+        """``numslices``: int; default "28"."""
 
     @property
     def numstacks(self) -> _builtins.int | None:
@@ -23715,7 +25553,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numstacks
         """
     @numstacks.setter
-    def numstacks(self, value: _t.Integer | None) -> None: ...
+    def numstacks(self, value: _t.Integer | None) -> None:
+        """``numstacks``: int; default "16"."""
 
     @property
     def numquads(self) -> _builtins.int | None:
@@ -23724,7 +25563,8 @@ class Quality(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numquads
         """
     @numquads.setter
-    def numquads(self, value: _t.Integer | None) -> None: ...
+    def numquads(self, value: _t.Integer | None) -> None:
+        """``numquads``: int; default "4"."""
 
     def resolve(self, name: Literal["shadowsize", "offsamples", "numslices", "numstacks", "numquads"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -23746,7 +25586,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -23755,7 +25596,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -23764,7 +25606,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -23773,7 +25616,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -23782,7 +25626,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -23791,7 +25636,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -23800,7 +25646,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -23809,7 +25656,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -23818,7 +25666,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def camera(self) -> _builtins.str | Camera | None:
@@ -23827,7 +25676,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-camera
         """
     @camera.setter
-    def camera(self, value: _builtins.str | Camera | None) -> None: ...
+    def camera(self, value: _builtins.str | Camera | None) -> None:
+        """``camera``: reference to namespace ``camera``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def data(self) -> tuple[RayData, ...] | None:
@@ -23836,7 +25686,8 @@ class Rangefinder(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
         """
     @data.setter
-    def data(self, value: RayData | Collection[RayData] | None) -> None: ...
+    def data(self, value: RayData | Collection[RayData] | None) -> None:
+        """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23880,7 +25731,8 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-count
         """
     @count.setter
-    def count(self, value: _t.Integer | None) -> None: ...
+    def count(self, value: _t.Integer | None) -> None:
+        """``count``: int; required."""
 
     @property
     def offset(self) -> _t.Float64Array | None:
@@ -23889,7 +25741,8 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-offset
         """
     @offset.setter
-    def offset(self, value: Reals3 | None) -> None: ...
+    def offset(self, value: Reals3 | None) -> None:
+        """``offset``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -23898,7 +25751,8 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def sep(self) -> _builtins.str | None:
@@ -23907,28 +25761,32 @@ class Replicate(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-sep
         """
     @sep.setter
-    def sep(self, value: _builtins.str | None) -> None: ...
+    def sep(self, value: _builtins.str | None) -> None:
+        """``sep``: string; no default (unset when absent)."""
 
     @property
     def childclass(self) -> _builtins.str | Default | None:
         """``childclass``: reference to namespace ``default``; no default (unset when absent).
         """
     @childclass.setter
-    def childclass(self, value: _builtins.str | Default | None) -> None: ...
+    def childclass(self, value: _builtins.str | Default | None) -> None:
+        """``childclass``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
         """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the replicated children that name none (childclass takes precedence).
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the replicated children that name none (childclass takes precedence)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def body(self) -> _List[Body]:
@@ -24466,6 +26324,12 @@ class Replicate(_Typed, _Attachable):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <replicate> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["attach", "body", "camera", "frame", "geom", "inertial", "joint", "light", "plugin", "replicate", "site"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <replicate> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -24502,6 +26366,12 @@ class Replicate(_Typed, _Attachable):
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[PluginAttributes]) -> Plugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <replicate> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["attach", "body", "camera", "frame", "geom", "inertial", "joint", "light", "plugin", "replicate", "site"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <replicate> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     @overload
@@ -24534,7 +26404,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-fog
         """
     @fog.setter
-    def fog(self, value: Reals4 | None) -> None: ...
+    def fog(self, value: Reals4 | None) -> None:
+        """``fog``: float[4]; default "0 0 0 1"."""
 
     @property
     def haze(self) -> _t.Float32Array | None:
@@ -24543,7 +26414,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-haze
         """
     @haze.setter
-    def haze(self, value: Reals4 | None) -> None: ...
+    def haze(self, value: Reals4 | None) -> None:
+        """``haze``: float[4]; default "1 1 1 1"."""
 
     @property
     def force(self) -> _t.Float32Array | None:
@@ -24552,7 +26424,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-force
         """
     @force.setter
-    def force(self, value: Reals4 | None) -> None: ...
+    def force(self, value: Reals4 | None) -> None:
+        """``force``: float[4]; default "1 0.5 0.5 1"."""
 
     @property
     def inertia(self) -> _t.Float32Array | None:
@@ -24561,7 +26434,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-inertia
         """
     @inertia.setter
-    def inertia(self, value: Reals4 | None) -> None: ...
+    def inertia(self, value: Reals4 | None) -> None:
+        """``inertia``: float[4]; default "0.8 0.2 0.2 0.6"."""
 
     @property
     def joint(self) -> _t.Float32Array | None:
@@ -24570,7 +26444,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-joint
         """
     @joint.setter
-    def joint(self, value: Reals4 | None) -> None: ...
+    def joint(self, value: Reals4 | None) -> None:
+        """``joint``: float[4]; default "0.2 0.6 0.8 1"."""
 
     @property
     def actuator(self) -> _t.Float32Array | None:
@@ -24579,7 +26454,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuator
         """
     @actuator.setter
-    def actuator(self, value: Reals4 | None) -> None: ...
+    def actuator(self, value: Reals4 | None) -> None:
+        """``actuator``: float[4]; default "0.2 0.25 0.2 1"."""
 
     @property
     def actuatornegative(self) -> _t.Float32Array | None:
@@ -24588,7 +26464,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatornegative
         """
     @actuatornegative.setter
-    def actuatornegative(self, value: Reals4 | None) -> None: ...
+    def actuatornegative(self, value: Reals4 | None) -> None:
+        """``actuatornegative``: float[4]; default "0.2 0.6 0.9 1"."""
 
     @property
     def actuatorpositive(self) -> _t.Float32Array | None:
@@ -24597,7 +26474,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatorpositive
         """
     @actuatorpositive.setter
-    def actuatorpositive(self, value: Reals4 | None) -> None: ...
+    def actuatorpositive(self, value: Reals4 | None) -> None:
+        """``actuatorpositive``: float[4]; default "0.9 0.4 0.2 1"."""
 
     @property
     def com(self) -> _t.Float32Array | None:
@@ -24606,7 +26484,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-com
         """
     @com.setter
-    def com(self, value: Reals4 | None) -> None: ...
+    def com(self, value: Reals4 | None) -> None:
+        """``com``: float[4]; default "0.9 0.9 0.9 1"."""
 
     @property
     def camera(self) -> _t.Float32Array | None:
@@ -24615,7 +26494,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-camera
         """
     @camera.setter
-    def camera(self, value: Reals4 | None) -> None: ...
+    def camera(self, value: Reals4 | None) -> None:
+        """``camera``: float[4]; default "0.6 0.9 0.6 1"."""
 
     @property
     def light(self) -> _t.Float32Array | None:
@@ -24624,7 +26504,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-light
         """
     @light.setter
-    def light(self, value: Reals4 | None) -> None: ...
+    def light(self, value: Reals4 | None) -> None:
+        """``light``: float[4]; default "0.6 0.6 0.9 1"."""
 
     @property
     def selectpoint(self) -> _t.Float32Array | None:
@@ -24633,7 +26514,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-selectpoint
         """
     @selectpoint.setter
-    def selectpoint(self, value: Reals4 | None) -> None: ...
+    def selectpoint(self, value: Reals4 | None) -> None:
+        """``selectpoint``: float[4]; default "0.9 0.9 0.1 1"."""
 
     @property
     def connect(self) -> _t.Float32Array | None:
@@ -24642,7 +26524,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-connect
         """
     @connect.setter
-    def connect(self, value: Reals4 | None) -> None: ...
+    def connect(self, value: Reals4 | None) -> None:
+        """``connect``: float[4]; default "0.2 0.2 0.8 1"."""
 
     @property
     def contactpoint(self) -> _t.Float32Array | None:
@@ -24651,7 +26534,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactpoint
         """
     @contactpoint.setter
-    def contactpoint(self, value: Reals4 | None) -> None: ...
+    def contactpoint(self, value: Reals4 | None) -> None:
+        """``contactpoint``: float[4]; default "0.9 0.6 0.2 1"."""
 
     @property
     def contactforce(self) -> _t.Float32Array | None:
@@ -24660,7 +26544,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactforce
         """
     @contactforce.setter
-    def contactforce(self, value: Reals4 | None) -> None: ...
+    def contactforce(self, value: Reals4 | None) -> None:
+        """``contactforce``: float[4]; default "0.7 0.9 0.9 1"."""
 
     @property
     def contactfriction(self) -> _t.Float32Array | None:
@@ -24669,7 +26554,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactfriction
         """
     @contactfriction.setter
-    def contactfriction(self, value: Reals4 | None) -> None: ...
+    def contactfriction(self, value: Reals4 | None) -> None:
+        """``contactfriction``: float[4]; default "0.9 0.8 0.4 1"."""
 
     @property
     def contacttorque(self) -> _t.Float32Array | None:
@@ -24678,7 +26564,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contacttorque
         """
     @contacttorque.setter
-    def contacttorque(self, value: Reals4 | None) -> None: ...
+    def contacttorque(self, value: Reals4 | None) -> None:
+        """``contacttorque``: float[4]; default "0.9 0.7 0.9 1"."""
 
     @property
     def contactgap(self) -> _t.Float32Array | None:
@@ -24687,7 +26574,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactgap
         """
     @contactgap.setter
-    def contactgap(self, value: Reals4 | None) -> None: ...
+    def contactgap(self, value: Reals4 | None) -> None:
+        """``contactgap``: float[4]; default "0.5 0.8 0.9 1"."""
 
     @property
     def rangefinder(self) -> _t.Float32Array | None:
@@ -24696,7 +26584,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-rangefinder
         """
     @rangefinder.setter
-    def rangefinder(self, value: Reals4 | None) -> None: ...
+    def rangefinder(self, value: Reals4 | None) -> None:
+        """``rangefinder``: float[4]; default "1 1 0.1 1"."""
 
     @property
     def constraint(self) -> _t.Float32Array | None:
@@ -24705,7 +26594,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-constraint
         """
     @constraint.setter
-    def constraint(self, value: Reals4 | None) -> None: ...
+    def constraint(self, value: Reals4 | None) -> None:
+        """``constraint``: float[4]; default "0.9 0 0 1"."""
 
     @property
     def slidercrank(self) -> _t.Float32Array | None:
@@ -24714,7 +26604,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-slidercrank
         """
     @slidercrank.setter
-    def slidercrank(self, value: Reals4 | None) -> None: ...
+    def slidercrank(self, value: Reals4 | None) -> None:
+        """``slidercrank``: float[4]; default "0.5 0.3 0.8 1"."""
 
     @property
     def crankbroken(self) -> _t.Float32Array | None:
@@ -24723,7 +26614,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-crankbroken
         """
     @crankbroken.setter
-    def crankbroken(self, value: Reals4 | None) -> None: ...
+    def crankbroken(self, value: Reals4 | None) -> None:
+        """``crankbroken``: float[4]; default "0.9 0 0 1"."""
 
     @property
     def frustum(self) -> _t.Float32Array | None:
@@ -24732,7 +26624,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-frustum
         """
     @frustum.setter
-    def frustum(self, value: Reals4 | None) -> None: ...
+    def frustum(self, value: Reals4 | None) -> None:
+        """``frustum``: float[4]; default "1 1 0 0.2"."""
 
     @property
     def bv(self) -> _t.Float32Array | None:
@@ -24741,7 +26634,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bv
         """
     @bv.setter
-    def bv(self, value: Reals4 | None) -> None: ...
+    def bv(self, value: Reals4 | None) -> None:
+        """``bv``: float[4]; default "0 1 0 0.5"."""
 
     @property
     def bvactive(self) -> _t.Float32Array | None:
@@ -24750,7 +26644,8 @@ class Rgba(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bvactive
         """
     @bvactive.setter
-    def bvactive(self, value: Reals4 | None) -> None: ...
+    def bvactive(self, value: Reals4 | None) -> None:
+        """``bvactive``: float[4]; default "1 0 0 0.5"."""
 
     def resolve(self, name: Literal["fog", "haze", "force", "inertia", "joint", "actuator", "actuatornegative", "actuatorpositive", "com", "camera", "light", "selectpoint", "connect", "contactpoint", "contactforce", "contactfriction", "contacttorque", "contactgap", "rangefinder", "constraint", "slidercrank", "crankbroken", "frustum", "bv", "bvactive"]) -> _t.Float32Array:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -24772,7 +26667,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-forcewidth
         """
     @forcewidth.setter
-    def forcewidth(self, value: _t.Real | None) -> None: ...
+    def forcewidth(self, value: _t.Real | None) -> None:
+        """``forcewidth``: float; default "0.1"."""
 
     @property
     def contactwidth(self) -> _builtins.float | None:
@@ -24781,7 +26677,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactwidth
         """
     @contactwidth.setter
-    def contactwidth(self, value: _t.Real | None) -> None: ...
+    def contactwidth(self, value: _t.Real | None) -> None:
+        """``contactwidth``: float; default "0.3"."""
 
     @property
     def contactheight(self) -> _builtins.float | None:
@@ -24790,7 +26687,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactheight
         """
     @contactheight.setter
-    def contactheight(self, value: _t.Real | None) -> None: ...
+    def contactheight(self, value: _t.Real | None) -> None:
+        """``contactheight``: float; default "0.1"."""
 
     @property
     def connect(self) -> _builtins.float | None:
@@ -24799,7 +26697,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-connect
         """
     @connect.setter
-    def connect(self, value: _t.Real | None) -> None: ...
+    def connect(self, value: _t.Real | None) -> None:
+        """``connect``: float; default "0.2"."""
 
     @property
     def com(self) -> _builtins.float | None:
@@ -24808,7 +26707,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-com
         """
     @com.setter
-    def com(self, value: _t.Real | None) -> None: ...
+    def com(self, value: _t.Real | None) -> None:
+        """``com``: float; default "0.4"."""
 
     @property
     def camera(self) -> _builtins.float | None:
@@ -24817,7 +26717,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-camera
         """
     @camera.setter
-    def camera(self, value: _t.Real | None) -> None: ...
+    def camera(self, value: _t.Real | None) -> None:
+        """``camera``: float; default "0.3"."""
 
     @property
     def light(self) -> _builtins.float | None:
@@ -24826,7 +26727,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-light
         """
     @light.setter
-    def light(self, value: _t.Real | None) -> None: ...
+    def light(self, value: _t.Real | None) -> None:
+        """``light``: float; default "0.3"."""
 
     @property
     def selectpoint(self) -> _builtins.float | None:
@@ -24835,7 +26737,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-selectpoint
         """
     @selectpoint.setter
-    def selectpoint(self, value: _t.Real | None) -> None: ...
+    def selectpoint(self, value: _t.Real | None) -> None:
+        """``selectpoint``: float; default "0.2"."""
 
     @property
     def jointlength(self) -> _builtins.float | None:
@@ -24844,7 +26747,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointlength
         """
     @jointlength.setter
-    def jointlength(self, value: _t.Real | None) -> None: ...
+    def jointlength(self, value: _t.Real | None) -> None:
+        """``jointlength``: float; default "1"."""
 
     @property
     def jointwidth(self) -> _builtins.float | None:
@@ -24853,7 +26757,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointwidth
         """
     @jointwidth.setter
-    def jointwidth(self, value: _t.Real | None) -> None: ...
+    def jointwidth(self, value: _t.Real | None) -> None:
+        """``jointwidth``: float; default "0.1"."""
 
     @property
     def actuatorlength(self) -> _builtins.float | None:
@@ -24862,7 +26767,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorlength
         """
     @actuatorlength.setter
-    def actuatorlength(self, value: _t.Real | None) -> None: ...
+    def actuatorlength(self, value: _t.Real | None) -> None:
+        """``actuatorlength``: float; default "0.7"."""
 
     @property
     def actuatorwidth(self) -> _builtins.float | None:
@@ -24871,7 +26777,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorwidth
         """
     @actuatorwidth.setter
-    def actuatorwidth(self, value: _t.Real | None) -> None: ...
+    def actuatorwidth(self, value: _t.Real | None) -> None:
+        """``actuatorwidth``: float; default "0.2"."""
 
     @property
     def framelength(self) -> _builtins.float | None:
@@ -24880,7 +26787,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framelength
         """
     @framelength.setter
-    def framelength(self, value: _t.Real | None) -> None: ...
+    def framelength(self, value: _t.Real | None) -> None:
+        """``framelength``: float; default "1"."""
 
     @property
     def framewidth(self) -> _builtins.float | None:
@@ -24889,7 +26797,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framewidth
         """
     @framewidth.setter
-    def framewidth(self, value: _t.Real | None) -> None: ...
+    def framewidth(self, value: _t.Real | None) -> None:
+        """``framewidth``: float; default "0.1"."""
 
     @property
     def constraint(self) -> _builtins.float | None:
@@ -24898,7 +26807,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-constraint
         """
     @constraint.setter
-    def constraint(self, value: _t.Real | None) -> None: ...
+    def constraint(self, value: _t.Real | None) -> None:
+        """``constraint``: float; default "0.1"."""
 
     @property
     def slidercrank(self) -> _builtins.float | None:
@@ -24907,7 +26817,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-slidercrank
         """
     @slidercrank.setter
-    def slidercrank(self, value: _t.Real | None) -> None: ...
+    def slidercrank(self, value: _t.Real | None) -> None:
+        """``slidercrank``: float; default "0.2"."""
 
     @property
     def frustum(self) -> _builtins.float | None:
@@ -24916,7 +26827,8 @@ class Scale(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-frustum
         """
     @frustum.setter
-    def frustum(self, value: _t.Real | None) -> None: ...
+    def frustum(self, value: _t.Real | None) -> None:
+        """``frustum``: float; default "10"."""
 
     def resolve(self, name: Literal["forcewidth", "contactwidth", "contactheight", "connect", "com", "camera", "light", "selectpoint", "jointlength", "jointwidth", "actuatorlength", "actuatorwidth", "framelength", "framewidth", "constraint", "slidercrank", "frustum"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -26735,6 +28647,12 @@ class Sensor(_Typed):
     def add(self, tag: Literal["plugin"], /, **kwargs: Unpack[SensorPluginAttributes]) -> SensorPlugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <sensor> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["accelerometer", "actuatorfrc", "actuatorpos", "actuatorvel", "ballangvel", "ballquat", "camprojection", "clock", "contact", "distance", "e_kinetic", "e_potential", "force", "frameangacc", "frameangvel", "framelinacc", "framelinvel", "framepos", "framequat", "framexaxis", "frameyaxis", "framezaxis", "fromto", "gyro", "insidesite", "jointactuatorfrc", "jointlimitfrc", "jointlimitpos", "jointlimitvel", "jointpos", "jointvel", "magnetometer", "normal", "plugin", "rangefinder", "subtreeangmom", "subtreecom", "subtreelinvel", "tactile", "tendonactuatorfrc", "tendonlimitfrc", "tendonlimitpos", "tendonlimitvel", "tendonpos", "tendonvel", "torque", "touch", "user", "velocimeter"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <sensor> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -26885,6 +28803,12 @@ class Sensor(_Typed):
     def insert(self, tag: Literal["plugin"], /, position: _builtins.int, **kwargs: Unpack[SensorPluginAttributes]) -> SensorPlugin: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <sensor> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["accelerometer", "actuatorfrc", "actuatorpos", "actuatorvel", "ballangvel", "ballquat", "camprojection", "clock", "contact", "distance", "e_kinetic", "e_potential", "force", "frameangacc", "frameangvel", "framelinacc", "framelinvel", "framepos", "framequat", "framexaxis", "frameyaxis", "framezaxis", "fromto", "gyro", "insidesite", "jointactuatorfrc", "jointlimitfrc", "jointlimitpos", "jointlimitvel", "jointpos", "jointvel", "magnetometer", "normal", "plugin", "rangefinder", "subtreeangmom", "subtreecom", "subtreelinvel", "tactile", "tendonactuatorfrc", "tendonlimitfrc", "tendonlimitpos", "tendonlimitvel", "tendonpos", "tendonvel", "torque", "touch", "user", "velocimeter"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <sensor> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
 
@@ -26903,7 +28827,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -26912,7 +28837,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -26921,7 +28847,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -26930,7 +28857,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -26939,7 +28867,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -26948,7 +28877,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -26957,7 +28887,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -26966,7 +28897,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def geom1(self) -> _builtins.str | Geom | None:
@@ -26975,7 +28907,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom1
         """
     @geom1.setter
-    def geom1(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom1(self, value: _builtins.str | Geom | None) -> None:
+        """``geom1``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def geom2(self) -> _builtins.str | Geom | None:
@@ -26984,7 +28917,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom2
         """
     @geom2.setter
-    def geom2(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom2(self, value: _builtins.str | Geom | None) -> None:
+        """``geom2``: reference to namespace ``geom``; no default (unset when absent)."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -26993,7 +28927,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -27002,7 +28937,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def subtree1(self) -> _builtins.str | Body | None:
@@ -27011,7 +28947,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree1
         """
     @subtree1.setter
-    def subtree1(self, value: _builtins.str | Body | None) -> None: ...
+    def subtree1(self, value: _builtins.str | Body | None) -> None:
+        """``subtree1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def subtree2(self) -> _builtins.str | Body | None:
@@ -27020,7 +28957,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree2
         """
     @subtree2.setter
-    def subtree2(self, value: _builtins.str | Body | None) -> None: ...
+    def subtree2(self, value: _builtins.str | Body | None) -> None:
+        """``subtree2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -27029,7 +28967,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def num(self) -> _builtins.int | None:
@@ -27038,7 +28977,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
         """
     @num.setter
-    def num(self, value: _t.Integer | None) -> None: ...
+    def num(self, value: _t.Integer | None) -> None:
+        """``num``: int; no default (unset when absent)."""
 
     @property
     def data(self) -> tuple[ConData, ...] | None:
@@ -27047,7 +28987,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
         """
     @data.setter
-    def data(self, value: ConData | Collection[ConData] | None) -> None: ...
+    def data(self, value: ConData | Collection[ConData] | None) -> None:
+        """``data``: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent)."""
 
     @property
     def reduce(self) -> Reduce | None:
@@ -27056,7 +28997,8 @@ class SensorContact(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
         """
     @reduce.setter
-    def reduce(self, value: Reduce | None) -> None: ...
+    def reduce(self, value: Reduce | None) -> None:
+        """``reduce``: one of: none, mindist, maxforce, netforce; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -27106,7 +29048,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def plugin(self) -> _builtins.str | None:
@@ -27115,7 +29058,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-plugin
         """
     @plugin.setter
-    def plugin(self, value: _builtins.str | None) -> None: ...
+    def plugin(self, value: _builtins.str | None) -> None:
+        """``plugin``: string; no default (unset when absent)."""
 
     @property
     def instance(self) -> _builtins.str | Instance | None:
@@ -27124,7 +29068,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-instance
         """
     @instance.setter
-    def instance(self, value: _builtins.str | Instance | None) -> None: ...
+    def instance(self, value: _builtins.str | Instance | None) -> None:
+        """``instance``: reference to namespace ``instance``; no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -27133,7 +29078,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def objtype(self) -> _builtins.str | None:
@@ -27142,7 +29088,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objtype
         """
     @objtype.setter
-    def objtype(self, value: _builtins.str | None) -> None: ...
+    def objtype(self, value: _builtins.str | None) -> None:
+        """``objtype``: string; no default (unset when absent)."""
 
     @property
     def objname(self) -> AnyTarget | None:
@@ -27151,7 +29098,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objname
         """
     @objname.setter
-    def objname(self, value: AnyTarget | None) -> None: ...
+    def objname(self, value: AnyTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; no default (unset when absent)."""
 
     @property
     def reftype(self) -> _builtins.str | None:
@@ -27160,7 +29108,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-reftype
         """
     @reftype.setter
-    def reftype(self, value: _builtins.str | None) -> None: ...
+    def reftype(self, value: _builtins.str | None) -> None:
+        """``reftype``: string; no default (unset when absent)."""
 
     @property
     def refname(self) -> AnyTarget | None:
@@ -27169,7 +29118,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-refname
         """
     @refname.setter
-    def refname(self, value: AnyTarget | None) -> None: ...
+    def refname(self, value: AnyTarget | None) -> None:
+        """``refname``: reference to the element ``reftype`` names; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -27178,7 +29128,8 @@ class SensorPlugin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def config(self) -> _List[Config]:
@@ -27202,11 +29153,23 @@ class SensorPlugin(_Typed):
     def add(self, tag: Literal["config"], /, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["config"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: Unpack[ConfigAttributes]) -> Config: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <plugin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["config"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <plugin> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -27243,7 +29206,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``site``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -27252,7 +29216,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def type(self) -> SiteType | None:
@@ -27261,7 +29226,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
         """
     @type.setter
-    def type(self, value: SiteType | None) -> None: ...
+    def type(self, value: SiteType | None) -> None:
+        """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere"."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -27270,7 +29236,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def pos(self) -> _t.Float64Array | None:
@@ -27279,7 +29246,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
         """
     @pos.setter
-    def pos(self, value: Reals3 | None) -> None: ...
+    def pos(self, value: Reals3 | None) -> None:
+        """``pos``: double[3]; default "0 0 0"."""
 
     @property
     def quat(self) -> _t.Float64Array | None:
@@ -27288,7 +29256,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
         """
     @quat.setter
-    def quat(self, value: Reals4 | None) -> None: ...
+    def quat(self, value: Reals4 | None) -> None:
+        """``quat``: double[4]; default "1 0 0 0"."""
 
     @property
     def axisangle(self) -> _t.Float64Array | None:
@@ -27297,7 +29266,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
         """
     @axisangle.setter
-    def axisangle(self, value: Reals4 | None) -> None: ...
+    def axisangle(self, value: Reals4 | None) -> None:
+        """``axisangle``: double[4]; no default (unset when absent)."""
 
     @property
     def xyaxes(self) -> _t.Float64Array | None:
@@ -27306,7 +29276,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
         """
     @xyaxes.setter
-    def xyaxes(self, value: Reals6 | None) -> None: ...
+    def xyaxes(self, value: Reals6 | None) -> None:
+        """``xyaxes``: double[6]; no default (unset when absent)."""
 
     @property
     def zaxis(self) -> _t.Float64Array | None:
@@ -27315,7 +29286,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
         """
     @zaxis.setter
-    def zaxis(self, value: Reals3 | None) -> None: ...
+    def zaxis(self, value: Reals3 | None) -> None:
+        """``zaxis``: double[3]; no default (unset when absent)."""
 
     @property
     def euler(self) -> _t.Float64Array | None:
@@ -27324,7 +29296,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
         """
     @euler.setter
-    def euler(self, value: Reals3 | None) -> None: ...
+    def euler(self, value: Reals3 | None) -> None:
+        """``euler``: double[3]; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -27333,7 +29306,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -27342,7 +29316,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def size(self) -> _t.Float64Array | None:
@@ -27351,7 +29326,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
         """
     @size.setter
-    def size(self, value: Reals1To3 | None) -> None: ...
+    def size(self, value: Reals1To3 | None) -> None:
+        """``size``: double[1..3] (1 to 3 values); default "0.005 0.005 0.005"."""
 
     @property
     def fromto(self) -> _t.Float64Array | None:
@@ -27360,7 +29336,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
         """
     @fromto.setter
-    def fromto(self, value: Reals6 | None) -> None: ...
+    def fromto(self, value: Reals6 | None) -> None:
+        """``fromto``: double[6]; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -27369,7 +29346,8 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -27378,14 +29356,16 @@ class Site(_Typed, _Attachable):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -27432,7 +29412,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-memory
         """
     @memory.setter
-    def memory(self, value: _builtins.str | None) -> None: ...
+    def memory(self, value: _builtins.str | None) -> None:
+        """``memory``: string; no default (unset when absent)."""
 
     @property
     def njmax(self) -> _builtins.int | None:
@@ -27441,7 +29422,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-njmax
         """
     @njmax.setter
-    def njmax(self, value: _t.Integer | None) -> None: ...
+    def njmax(self, value: _t.Integer | None) -> None:
+        """``njmax``: int; default "-1"."""
 
     @property
     def nconmax(self) -> _builtins.int | None:
@@ -27450,7 +29432,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nconmax
         """
     @nconmax.setter
-    def nconmax(self, value: _t.Integer | None) -> None: ...
+    def nconmax(self, value: _t.Integer | None) -> None:
+        """``nconmax``: int; default "-1"."""
 
     @property
     def nstack(self) -> _builtins.int | None:
@@ -27459,7 +29442,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nstack
         """
     @nstack.setter
-    def nstack(self, value: _t.Integer | None) -> None: ...
+    def nstack(self, value: _t.Integer | None) -> None:
+        """``nstack``: int; default "-1"."""
 
     @property
     def nuserdata(self) -> _builtins.int | None:
@@ -27468,7 +29452,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuserdata
         """
     @nuserdata.setter
-    def nuserdata(self, value: _t.Integer | None) -> None: ...
+    def nuserdata(self, value: _t.Integer | None) -> None:
+        """``nuserdata``: int; no default (unset when absent)."""
 
     @property
     def nkey(self) -> _builtins.int | None:
@@ -27477,7 +29462,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nkey
         """
     @nkey.setter
-    def nkey(self, value: _t.Integer | None) -> None: ...
+    def nkey(self, value: _t.Integer | None) -> None:
+        """``nkey``: int; no default (unset when absent)."""
 
     @property
     def nuser_body(self) -> _builtins.int | None:
@@ -27486,7 +29472,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
         """
     @nuser_body.setter
-    def nuser_body(self, value: _t.Integer | None) -> None: ...
+    def nuser_body(self, value: _t.Integer | None) -> None:
+        """``nuser_body``: int; default "-1"."""
 
     @property
     def nuser_jnt(self) -> _builtins.int | None:
@@ -27495,7 +29482,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
         """
     @nuser_jnt.setter
-    def nuser_jnt(self, value: _t.Integer | None) -> None: ...
+    def nuser_jnt(self, value: _t.Integer | None) -> None:
+        """``nuser_jnt``: int; default "-1"."""
 
     @property
     def nuser_geom(self) -> _builtins.int | None:
@@ -27504,7 +29492,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
         """
     @nuser_geom.setter
-    def nuser_geom(self, value: _t.Integer | None) -> None: ...
+    def nuser_geom(self, value: _t.Integer | None) -> None:
+        """``nuser_geom``: int; default "-1"."""
 
     @property
     def nuser_site(self) -> _builtins.int | None:
@@ -27513,7 +29502,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
         """
     @nuser_site.setter
-    def nuser_site(self, value: _t.Integer | None) -> None: ...
+    def nuser_site(self, value: _t.Integer | None) -> None:
+        """``nuser_site``: int; default "-1"."""
 
     @property
     def nuser_cam(self) -> _builtins.int | None:
@@ -27522,7 +29512,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
         """
     @nuser_cam.setter
-    def nuser_cam(self, value: _t.Integer | None) -> None: ...
+    def nuser_cam(self, value: _t.Integer | None) -> None:
+        """``nuser_cam``: int; default "-1"."""
 
     @property
     def nuser_tendon(self) -> _builtins.int | None:
@@ -27531,7 +29522,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
         """
     @nuser_tendon.setter
-    def nuser_tendon(self, value: _t.Integer | None) -> None: ...
+    def nuser_tendon(self, value: _t.Integer | None) -> None:
+        """``nuser_tendon``: int; default "-1"."""
 
     @property
     def nuser_actuator(self) -> _builtins.int | None:
@@ -27540,7 +29532,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
         """
     @nuser_actuator.setter
-    def nuser_actuator(self, value: _t.Integer | None) -> None: ...
+    def nuser_actuator(self, value: _t.Integer | None) -> None:
+        """``nuser_actuator``: int; default "-1"."""
 
     @property
     def nuser_sensor(self) -> _builtins.int | None:
@@ -27549,7 +29542,8 @@ class Size(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
         """
     @nuser_sensor.setter
-    def nuser_sensor(self, value: _t.Integer | None) -> None: ...
+    def nuser_sensor(self, value: _t.Integer | None) -> None:
+        """``nuser_sensor``: int; default "-1"."""
 
     @overload
     def resolve(self, name: Literal["memory"]) -> _builtins.str | None:
@@ -27578,7 +29572,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``skin``; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -27587,7 +29582,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -27596,7 +29592,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -27605,7 +29602,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def inflate(self) -> _builtins.float | None:
@@ -27614,7 +29612,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-inflate
         """
     @inflate.setter
-    def inflate(self, value: _t.Real | None) -> None: ...
+    def inflate(self, value: _t.Real | None) -> None:
+        """``inflate``: float; no default (unset when absent)."""
 
     @property
     def vertex(self) -> _t.Float32Array | None:
@@ -27623,7 +29622,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-vertex
         """
     @vertex.setter
-    def vertex(self, value: RealsAny | None) -> None: ...
+    def vertex(self, value: RealsAny | None) -> None:
+        """``vertex``: float[] (any length); no default (unset when absent)."""
 
     @property
     def texcoord(self) -> _t.Float32Array | None:
@@ -27632,7 +29632,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-texcoord
         """
     @texcoord.setter
-    def texcoord(self, value: RealsAny | None) -> None: ...
+    def texcoord(self, value: RealsAny | None) -> None:
+        """``texcoord``: float[] (any length); no default (unset when absent)."""
 
     @property
     def face(self) -> _t.Int32Array | None:
@@ -27641,7 +29642,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-face
         """
     @face.setter
-    def face(self, value: IntegersAny | None) -> None: ...
+    def face(self, value: IntegersAny | None) -> None:
+        """``face``: int[] (any length); no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -27650,7 +29652,8 @@ class Skin(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def bone(self) -> _List[Bone]:
@@ -27680,11 +29683,23 @@ class Skin(_Typed):
     def add(self, tag: Literal["bone"], /, **kwargs: Unpack[BoneAttributes]) -> Bone: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <skin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["bone"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <skin> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["bone"], /, position: _builtins.int, **kwargs: Unpack[BoneAttributes]) -> Bone: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <skin> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["bone"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <skin> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -27730,7 +29745,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -27739,7 +29755,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -27748,7 +29765,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def limited(self) -> FalseTrueAuto | None:
@@ -27757,7 +29775,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-limited
         """
     @limited.setter
-    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def limited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``limited``: one of: false, true, auto; default "auto"."""
 
     @property
     def actuatorfrclimited(self) -> FalseTrueAuto | None:
@@ -27766,7 +29785,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrclimited
         """
     @actuatorfrclimited.setter
-    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def actuatorfrclimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``actuatorfrclimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -27775,7 +29795,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-range
         """
     @range.setter
-    def range(self, value: Reals2 | None) -> None: ...
+    def range(self, value: Reals2 | None) -> None:
+        """``range``: double[2]; no default (unset when absent)."""
 
     @property
     def actuatorfrcrange(self) -> _t.Float64Array | None:
@@ -27784,7 +29805,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrcrange
         """
     @actuatorfrcrange.setter
-    def actuatorfrcrange(self, value: Reals2 | None) -> None: ...
+    def actuatorfrcrange(self, value: Reals2 | None) -> None:
+        """``actuatorfrcrange``: double[2]; no default (unset when absent)."""
 
     @property
     def solreflimit(self) -> _t.Float64Array | None:
@@ -27793,7 +29815,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreflimit
         """
     @solreflimit.setter
-    def solreflimit(self, value: Reals1To2 | None) -> None: ...
+    def solreflimit(self, value: Reals1To2 | None) -> None:
+        """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimplimit(self) -> _t.Float64Array | None:
@@ -27802,7 +29825,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimplimit
         """
     @solimplimit.setter
-    def solimplimit(self, value: Reals1To5 | None) -> None: ...
+    def solimplimit(self, value: Reals1To5 | None) -> None:
+        """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def solreffriction(self) -> _t.Float64Array | None:
@@ -27811,7 +29835,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreffriction
         """
     @solreffriction.setter
-    def solreffriction(self, value: Reals1To2 | None) -> None: ...
+    def solreffriction(self, value: Reals1To2 | None) -> None:
+        """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimpfriction(self) -> _t.Float64Array | None:
@@ -27820,7 +29845,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimpfriction
         """
     @solimpfriction.setter
-    def solimpfriction(self, value: Reals1To5 | None) -> None: ...
+    def solimpfriction(self, value: Reals1To5 | None) -> None:
+        """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def frictionloss(self) -> _builtins.float | None:
@@ -27829,7 +29855,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-frictionloss
         """
     @frictionloss.setter
-    def frictionloss(self, value: _t.Real | None) -> None: ...
+    def frictionloss(self, value: _t.Real | None) -> None:
+        """``frictionloss``: double; no default (unset when absent)."""
 
     @property
     def springlength(self) -> _t.Float64Array | None:
@@ -27838,7 +29865,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springlength
         """
     @springlength.setter
-    def springlength(self, value: Reals1To2 | None) -> None: ...
+    def springlength(self, value: Reals1To2 | None) -> None:
+        """``springlength``: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both."""
 
     @property
     def width(self) -> _builtins.float | None:
@@ -27847,7 +29875,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-width
         """
     @width.setter
-    def width(self, value: _t.Real | None) -> None: ...
+    def width(self, value: _t.Real | None) -> None:
+        """``width``: double; default "0.003"."""
 
     @property
     def material(self) -> _builtins.str | Material | None:
@@ -27856,7 +29885,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None: ...
+    def material(self, value: _builtins.str | Material | None) -> None:
+        """``material``: reference to namespace ``material``; no default (unset when absent)."""
 
     @property
     def margin(self) -> _builtins.float | None:
@@ -27865,7 +29895,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-margin
         """
     @margin.setter
-    def margin(self, value: _t.Real | None) -> None: ...
+    def margin(self, value: _t.Real | None) -> None:
+        """``margin``: double; no default (unset when absent)."""
 
     @property
     def stiffness(self) -> _t.Float64Array | None:
@@ -27874,7 +29905,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-stiffness
         """
     @stiffness.setter
-    def stiffness(self, value: Reals1To3 | None) -> None: ...
+    def stiffness(self, value: Reals1To3 | None) -> None:
+        """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -27883,7 +29915,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -27892,7 +29925,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -27901,7 +29935,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-rgba
         """
     @rgba.setter
-    def rgba(self, value: Reals4 | None) -> None: ...
+    def rgba(self, value: Reals4 | None) -> None:
+        """``rgba``: float[4]; default "0.5 0.5 0.5 1"."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -27910,7 +29945,8 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def springyield(self) -> _builtins.float | None:
@@ -27919,14 +29955,16 @@ class Spatial(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springyield
         """
     @springyield.setter
-    def springyield(self, value: _t.Real | None) -> None: ...
+    def springyield(self, value: _t.Real | None) -> None:
+        """``springyield``: double; default "0"; in MuJoCo >= 4.0.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @property
     def site(self) -> _List[SpatialSite]:
@@ -27988,6 +30026,12 @@ class Spatial(_Typed):
     def add(self, tag: Literal["pulley"], /, **kwargs: Unpack[PulleyAttributes]) -> Pulley: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <spatial> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["geom", "pulley", "site"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <spatial> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -27999,6 +30043,12 @@ class Spatial(_Typed):
     @overload
     def insert(self, tag: Literal["pulley"], /, position: _builtins.int, **kwargs: Unpack[PulleyAttributes]) -> Pulley: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <spatial> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["geom", "pulley", "site"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <spatial> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -28050,7 +30100,8 @@ class SpatialGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-geom
         """
     @geom.setter
-    def geom(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom(self, value: _builtins.str | Geom | None) -> None:
+        """``geom``: reference to namespace ``geom``; required."""
 
     @property
     def sidesite(self) -> _builtins.str | Site | None:
@@ -28059,7 +30110,8 @@ class SpatialGeom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-sidesite
         """
     @sidesite.setter
-    def sidesite(self, value: _builtins.str | Site | None) -> None: ...
+    def sidesite(self, value: _builtins.str | Site | None) -> None:
+        """``sidesite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["geom"]) -> _builtins.str | Geom | None:
@@ -28085,7 +30137,8 @@ class SpatialSite(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -28107,7 +30160,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meaninertia
         """
     @meaninertia.setter
-    def meaninertia(self, value: _t.Real | None) -> None: ...
+    def meaninertia(self, value: _t.Real | None) -> None:
+        """``meaninertia``: double; no default (unset when absent)."""
 
     @property
     def meanmass(self) -> _builtins.float | None:
@@ -28116,7 +30170,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meanmass
         """
     @meanmass.setter
-    def meanmass(self, value: _t.Real | None) -> None: ...
+    def meanmass(self, value: _t.Real | None) -> None:
+        """``meanmass``: double; no default (unset when absent)."""
 
     @property
     def meansize(self) -> _builtins.float | None:
@@ -28125,7 +30180,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meansize
         """
     @meansize.setter
-    def meansize(self, value: _t.Real | None) -> None: ...
+    def meansize(self, value: _t.Real | None) -> None:
+        """``meansize``: double; no default (unset when absent)."""
 
     @property
     def extent(self) -> _builtins.float | None:
@@ -28134,7 +30190,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
         """
     @extent.setter
-    def extent(self, value: _t.Real | None) -> None: ...
+    def extent(self, value: _t.Real | None) -> None:
+        """``extent``: double; no default (unset when absent)."""
 
     @property
     def center(self) -> _t.Float64Array | None:
@@ -28143,7 +30200,8 @@ class Statistic(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-center
         """
     @center.setter
-    def center(self, value: Reals3 | None) -> None: ...
+    def center(self, value: Reals3 | None) -> None:
+        """``center``: double[3]; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["meaninertia", "meanmass", "meansize", "extent"]) -> _builtins.float | None:
@@ -28169,7 +30227,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28178,7 +30237,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28187,7 +30247,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28196,7 +30257,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28205,7 +30267,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28214,7 +30277,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28223,7 +30287,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28232,7 +30297,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -28241,7 +30307,8 @@ class Subtreeangmom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28279,7 +30346,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28288,7 +30356,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28297,7 +30366,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28306,7 +30376,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28315,7 +30386,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28324,7 +30396,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28333,7 +30406,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28342,7 +30416,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -28351,7 +30426,8 @@ class Subtreecom(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28389,7 +30465,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28398,7 +30475,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28407,7 +30485,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28416,7 +30495,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28425,7 +30505,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28434,7 +30515,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28443,7 +30525,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28452,7 +30535,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def body(self) -> _builtins.str | Body | None:
@@ -28461,7 +30545,8 @@ class Subtreelinvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-body
         """
     @body.setter
-    def body(self, value: _builtins.str | Body | None) -> None: ...
+    def body(self, value: _builtins.str | Body | None) -> None:
+        """``body``: reference to namespace ``body``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28499,7 +30584,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def geom(self) -> _builtins.str | Geom | None:
@@ -28508,7 +30594,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-geom
         """
     @geom.setter
-    def geom(self, value: _builtins.str | Geom | None) -> None: ...
+    def geom(self, value: _builtins.str | Geom | None) -> None:
+        """``geom``: reference to namespace ``geom``; required."""
 
     @property
     def mesh(self) -> _builtins.str | Mesh | None:
@@ -28517,7 +30604,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-mesh
         """
     @mesh.setter
-    def mesh(self, value: _builtins.str | Mesh | None) -> None: ...
+    def mesh(self, value: _builtins.str | Mesh | None) -> None:
+        """``mesh``: reference to namespace ``mesh``; required."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28526,7 +30614,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28535,7 +30624,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28544,7 +30634,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28553,7 +30644,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28562,7 +30654,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28571,7 +30664,8 @@ class Tactile(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28726,6 +30820,12 @@ class Tendon(_Typed):
     def add(self, tag: Literal["fixed"], /, **kwargs: Unpack[FixedAttributes]) -> Fixed: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <tendon> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["fixed", "spatial"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <tendon> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -28734,6 +30834,12 @@ class Tendon(_Typed):
     @overload
     def insert(self, tag: Literal["fixed"], /, position: _builtins.int, **kwargs: Unpack[FixedAttributes]) -> Fixed: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <tendon> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["fixed", "spatial"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <tendon> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -28753,7 +30859,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28762,7 +30869,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28771,7 +30879,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28780,7 +30889,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28789,7 +30899,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28798,7 +30909,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28807,7 +30919,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28816,7 +30929,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -28825,7 +30939,8 @@ class Tendonactuatorfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28863,7 +30978,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28872,7 +30988,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28881,7 +30998,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -28890,7 +31008,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -28899,7 +31018,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -28908,7 +31028,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -28917,7 +31038,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -28926,7 +31048,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -28935,7 +31058,8 @@ class Tendonlimitfrc(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -28973,7 +31097,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -28982,7 +31107,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -28991,7 +31117,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29000,7 +31127,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29009,7 +31137,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29018,7 +31147,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29027,7 +31157,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29036,7 +31167,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29045,7 +31177,8 @@ class Tendonlimitpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29083,7 +31216,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29092,7 +31226,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29101,7 +31236,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29110,7 +31246,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29119,7 +31256,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29128,7 +31266,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29137,7 +31276,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29146,7 +31286,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29155,7 +31296,8 @@ class Tendonlimitvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29193,7 +31335,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29202,7 +31345,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29211,7 +31355,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29220,7 +31365,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29229,7 +31375,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29238,7 +31385,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29247,7 +31395,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29256,7 +31405,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29265,7 +31415,8 @@ class Tendonpos(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29303,7 +31454,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29312,7 +31464,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29321,7 +31474,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29330,7 +31484,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29339,7 +31494,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29348,7 +31504,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29357,7 +31514,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29366,7 +31524,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -29375,7 +31534,8 @@ class Tendonvel(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29413,7 +31573,8 @@ class Text(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``text``; required."""
 
     @property
     def data(self) -> _builtins.str | None:
@@ -29422,7 +31583,8 @@ class Text(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
         """
     @data.setter
-    def data(self, value: _builtins.str | None) -> None: ...
+    def data(self, value: _builtins.str | None) -> None:
+        """``data``: string; no default (unset when absent)."""
 
     def resolve(self, name: Literal["name", "data"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -29444,7 +31606,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``texture``; no default (unset when absent)."""
 
     @property
     def type(self) -> TextureType | None:
@@ -29453,7 +31616,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
         """
     @type.setter
-    def type(self, value: TextureType | None) -> None: ...
+    def type(self, value: TextureType | None) -> None:
+        """``type``: one of: 2d, cube, skybox; default "cube"."""
 
     @property
     def colorspace(self) -> Colorspace | None:
@@ -29462,7 +31626,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
         """
     @colorspace.setter
-    def colorspace(self, value: Colorspace | None) -> None: ...
+    def colorspace(self, value: Colorspace | None) -> None:
+        """``colorspace``: one of: auto, linear, sRGB; default "auto"."""
 
     @property
     def content_type(self) -> _builtins.str | None:
@@ -29471,7 +31636,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-content_type
         """
     @content_type.setter
-    def content_type(self, value: _builtins.str | None) -> None: ...
+    def content_type(self, value: _builtins.str | None) -> None:
+        """``content_type``: string; no default (unset when absent)."""
 
     @property
     def file(self) -> _builtins.str | _t.Asset | None:
@@ -29480,7 +31646,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-file
         """
     @file.setter
-    def file(self, value: _t.FileLike | None) -> None: ...
+    def file(self, value: _t.FileLike | None) -> None:
+        """``file``: file; no default (unset when absent)."""
 
     @property
     def gridsize(self) -> _t.Int32Array | None:
@@ -29489,7 +31656,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
         """
     @gridsize.setter
-    def gridsize(self, value: Integers2 | None) -> None: ...
+    def gridsize(self, value: Integers2 | None) -> None:
+        """``gridsize``: int[2]; default "1 1"."""
 
     @property
     def gridlayout(self) -> _builtins.str | None:
@@ -29498,7 +31666,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
         """
     @gridlayout.setter
-    def gridlayout(self, value: _builtins.str | None) -> None: ...
+    def gridlayout(self, value: _builtins.str | None) -> None:
+        """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent). Length must equal the gridsize product."""
 
     @property
     def fileright(self) -> _builtins.str | _t.Asset | None:
@@ -29507,7 +31676,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileright
         """
     @fileright.setter
-    def fileright(self, value: _t.FileLike | None) -> None: ...
+    def fileright(self, value: _t.FileLike | None) -> None:
+        """``fileright``: file; no default (unset when absent)."""
 
     @property
     def fileleft(self) -> _builtins.str | _t.Asset | None:
@@ -29516,7 +31686,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileleft
         """
     @fileleft.setter
-    def fileleft(self, value: _t.FileLike | None) -> None: ...
+    def fileleft(self, value: _t.FileLike | None) -> None:
+        """``fileleft``: file; no default (unset when absent)."""
 
     @property
     def fileup(self) -> _builtins.str | _t.Asset | None:
@@ -29525,7 +31696,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileup
         """
     @fileup.setter
-    def fileup(self, value: _t.FileLike | None) -> None: ...
+    def fileup(self, value: _t.FileLike | None) -> None:
+        """``fileup``: file; no default (unset when absent)."""
 
     @property
     def filedown(self) -> _builtins.str | _t.Asset | None:
@@ -29534,7 +31706,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filedown
         """
     @filedown.setter
-    def filedown(self, value: _t.FileLike | None) -> None: ...
+    def filedown(self, value: _t.FileLike | None) -> None:
+        """``filedown``: file; no default (unset when absent)."""
 
     @property
     def filefront(self) -> _builtins.str | _t.Asset | None:
@@ -29543,7 +31716,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filefront
         """
     @filefront.setter
-    def filefront(self, value: _t.FileLike | None) -> None: ...
+    def filefront(self, value: _t.FileLike | None) -> None:
+        """``filefront``: file; no default (unset when absent)."""
 
     @property
     def fileback(self) -> _builtins.str | _t.Asset | None:
@@ -29552,7 +31726,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileback
         """
     @fileback.setter
-    def fileback(self, value: _t.FileLike | None) -> None: ...
+    def fileback(self, value: _t.FileLike | None) -> None:
+        """``fileback``: file; no default (unset when absent)."""
 
     @property
     def builtin(self) -> Builtin | None:
@@ -29561,7 +31736,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
         """
     @builtin.setter
-    def builtin(self, value: Builtin | None) -> None: ...
+    def builtin(self, value: Builtin | None) -> None:
+        """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent)."""
 
     @property
     def rgb1(self) -> _t.Float64Array | None:
@@ -29570,7 +31746,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
         """
     @rgb1.setter
-    def rgb1(self, value: Reals3 | None) -> None: ...
+    def rgb1(self, value: Reals3 | None) -> None:
+        """``rgb1``: double[3]; default "0.8 0.8 0.8"."""
 
     @property
     def rgb2(self) -> _t.Float64Array | None:
@@ -29579,7 +31756,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
         """
     @rgb2.setter
-    def rgb2(self, value: Reals3 | None) -> None: ...
+    def rgb2(self, value: Reals3 | None) -> None:
+        """``rgb2``: double[3]; default "0.5 0.5 0.5"."""
 
     @property
     def mark(self) -> Mark | None:
@@ -29588,7 +31766,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
         """
     @mark.setter
-    def mark(self, value: Mark | None) -> None: ...
+    def mark(self, value: Mark | None) -> None:
+        """``mark``: one of: none, edge, cross, random; no default (unset when absent)."""
 
     @property
     def markrgb(self) -> _t.Float64Array | None:
@@ -29597,7 +31776,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
         """
     @markrgb.setter
-    def markrgb(self, value: Reals3 | None) -> None: ...
+    def markrgb(self, value: Reals3 | None) -> None:
+        """``markrgb``: double[3]; no default (unset when absent)."""
 
     @property
     def random(self) -> _builtins.float | None:
@@ -29606,7 +31786,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
         """
     @random.setter
-    def random(self, value: _t.Real | None) -> None: ...
+    def random(self, value: _t.Real | None) -> None:
+        """``random``: double; default "0.01"."""
 
     @property
     def width(self) -> _builtins.int | None:
@@ -29615,7 +31796,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
         """
     @width.setter
-    def width(self, value: _t.Integer | None) -> None: ...
+    def width(self, value: _t.Integer | None) -> None:
+        """``width``: int; no default (unset when absent)."""
 
     @property
     def height(self) -> _builtins.int | None:
@@ -29624,7 +31806,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
         """
     @height.setter
-    def height(self, value: _t.Integer | None) -> None: ...
+    def height(self, value: _t.Integer | None) -> None:
+        """``height``: int; no default (unset when absent)."""
 
     @property
     def hflip(self) -> _builtins.bool | None:
@@ -29633,7 +31816,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
         """
     @hflip.setter
-    def hflip(self, value: _builtins.bool | None) -> None: ...
+    def hflip(self, value: _builtins.bool | None) -> None:
+        """``hflip``: bool; no default (unset when absent)."""
 
     @property
     def vflip(self) -> _builtins.bool | None:
@@ -29642,7 +31826,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
         """
     @vflip.setter
-    def vflip(self, value: _builtins.bool | None) -> None: ...
+    def vflip(self, value: _builtins.bool | None) -> None:
+        """``vflip``: bool; no default (unset when absent)."""
 
     @property
     def nchannel(self) -> _builtins.int | None:
@@ -29651,7 +31836,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
         """
     @nchannel.setter
-    def nchannel(self, value: _t.Integer | None) -> None: ...
+    def nchannel(self, value: _t.Integer | None) -> None:
+        """``nchannel``: int; default "3"."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -29660,7 +31846,8 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def embed(self) -> FalseTrueAuto | None:
@@ -29669,14 +31856,16 @@ class Texture(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
         """
     @embed.setter
-    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def embed(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``embed``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type", "gridlayout"]) -> _builtins.str | None:
@@ -29741,7 +31930,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29750,7 +31940,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29759,7 +31950,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29768,7 +31960,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29777,7 +31970,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29786,7 +31980,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29795,7 +31990,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29804,7 +32000,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -29813,7 +32010,8 @@ class Torque(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29851,7 +32049,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -29860,7 +32059,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -29869,7 +32069,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -29878,7 +32079,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -29887,7 +32089,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -29896,7 +32099,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -29905,7 +32109,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -29914,7 +32119,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -29923,7 +32129,8 @@ class Touch(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -29961,7 +32168,8 @@ class Tuple(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``tuple``; required."""
 
     @property
     def element(self) -> _List[TupleElement]:
@@ -29987,11 +32195,23 @@ class Tuple(_Typed):
     def add(self, tag: Literal["element"], /, **kwargs: Unpack[TupleElementAttributes]) -> TupleElement: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <tuple> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["element"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <tuple> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
     def insert(self, tag: Literal["element"], /, position: _builtins.int, **kwargs: Unpack[TupleElementAttributes]) -> TupleElement: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <tuple> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["element"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <tuple> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
@@ -30015,7 +32235,8 @@ class TupleElement(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objtype
         """
     @objtype.setter
-    def objtype(self, value: _builtins.str | None) -> None: ...
+    def objtype(self, value: _builtins.str | None) -> None:
+        """``objtype``: string; required."""
 
     @property
     def objname(self) -> AnyTarget | None:
@@ -30024,7 +32245,8 @@ class TupleElement(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objname
         """
     @objname.setter
-    def objname(self, value: AnyTarget | None) -> None: ...
+    def objname(self, value: AnyTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; required."""
 
     @property
     def prm(self) -> _builtins.float | None:
@@ -30033,7 +32255,8 @@ class TupleElement(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
         """
     @prm.setter
-    def prm(self, value: _t.Real | None) -> None: ...
+    def prm(self, value: _t.Real | None) -> None:
+        """``prm``: double; no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["objtype"]) -> _builtins.str | None:
@@ -30062,7 +32285,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def objtype(self) -> _builtins.str | None:
@@ -30071,7 +32295,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objtype
         """
     @objtype.setter
-    def objtype(self, value: _builtins.str | None) -> None: ...
+    def objtype(self, value: _builtins.str | None) -> None:
+        """``objtype``: string; no default (unset when absent)."""
 
     @property
     def objname(self) -> AnyTarget | None:
@@ -30080,7 +32305,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objname
         """
     @objname.setter
-    def objname(self, value: AnyTarget | None) -> None: ...
+    def objname(self, value: AnyTarget | None) -> None:
+        """``objname``: reference to the element ``objtype`` names; no default (unset when absent)."""
 
     @property
     def datatype(self) -> Datatype | None:
@@ -30089,7 +32315,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-datatype
         """
     @datatype.setter
-    def datatype(self, value: Datatype | None) -> None: ...
+    def datatype(self, value: Datatype | None) -> None:
+        """``datatype``: one of: real, positive, axis, quaternion; default "real"."""
 
     @property
     def needstage(self) -> Stage | None:
@@ -30098,7 +32325,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-needstage
         """
     @needstage.setter
-    def needstage(self, value: Stage | None) -> None: ...
+    def needstage(self, value: Stage | None) -> None:
+        """``needstage``: one of: none, pos, vel, acc; default "acc"."""
 
     @property
     def dim(self) -> _builtins.int | None:
@@ -30107,7 +32335,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
         """
     @dim.setter
-    def dim(self, value: _t.Integer | None) -> None: ...
+    def dim(self, value: _t.Integer | None) -> None:
+        """``dim``: int; no default (unset when absent)."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -30116,7 +32345,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -30125,7 +32355,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30134,7 +32365,8 @@ class User(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @overload
     def resolve(self, name: Literal["name", "objtype"]) -> _builtins.str | None:
@@ -30175,7 +32407,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``sensor``; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -30184,7 +32417,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -30193,7 +32427,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -30202,7 +32437,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interval(self) -> _t.Float64Array | None:
@@ -30211,7 +32447,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
         """
     @interval.setter
-    def interval(self, value: Reals1To2 | None) -> None: ...
+    def interval(self, value: Reals1To2 | None) -> None:
+        """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -30220,7 +32457,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-cutoff
         """
     @cutoff.setter
-    def cutoff(self, value: _t.Real | None) -> None: ...
+    def cutoff(self, value: _t.Real | None) -> None:
+        """``cutoff``: double; no default (unset when absent)."""
 
     @property
     def noise(self) -> _builtins.float | None:
@@ -30229,7 +32467,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-noise
         """
     @noise.setter
-    def noise(self, value: _t.Real | None) -> None: ...
+    def noise(self, value: _t.Real | None) -> None:
+        """``noise``: double; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30238,7 +32477,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -30247,7 +32487,8 @@ class Velocimeter(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; required."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -30285,7 +32526,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``actuator``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -30294,7 +32536,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def group(self) -> _builtins.int | None:
@@ -30303,7 +32546,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
         """
     @group.setter
-    def group(self, value: _t.Integer | None) -> None: ...
+    def group(self, value: _t.Integer | None) -> None:
+        """``group``: int; no default (unset when absent)."""
 
     @property
     def nsample(self) -> _builtins.int | None:
@@ -30312,7 +32556,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
         """
     @nsample.setter
-    def nsample(self, value: _t.Integer | None) -> None: ...
+    def nsample(self, value: _t.Integer | None) -> None:
+        """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def interp(self) -> Interp | None:
@@ -30321,7 +32566,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
         """
     @interp.setter
-    def interp(self, value: Interp | None) -> None: ...
+    def interp(self, value: Interp | None) -> None:
+        """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def delay(self) -> _builtins.float | None:
@@ -30330,7 +32576,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
         """
     @delay.setter
-    def delay(self, value: _t.Real | None) -> None: ...
+    def delay(self, value: _t.Real | None) -> None:
+        """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
@@ -30339,7 +32586,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
         """
     @ctrlrange.setter
-    def ctrlrange(self, value: Reals2 | None) -> None: ...
+    def ctrlrange(self, value: Reals2 | None) -> None:
+        """``ctrlrange``: double[2]; no default (unset when absent)."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -30348,7 +32596,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
         """
     @user.setter
-    def user(self, value: RealsAny | None) -> None: ...
+    def user(self, value: RealsAny | None) -> None:
+        """``user``: double[] (any length); no default (unset when absent)."""
 
     @property
     def ctrllimited(self) -> FalseTrueAuto | None:
@@ -30357,7 +32606,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
         """
     @ctrllimited.setter
-    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def ctrllimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``ctrllimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcelimited(self) -> FalseTrueAuto | None:
@@ -30366,7 +32616,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
         """
     @forcelimited.setter
-    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None: ...
+    def forcelimited(self, value: FalseTrueAuto | _builtins.bool | None) -> None:
+        """``forcelimited``: one of: false, true, auto; default "auto"."""
 
     @property
     def forcerange(self) -> _t.Float64Array | None:
@@ -30375,7 +32626,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
         """
     @forcerange.setter
-    def forcerange(self, value: Reals2 | None) -> None: ...
+    def forcerange(self, value: Reals2 | None) -> None:
+        """``forcerange``: double[2]; no default (unset when absent)."""
 
     @property
     def lengthrange(self) -> _t.Float64Array | None:
@@ -30384,7 +32636,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-lengthrange
         """
     @lengthrange.setter
-    def lengthrange(self, value: Reals2 | None) -> None: ...
+    def lengthrange(self, value: Reals2 | None) -> None:
+        """``lengthrange``: double[2]; no default (unset when absent)."""
 
     @property
     def gear(self) -> _t.Float64Array | None:
@@ -30393,7 +32646,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
         """
     @gear.setter
-    def gear(self, value: Reals1To6 | None) -> None: ...
+    def gear(self, value: Reals1To6 | None) -> None:
+        """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"."""
 
     @property
     def damping(self) -> _t.Float64Array | None:
@@ -30402,7 +32656,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
         """
     @damping.setter
-    def damping(self, value: Reals1To3 | None) -> None: ...
+    def damping(self, value: Reals1To3 | None) -> None:
+        """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients."""
 
     @property
     def armature(self) -> _builtins.float | None:
@@ -30411,7 +32666,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
         """
     @armature.setter
-    def armature(self, value: _t.Real | None) -> None: ...
+    def armature(self, value: _t.Real | None) -> None:
+        """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
 
     @property
     def cranklength(self) -> _builtins.float | None:
@@ -30420,7 +32676,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
         """
     @cranklength.setter
-    def cranklength(self, value: _t.Real | None) -> None: ...
+    def cranklength(self, value: _t.Real | None) -> None:
+        """``cranklength``: double; no default (unset when absent)."""
 
     @property
     def joint(self) -> _builtins.str | AnyJoint | None:
@@ -30429,7 +32686,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-joint
         """
     @joint.setter
-    def joint(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def joint(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``joint``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def jointinparent(self) -> _builtins.str | AnyJoint | None:
@@ -30438,7 +32696,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-jointinparent
         """
     @jointinparent.setter
-    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None: ...
+    def jointinparent(self, value: _builtins.str | AnyJoint | None) -> None:
+        """``jointinparent``: reference to namespace ``joint``; no default (unset when absent)."""
 
     @property
     def tendon(self) -> _builtins.str | AnyTendon | None:
@@ -30447,7 +32706,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-tendon
         """
     @tendon.setter
-    def tendon(self, value: _builtins.str | AnyTendon | None) -> None: ...
+    def tendon(self, value: _builtins.str | AnyTendon | None) -> None:
+        """``tendon``: reference to namespace ``tendon``; no default (unset when absent)."""
 
     @property
     def slidersite(self) -> _builtins.str | Site | None:
@@ -30456,7 +32716,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-slidersite
         """
     @slidersite.setter
-    def slidersite(self, value: _builtins.str | Site | None) -> None: ...
+    def slidersite(self, value: _builtins.str | Site | None) -> None:
+        """``slidersite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def cranksite(self) -> _builtins.str | Site | None:
@@ -30465,7 +32726,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranksite
         """
     @cranksite.setter
-    def cranksite(self, value: _builtins.str | Site | None) -> None: ...
+    def cranksite(self, value: _builtins.str | Site | None) -> None:
+        """``cranksite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site(self) -> _builtins.str | Site | None:
@@ -30474,7 +32736,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-site
         """
     @site.setter
-    def site(self, value: _builtins.str | Site | None) -> None: ...
+    def site(self, value: _builtins.str | Site | None) -> None:
+        """``site``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def refsite(self) -> _builtins.str | Site | None:
@@ -30483,7 +32746,8 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-refsite
         """
     @refsite.setter
-    def refsite(self, value: _builtins.str | Site | None) -> None: ...
+    def refsite(self, value: _builtins.str | Site | None) -> None:
+        """``refsite``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def kv(self) -> _builtins.float | None:
@@ -30492,14 +32756,16 @@ class Velocity(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
         """
     @kv.setter
-    def kv(self, value: _t.Real | None) -> None: ...
+    def kv(self, value: _t.Real | None) -> None:
+        """``kv``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -30814,6 +33080,12 @@ class Visual(_Typed):
     def add(self, tag: Literal["rgba"], /, **kwargs: Unpack[RgbaAttributes]) -> Rgba: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <visual> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["global", "headlight", "map", "quality", "rgba", "scale"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <visual> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -30835,6 +33107,12 @@ class Visual(_Typed):
     def insert(self, tag: Literal["rgba"], /, position: _builtins.int, **kwargs: Unpack[RgbaAttributes]) -> Rgba: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <visual> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["global", "headlight", "map", "quality", "rgba", "scale"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <visual> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
 
@@ -30853,7 +33131,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-name
         """
     @name.setter
-    def name(self, value: _builtins.str | None) -> None: ...
+    def name(self, value: _builtins.str | None) -> None:
+        """``name``: name declared in namespace ``equality``; no default (unset when absent)."""
 
     @property
     def class_(self) -> _builtins.str | Default | None:
@@ -30862,7 +33141,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-class
         """
     @class_.setter
-    def class_(self, value: _builtins.str | Default | None) -> None: ...
+    def class_(self, value: _builtins.str | Default | None) -> None:
+        """``class``: reference to namespace ``default``; no default (unset when absent)."""
 
     @property
     def active(self) -> _builtins.bool | None:
@@ -30871,7 +33151,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-active
         """
     @active.setter
-    def active(self, value: _builtins.bool | None) -> None: ...
+    def active(self, value: _builtins.bool | None) -> None:
+        """``active``: bool; default "true"."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -30880,7 +33161,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solref
         """
     @solref.setter
-    def solref(self, value: Reals1To2 | None) -> None: ...
+    def solref(self, value: Reals1To2 | None) -> None:
+        """``solref``: double[1..2] (1 to 2 values); default "0.02 1"."""
 
     @property
     def solimp(self) -> _t.Float64Array | None:
@@ -30889,7 +33171,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solimp
         """
     @solimp.setter
-    def solimp(self, value: Reals1To5 | None) -> None: ...
+    def solimp(self, value: Reals1To5 | None) -> None:
+        """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"."""
 
     @property
     def body1(self) -> _builtins.str | Body | None:
@@ -30898,7 +33181,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body1
         """
     @body1.setter
-    def body1(self, value: _builtins.str | Body | None) -> None: ...
+    def body1(self, value: _builtins.str | Body | None) -> None:
+        """``body1``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def body2(self) -> _builtins.str | Body | None:
@@ -30907,7 +33191,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body2
         """
     @body2.setter
-    def body2(self, value: _builtins.str | Body | None) -> None: ...
+    def body2(self, value: _builtins.str | Body | None) -> None:
+        """``body2``: reference to namespace ``body``; no default (unset when absent)."""
 
     @property
     def relpose(self) -> _t.Float64Array | None:
@@ -30916,7 +33201,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-relpose
         """
     @relpose.setter
-    def relpose(self, value: Reals7 | None) -> None: ...
+    def relpose(self, value: Reals7 | None) -> None:
+        """``relpose``: double[7]; no default (unset when absent)."""
 
     @property
     def anchor(self) -> _t.Float64Array | None:
@@ -30925,7 +33211,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-anchor
         """
     @anchor.setter
-    def anchor(self, value: Reals3 | None) -> None: ...
+    def anchor(self, value: Reals3 | None) -> None:
+        """``anchor``: double[3]; no default (unset when absent)."""
 
     @property
     def site1(self) -> _builtins.str | Site | None:
@@ -30934,7 +33221,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site1
         """
     @site1.setter
-    def site1(self, value: _builtins.str | Site | None) -> None: ...
+    def site1(self, value: _builtins.str | Site | None) -> None:
+        """``site1``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def site2(self) -> _builtins.str | Site | None:
@@ -30943,7 +33231,8 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site2
         """
     @site2.setter
-    def site2(self, value: _builtins.str | Site | None) -> None: ...
+    def site2(self, value: _builtins.str | Site | None) -> None:
+        """``site2``: reference to namespace ``site``; no default (unset when absent)."""
 
     @property
     def torquescale(self) -> _builtins.float | None:
@@ -30952,14 +33241,16 @@ class Weld(_Typed):
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-torquescale
         """
     @torquescale.setter
-    def torquescale(self, value: _t.Real | None) -> None: ...
+    def torquescale(self, value: _t.Real | None) -> None:
+        """``torquescale``: double; no default (unset when absent)."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
         """dm_control's name for ``class_``.
         """
     @dclass.setter
-    def dclass(self, value: _builtins.str | Default | None) -> None: ...
+    def dclass(self, value: _builtins.str | Default | None) -> None:
+        """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -31499,6 +33790,12 @@ class Worldbody(_Typed, _Attachable):
     def add(self, tag: Literal["flexcomp"], /, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp: ...
 
     @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <worldbody> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def add(self, tag: Literal["attach", "body", "camera", "flexcomp", "frame", "geom", "light", "plugin", "replicate", "site"], /, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <worldbody> (see its add_<tag>())")
+    def add(self, tag: _Tag, /, **kwargs: object) -> _Element: ...
+    @overload
     def add(self, tag: _builtins.str, /, **kwargs: object) -> _Element: ...
 
     @overload
@@ -31531,6 +33828,12 @@ class Worldbody(_Typed, _Attachable):
     @overload
     def insert(self, tag: Literal["flexcomp"], /, position: _builtins.int, **kwargs: Unpack[FlexcompAttributes]) -> Flexcomp: ...
 
+    @overload
+    @_deprecated("wrong keywords: add()/insert() with the tag of a child of <worldbody> take that child's attributes, as its add_<tag>() does; a keyword is not one of them or its value has the wrong type")
+    def insert(self, tag: Literal["attach", "body", "camera", "flexcomp", "frame", "geom", "light", "plugin", "replicate", "site"], /, position: _builtins.int, **kwargs: object) -> _Element: ...
+    @overload
+    @_deprecated("wrong tag: the grammar allows no such child under <worldbody> (see its add_<tag>())")
+    def insert(self, tag: _Tag, /, position: _builtins.int, **kwargs: object) -> _Element: ...
     @overload
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 

@@ -20,26 +20,32 @@ Int32Array: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.int32]]
 RgbImage: TypeAlias = np.ndarray[tuple[int, int, int], np.dtype[np.uint8]]
 """A picture: height x width x 3 bytes, red, green and blue (what ``render()`` returns)."""
 
-IntArrayLike: TypeAlias = (
-    np.ndarray[tuple[int, ...], np.dtype[np.int64]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.int32]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.int16]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.int8]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.uint64]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.uint32]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.uint16]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.uint8]]
+_IntDtype: TypeAlias = (
+    np.dtype[np.int64] | np.dtype[np.int32] | np.dtype[np.int16] | np.dtype[np.int8]
+    | np.dtype[np.uint64] | np.dtype[np.uint32] | np.dtype[np.uint16] | np.dtype[np.uint8]
 )
-"""numpy arrays an integer array attribute accepts: any integer dtype."""
-FloatArrayLike: TypeAlias = (
-    np.ndarray[tuple[int, ...], np.dtype[np.float64]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.float32]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.float16]]
-    | np.ndarray[tuple[int, ...], np.dtype[np.longdouble]]
-    | IntArrayLike
-)
-"""numpy arrays a real-valued array attribute accepts: any real dtype (the length is
-checked at assignment)."""
+
+
+class IntArrayLike(Protocol):
+    """numpy arrays an integer array attribute accepts: any integer dtype.
+
+    A protocol, not a union of ``np.ndarray`` types: a checker reads numpy's types only when
+    an array is passed (tuples and lists have no ``dtype``), which keeps an editor quick."""
+
+    def __len__(self) -> int: ...  # what numpy's scalars lack
+    @property
+    def dtype(self) -> _IntDtype: ...
+
+
+class FloatArrayLike(Protocol):
+    """numpy arrays a real-valued array attribute accepts: any real dtype (the length is
+    checked at assignment)."""
+
+    def __len__(self) -> int: ...
+    @property
+    def dtype(self) -> (np.dtype[np.float64] | np.dtype[np.float32] | np.dtype[np.float16]
+                        | np.dtype[np.longdouble] | _IntDtype): ...
+
 
 class RealScalar(Protocol):
     """A real number that is not a float: an int, or a numpy scalar (``np.float32(1.5)``,

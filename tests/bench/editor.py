@@ -25,23 +25,18 @@ A report, not a test: nothing here asserts a time.
 from __future__ import annotations
 
 import argparse
-import itertools
 import json
 import os
-import queue
 import re
 import statistics
-import subprocess
-import sys
 import tempfile
-import threading
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import IO, cast
 
-JSON = dict[str, object]
+from tests.lsp import LanguageServer
+
 TIMEOUT = 600.0  # a loaded machine answers slowly; CPU time is what is measured
 TICK = os.sysconf("SC_CLK_TCK")
 PAGE = os.sysconf("SC_PAGE_SIZE")
@@ -369,74 +364,15 @@ def _cpu_and_rss(root: int) -> tuple[float, int]:
     return ticks / TICK, pages * PAGE
 
 
-class Server:
-    """pyright-langserver over stdio, with the CPU and memory of its processes."""
+class Server(LanguageServer):
+    """pyright-langserver, with the CPU and memory of its processes."""
 
     def __init__(self, root: Path) -> None:
-        self.process = subprocess.Popen(
-            [sys.executable, "-c", "from pyright.langserver import entrypoint; entrypoint()",
-             "--stdio"], cwd=root, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL)
-        self._ids = itertools.count(1)
-        self._replies: queue.Queue[JSON] = queue.Queue()
-        threading.Thread(target=self._read_loop, daemon=True).start()
-        self.request("initialize", {
-            "processId": os.getpid(), "rootUri": root.as_uri(),
-            "workspaceFolders": [{"uri": root.as_uri(), "name": root.name}],
-            "capabilities": {
-                "workspace": {"configuration": True, "workspaceFolders": True},
-                "textDocument": {"completion": {"completionItem": {
-                    "documentationFormat": ["markdown", "plaintext"]}},
-                    "hover": {"contentFormat": ["markdown", "plaintext"]}}}})
-        self.notify("initialized", {})
+        super().__init__(root, TIMEOUT)
         self.settle()
 
-    def _send(self, message: JSON) -> None:
-        body = json.dumps({"jsonrpc": "2.0", **message}).encode("utf-8")
-        stdin = cast(IO[bytes], self.process.stdin)
-        stdin.write(f"Content-Length: {len(body)}\r\n\r\n".encode("ascii") + body)
-        stdin.flush()
-
-    def _messages(self) -> Iterator[JSON]:
-        stdout = cast(IO[bytes], self.process.stdout)
-        while True:
-            length = 0
-            while True:
-                header = stdout.readline()
-                if not header:
-                    return
-                if header in (b"\r\n", b"\n"):
-                    break
-                name, _, value = header.decode("ascii").partition(":")
-                if name.strip().lower() == "content-length":
-                    length = int(value)
-            yield cast(JSON, json.loads(stdout.read(length)))
-
-    def _read_loop(self) -> None:
-        for message in self._messages():
-            if "method" in message and "id" in message:
-                result: object = None
-                if message["method"] == "workspace/configuration":
-                    items = cast(list[JSON], cast(JSON, message["params"])["items"])
-                    result = [{"pythonPath": sys.executable}
-                              if item.get("section") == "python" else {} for item in items]
-                self._send({"id": message["id"], "result": result})
-            elif "id" in message:
-                self._replies.put(message)
-
-    def notify(self, method: str, params: JSON) -> None:
-        self._send({"method": method, "params": params})
-
-    def request(self, method: str, params: JSON) -> object:
-        number = next(self._ids)
-        self._send({"id": number, "method": method, "params": params})
-        while True:
-            reply = self._replies.get(timeout=TIMEOUT)
-            if reply.get("id") == number:
-                return reply.get("result")
-
     def usage(self) -> tuple[float, int]:
-        return _cpu_and_rss(self.process.pid)
+        return _cpu_and_rss(self.pid)
 
     def settle(self, quiet: float = 0.15) -> None:
         """Wait until the server's processes use no CPU for ``quiet`` seconds (background
@@ -448,20 +384,8 @@ class Server:
             if now - last > 0.011:  # more than a tick
                 last, since = now, time.monotonic()
 
-    def completion(self, uri: str, line: int, character: int) -> list[str]:
-        result = self.request("textDocument/completion", {
-            "textDocument": {"uri": uri}, "position": {"line": line, "character": character}})
-        items = cast(JSON, result)["items"] if isinstance(result, dict) else result
-        return [str(cast(JSON, item)["label"]) for item in cast(list[object], items or [])]
-
-    def close(self) -> None:
-        try:
-            self.request("shutdown", {})
-            self.notify("exit", {})
-            self.process.wait(timeout=10)
-        except (queue.Empty, OSError, subprocess.TimeoutExpired):
-            self.process.kill()
-            self.process.wait()
+    def labels(self, uri: str, line: int, character: int) -> list[str]:
+        return [str(item["label"]) for item in self.completion(uri, line, character)]
 
 
 # ---------------------------------------------------------------------------- one session
@@ -491,18 +415,16 @@ def session(scripts: list[str], workspace: Path, repeats: int, result: Result) -
         for round_ in range(repeats):
             for number, marked in enumerate(scripts):
                 script = parse_script(marked)
-                uri = (workspace / f"script_{number}.py").as_uri()
+                path = workspace / f"script_{number}.py"
+                uri = path.as_uri()
                 for step, (line, character, expected) in enumerate(script.cursors):
                     before = server.usage()[0]
                     text = typing_at(script.text, line, character)
                     if step == 0:
-                        server.notify("textDocument/didOpen", {"textDocument": {
-                            "uri": uri, "languageId": "python", "version": 1, "text": text}})
+                        server.open(path, text)
                     else:  # an edit: the whole text again, as a new version
-                        server.notify("textDocument/didChange", {
-                            "textDocument": {"uri": uri, "version": step + 1},
-                            "contentChanges": [{"text": text}]})
-                    labels = server.completion(uri, line, character)
+                        server.change(uri, text, step + 1)
+                    labels = server.labels(uri, line, character)
                     server.settle()
                     cpu, rss = server.usage()
                     if round_ == 0:
@@ -517,7 +439,7 @@ def session(scripts: list[str], workspace: Path, repeats: int, result: Result) -
                             result.first_warm.append(cpu - before)
                         else:
                             result.later.append(cpu - before)
-                server.notify("textDocument/didClose", {"textDocument": {"uri": uri}})
+                server.close_document(uri)
         result.long_rss.append(server.usage()[1])
     finally:
         server.close()

@@ -1,160 +1,38 @@
 """What an editor shows: completion and hover from pyright's language server.
 
-Drives ``pyright-langserver --stdio`` (the engine of VS Code's Pylance; it ships with the
-``pyright`` package of the dev extra) over the Language Server Protocol, with an in-memory
-document, the way an editor does:
+Drives ``pyright-langserver --stdio`` (the engine of VS Code's Pylance) through the client of
+``tests/lsp.py``, with in-memory documents, the way an editor does:
 
 - completion after ``<element>.add_`` lists exactly the legal children of that element;
 - completion of keyword arguments inside ``add_geom(`` lists the attributes of ``<geom>``;
 - hover on a property (``joint.type``) shows its type and its docstring: the MJCF type,
-  the default, the allowed values and the link to MuJoCo's XML reference.
+  the default, the allowed values and the link to MuJoCo's XML reference;
+- signature help and hover on a keyword of ``add_<tag>(`` show that keyword's own line, the
+  one ``test_docs.py`` predicts for every keyword from the docstring.
 
 One server per module; each request waits at most ``TIMEOUT`` seconds.
 """
 
 from __future__ import annotations
 
-import itertools
-import json
-import queue
-import subprocess
-import sys
-import threading
+import inspect
 from collections.abc import Iterator, Mapping
 from pathlib import Path
-from typing import IO, cast
 
 import pytest
 
 import typed_mjcf as mjcf
+from tests.lsp import JSON, LanguageServer
+from tests.typing.test_docs import pyright_parameter_doc
 from typed_mjcf import Element
 
 ROOT = Path(__file__).resolve().parents[2]
 TIMEOUT = 60.0
-JSON = dict[str, object]
-
-
-class LanguageServer:
-    """A minimal LSP client: requests, notifications, and replies to the server's requests."""
-
-    def __init__(self, root: Path) -> None:
-        self._process = subprocess.Popen(
-            [sys.executable, "-c", "from pyright.langserver import entrypoint; entrypoint()",
-             "--stdio"],
-            cwd=root, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL,
-        )
-        self._ids = itertools.count(1)
-        self._replies: queue.Queue[JSON] = queue.Queue()
-        self._reader = threading.Thread(target=self._read_loop, daemon=True)
-        self._reader.start()
-        self.request("initialize", {
-            "processId": None,
-            "rootUri": root.as_uri(),
-            "workspaceFolders": [{"uri": root.as_uri(), "name": root.name}],
-            "capabilities": {
-                "workspace": {"configuration": True, "workspaceFolders": True},
-                "textDocument": {
-                    "completion": {"completionItem": {
-                        "documentationFormat": ["markdown", "plaintext"]}},
-                    "hover": {"contentFormat": ["markdown", "plaintext"]},
-                },
-            },
-        })
-        self.notify("initialized", {})
-
-    # ------------------------------------------------------------------ transport
-
-    def _send(self, message: JSON) -> None:
-        body = json.dumps({"jsonrpc": "2.0", **message}).encode("utf-8")
-        stdin = cast(IO[bytes], self._process.stdin)
-        stdin.write(f"Content-Length: {len(body)}\r\n\r\n".encode("ascii") + body)
-        stdin.flush()
-
-    def _messages(self) -> Iterator[JSON]:
-        stdout = cast(IO[bytes], self._process.stdout)
-        while True:
-            length = 0
-            while True:
-                header = stdout.readline()
-                if not header:
-                    return
-                if header in (b"\r\n", b"\n"):
-                    break
-                name, _, value = header.decode("ascii").partition(":")
-                if name.strip().lower() == "content-length":
-                    length = int(value)
-            yield cast(JSON, json.loads(stdout.read(length)))
-
-    def _read_loop(self) -> None:
-        for message in self._messages():
-            if "method" in message and "id" in message:  # a request from the server
-                self._send({"id": message["id"], "result": self._answer(message)})
-            elif "id" in message:  # a reply to one of ours
-                self._replies.put(message)
-
-    def _answer(self, request: JSON) -> object:
-        if request["method"] == "workspace/configuration":
-            params = cast(JSON, request["params"])
-            items = cast(list[JSON], params["items"])
-            return [{"pythonPath": sys.executable} if item.get("section") == "python"
-                    else {} for item in items]
-        return None  # client/registerCapability, window/workDoneProgress/create, ...
-
-    def notify(self, method: str, params: JSON) -> None:
-        self._send({"method": method, "params": params})
-
-    def request(self, method: str, params: JSON) -> object:
-        number = next(self._ids)
-        self._send({"id": number, "method": method, "params": params})
-        while True:
-            try:
-                reply = self._replies.get(timeout=TIMEOUT)
-            except queue.Empty:
-                raise TimeoutError(f"pyright-langserver did not answer {method}") from None
-            if reply.get("id") == number:
-                if "error" in reply:
-                    raise RuntimeError(f"{method} failed: {reply['error']}")
-                return reply.get("result")
-
-    def close(self) -> None:
-        try:
-            self.request("shutdown", {})
-            self.notify("exit", {})
-            self._process.wait(timeout=10)
-        except (TimeoutError, OSError, subprocess.TimeoutExpired):
-            self._process.kill()
-            self._process.wait()
-
-    # ------------------------------------------------------------------ documents
-
-    def open(self, path: Path, text: str) -> str:
-        uri = path.as_uri()
-        self.notify("textDocument/didOpen", {"textDocument": {
-            "uri": uri, "languageId": "python", "version": 1, "text": text}})
-        return uri
-
-    def completion(self, uri: str, line: int, character: int) -> list[JSON]:
-        result = self.request("textDocument/completion", {
-            "textDocument": {"uri": uri}, "position": {"line": line, "character": character}})
-        if isinstance(result, dict):
-            return cast(list[JSON], cast(JSON, result)["items"])
-        return cast(list[JSON], result or [])
-
-    def hover(self, uri: str, line: int, character: int) -> str:
-        result = self.request("textDocument/hover", {
-            "textDocument": {"uri": uri}, "position": {"line": line, "character": character}})
-        if not isinstance(result, dict):
-            return ""
-        contents = cast(JSON, result)["contents"]
-        if isinstance(contents, dict):
-            return str(cast(JSON, contents)["value"])
-        return str(contents)
 
 
 @pytest.fixture(scope="module")
 def server() -> Iterator[LanguageServer]:
-    client = LanguageServer(ROOT)
+    client = LanguageServer(ROOT, TIMEOUT)
     yield client
     client.close()
 
@@ -255,3 +133,37 @@ def test_hover_on_an_add_method_names_the_child(server: LanguageServer) -> None:
     text = hover_on(server, "add_geom", "body.add_geom")
     assert "-> Geom" in text, text
     assert "<geom>" in text, text
+
+
+# (variable in SOURCE, adder, keyword): the entries the issue found wrong (density= showed
+# "one is saved."), a name that ends another (range/ctrlrange), a reference union, a keyword set
+SIGNATURE_CASES = [
+    ("body", "add_geom", "density"),
+    ("body", "add_geom", "type"),
+    ("body", "add_joint", "range"),
+    ("model.actuator", "add_motor", "ctrlrange"),
+    ("model.sensor", "add_framepos", "objname"),
+    ("model.worldbody", "add_body", "childclass"),
+]
+
+
+@pytest.mark.parametrize(("expression", "adder", "keyword"), SIGNATURE_CASES,
+                         ids=[f"{a}-{k}" for _, a, k in SIGNATURE_CASES])
+def test_signature_help_and_hover_show_the_keywords_own_line(
+        server: LanguageServer, expression: str, adder: str, keyword: str) -> None:
+    """What pyright really shows for a keyword (signature help while typing it, hover on it)
+    is the line ``tests/typing/test_docs.py`` predicts from the docstring: the keyword's
+    own ``Args:`` entry, which starts with its facts."""
+    cls = ELEMENTS[expression]
+    function = getattr(cls, adder)
+    predicted = pyright_parameter_doc(inspect.getdoc(function) or "", keyword)
+    assert predicted is not None and predicted.startswith(f"{keyword}: "), predicted
+    call = f"{expression}.{adder}({keyword}="
+    source = SOURCE + call + ")\n"
+    uri = server.open(PROBES / f"_ide_signature_{adder}_{keyword}.py", source)
+    line = source.count("\n") - 1
+    label, shown = server.signature_help(uri, line, len(call))
+    assert f"{keyword}: " in label, label
+    assert shown.strip() == predicted, f"signature help for {call}: {shown!r}"
+    hover = server.hover(uri, line, len(f"{expression}.{adder}(") + 1)
+    assert predicted in hover, f"hover on {keyword}= in {call}: {hover!r}"

@@ -67,6 +67,7 @@ def build() -> mjcf.RootElement:
     assert_type(model.add("keyframe"), mjcf.Keyframe)
     # a tag only known at run time falls back to the untyped base class
     assert_type(fore.add(known_at_run_time("site")), mjcf.Element)
+    assert_type(fore.insert(known_at_run_time("site"), 0, size=0.1), mjcf.Element)
 
     # child lists by tag: live views, indexed by position or name
     assert_type(arm.geom, mjcf.ElementList[mjcf.Geom])
