@@ -54,6 +54,15 @@ SLOW = {
         "models of growing size",
     "test_generated_api.py::test_every_attribute_mujoco_lists_is_a_typed_property":
         "every attribute through MuJoCo",
+    "dm_control/test_builders.py": "dm_control's builders, in two subprocesses",
+    "dm_control/test_composer.py::test_manipulation_features_tasks_run":
+        "dm_control's environments, in a subprocess",
+    "runtime/test_corpus_asset_routes.py": "the corpus, loaded back two ways",
+    "safety/test_resources.py": "inputs of 100,000 elements, in fresh interpreters",
+    "safety/test_zip.py::test_zip_bombs_take_bounded_memory": "zip bombs, in subprocesses",
+    "cli/test_fmt.py::test_formatting_twice_changes_nothing": "the corpus, formatted",
+    "cli/test_fmt.py::test_the_exporters_canonical_text_is_formatted": "the corpus, exported",
+    "cli/test_fmt.py::test_fmt_changes_few_lines_of_the_corpus": "the corpus, formatted",
 }
 
 
