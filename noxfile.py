@@ -24,36 +24,22 @@ nox.options.sessions = ["tests"]
 nox.options.error_on_missing_interpreters = True
 
 PYTHON = ">=3.11"  # pyproject's requires-python: any installed version that satisfies it
-# src holds the generated classes too (src/typed_mjcf/_generated links to generated/).
-TYPED_PATHS = ["src", "codegen", "tests/typing", "examples"]
-# Deliberately ill-typed code: tests/typing/test_typecheck.py checks that mypy and pyright
-# reject it as its markers say. The plain runs below skip it: mypy via [tool.mypy] exclude;
-# pyright by not being given it (a [tool.pyright] exclude would hide it from that test too).
-NEGATIVE_CASES = Path("tests/typing/negative")
-
-
-def _pyright_paths() -> list[str]:
-    paths: list[str] = []
-    for path in TYPED_PATHS:
-        if NEGATIVE_CASES.is_relative_to(path):
-            paths += sorted(str(p) for p in Path(path).rglob("*.py")
-                            if not p.is_relative_to(NEGATIVE_CASES))
-        else:
-            paths.append(path)
-    return paths
 
 
 @nox.session(python=PYTHON)
 def tests(session: nox.Session) -> None:
-    """The test suite, then ruff, mypy --strict and pyright over the typed code."""
+    """The test suite on every core, type checks included, then ruff.
+
+    mypy --strict and pyright strict over the typed code (src/ with the generated classes,
+    codegen/, tests/typing/, examples/) run inside the test run, beside the other tests:
+    tests/typing/test_typecheck.py (its TYPED_PATHS). pyproject's addopts make pytest-xdist
+    keep each module's tests on one worker (its shared fixtures are built once) and start
+    the longest first (tests/conftest.py).
+    """
     session.install("-e", ".[dev]")
     session.run("python", "-m", "codegen", "check")
-    # every core; a worker takes whole files, so a module's shared fixtures (a mypy run,
-    # a language server) are built once
-    session.run("pytest", "-n", "auto", "--dist", "loadfile", *session.posargs)
+    session.run("pytest", "-n", "auto", *session.posargs)
     session.run("ruff", "check", ".")
-    session.run("mypy", *TYPED_PATHS)
-    session.run("pyright", *_pyright_paths())
 
 
 @nox.session(python=PYTHON)

@@ -9,6 +9,7 @@ run). ``nox -s tests`` and plain
 from __future__ import annotations
 
 import os
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -53,13 +54,92 @@ SLOW = {
         "models of growing size",
     "test_generated_api.py::test_every_attribute_mujoco_lists_is_a_typed_property":
         "every attribute through MuJoCo",
+    "dm_control/test_builders.py": "dm_control's builders, in two subprocesses",
+    "dm_control/test_composer.py::test_manipulation_features_tasks_run":
+        "dm_control's environments, in a subprocess",
+    "runtime/test_corpus_asset_routes.py": "the corpus, loaded back two ways",
+    "safety/test_resources.py": "inputs of 100,000 elements, in fresh interpreters",
+    "safety/test_zip.py::test_zip_bombs_take_bounded_memory": "zip bombs, in subprocesses",
+    "cli/test_fmt.py::test_formatting_twice_changes_nothing": "the corpus, formatted",
+    "cli/test_fmt.py::test_the_exporters_canonical_text_is_formatted": "the corpus, exported",
+    "cli/test_fmt.py::test_fmt_changes_few_lines_of_the_corpus": "the corpus, formatted",
 }
 
 
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+# How pytest-xdist shares the tests out (with -n; pyproject's addopts: --dist loadgroup
+# --no-loadscope-reorder, and pytest_xdist_make_scheduler below). A module's tests go to one
+# worker together, so its module-scoped fixtures (a type checker's run, a language server,
+# the corpus compiled) are built once; the modules in SPREAD are the exception: their tests
+# are independent and long, each goes to whichever worker is free. The work starts with
+# FIRST, in its order (the longest first, in CPU seconds, measured with `pytest -n 2
+# --durations=60`), so that no long test starts last while the other worker idles.
+SPREAD = {
+    "dm_control/test_composer.py",  # each test runs its environments in its own subprocess
+}
+# Modules that share a session-scoped fixture run with the module named, on its worker.
+GROUPS = {
+    # tests/typing/conftest.py's typed_code_reports: one mypy and one pyright run
+    "typing/test_mujoco_stubs.py": "typing/test_typecheck.py",
+}
+FIRST = (
+    "dm_control/test_composer.py",
+    "bench/test_bench_smoke.py",
+    "typing/test_typecheck.py",
+    "typing/test_mujoco_stubs.py",
+    "safety/test_resources.py",
+    "dm_control/test_builders.py",
+    "cli/test_fmt.py",
+    "cli/test_to_python_types.py",
+    "typing/test_any_audit.py",
+    "runtime/test_corpus.py",
+    "runtime/test_corpus_asset_routes.py",
+    "test_readme.py",
+    "fidelity/test_defaults_corpus.py",
+    "cli/test_to_python.py",
+    "fidelity/test_properties.py",
+    "cli/test_diff.py",
+    "codegen/test_drift.py",
+    "typing/test_ide.py",
+)
+
+
+def _module(item: pytest.Item) -> str:
+    return item.path.relative_to(TESTS).as_posix()
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> Iterator[None]:
+    # before the other plugins: -m "not slow" deselects by these marks
     for item in items:
-        module = item.path.relative_to(TESTS).as_posix()
+        module = _module(item)
         function = getattr(item, "originalname", item.name)
         if module in SLOW or f"{module}::{function}" in SLOW:
             item.add_marker(pytest.mark.slow)
+    yield
+    # after them (pytest orders items by fixtures too): the longest first, stable otherwise
+    rank = {module: at for at, module in enumerate(FIRST)}
+    items.sort(key=lambda item: rank.get(_module(item), len(FIRST)))
 
+
+def work_unit(nodeid: str) -> str:
+    """The unit of work a test goes to a worker in: its module, its module's group, or
+    itself (SPREAD)."""
+    module = nodeid.partition("::")[0].removeprefix(f"{TESTS.name}/")
+    if module in SPREAD:
+        return nodeid
+    return GROUPS.get(module, module)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config: pytest.Config, log: object) -> object:
+    """``--dist loadgroup``: xdist's load-scope scheduling by ``work_unit`` (its own
+    loadgroup reads ``xdist_group`` marks into node ids, which pytest 9.2's node ids ignore)."""
+    if config.getvalue("dist") != "loadgroup":
+        return None
+    from xdist.scheduler import LoadScopeScheduling
+
+    class ByWorkUnit(LoadScopeScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            return work_unit(nodeid)
+
+    return ByWorkUnit(config, log)  # type: ignore[arg-type]  # xdist's Producer

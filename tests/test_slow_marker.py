@@ -1,8 +1,9 @@
-"""The ``slow`` list of tests/conftest.py names tests that exist."""
+"""The lists of tests/conftest.py (SLOW; SPREAD, GROUPS and FIRST, the scheduling's) name
+tests that exist."""
 
 import ast
 
-from tests.conftest import SLOW, TESTS
+from tests.conftest import FIRST, GROUPS, SLOW, SPREAD, TESTS
 
 
 def test_every_slow_entry_exists() -> None:
@@ -18,3 +19,9 @@ def test_every_slow_entry_exists() -> None:
                        for node in tree.body):
                 missing.append(entry)
     assert missing == []
+
+
+def test_every_scheduling_entry_exists() -> None:
+    """SPREAD, GROUPS and FIRST (tests/conftest.py) name test modules that exist."""
+    named = {*SPREAD, *GROUPS, *GROUPS.values(), *FIRST}
+    assert sorted(m for m in named if not (TESTS / m).is_file()) == []

@@ -1,14 +1,19 @@
-"""mypy and pyright over the typing cases: positive files clean, negative files as marked.
+"""mypy and pyright over the typed code: clean, except the negative cases, which fail as marked.
 
 One mypy run (the repository's configuration plus ``--warn-unused-ignores``) and one pyright
-run (the repository's strict configuration) per session, over every file of ``tests/typing``
-including ``negative/``. Then, per checker:
+run (the repository's strict configuration) per session, side by side, over the typed code
+(``TYPED_PATHS``: ``src/``, ``codegen/``, ``tests/typing/``, ``examples/``) and the negative
+cases (``negative/``, ``negative/mujoco/``). ``nox -s tests`` runs no other mypy or pyright:
+these runs are its type check, done in the test run's parallel workers. Then, per checker:
 
-- every file outside ``negative/`` must have no error (``assert_type`` mismatches are errors);
+- every file outside the negative cases must have no error (``assert_type`` mismatches are
+  errors);
 - every line of ``negative/*.py`` must get exactly the error codes its trailing marker names
-  (see ``negative/__init__.py``): a missing code and an unexpected one both fail.
+  (see ``negative/__init__.py``): a missing code and an unexpected one both fail
+  (``negative/mujoco/`` is compared by ``test_mujoco_stubs.py``, from the same runs).
 
-``negative/`` is excluded from the plain ``mypy``/``pyright`` runs of ``nox -s tests``.
+A plain ``mypy`` run leaves ``negative/`` out (``[tool.mypy] exclude``); give pyright the
+files as ``typed_paths()`` does.
 """
 
 from __future__ import annotations
@@ -31,7 +36,10 @@ ROOT = Path(__file__).resolve().parents[2]
 TYPING_DIR = Path(__file__).resolve().parent
 NEGATIVE_DIR = TYPING_DIR / "negative"
 NEGATIVE_FILES = sorted(p for p in NEGATIVE_DIR.glob("*.py") if p.name != "__init__.py")
+MUJOCO_NEGATIVE_FILES = sorted((NEGATIVE_DIR / "mujoco").glob("*.py"))
 POSITIVE_FILES = sorted(p for p in TYPING_DIR.rglob("*.py") if NEGATIVE_DIR not in p.parents)
+# The typed code, relative to ROOT: mypy --strict and pyright strict find no error in it.
+TYPED_PATHS = ("src", "codegen", "tests/typing", "examples")
 
 MARKER = re.compile(r"#\s*E:\s*(?P<body>.*)$")
 MARKER_GROUP = re.compile(r"(?P<checker>\w+)\[(?P<codes>[^\]]*)\]")
@@ -159,13 +167,16 @@ def parse_pyright(returncode: int, stdout: str, stderr: str) -> list[Diagnostic]
     return diagnostics
 
 
-def run_both(files: list[Path], cache_dir: Path) -> dict[Checker, list[Diagnostic]]:
-    """mypy and pyright side by side (two processes), then their diagnostics."""
+def run_both(files: list[Path], cache_dir: Path, pyright_files: list[Path] | None = None,
+             ) -> dict[Checker, list[Diagnostic]]:
+    """mypy and pyright side by side (two processes), then their diagnostics; pyright over
+    ``pyright_files`` if given."""
     processes = {
         name: subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True)
         for name, command in (("mypy", mypy_command(files, cache_dir)),
-                              ("pyright", pyright_command(files)))
+                              ("pyright", pyright_command(
+                                  files if pyright_files is None else pyright_files)))
     }
     outputs = {name: process.communicate() for name, process in processes.items()}
     return {
@@ -175,12 +186,23 @@ def run_both(files: list[Path], cache_dir: Path) -> dict[Checker, list[Diagnosti
 
 
 def all_files() -> list[Path]:
-    return POSITIVE_FILES + NEGATIVE_FILES
+    """Every file the runs check (absolute paths)."""
+    found = {p.resolve() for path in TYPED_PATHS for p in (ROOT / path).rglob("*.py")}
+    return sorted(found | set(NEGATIVE_FILES) | set(MUJOCO_NEGATIVE_FILES))
+
+
+def run_typed_code(cache_dir: Path) -> dict[Checker, list[Diagnostic]]:
+    """Both checkers over the typed code and the negative cases. mypy is given the folders
+    (its configuration's exclude leaves ``negative/`` out of them) and the negative files;
+    pyright the folders, which include them."""
+    return run_both([Path(p) for p in TYPED_PATHS] + NEGATIVE_FILES + MUJOCO_NEGATIVE_FILES,
+                    cache_dir, pyright_files=[Path(p) for p in TYPED_PATHS])
 
 
 @pytest.fixture(scope="module")
-def reports(tmp_path_factory: pytest.TempPathFactory) -> dict[Checker, list[Diagnostic]]:
-    return run_both(all_files(), tmp_path_factory.mktemp("mypy_cache"))
+def reports(typed_code_reports: dict[Checker, list[Diagnostic]]
+            ) -> dict[Checker, list[Diagnostic]]:
+    return typed_code_reports  # tests/typing/conftest.py: one run per session
 
 
 # ----------------------------------------------------------------------------- comparison
@@ -241,6 +263,25 @@ def test_positive_files_are_clean(checker: Checker,
     for path in POSITIVE_FILES:
         problems += compare(checker, path, {}, reports[checker])
     assert not problems, f"{checker} on the positive cases:\n" + "\n".join(problems)
+
+
+@pytest.mark.parametrize("checker", CHECKERS)
+def test_the_typed_code_is_clean(checker: Checker,
+                                 reports: Mapping[Checker, list[Diagnostic]]) -> None:
+    """src/, codegen/, examples/ (and tests/typing/ outside the negative cases): what the
+    plain ``mypy``/``pyright`` runs over TYPED_PATHS would report."""
+    negative = set(NEGATIVE_FILES) | set(MUJOCO_NEGATIVE_FILES)
+    found = [f"{d.file.relative_to(ROOT)}:{d.line}: [{d.code}] {d.message.splitlines()[0]}"
+             for d in reports[checker] if d.file.is_relative_to(ROOT) and d.file not in negative]
+    assert not found, f"{checker} (strict) on the typed code:\n" + "\n".join(found)
+
+
+def test_the_runs_check_the_typed_code() -> None:
+    """The folders hold the code (a moved folder would be checked as nothing)."""
+    files = all_files()
+    for path in TYPED_PATHS:
+        assert any(f.is_relative_to(ROOT / path) for f in files), path
+    assert set(POSITIVE_FILES) <= set(files) and set(NEGATIVE_FILES) <= set(files)
 
 
 @pytest.mark.parametrize("path", NEGATIVE_FILES, ids=[p.stem for p in NEGATIVE_FILES])
