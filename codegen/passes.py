@@ -8,6 +8,7 @@ every row, child and name it is given.
 from __future__ import annotations
 
 import copy
+import dataclasses
 import re
 from collections.abc import Iterable, Mapping
 
@@ -149,10 +150,14 @@ def finish(schema: ir.Schema, facts: Facts) -> None:
     rename_classes(schema, facts.class_names)
     mark_default_rows(schema, facts.default_rows)
     mark_composition(schema, facts.compose, facts.attachment_sites)
-    schema.language = copy.deepcopy(facts.language)
-    for name in schema.language.joints:  # rows, not tags (<equality><joint> is no joint)
-        _row(schema, name, f"[language] joints {name}")
-    mark_typed_references(schema, facts.typed_references)
+    language = facts.language
+    schema.language = None if language is None else dataclasses.replace(language,
+                                                                         root=schema.root)
+    schema.stale_language = ""
+    if language is not None:
+        for name in language.joints:  # rows, not tags (<equality><joint> is no joint)
+            _row(schema, name, f"[language] joints {name}")
+        mark_typed_references(schema, language.typed_references)
 
 
 def mark_typed_references(schema: ir.Schema, table: Mapping[str, str]) -> None:
@@ -361,6 +366,8 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
     """The facts naming what MuJoCo's compiler makes must name rows, attributes and keywords
     of the grammar: a MuJoCo release that renames one shows up here, not as wrong names."""
     language = schema.language
+    if language is None:
+        return []
     rows: dict[str, list[ir.ElementDef]] = {}
     for row in schema.elements.values():
         rows.setdefault(row.tag, []).append(row)
@@ -380,6 +387,8 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
         attribute(language.replicate, language.replicate_separator, "string")
     problems += _template_problems("language replicate_copy", language.replicate_copy,
                                    {"name", "sep", "index"})
+    problems += [f"language merge_rules {key}: expected a key \"tag@attribute\""
+                 for key in language.merge_rules if "@" not in key]
     for key in language.name_lists:
         tag, _, name = key.partition("@")
         if tag in rows:
@@ -395,6 +404,8 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
             keywords = {k for k, _ in schema.enums[dof.enum].values}
             problems += [f"language flexcomp nodes: {k!r} is no keyword of <{flexcomp.tag}> "
                          f"{flexcomp.dof}" for k in flexcomp.nodes if k not in keywords]
+        problems += [f"language flexcomp nodes {k}: expected a positive integer, got {n}"
+                     for k, n in flexcomp.nodes.items() if n < 1]
         problems += _template_problems("language flexcomp vertex_body", flexcomp.vertex_body,
                                        {"name", "vertex"})
         problems += _template_problems("language flexcomp node_body", flexcomp.node_body,

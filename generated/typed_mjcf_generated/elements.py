@@ -13,10 +13,10 @@ from typing import Literal, TypeAlias, TypedDict, get_args
 
 from typed_mjcf import types as _t
 from typed_mjcf._base import Attachable, Element, ModelRoot
-from typed_mjcf._grammar import AttachFacts, FlexcompFacts, GrammarFacts, KeyframeFacts
 from typed_mjcf._grammar import AttributeSpec as A
 from typed_mjcf._grammar import ChildSpec as C
 from typed_mjcf._grammar import ElementSpec as S
+from typed_mjcf._language import AttachFacts, FlexcompFacts, GrammarFacts, KeyframeFacts
 from typed_mjcf._tree import finish_grammar
 
 __all__ = [
@@ -4724,8 +4724,10 @@ finish_grammar(GrammarFacts(
     dclass='class',
     class_namespace='default',
     actuator_namespace='actuator',
+    model_name='model',
     named_after_file={'hfield': 'file', 'mesh': 'file', 'skin': 'file', 'texture': 'file'},
     named_from_contents=frozenset(['model']),
+    attach=AttachFacts(tag='attach', model='model', prefix='prefix', references=('body', 'frame')),
     replicate_separator='sep',
     merge_rules={'map@zfar': 'max', 'map@znear': 'min', 'option@ccd_iterations': 'max', 'option@ccd_tolerance': 'min', 'option@iterations': 'max', 'option@ls_iterations': 'max', 'option@ls_tolerance': 'min', 'option@noslip_iterations': 'max', 'option@noslip_tolerance': 'min', 'option@sdf_initpoints': 'max', 'option@sdf_iterations': 'max', 'option@timestep': 'min', 'option@tolerance': 'min', 'size@memory': 'max-bytes', 'size@nconmax': 'max', 'size@njmax': 'max'},
     skin_file='skin@file',
@@ -4733,9 +4735,10 @@ finish_grammar(GrammarFacts(
     replicate_copy='{name}{sep}{index}',
     copied_with_replicate=frozenset(['actuator', 'contact', 'custom', 'deformable', 'equality', 'sensor', 'tendon']),
     name_lists={'flex@body': 'body', 'flex@node': 'body'},
-    keyframe=KeyframeFacts(**{'act': 'act', 'ctrl': 'ctrl', 'mpos': 'mpos', 'mquat': 'mquat', 'qpos': 'qpos', 'qvel': 'qvel', 'time': 'time'}),
-    attach=AttachFacts('attach', 'model', 'prefix', ('body', 'frame')),
-    flexcomp=FlexcompFacts('flexcomp', 'body', 'dof', 'rigid', '{name}_{vertex}', '{name}_{i}_{j}_{k}', {'quadratic': 3, 'trilinear': 2}),
+    typed_references={'objname': 'objtype', 'refname': 'reftype'},
+    type_namespaces={'xbody': 'body'},
+    flexcomp=FlexcompFacts(tag='flexcomp', namespace='body', dof='dof', rigid='rigid', vertex_body='{name}_{vertex}', node_body='{name}_{i}_{j}_{k}', nodes={'quadratic': 3, 'trilinear': 2}),
+    keyframe=KeyframeFacts(qpos='qpos', qvel='qvel', act='act', ctrl='ctrl', mpos='mpos', mquat='mquat', time='time'),
 ))
 
 Integers2: TypeAlias = tuple[_t.Integer, _t.Integer] | _t.NumberList[_t.Integer] | _t.IntArrayLike

@@ -50,7 +50,8 @@ from typed_mjcf._codecs import ArrayCodec, Rejected
 from typed_mjcf._compat import STATE as _COMPAT
 from typed_mjcf._compat import dm_control_namespace
 from typed_mjcf._debuginfo import RECORDER as _RECORDER
-from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
+from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._language import GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._sourcelines import SourceText, file_start_line
 from typed_mjcf.errors import (
