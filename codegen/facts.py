@@ -111,8 +111,9 @@ class Facts:
     language: GrammarFacts | None = None
 
 
-def load_facts(path: Path = FACTS_PATH) -> Facts:
-    """Read ``schema/facts.toml`` (or another facts file)."""
+def load_facts(path: Path | None = None) -> Facts:
+    """Read ``schema/facts.toml`` (``FACTS_PATH``, read when called) or another facts file."""
+    path = FACTS_PATH if path is None else path
     return parse_facts(path.read_text(encoding="utf-8"), str(path))
 
 

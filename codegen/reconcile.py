@@ -25,6 +25,7 @@ import re
 from dataclasses import dataclass, field
 
 from codegen import ir, naming, probe
+from codegen.errors import FactsError
 from codegen.facts import AttributeOverride, Facts
 from codegen.passes import (
     DEFAULT_ROW,
@@ -635,7 +636,7 @@ class _Sync:
         for (element, name), hand in sorted(self.overrides.items()):
             row = self.rows.get(element)
             if row is None or all(a.name != name for a in row.attributes):
-                raise ValueError(f"schema/facts.toml [[attribute]] {element}@{name}: the synced "
+                raise FactsError(f"schema/facts.toml [[attribute]] {element}@{name}: the synced "
                                  "schema has no such attribute; fix or remove the entry")
             self._override(row, hand)
             for projection in sorted(self.rows.values(), key=lambda r: r.name):

@@ -317,14 +317,14 @@ def test_override_to_keyword_needs_an_enum() -> None:
 
 @pytest.mark.parametrize(("override", "message"), [
     (AttributeOverride("joint", "type", kind="real"),
-     "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
+     "schema/facts.toml [[attribute]] joint@type: a real attribute needs dtype 'double' or 'float'"),
     (AttributeOverride("joint", "type", kind="chars"),
-     "attribute override joint@type: chars attribute needs a bounded arity"),
+     "schema/facts.toml [[attribute]] joint@type: chars attribute needs a bounded arity"),
     (AttributeOverride("joint", "type", kind="ref"),
-     "attribute override joint@type: ref attribute needs a namespace"),
+     "schema/facts.toml [[attribute]] joint@type: ref attribute needs a namespace"),
 ])
 def test_override_errors(override: AttributeOverride, message: str) -> None:
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(FactsError) as info:
         normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
     assert str(info.value) == message
 
@@ -371,9 +371,9 @@ def test_a_kind_other_than_flags_forgets_alone_and_order() -> None:
      "keyword 'hinge' of enum 'jt' is also one of enum 'jt': a value would be ambiguous"),
 ])
 def test_keywords_alone_errors(override: AttributeOverride, message: str) -> None:
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(FactsError) as info:
         normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
-    assert str(info.value) == f"attribute override joint@type: {message}"
+    assert str(info.value) == f"schema/facts.toml [[attribute]] joint@type: {message}"
 
 
 def test_check_keywords_alone() -> None:
