@@ -42,7 +42,7 @@ def note(a: ir.AttributeDef) -> str | None:
 
 
 def attribute_doc(typer: Typer, a: ir.AttributeDef) -> str:
-    """One line: type, allowed values or length, default or required, pattern, note."""
+    """One line: type, allowed values or length, default or required, pattern, bounds, note."""
     facts = [typer.describe(a)]
     if a.default is not None:
         facts.append(f'default "{a.default}"')
@@ -52,6 +52,9 @@ def attribute_doc(typer: Typer, a: ir.AttributeDef) -> str:
         facts.append("no default (unset when absent)")
     if a.pattern is not None:
         facts.append(f"must match ``{a.pattern}``")
+    if a.bounds:
+        each = "each value " if a.arity is not None else ""
+        facts.append(f"{each}{' and '.join(a.bounds)}")
     line = "; ".join(facts) + "."
     text = note(a)
     return f"{line} {text}" if text else line

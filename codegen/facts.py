@@ -8,6 +8,7 @@ FactsError naming the file, the table and the key. The passes read the typed fie
 from __future__ import annotations
 
 import dataclasses
+import re
 import tomllib
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
@@ -56,6 +57,7 @@ class AttributeOverride:
     pattern: str | None = None
     field: str | None = None
     doc: str | None = None
+    bounds: tuple[str, ...] | None = None  # numbers: "> 0", ">= -1", "<= 5" (each value)
     reason: str = ""  # why the entry exists (required in facts.toml); documentation only
 
 
@@ -204,10 +206,12 @@ def _constraints(value: object, where: str) -> list[ConstraintFact]:
         if len(bundles) < 2 or not all(bundles):
             raise FactsError(f"{at} bundles: expected two or more non-empty lists of attribute "
                              f"names, got {entry['bundles']!r}")
-        entries.append(ConstraintFact(
-            element=_str(entry["element"], f"{at} element"),
-            kind=_choice(entry["kind"], _CONSTRAINT_KINDS, f"{at} kind"),
-            bundles=bundles, reason=_str(entry["reason"], f"{at} reason")))
+        rows = entry["element"]  # one row, or a list of rows the same rule holds on
+        kind = _choice(entry["kind"], _CONSTRAINT_KINDS, f"{at} kind")
+        reason = _str(entry["reason"], f"{at} reason")
+        entries += [ConstraintFact(element=row, kind=kind, bundles=bundles, reason=reason)
+                    for row in (_str_list(rows, f"{at} element") if isinstance(rows, list)
+                                else [_str(rows, f"{at} element")])]
     return entries
 
 
@@ -322,6 +326,18 @@ def _alone(value: object, where: str) -> tuple[str, ...]:
     return tuple(names)
 
 
+BOUND = re.compile(r"(>=|<=|>|<) (-?[0-9]+(?:\.[0-9]+)?)")
+
+
+def _bounds(value: object, where: str) -> tuple[str, ...]:
+    """A non-empty list of bounds each value must keep, like ``"> 0"`` or ``"<= 5"``."""
+    bounds = _str_list(value, where) if isinstance(value, list) else []
+    if not bounds or not all(BOUND.fullmatch(b) for b in bounds):
+        raise FactsError(f'{where}: expected a list of bounds like "> 0", ">= -1", "<= 5", '
+                         f"got {value!r}")
+    return tuple(bounds)
+
+
 _OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride))
 
 
@@ -345,5 +361,6 @@ def _override(value: object, where: str) -> AttributeOverride:
         ordered=opt_bool("ordered"),
         required=opt_bool("required"), nodefault=opt_bool("nodefault"),
         pattern=opt_str("pattern"), field=opt_str("field"), doc=opt_str("doc"),
+        bounds=_bounds(entry["bounds"], f"{where} bounds") if "bounds" in entry else None,
         reason=_str(entry["reason"], f"{where} reason"),
     )

@@ -76,6 +76,8 @@ class AttributeDef:
     directory: list[str] | None = None  # files: <compiler> attributes naming their folder, in order
     doc: str = ""  # one-line description
     anchor: str | None = None  # XMLreference.rst anchor, e.g. "body-joint-type"
+    # numbers: bounds every value keeps, e.g. ["> 0"] (MuJoCo refuses others; facts.toml)
+    bounds: list[str] | None = None
 
 
 @dataclass
@@ -158,7 +160,7 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
     for key in ("dtype", "arity", "enum", "alone", "namespace", "namespace_from", "default",
-                "pattern", "field", "directory", "anchor"):
+                "pattern", "field", "directory", "anchor", "bounds"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
@@ -274,6 +276,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         directory=cast("list[str] | None", d.get("directory")),
         doc=cast(str, d.get("doc", "")),
         anchor=cast("str | None", d.get("anchor")),
+        bounds=cast("list[str] | None", d.get("bounds")),
     )
 
 

@@ -302,6 +302,8 @@ def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
             setattr(attr, name, value)
     if o.alone is not None:
         attr.alone = list(o.alone)
+    if o.bounds is not None:
+        attr.bounds = list(o.bounds)
 
 
 def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
@@ -320,6 +322,8 @@ def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
         attr.namespace = None
     if attr.kind not in ("string", "chars"):
         attr.pattern = None
+    if attr.kind not in ("int", "real"):
+        attr.bounds = None
 
 
 def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
@@ -330,6 +334,8 @@ def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
         return "a real attribute needs dtype 'double' or 'float'"
     if attr.kind in ("keyword", "flags") and attr.enum not in schema.enums:
         return f"{attr.kind} attribute needs a declared enum, got {attr.enum!r}"
+    if attr.bounds and attr.kind not in ("int", "real"):
+        return f"only numbers take bounds, not a {attr.kind} attribute"
     if attr.kind != "flags" and (attr.alone or attr.ordered):
         return f"only flags take keywords alone or in order, not a {attr.kind} attribute"
     if attr.alone:

@@ -905,7 +905,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             ccd_iterations: int; default "35".
             sdf_iterations: int; default "10".
             sdf_initpoints: int; default "40".
-            actuatorgroupdisable: int[] (any length); no default (unset when absent). Bits of disableactuator.
+            actuatorgroupdisable: int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator.
         """
 
     @property
@@ -942,14 +942,14 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             nstack: int; default "-1".
             nuserdata: int; no default (unset when absent).
             nkey: int; no default (unset when absent).
-            nuser_body: int; default "-1".
-            nuser_jnt: int; default "-1".
-            nuser_geom: int; default "-1".
-            nuser_site: int; default "-1".
-            nuser_cam: int; default "-1".
-            nuser_tendon: int; default "-1".
-            nuser_actuator: int; default "-1".
-            nuser_sensor: int; default "-1".
+            nuser_body: int; default "-1"; >= -1.
+            nuser_jnt: int; default "-1"; >= -1.
+            nuser_geom: int; default "-1"; >= -1.
+            nuser_site: int; default "-1"; >= -1.
+            nuser_cam: int; default "-1"; >= -1.
+            nuser_tendon: int; default "-1"; >= -1.
+            nuser_actuator: int; default "-1"; >= -1.
+            nuser_sensor: int; default "-1"; >= -1.
         """
 
     @property
@@ -974,7 +974,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             meaninertia: double; no default (unset when absent).
             meanmass: double; no default (unset when absent).
             meansize: double; no default (unset when absent).
-            extent: double; no default (unset when absent).
+            extent: double; no default (unset when absent); > 0.
             center: double[3]; no default (unset when absent).
         """
 
@@ -1605,8 +1605,8 @@ class Actuator(_Typed):
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             timeconst: double; no default (unset when absent).
             dclass: dm_control's name for ``class_``.
         """
@@ -1744,8 +1744,8 @@ class Actuator(_Typed):
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1874,8 +1874,8 @@ class Actuator(_Typed):
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             ki: double; no default (unset when absent).
             imax: double; no default (unset when absent).
             slewmax: double; no default (unset when absent).
@@ -1925,7 +1925,7 @@ class Actuator(_Typed):
             nsample: int; no default (unset when absent).
             interp: one of: zoh, linear, cubic; no default (unset when absent).
             delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
+            ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
@@ -1941,7 +1941,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kv: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2082,7 +2082,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             timeconst: double[2]; no default (unset when absent).
-            tausmooth: double; no default (unset when absent).
+            tausmooth: double; no default (unset when absent); >= 0.
             force: double; no default (unset when absent).
             scale: double; no default (unset when absent).
             lmin: double; no default (unset when absent).
@@ -2129,7 +2129,7 @@ class Actuator(_Typed):
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
-            gain: double; no default (unset when absent).
+            gain: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2198,8 +2198,8 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            motorconst: double[1..2] (1 to 2 values); no default (unset when absent).
-            resistance: double; no default (unset when absent).
+            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0.
+            resistance: double; no default (unset when absent); > 0.
             nominal: double[1..3] (1 to 3 values); no default (unset when absent).
             saturation: double[1..3] (1 to 3 values); no default (unset when absent).
             inductance: double[1..2] (1 to 2 values); no default (unset when absent).
@@ -2672,7 +2672,7 @@ class ActuatorPlugin(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -3174,7 +3174,7 @@ class Adhesion(_Typed):
 
     @property
     def gain(self) -> _builtins.float | None:
-        """``gain``: double; no default (unset when absent).
+        """``gain``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
@@ -3330,7 +3330,7 @@ class AssetSection(_Typed):
             vertex: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; no default (unset when absent); >= 0 and <= 5.
         """
 
     @property
@@ -5475,7 +5475,7 @@ class Config(_Typed):
 
     @property
     def value(self) -> _builtins.str | None:
-        """``value``: string; no default (unset when absent).
+        """``value``: string; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
         """
@@ -5746,7 +5746,7 @@ class Custom(_Typed):
 
         Args:
             name: name declared in namespace ``text``; required.
-            data: string; no default (unset when absent).
+            data: string; required.
         """
 
     @property
@@ -6148,7 +6148,7 @@ class Damper(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
@@ -6292,7 +6292,7 @@ class Damper(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
@@ -6541,7 +6541,7 @@ class Dcmotor(_Typed):
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
@@ -6550,7 +6550,7 @@ class Dcmotor(_Typed):
 
     @property
     def resistance(self) -> _builtins.float | None:
-        """``resistance``: double; no default (unset when absent).
+        """``resistance``: double; no default (unset when absent); > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
@@ -7336,8 +7336,8 @@ class Default(_Typed):
             armature: double; no default (unset when absent).
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             timeconst: double; no default (unset when absent).
         """
 
@@ -7435,8 +7435,8 @@ class Default(_Typed):
             armature: double; no default (unset when absent).
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
         """
 
     @property
@@ -7535,8 +7535,8 @@ class Default(_Typed):
             armature: double; no default (unset when absent).
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             ki: double; no default (unset when absent).
             imax: double; no default (unset when absent).
             slewmax: double; no default (unset when absent).
@@ -7574,7 +7574,7 @@ class Default(_Typed):
             nsample: int; no default (unset when absent).
             interp: one of: zoh, linear, cubic; no default (unset when absent).
             delay: double; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
+            ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
@@ -7582,7 +7582,7 @@ class Default(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             armature: double; no default (unset when absent).
             cranklength: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
         """
 
     @property
@@ -7726,7 +7726,7 @@ class Default(_Typed):
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
-            gain: double; no default (unset when absent).
+            gain: double; no default (unset when absent); >= 0.
         """
 
     @property
@@ -7775,8 +7775,8 @@ class Default(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
             armature: double; no default (unset when absent).
             cranklength: double; no default (unset when absent).
-            motorconst: double[1..2] (1 to 2 values); no default (unset when absent).
-            resistance: double; no default (unset when absent).
+            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0.
+            resistance: double; no default (unset when absent); > 0.
             nominal: double[1..3] (1 to 3 values); no default (unset when absent).
             saturation: double[1..3] (1 to 3 values); no default (unset when absent).
             inductance: double[1..2] (1 to 2 values); no default (unset when absent).
@@ -8072,7 +8072,7 @@ class DefaultAdhesion(_Typed):
 
     @property
     def gain(self) -> _builtins.float | None:
-        """``gain``: double; no default (unset when absent).
+        """``gain``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
@@ -8522,7 +8522,7 @@ class DefaultDamper(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
@@ -8594,7 +8594,7 @@ class DefaultDamper(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
@@ -8731,7 +8731,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent).
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
@@ -8740,7 +8740,7 @@ class DefaultDcmotor(_Typed):
 
     @property
     def resistance(self) -> _builtins.float | None:
-        """``resistance``: double; no default (unset when absent).
+        """``resistance``: double; no default (unset when absent); > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
@@ -9699,7 +9699,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
@@ -9708,7 +9708,7 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
@@ -10281,7 +10281,7 @@ class DefaultMaterial(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer
 
         Args:
-            texture: reference to namespace ``texture``; no default (unset when absent).
+            texture: reference to namespace ``texture``; required.
             role: string; required.
         """
 
@@ -11139,7 +11139,7 @@ class DefaultPid(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
@@ -11148,7 +11148,7 @@ class DefaultPid(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
@@ -11360,7 +11360,7 @@ class DefaultPosition(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
@@ -11369,7 +11369,7 @@ class DefaultPosition(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
@@ -12208,7 +12208,7 @@ class Deformable(_Typed):
             vertex: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; no default (unset when absent); >= 0 and <= 5.
         """
 
     @overload
@@ -13557,7 +13557,7 @@ class Fixed(_Typed):
 
         Args:
             joint: reference to namespace ``joint``; required.
-            coef: double; no default (unset when absent).
+            coef: double; required.
         """
 
     @overload
@@ -13618,7 +13618,7 @@ class FixedJoint(_Typed):
 
     @property
     def coef(self) -> _builtins.float | None:
-        """``coef``: double; no default (unset when absent).
+        """``coef``: double; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
         """
@@ -18304,7 +18304,7 @@ class Global(_Typed):
 
     @property
     def realtime(self) -> _builtins.float | None:
-        """``realtime``: float; default "1".
+        """``realtime``: float; default "1"; > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
         """
@@ -18488,7 +18488,7 @@ class Headlight(_Typed):
 
     @property
     def active(self) -> _builtins.int | None:
-        """``active``: int; default "1".
+        """``active``: int; default "1"; >= 0 and <= 1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
         """
@@ -18869,7 +18869,7 @@ class Instance(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -19142,7 +19142,7 @@ class Intvelocity(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
@@ -19151,7 +19151,7 @@ class Intvelocity(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
@@ -20298,7 +20298,7 @@ class Layer(_Typed):
 
     @property
     def texture(self) -> _builtins.str | Texture | None:
-        """``texture``: reference to namespace ``texture``; no default (unset when absent).
+        """``texture``: reference to namespace ``texture``; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
         """
@@ -20868,7 +20868,7 @@ class Map(_Typed):
 
     @property
     def znear(self) -> _builtins.float | None:
-        """``znear``: float; default "0.01".
+        """``znear``: float; default "0.01"; > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
         """
@@ -21062,7 +21062,7 @@ class Material(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer
 
         Args:
-            texture: reference to namespace ``texture``; no default (unset when absent).
+            texture: reference to namespace ``texture``; required.
             role: string; required.
         """
 
@@ -21849,7 +21849,7 @@ class Muscle(_Typed):
 
     @property
     def tausmooth(self) -> _builtins.float | None:
-        """``tausmooth``: double; no default (unset when absent).
+        """``tausmooth``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
         """
@@ -22402,7 +22402,7 @@ class Option(_Typed):
 
     @property
     def actuatorgroupdisable(self) -> _t.Int32Array | None:
-        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent). Bits of disableactuator.
+        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
         """
@@ -23136,7 +23136,7 @@ class Pid(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
@@ -23145,7 +23145,7 @@ class Pid(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
@@ -23324,7 +23324,7 @@ class Plugin(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -23583,7 +23583,7 @@ class Position(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
@@ -23592,7 +23592,7 @@ class Position(_Typed):
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
@@ -23661,7 +23661,7 @@ class Pulley(_Typed):
 
     @property
     def divisor(self) -> _builtins.float | None:
-        """``divisor``: double; no default (unset when absent).
+        """``divisor``: double; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
         """
@@ -26396,7 +26396,7 @@ class Sensor(_Typed):
             subtree1: reference to namespace ``body``; no default (unset when absent).
             subtree2: reference to namespace ``body``; no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
-            num: int; no default (unset when absent).
+            num: int; no default (unset when absent); > 0.
             data: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).
             reduce: one of: none, mindist, maxforce, netforce; no default (unset when absent).
         """
@@ -26549,7 +26549,7 @@ class Sensor(_Typed):
             objname: reference to the element ``objtype`` names; no default (unset when absent).
             datatype: one of: real, positive, axis, quaternion; default "real".
             needstage: one of: none, pos, vel, acc; default "acc".
-            dim: int; no default (unset when absent).
+            dim: int; required.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -27033,7 +27033,7 @@ class SensorContact(_Typed):
 
     @property
     def num(self) -> _builtins.int | None:
-        """``num``: int; no default (unset when absent).
+        """``num``: int; no default (unset when absent); > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
         """
@@ -27195,7 +27195,7 @@ class SensorPlugin(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -27481,7 +27481,7 @@ class Size(_Typed):
 
     @property
     def nuser_body(self) -> _builtins.int | None:
-        """``nuser_body``: int; default "-1".
+        """``nuser_body``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
         """
@@ -27490,7 +27490,7 @@ class Size(_Typed):
 
     @property
     def nuser_jnt(self) -> _builtins.int | None:
-        """``nuser_jnt``: int; default "-1".
+        """``nuser_jnt``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
         """
@@ -27499,7 +27499,7 @@ class Size(_Typed):
 
     @property
     def nuser_geom(self) -> _builtins.int | None:
-        """``nuser_geom``: int; default "-1".
+        """``nuser_geom``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
         """
@@ -27508,7 +27508,7 @@ class Size(_Typed):
 
     @property
     def nuser_site(self) -> _builtins.int | None:
-        """``nuser_site``: int; default "-1".
+        """``nuser_site``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
         """
@@ -27517,7 +27517,7 @@ class Size(_Typed):
 
     @property
     def nuser_cam(self) -> _builtins.int | None:
-        """``nuser_cam``: int; default "-1".
+        """``nuser_cam``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
         """
@@ -27526,7 +27526,7 @@ class Size(_Typed):
 
     @property
     def nuser_tendon(self) -> _builtins.int | None:
-        """``nuser_tendon``: int; default "-1".
+        """``nuser_tendon``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
         """
@@ -27535,7 +27535,7 @@ class Size(_Typed):
 
     @property
     def nuser_actuator(self) -> _builtins.int | None:
-        """``nuser_actuator``: int; default "-1".
+        """``nuser_actuator``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
         """
@@ -27544,7 +27544,7 @@ class Size(_Typed):
 
     @property
     def nuser_sensor(self) -> _builtins.int | None:
-        """``nuser_sensor``: int; default "-1".
+        """``nuser_sensor``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
         """
@@ -27645,7 +27645,7 @@ class Skin(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); >= 0 and <= 5.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
         """
@@ -27975,7 +27975,7 @@ class Spatial(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley
 
         Args:
-            divisor: double; no default (unset when absent).
+            divisor: double; required.
         """
 
     @overload
@@ -28129,7 +28129,7 @@ class Statistic(_Typed):
 
     @property
     def extent(self) -> _builtins.float | None:
-        """``extent``: double; no default (unset when absent).
+        """``extent``: double; no default (unset when absent); > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
         """
@@ -29417,7 +29417,7 @@ class Text(_Typed):
 
     @property
     def data(self) -> _builtins.str | None:
-        """``data``: string; no default (unset when absent).
+        """``data``: string; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
         """
@@ -30102,7 +30102,7 @@ class User(_Typed):
 
     @property
     def dim(self) -> _builtins.int | None:
-        """``dim``: int; no default (unset when absent).
+        """``dim``: int; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
         """
@@ -30582,7 +30582,7 @@ class Visual(_Typed):
             glow: float; default "0.3".
             offwidth: int; default "640".
             offheight: int; default "480".
-            realtime: float; default "1".
+            realtime: float; default "1"; > 0.
             ellipsoidinertia: bool; default "false".
             bvactive: bool; default "false".
         """
@@ -30634,7 +30634,7 @@ class Visual(_Typed):
             ambient: float[3]; default "0.1 0.1 0.1".
             diffuse: float[3]; default "0.4 0.4 0.4".
             specular: float[3]; default "0.5 0.5 0.5".
-            active: int; default "1".
+            active: int; default "1"; >= 0 and <= 1.
         """
 
     @property
@@ -30671,7 +30671,7 @@ class Visual(_Typed):
             alpha: float; default "0.3".
             fogstart: float; default "3".
             fogend: float; default "10".
-            znear: float; default "0.01".
+            znear: float; default "0.01"; > 0.
             zfar: float; default "50".
             haze: float; default "0.3".
             shadowclip: float; default "1".

@@ -31,6 +31,7 @@ class AttributeSpec:
         "alone",
         "anchor",
         "as_is",
+        "bounds",
         "codec",
         "default",
         "direct",
@@ -71,6 +72,7 @@ class AttributeSpec:
     default: str | None
     required: bool
     pattern: str | None
+    bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
     directory: tuple[str, ...]
     anchor: str | None
     doc: str
@@ -99,6 +101,7 @@ class AttributeSpec:
         default: str | None = None,
         required: bool = False,
         pattern: str | None = None,
+        bounds: Sequence[tuple[str, float]] = (),
         directory: Sequence[str] = (),
         anchor: str | None = None,
         doc: str = "",
@@ -121,6 +124,8 @@ class AttributeSpec:
         self.default = default
         self.required = required
         self.pattern = pattern
+        # every value keeps these, or MuJoCo refuses the model (validate() checks them)
+        self.bounds = tuple(bounds)
         self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
         self.anchor = anchor
         self.doc = doc
