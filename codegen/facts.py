@@ -210,8 +210,8 @@ def _constraints(value: object, where: str) -> list[ConstraintFact]:
         kind = _choice(entry["kind"], _CONSTRAINT_KINDS, f"{at} kind")
         reason = _str(entry["reason"], f"{at} reason")
         entries += [ConstraintFact(element=row, kind=kind, bundles=bundles, reason=reason)
-                    for row in (_str_list(rows, f"{at} element") if isinstance(rows, list)
-                                else [_str(rows, f"{at} element")])]
+                    for row in (_str_list(rows, f"{at} element") if not isinstance(rows, str)
+                                else [rows])]
     return entries
 
 
@@ -331,7 +331,7 @@ BOUND = re.compile(r"(>=|<=|>|<) (-?[0-9]+(?:\.[0-9]+)?)")
 
 def _bounds(value: object, where: str) -> tuple[str, ...]:
     """A non-empty list of bounds each value must keep, like ``"> 0"`` or ``"<= 5"``."""
-    bounds = _str_list(value, where) if isinstance(value, list) else []
+    bounds = _str_list(value, where) if not isinstance(value, str) else []
     if not bounds or not all(BOUND.fullmatch(b) for b in bounds):
         raise FactsError(f'{where}: expected a list of bounds like "> 0", ">= -1", "<= 5", '
                          f"got {value!r}")
