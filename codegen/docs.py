@@ -10,17 +10,24 @@ of values, the default (what MuJoCo uses when the attribute is absent), then MuJ
 Editors read an ``Args:`` block line by line: pyright shows, for keyword ``p``, the first line
 of the whole docstring containing ``p: `` (or ``p (``), and only that line. So each entry is
 one line, a note never contains ``word: ``, and an attribute comes before any attribute whose
-name ends with its name (``range`` before ``ctrlrange``): ``doc_order()``, which the run time
-repeats (``typed_mjcf._grammar.doc_order``; a test compares the two docstrings).
+name ends with its name (``range`` before ``ctrlrange``). The layout of an ``add_<tag>()``
+docstring is ``typed_mjcf._doclines.adder_listing``, which the run time uses too.
 """
 
 from __future__ import annotations
 
 import re
 import textwrap
+from typing import TYPE_CHECKING
 
 from codegen import ir
+from codegen.runtime import core_module
 from codegen.typing_names import Typer
+
+if TYPE_CHECKING:
+    from typed_mjcf import _doclines as doclines
+else:  # the module alone, without the package's __init__ (see codegen/runtime.py)
+    doclines = core_module("_doclines")
 
 DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 
@@ -65,16 +72,6 @@ def attribute_url(el: ir.ElementDef, a: ir.AttributeDef) -> str | None:
     return f"{DOCS_URL}#{anchor}" if anchor is not None else None
 
 
-def doc_order(names: list[str]) -> list[str]:
-    """``names`` in order, except that a name comes before every name ending with it."""
-    placed: list[str] = []
-    for name in names:
-        at = next((i for i, other in enumerate(placed)
-                   if other != name and other.endswith(name)), len(placed))
-        placed.insert(at, name)
-    return placed
-
-
 def escape(text: str) -> str:
     return text.replace("\\", "\\\\").replace('"""', "'''")
 
@@ -90,18 +87,14 @@ def property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef) -> str:
 
 def adder_doc(typer: Typer, el: ir.ElementDef, entries: dict[str, str]) -> str:
     """``add_<tag>()``'s docstring: the element, its link, ``Args:`` (one line each)."""
-    parts = [f"Add a ``<{el.tag}>`` child and return it."]
-    if el.anchor is not None:
-        parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
-    if entries:
-        parts.append("\n".join(["Args:", *(f"    {name}: {entries[name]}"
-                                          for name in doc_order(list(entries)))]))
-    return textwrap.indent(escape("\n\n".join(parts)), " " * 8).strip() + "\n        "
+    url = f"{DOCS_URL}#{el.anchor}" if el.anchor is not None else None
+    text = doclines.adder_listing(el.tag, url, entries)
+    return textwrap.indent(escape(text), " " * 8).strip() + "\n        "
 
 
 def adder_entries(typer: Typer, el: ir.ElementDef, dclass: str) -> dict[str, str]:
     """Keyword -> its line, for the attributes of ``el`` (and dm_control's ``dclass``)."""
     entries = {a.py_name: attribute_doc(typer, a) for a in el.attributes}
     if any(a.name == dclass for a in el.attributes):
-        entries["dclass"] = "dm_control's name for ``class_``."
+        entries["dclass"] = doclines.DCLASS_DOC
     return entries

@@ -12,29 +12,18 @@ the generator from importing it.
 from __future__ import annotations
 
 import dataclasses
-import importlib.util
-import sys
 import types
 import typing
 from collections.abc import Mapping
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from codegen.errors import FactsError
+from codegen.runtime import core_module
 
 if TYPE_CHECKING:
     from typed_mjcf import _language as declaration
-else:  # the module alone, under its own name, without the package's __init__ (see above)
-    _NAME = "typed_mjcf._language"
-    if _NAME in sys.modules:
-        declaration = sys.modules[_NAME]
-    else:
-        _PATH = Path(__file__).resolve().parent.parent / "src" / "typed_mjcf" / "_language.py"
-        _SPEC = importlib.util.spec_from_file_location(_NAME, _PATH)
-        assert _SPEC is not None and _SPEC.loader is not None
-        declaration = importlib.util.module_from_spec(_SPEC)
-        sys.modules[_NAME] = declaration
-        _SPEC.loader.exec_module(declaration)
+else:  # the module alone, without the package's __init__ (see codegen/runtime.py)
+    declaration = core_module("_language")
 
 GrammarFacts = declaration.GrammarFacts
 _D = TypeVar("_D")
