@@ -260,7 +260,7 @@ def _kinds_of_elements(schema: ir.Schema) -> dict[str, list[str]]:
         for attribute in element.attributes:
             if attribute.kind == "id" and attribute.namespace is not None:
                 found.setdefault(attribute.namespace, []).append(element.class_name)
-    body = schema.elements.get(schema.language.body)
+    body = schema.elements.get(schema.language.body) if schema.language else None
     root = schema.elements[schema.root]
     for child in root.children:
         row = schema.elements[child.element]

@@ -10,8 +10,8 @@ of values, the default (what MuJoCo uses when the attribute is absent), then MuJ
 Editors read an ``Args:`` block line by line: pyright shows, for keyword ``p``, the first line
 of the whole docstring containing ``p: `` (or ``p (``), and only that line. So each entry is
 one line, a note never contains ``word: ``, and an attribute comes before any attribute whose
-name ends with its name (``range`` before ``ctrlrange``): ``doc_order()``, which the run time
-repeats (``typed_mjcf._grammar.doc_order``; a test compares the two docstrings).
+name ends with its name (``range`` before ``ctrlrange``). The layout of an ``add_<tag>()``
+docstring is ``typed_mjcf._doclines.adder_listing``, which the run time uses too.
 """
 
 from __future__ import annotations
@@ -19,9 +19,16 @@ from __future__ import annotations
 import re
 import textwrap
 from collections.abc import Mapping
+from typing import TYPE_CHECKING
 
 from codegen import ir
+from codegen.runtime import core_module
 from codegen.typing_names import Typer
+
+if TYPE_CHECKING:
+    from typed_mjcf import _doclines as doclines
+else:  # the module alone, without the package's __init__ (see codegen/runtime.py)
+    doclines = core_module("_doclines")
 
 DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 
@@ -43,8 +50,8 @@ def note(a: ir.AttributeDef) -> str | None:
 
 
 def attribute_doc(typer: Typer, a: ir.AttributeDef, releases: str | None = None) -> str:
-    """One line: type, allowed values or length, default or required, pattern, the releases
-    that have it (``releases``, when not every release covered does), note."""
+    """One line: type, allowed values or length, default or required, pattern, bounds, the
+    releases that have it (``releases``, when not every release covered does), note."""
     facts = [typer.describe(a)]
     if a.default is not None:
         facts.append(f'default "{a.default}"')
@@ -54,6 +61,9 @@ def attribute_doc(typer: Typer, a: ir.AttributeDef, releases: str | None = None)
         facts.append("no default (unset when absent)")
     if a.pattern is not None:
         facts.append(f"must match ``{a.pattern}``")
+    if a.bounds:
+        each = "each value " if a.arity is not None else ""
+        facts.append(f"{each}{' and '.join(a.bounds)}")
     if releases is not None:
         facts.append(f"in {releases}")
     line = "; ".join(facts) + "."
@@ -64,16 +74,6 @@ def attribute_doc(typer: Typer, a: ir.AttributeDef, releases: str | None = None)
 def attribute_url(el: ir.ElementDef, a: ir.AttributeDef) -> str | None:
     anchor = a.anchor if a.anchor is not None else None
     return f"{DOCS_URL}#{anchor}" if anchor is not None else None
-
-
-def doc_order(names: list[str]) -> list[str]:
-    """``names`` in order, except that a name comes before every name ending with it."""
-    placed: list[str] = []
-    for name in names:
-        at = next((i for i, other in enumerate(placed)
-                   if other != name and other.endswith(name)), len(placed))
-        placed.insert(at, name)
-    return placed
 
 
 def escape(text: str) -> str:
@@ -92,13 +92,9 @@ def property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef,
 
 def adder_doc(typer: Typer, el: ir.ElementDef, entries: dict[str, str]) -> str:
     """``add_<tag>()``'s docstring: the element, its link, ``Args:`` (one line each)."""
-    parts = [f"Add a ``<{el.tag}>`` child and return it."]
-    if el.anchor is not None:
-        parts.append(f"Reference: {DOCS_URL}#{el.anchor}")
-    if entries:
-        parts.append("\n".join(["Args:", *(f"    {name}: {entries[name]}"
-                                          for name in doc_order(list(entries)))]))
-    return textwrap.indent(escape("\n\n".join(parts)), " " * 8).strip() + "\n        "
+    url = f"{DOCS_URL}#{el.anchor}" if el.anchor is not None else None
+    text = doclines.adder_listing(el.tag, url, entries)
+    return textwrap.indent(escape(text), " " * 8).strip() + "\n        "
 
 
 def adder_entries(typer: Typer, el: ir.ElementDef, dclass: str,
@@ -108,5 +104,5 @@ def adder_entries(typer: Typer, el: ir.ElementDef, dclass: str,
     releases = {} if releases is None else releases
     entries = {a.py_name: attribute_doc(typer, a, releases.get(a.name)) for a in el.attributes}
     if any(a.name == dclass for a in el.attributes):
-        entries["dclass"] = "dm_control's name for ``class_``."
+        entries["dclass"] = doclines.DCLASS_DOC
     return entries

@@ -8,12 +8,17 @@ FactsError naming the file, the table and the key. The passes read the typed fie
 from __future__ import annotations
 
 import dataclasses
+import re
 import tomllib
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Literal, TypeVar, cast
 
 from codegen import ir
+from codegen.errors import FactsError
+from codegen.language import GrammarFacts, read_table
+
+__all__ = ["FactsError"]  # raised here, and by the passes applying the facts
 
 FACTS_PATH = Path(__file__).resolve().parent.parent / "schema" / "facts.toml"
 
@@ -28,10 +33,6 @@ TABLES = ("root_children", "single", "enum", "attribute", "constraint", "directo
           "class_names", "compose", "attachment_sites", "default_rows", "language")
 _CONSTRAINT_KINDS: dict[str, ir.ConstraintKind] = {
     "exclusive": "exclusive", "together": "together", "requires": "requires", "oneof": "oneof"}
-
-
-class FactsError(ValueError):
-    """Malformed facts; the message starts with the file path."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -56,6 +57,7 @@ class AttributeOverride:
     pattern: str | None = None
     field: str | None = None
     doc: str | None = None
+    bounds: tuple[str, ...] | None = None  # numbers: "> 0", ">= -1", "<= 5" (each value)
     reason: str = ""  # why the entry exists (required in facts.toml); documentation only
 
 
@@ -106,14 +108,14 @@ class Facts:
     # default-class row -> the element rows taking their defaults from it
     default_rows: dict[str, list[str]] = dataclasses.field(
         default_factory=dict[str, list[str]])
-    # facts about the language as a whole, for the runtime
-    language: ir.LanguageDef = dataclasses.field(default_factory=ir.LanguageDef)
-    # reference attribute -> the attribute whose keyword names its namespace
-    typed_references: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
+    # facts about the language as a whole (typed_mjcf._language declares them); None: the
+    # file has no [language] table (small test files)
+    language: GrammarFacts | None = None
 
 
-def load_facts(path: Path = FACTS_PATH) -> Facts:
-    """Read ``schema/facts.toml`` (or another facts file)."""
+def load_facts(path: Path | None = None) -> Facts:
+    """Read ``schema/facts.toml`` (``FACTS_PATH``, read when called) or another facts file."""
+    path = FACTS_PATH if path is None else path
     return parse_facts(path.read_text(encoding="utf-8"), str(path))
 
 
@@ -131,7 +133,6 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
     def read(table: str, parse: Callable[[object, str], _T], empty: _T) -> _T:
         return parse(raw[table], f"{path}: {_header(table)}") if table in raw else empty
 
-    language = read("language", _language, _LanguageTable())
     return Facts(
         root_children=read("root_children", _strings, {}),
         single=read("single", _string_lists, {}),
@@ -143,8 +144,8 @@ def parse_facts(text: str, path: str = "<string>") -> Facts:
         compose=read("compose", _compose, {}),
         attachment_sites=read("attachment_sites", _strings, {}),
         default_rows=read("default_rows", _string_lists, {}),
-        language=language.language,
-        typed_references=language.typed_references,
+        language=(read_table(GrammarFacts, raw["language"], f"{path}: [language]")
+                  if "language" in raw else None),
     )
 
 
@@ -205,10 +206,12 @@ def _constraints(value: object, where: str) -> list[ConstraintFact]:
         if len(bundles) < 2 or not all(bundles):
             raise FactsError(f"{at} bundles: expected two or more non-empty lists of attribute "
                              f"names, got {entry['bundles']!r}")
-        entries.append(ConstraintFact(
-            element=_str(entry["element"], f"{at} element"),
-            kind=_choice(entry["kind"], _CONSTRAINT_KINDS, f"{at} kind"),
-            bundles=bundles, reason=_str(entry["reason"], f"{at} reason")))
+        rows = entry["element"]  # one row, or a list of rows the same rule holds on
+        kind = _choice(entry["kind"], _CONSTRAINT_KINDS, f"{at} kind")
+        reason = _str(entry["reason"], f"{at} reason")
+        entries += [ConstraintFact(element=row, kind=kind, bundles=bundles, reason=reason)
+                    for row in (_str_list(rows, f"{at} element") if not isinstance(rows, str)
+                                else [rows])]
     return entries
 
 
@@ -255,93 +258,6 @@ def _enum_values(value: object, where: str) -> tuple[tuple[str, str], ...]:
     if len(set(keywords)) != len(keywords):
         raise FactsError(f"{where}: a keyword is listed twice in {keywords!r}")
     return tuple(values)
-
-
-_LANGUAGE_STRINGS = ("main_class", "world_body", "body", "frame", "replicate", "inertia",
-                     "freejoint", "free_type", "joint_type", "skin_file",
-                     "class_namespace", "actuator_namespace",
-                     "sensor_section", "mocap", "childclass", "dclass", "model_name",
-                     "replicate_separator", "replicate_count", "replicate_copy")
-_LANGUAGE_KEYS = frozenset({*_LANGUAGE_STRINGS, "joints", "class_for_children",
-                            "shared_defaults", "ordered_children",
-                            "named_after_file", "named_from_contents", "typed_references",
-                            "type_namespaces", "merge_rules", "keyframe", "attach",
-                            "copied_with_replicate", "name_lists", "flexcomp"})
-_ATTACH_KEYS = ("tag", "model", "prefix", "references")
-_FLEXCOMP_STRINGS = ("tag", "namespace", "dof", "rigid", "vertex_body", "node_body")
-_FLEXCOMP_KEYS = frozenset({*_FLEXCOMP_STRINGS, "nodes"})
-
-
-@dataclasses.dataclass(frozen=True)
-class _LanguageTable:
-    """``[language]`` as read: the IR's facts and the two tables the passes apply."""
-
-    language: ir.LanguageDef = dataclasses.field(default_factory=ir.LanguageDef)
-    typed_references: dict[str, str] = dataclasses.field(default_factory=dict[str, str])
-
-
-def _language(value: object, where: str) -> _LanguageTable:
-    """``[language]``: the IR's language facts and the typed references."""
-    table = _keyed_table(value, where, _LANGUAGE_KEYS, sorted(_LANGUAGE_KEYS))
-    attach = _table(table["attach"], f"{where} attach")
-    extra = sorted(set(attach) ^ set(_ATTACH_KEYS))
-    if extra:
-        raise FactsError(f"{where} attach: unknown or missing key {extra[0]!r}")
-    language = ir.LanguageDef(
-        **{key: _str(table[key], f"{where} {key}") for key in _LANGUAGE_STRINGS},
-        joints=_str_list(table["joints"], f"{where} joints"),
-        shared_defaults=_str_list(table["shared_defaults"], f"{where} shared_defaults"),
-        ordered_children=_str_list(table["ordered_children"], f"{where} ordered_children"),
-        class_for_children=_str_list(table["class_for_children"],
-                                     f"{where} class_for_children"),
-        named_after_file=_strings(table["named_after_file"], f"{where} named_after_file"),
-        named_from_contents=_str_list(table["named_from_contents"],
-                                      f"{where} named_from_contents"),
-        type_namespaces=_strings(table["type_namespaces"], f"{where} type_namespaces"),
-        merge_rules=_merge_rules(table["merge_rules"], f"{where} merge_rules"),
-        keyframe=_strings(table["keyframe"], f"{where} keyframe"),
-        copied_with_replicate=_str_list(table["copied_with_replicate"],
-                                        f"{where} copied_with_replicate"),
-        name_lists=_strings(table["name_lists"], f"{where} name_lists"),
-        attach=ir.AttachDef(
-            tag=_str(attach["tag"], f"{where} attach tag"),
-            model=_str(attach["model"], f"{where} attach model"),
-            prefix=_str(attach["prefix"], f"{where} attach prefix"),
-            references=_str_list(attach["references"], f"{where} attach references")),
-        flexcomp=_flexcomp(table["flexcomp"], f"{where} flexcomp"),
-    )
-    return _LanguageTable(
-        language=language,
-        typed_references=_strings(table["typed_references"], f"{where} typed_references"),
-    )
-
-
-_MERGE_RULES = ("min", "max", "max-bytes")
-
-
-def _merge_rules(value: object, where: str) -> dict[str, str]:
-    rules = _strings(value, where)
-    for key, rule in rules.items():
-        if "@" not in key:
-            raise FactsError(f"{where} {key}: expected a key \"tag@attribute\"")
-        if rule not in _MERGE_RULES:
-            raise FactsError(f"{where} {key}: {rule!r} is not one of {', '.join(_MERGE_RULES)}")
-    return rules
-
-
-def _flexcomp(value: object, where: str) -> ir.FlexcompDef:
-    """``[language.flexcomp]``: the bodies a ``<flexcomp>`` makes and how they are named."""
-    table = _table(value, where)
-    extra = sorted(set(table) ^ _FLEXCOMP_KEYS)
-    if extra:
-        raise FactsError(f"{where}: unknown or missing key {extra[0]!r}")
-    nodes: dict[str, int] = {}
-    for dof, count in _table(table["nodes"], f"{where} nodes").items():
-        if not isinstance(count, int) or isinstance(count, bool) or count < 1:
-            raise FactsError(f"{where} nodes {dof}: expected a positive integer, got {count!r}")
-        nodes[dof] = count
-    strings = {key: _str(table[key], f"{where} {key}") for key in _FLEXCOMP_STRINGS}
-    return ir.FlexcompDef(**strings, nodes=nodes)
 
 
 # ------------------------------------------------------------------------------- values
@@ -410,6 +326,18 @@ def _alone(value: object, where: str) -> tuple[str, ...]:
     return tuple(names)
 
 
+BOUND = re.compile(r"(>=|<=|>|<) (-?[0-9]+(?:\.[0-9]+)?)")
+
+
+def _bounds(value: object, where: str) -> tuple[str, ...]:
+    """A non-empty list of bounds each value must keep, like ``"> 0"`` or ``"<= 5"``."""
+    bounds = _str_list(value, where) if not isinstance(value, str) else []
+    if not bounds or not all(BOUND.fullmatch(b) for b in bounds):
+        raise FactsError(f'{where}: expected a list of bounds like "> 0", ">= -1", "<= 5", '
+                         f"got {value!r}")
+    return tuple(bounds)
+
+
 _OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride))
 
 
@@ -433,5 +361,6 @@ def _override(value: object, where: str) -> AttributeOverride:
         ordered=opt_bool("ordered"),
         required=opt_bool("required"), nodefault=opt_bool("nodefault"),
         pattern=opt_str("pattern"), field=opt_str("field"), doc=opt_str("doc"),
+        bounds=_bounds(entry["bounds"], f"{where} bounds") if "bounds" in entry else None,
         reason=_str(entry["reason"], f"{where} reason"),
     )

@@ -11,7 +11,10 @@ import dataclasses
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Literal, cast
+from typing import Literal, cast
+
+from codegen.errors import FactsError
+from codegen.language import GrammarFacts, read_table, to_plain
 
 FORMAT_VERSION = 3
 # 1 lacks the language facts, 2 the flags' ``alone`` and ``ordered``: the next generate adds them
@@ -73,6 +76,8 @@ class AttributeDef:
     directory: list[str] | None = None  # files: <compiler> attributes naming their folder, in order
     doc: str = ""  # one-line description
     anchor: str | None = None  # XMLreference.rst anchor, e.g. "body-joint-type"
+    # numbers: bounds every value keeps, e.g. ["> 0"] (MuJoCo refuses others; facts.toml)
+    bounds: list[str] | None = None
 
 
 @dataclass
@@ -116,74 +121,23 @@ class ElementDef:
 
 
 @dataclass
-class AttachDef:
-    """``<attach>``: its model, prefix and child-model reference attributes."""
-
-    tag: str
-    model: str
-    prefix: str
-    references: list[str]
-
-
-@dataclass
-class FlexcompDef:
-    """``<flexcomp>``: the bodies MuJoCo's compiler makes and names after it."""
-
-    tag: str
-    namespace: str  # of the bodies it makes
-    dof: str  # the attribute choosing vertex bodies or grid-node bodies
-    rigid: str  # the attribute that, true, makes no bodies
-    vertex_body: str  # name template of a vertex's body: {name}, {vertex}
-    node_body: str  # name template of a grid node's body: {name}, {i}, {j}, {k}
-    nodes: dict[str, int]  # dof keyword -> nodes per axis (the dofs with node bodies)
-
-
-@dataclass
-class LanguageDef:
-    """Facts about MJCF as a whole that the runtime needs (from ``schema/facts.toml``)."""
-
-    main_class: str = "main"
-    world_body: str = "world"
-    body: str = "body"
-    frame: str = "frame"
-    replicate: str = "replicate"
-    joints: list[str] = field(default_factory=lambda: [])  # rows (declaration names)
-    freejoint: str = "freejoint"
-    free_type: str = "free"
-    joint_type: str = "type"
-    shared_defaults: list[str] = field(default_factory=lambda: [])
-    ordered_children: list[str] = field(default_factory=lambda: [])
-    class_for_children: list[str] = field(default_factory=lambda: [])
-    inertia: str = "inertial"
-    sensor_section: str = "sensor"
-    mocap: str = "mocap"
-    childclass: str = "childclass"
-    dclass: str = "class"
-    class_namespace: str = "default"
-    actuator_namespace: str = "actuator"
-    model_name: str = "model"
-    replicate_separator: str = "sep"
-    replicate_count: str = "count"
-    replicate_copy: str = "{name}{sep}{index}"  # name template of a copy: {name}, {sep}, {index}
-    copied_with_replicate: list[str] = field(default_factory=lambda: [])  # root sections
-    name_lists: dict[str, str] = field(default_factory=lambda: {})  # tag@attribute -> namespace
-    named_after_file: dict[str, str] = field(default_factory=lambda: {})
-    named_from_contents: list[str] = field(default_factory=lambda: [])
-    attach: AttachDef | None = None
-    flexcomp: FlexcompDef | None = None
-    type_namespaces: dict[str, str] = field(default_factory=lambda: {})
-    merge_rules: dict[str, str] = field(default_factory=lambda: {})
-    skin_file: str = ""
-    keyframe: dict[str, str] = field(default_factory=lambda: {})
-
-
-@dataclass
 class Schema:
     mujoco_version: str
     root: str
     enums: dict[str, EnumDef]
     elements: dict[str, ElementDef]
-    language: LanguageDef = field(default_factory=LanguageDef)
+    # the [language] facts (None: a grammar not normalized with facts.toml yet, or a stored
+    # table GrammarFacts no longer declares: why, in stale_language; a sync re-reads them)
+    language: GrammarFacts | None = None
+    stale_language: str = ""
+
+    def facts(self) -> GrammarFacts:
+        """The language facts, which rendering needs (a normalized schema has them)."""
+        if self.language is None:
+            why = f" ({self.stale_language})" if self.stale_language else ""
+            raise FactsError(f"schema/mjcf.json has no language facts{why}; run "
+                             "`nox -s generate`")
+        return self.language
 
     def parents_of(self, name: str) -> list[str]:
         return sorted(e.name for e in self.elements.values()
@@ -206,7 +160,7 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
     for key in ("dtype", "arity", "enum", "alone", "namespace", "namespace_from", "default",
-                "pattern", "field", "directory", "anchor"):
+                "pattern", "field", "directory", "anchor", "bounds"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
@@ -279,21 +233,20 @@ def dumps(schema: Schema) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _language_to_json(language: LanguageDef) -> dict[str, object]:
-    d = dataclasses.asdict(language)
-    return {k: v for k, v in d.items() if v is not None}
+def _language_to_json(language: GrammarFacts | None) -> object:
+    return None if language is None else to_plain(language)
 
 
-def _language_from_json(raw: object) -> LanguageDef:
-    d = dict(cast(dict[str, object], raw or {}))
-    attach = d.pop("attach", None)
-    flexcomp = d.pop("flexcomp", None)
-    language = LanguageDef(**cast(dict[str, Any], d))
-    if attach is not None:
-        language.attach = AttachDef(**cast(dict[str, Any], attach))
-    if flexcomp is not None:
-        language.flexcomp = FlexcompDef(**cast(dict[str, Any], flexcomp))
-    return language
+def _language_from_json(raw: object, root: str) -> tuple[GrammarFacts | None, str]:
+    """The stored facts, or None and why when GrammarFacts declares others now (a fact was
+    added: ``generate`` reads it from facts.toml)."""
+    if raw is None:
+        return None, ""
+    try:
+        facts = read_table(GrammarFacts, raw, "language")
+    except FactsError as error:
+        return None, str(error)
+    return dataclasses.replace(facts, root=root), ""
 
 
 def _attr_from_json(d: dict[str, object]) -> AttributeDef:
@@ -323,6 +276,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         directory=cast("list[str] | None", d.get("directory")),
         doc=cast(str, d.get("doc", "")),
         anchor=cast("str | None", d.get("anchor")),
+        bounds=cast("list[str] | None", d.get("bounds")),
     )
 
 
@@ -356,8 +310,9 @@ def loads(text: str) -> Schema:
             attachable=bool(body.get("attachable", False)),
             ignores_unknown=bool(body.get("ignores_unknown", False)),
         )
-    return Schema(cast(str, raw["mujoco_version"]), cast(str, raw["root"]), enums, elements,
-                  _language_from_json(raw.get("language")))
+    root = cast(str, raw["root"])
+    language, stale = _language_from_json(raw.get("language"), root)
+    return Schema(cast(str, raw["mujoco_version"]), root, enums, elements, language, stale)
 
 
 SCHEMA_DIR = Path(__file__).resolve().parent.parent / "schema"

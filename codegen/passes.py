@@ -8,10 +8,12 @@ every row, child and name it is given.
 from __future__ import annotations
 
 import copy
+import dataclasses
 import re
 from collections.abc import Iterable, Mapping
 
 from codegen import ir, naming
+from codegen.errors import FactsError
 from codegen.facts import AttributeOverride, ConstraintFact, EnumFact, Facts
 
 DEFAULT_ROW = "default"  # the <default> class row; its children are per-tag settings
@@ -49,12 +51,12 @@ def route_root_children(schema: ir.Schema, routes: Mapping[str, str]) -> None:
     root = schema.elements[schema.root]
     for source, target in routes.items():
         if target not in schema.elements:
-            raise ValueError(f"root_children: {source!r} -> {target!r}: no row {target!r}")
+            raise _mistake(f"[root_children] {source}", f"no row {target!r}")
         index = next((i for i, c in enumerate(root.children) if c.element == source), None)
         if index is None:
             if any(c.element == target for c in root.children):
                 continue  # already routed: normalizing twice is harmless
-            raise ValueError(f"root_children: root {root.name!r} has no child {source!r}")
+            raise _mistake(f"[root_children] {source}", f"the root {root.name!r} has no child {source!r}")
         old = root.children[index]
         root.children[index] = ir.ChildDef(target, old.card, old.single)
 
@@ -80,7 +82,7 @@ def mark_single(schema: ir.Schema, single: Mapping[str, Iterable[str]]) -> None:
         for tag in tags:
             child = by_tag.get(tag)
             if child is None:
-                raise ValueError(f"single: row {parent!r} has no child tag {tag!r}")
+                raise _mistake(f"[single] {parent}", f"row {parent!r} has no child tag {tag!r}")
             child.single = True
 
 
@@ -89,11 +91,11 @@ def add_constraints(schema: ir.Schema, facts: Iterable[ConstraintFact]) -> None:
     for fact in facts:
         row = schema.elements.get(fact.element)
         if row is None:
-            raise ValueError(f"constraint: no row {fact.element!r}")
+            raise _mistake(f"[[constraint]] {fact.element}", f"no row {fact.element!r}")
         names = {a.name for a in row.attributes}
         unknown = [n for b in fact.bundles for n in b if n not in names]
         if unknown:
-            raise ValueError(f"constraint on {fact.element!r}: no attribute {unknown[0]!r}")
+            raise _mistake(f"[[constraint]] {fact.element}", f"row {fact.element!r} has no attribute {unknown[0]!r}")
         constraint = ir.ConstraintDef(fact.kind, [list(b) for b in fact.bundles])
         if constraint not in row.constraints:
             row.constraints.append(constraint)
@@ -109,12 +111,12 @@ def overrides_on(schema: ir.Schema, overrides: Iterable[AttributeOverride],
 def apply_overrides(schema: ir.Schema, overrides: Iterable[AttributeOverride]) -> None:
     """Hand-kept corrections of single attributes (e.g. ``mujoco@model`` is a string)."""
     for override in overrides:
-        where = f"attribute override {override.element}@{override.name}"
+        where = f"[[attribute]] {override.element}@{override.name}"
         row = _row(schema, override.element, where)
         try:
             attr = row.attribute(override.name)
         except KeyError:
-            raise ValueError(f"{where}: row {row.name!r} has no such attribute") from None
+            raise _mistake(where, f"row {row.name!r} has no such attribute") from None
         apply_override(attr, override, schema)
 
 
@@ -124,7 +126,7 @@ def apply_override(attr: ir.AttributeDef, override: AttributeOverride,
     _apply_override(attr, override)
     problem = _attribute_problem(attr, schema)
     if problem:
-        raise ValueError(f"attribute override {override.element}@{override.name}: {problem}")
+        raise _mistake(f"[[attribute]] {override.element}@{override.name}", problem)
 
 
 def project_defaults(schema: ir.Schema) -> None:
@@ -146,13 +148,31 @@ def finish(schema: ir.Schema, facts: Facts) -> None:
     """The fact-derived fields, applied after normalizing and again after a sync (which may
     have added rows)."""
     apply_directories(schema, facts.directories)
+    add_constraints(schema, facts.constraints)  # (also on a sync: an entry added since)
+    _check_rows(schema, facts)
     rename_classes(schema, facts.class_names)
     mark_default_rows(schema, facts.default_rows)
     mark_composition(schema, facts.compose, facts.attachment_sites)
-    schema.language = copy.deepcopy(facts.language)
-    for name in schema.language.joints:  # rows, not tags (<equality><joint> is no joint)
-        _row(schema, name, f"[language] joints {name}")
-    mark_typed_references(schema, facts.typed_references)
+    language = facts.language
+    schema.language = None if language is None else dataclasses.replace(language,
+                                                                         root=schema.root)
+    schema.stale_language = ""
+    if language is not None:
+        for name in language.joints:  # rows, not tags (<equality><joint> is no joint)
+            _row(schema, name, f"[language] joints {name}")
+        mark_typed_references(schema, language.typed_references)
+
+
+def _check_rows(schema: ir.Schema, facts: Facts) -> None:
+    """The rows and sections the keyed tables name exist (a sync reads them too)."""
+    for parent in facts.single:  # (children a release lacks are left alone)
+        _row(schema, parent, f"[single] {parent}")
+    for site in facts.attachment_sites:
+        _row(schema, site, f"[attachment_sites] {site}")
+    sections = {schema.elements[c.element].tag for c in schema.elements[schema.root].children}
+    for tag in facts.compose:
+        if tag not in sections:
+            raise _mistake(f"[compose] {tag}", f"no root section {tag!r}")
 
 
 def mark_typed_references(schema: ir.Schema, table: Mapping[str, str]) -> None:
@@ -210,7 +230,7 @@ def apply_directories(schema: ir.Schema,
         key = f"[directories] {row_name}@{attribute_name}"
         attribute = _row(schema, row_name, key).attribute(attribute_name)
         if attribute.kind != "file":
-            raise ValueError(f"schema/facts.toml: {key} is not a file attribute")
+            raise _mistake(key, "not a file attribute")
         attribute.directory = list(folders)
 
 
@@ -238,10 +258,13 @@ def enums_of(attr: ir.AttributeDef) -> list[str]:
 
 def check(schema: ir.Schema) -> None:
     """Raise ValueError listing every name clash or dangling reference."""
+    facts = _naming_fact_problems(schema)
+    if facts:
+        more = f" (and {len(facts) - 1} more)" if len(facts) > 1 else ""
+        raise _mistake("[language]", facts[0].removeprefix("language ") + more)
     problems = [
         *_reference_problems(schema),
         *_class_name_problems(schema),
-        *_naming_fact_problems(schema),
         *_flags_problems(schema),
         *(p for e in schema.elements.values() for p in _element_problems(schema, e)),
     ]
@@ -253,10 +276,16 @@ def check(schema: ir.Schema) -> None:
 
 
 def _row(schema: ir.Schema, name: str, where: str) -> ir.ElementDef:
+    """The row ``name`` that the facts entry ``where`` names."""
     row = schema.elements.get(name)
     if row is None:
-        raise ValueError(f"{where}: no row {name!r}")
+        raise _mistake(where, f"no row {name!r}")
     return row
+
+
+def _mistake(where: str, problem: str) -> FactsError:
+    """A facts.toml entry that does not fit the schema, in one line."""
+    return FactsError(f"schema/facts.toml {where}: {problem}")
 
 
 _OVERRIDABLE = ("dtype", "arity", "enum", "ordered", "namespace", "default", "required",
@@ -273,6 +302,8 @@ def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
             setattr(attr, name, value)
     if o.alone is not None:
         attr.alone = list(o.alone)
+    if o.bounds is not None:
+        attr.bounds = list(o.bounds)
 
 
 def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
@@ -291,6 +322,8 @@ def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
         attr.namespace = None
     if attr.kind not in ("string", "chars"):
         attr.pattern = None
+    if attr.kind not in ("int", "real"):
+        attr.bounds = None
 
 
 def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
@@ -301,6 +334,8 @@ def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
         return "a real attribute needs dtype 'double' or 'float'"
     if attr.kind in ("keyword", "flags") and attr.enum not in schema.enums:
         return f"{attr.kind} attribute needs a declared enum, got {attr.enum!r}"
+    if attr.bounds and attr.kind not in ("int", "real"):
+        return f"only numbers take bounds, not a {attr.kind} attribute"
     if attr.kind != "flags" and (attr.alone or attr.ordered):
         return f"only flags take keywords alone or in order, not a {attr.kind} attribute"
     if attr.alone:
@@ -361,6 +396,8 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
     """The facts naming what MuJoCo's compiler makes must name rows, attributes and keywords
     of the grammar: a MuJoCo release that renames one shows up here, not as wrong names."""
     language = schema.language
+    if language is None:
+        return []
     rows: dict[str, list[ir.ElementDef]] = {}
     for row in schema.elements.values():
         rows.setdefault(row.tag, []).append(row)
@@ -380,6 +417,13 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
         attribute(language.replicate, language.replicate_separator, "string")
     problems += _template_problems("language replicate_copy", language.replicate_copy,
                                    {"name", "sep", "index"})
+    attach = language.attach
+    if attach is not None and attach.tag in rows:
+        for name in (attach.model, attach.prefix, *attach.references):
+            if not any(a.name == name for row in rows[attach.tag] for a in row.attributes):
+                problems.append(f"language attach: <{attach.tag}> has no attribute {name!r}")
+    problems += [f"language merge_rules {key}: expected a key \"tag@attribute\""
+                 for key in language.merge_rules if "@" not in key]
     for key in language.name_lists:
         tag, _, name = key.partition("@")
         if tag in rows:
@@ -395,6 +439,8 @@ def _naming_fact_problems(schema: ir.Schema) -> list[str]:
             keywords = {k for k, _ in schema.enums[dof.enum].values}
             problems += [f"language flexcomp nodes: {k!r} is no keyword of <{flexcomp.tag}> "
                          f"{flexcomp.dof}" for k in flexcomp.nodes if k not in keywords]
+        problems += [f"language flexcomp nodes {k}: expected a positive integer, got {n}"
+                     for k, n in flexcomp.nodes.items() if n < 1]
         problems += _template_problems("language flexcomp vertex_body", flexcomp.vertex_body,
                                        {"name", "vertex"})
         problems += _template_problems("language flexcomp node_body", flexcomp.node_body,

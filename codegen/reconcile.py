@@ -25,6 +25,7 @@ import re
 from dataclasses import dataclass, field
 
 from codegen import ir, naming, probe
+from codegen.errors import FactsError
 from codegen.facts import AttributeOverride, Facts
 from codegen.passes import (
     DEFAULT_ROW,
@@ -644,7 +645,7 @@ class _Sync:
                     self.report.notes.append(f"{element}@{name}: not in this release; its "
                                              "schema/facts.toml entry is left out")
                     continue
-                raise ValueError(f"schema/facts.toml [[attribute]] {element}@{name}: the synced "
+                raise FactsError(f"schema/facts.toml [[attribute]] {element}@{name}: the synced "
                                  "schema has no such attribute; fix or remove the entry")
             self._override(row, hand)
             for projection in sorted(self.rows.values(), key=lambda r: r.name):

@@ -10,13 +10,14 @@ functions, and the templates only lay them out.
 
 from __future__ import annotations
 
+import dataclasses
 import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
 import jinja2
 
-from codegen import bindings, docs, ir, releases
+from codegen import bindings, docs, ir, language, releases
 from codegen.naming import RESERVED, py_name
 from codegen.typing_names import Alias, Typer
 
@@ -120,13 +121,15 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append("required=True")
     if a.pattern is not None:
         args.append(f"pattern={a.pattern!r}")
+    if a.bounds:
+        args.append(f"bounds={tuple((op, float(limit)) for op, limit in map(str.split, a.bounds))!r}")
     if a.directory:
         args.append(f"directory={tuple(a.directory)!r}")
     expected_anchor = f"{el.anchor}-{a.name}" if el.anchor else None
     if a.anchor is not None and a.anchor != expected_anchor:
         args.append(f"anchor={a.anchor!r}")
     args.append(f"doc={docs.attribute_doc(typer, a, notes.get(el.name, {}).get(a.name))!r}")
-    if el.name == schema.root and a.name == schema.language.model_name:
+    if el.name == schema.root and a.name == schema.facts().model_name:
         args.append("scope=True")
     return "A(" + ", ".join(args) + ")"
 
@@ -179,49 +182,10 @@ def _element_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
 
 
 def _facts(schema: ir.Schema) -> str:
-    language = schema.language
-    attach = language.attach
-    fields: list[str] = [
-        f"root={schema.root!r}",
-        f"main_class={language.main_class!r}",
-        f"world_body={language.world_body!r}",
-        f"body={language.body!r}",
-        f"frame={language.frame!r}",
-        f"replicate={language.replicate!r}",
-        f"joints=frozenset({sorted(language.joints)!r})",
-        f"freejoint={language.freejoint!r}",
-        f"free_type={language.free_type!r}",
-        f"joint_type={language.joint_type!r}",
-        f"shared_defaults=frozenset({sorted(language.shared_defaults)!r})",
-        f"ordered_children=frozenset({sorted(language.ordered_children)!r})",
-        f"class_for_children=frozenset({sorted(language.class_for_children)!r})",
-        f"inertia={language.inertia!r}",
-        f"sensor_section={language.sensor_section!r}",
-        f"mocap={language.mocap!r}",
-        f"childclass={language.childclass!r}",
-        f"dclass={language.dclass!r}",
-        f"class_namespace={language.class_namespace!r}",
-        f"actuator_namespace={language.actuator_namespace!r}",
-        f"named_after_file={dict(sorted(language.named_after_file.items()))!r}",
-        f"named_from_contents=frozenset({sorted(language.named_from_contents)!r})",
-        f"replicate_separator={language.replicate_separator!r}",
-        f"merge_rules={dict(sorted(language.merge_rules.items()))!r}",
-        f"skin_file={language.skin_file!r}",
-        f"replicate_count={language.replicate_count!r}",
-        f"replicate_copy={language.replicate_copy!r}",
-        f"copied_with_replicate=frozenset({sorted(language.copied_with_replicate)!r})",
-        f"name_lists={dict(sorted(language.name_lists.items()))!r}",
-        f"keyframe=KeyframeFacts(**{dict(sorted(language.keyframe.items()))!r})",
-    ]
-    if attach is not None:
-        fields.append(f"attach=AttachFacts({attach.tag!r}, {attach.model!r}, "
-                      f"{attach.prefix!r}, {tuple(attach.references)!r})")
-    flexcomp = language.flexcomp
-    if flexcomp is not None:
-        fields.append(f"flexcomp=FlexcompFacts({flexcomp.tag!r}, {flexcomp.namespace!r}, "
-                      f"{flexcomp.dof!r}, {flexcomp.rigid!r}, {flexcomp.vertex_body!r}, "
-                      f"{flexcomp.node_body!r}, {dict(sorted(flexcomp.nodes.items()))!r})")
-    return "\n".join(f"    {field}," for field in fields)
+    """The keyword arguments of the generated ``GrammarFacts(...)``, one per line."""
+    facts = dataclasses.replace(schema.facts(), root=schema.root)
+    return "\n".join(f"    {f.name}={language.source(getattr(facts, f.name))},"
+                     for f in dataclasses.fields(facts))
 
 
 # ---------------------------------------------------------------------------- typing surface
@@ -263,8 +227,8 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
                                docs.property_doc(typer, el, a, mine.get(a.name)).split("\n")[0])
                   for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
-    if any(a.name == schema.language.dclass for a in el.attributes):
-        dclass = next(a for a in el.attributes if a.name == schema.language.dclass)
+    if any(a.name == schema.facts().dclass for a in el.attributes):
+        dclass = next(a for a in el.attributes if a.name == schema.facts().dclass)
         properties.append(PropertyView("dclass", typer.getter(dclass), typer.setter(dclass),
                                        "dm_control's name for ``class_``.\n        ",
                                        "dm_control's name for ``class_``."))
@@ -274,8 +238,8 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         child = schema.elements[c.element]
         child_params = [ParamView(a.py_name, typer.setter(a)) for a in child.attributes]
         child_params += [ParamView("dclass", typer.setter(a)) for a in child.attributes
-                         if a.name == schema.language.dclass]  # dm_control's name
-        entries = docs.adder_entries(typer, child, schema.language.dclass,
+                         if a.name == schema.facts().dclass]  # dm_control's name
+        entries = docs.adder_entries(typer, child, schema.facts().dclass,
                                      notes.get(child.name))
         children.append(ChildView(child.tag, child_py_name(child.tag), child.class_name,
                                   c.single, child_params, docs.adder_doc(typer, child, entries)))
@@ -292,7 +256,7 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         short_doc=docs.escape(f"``<{el.tag}>``."), doc=_class_doc(el),
         table=_element_spec(schema, typer, el, notes), properties=properties, children=children,
         params=params, resolves=resolves, is_root=is_root,
-        init_params=[p for p in params if p.py_name != schema.language.model_name],
+        init_params=[p for p in params if p.py_name != schema.facts().model_name],
         child_tags=", ".join(f'"{tag}"' for tag in child_tags),
         misused_child=_python_string(misused_child(el.tag)),
         not_a_child=_python_string(not_a_child(el.tag)))
@@ -368,7 +332,7 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
     keyword_sets = typer.keyword_aliases()
     aliases = [*typer.array_aliases(), *typer.namespace_aliases(), *typer.target_aliases()]
     namespaces = [NamespaceView(ns, typer.namespace_type(ns)) for ns in typer.namespaces()]
-    body = schema.elements.get(schema.language.body)
+    body = schema.elements.get(schema.facts().body)
     if body is not None:  # frames are bodies
         namespaces.append(NamespaceView(ATTACHMENT_FRAME, body.class_name))
     class_names = sorted(c.class_name for c in classes)
@@ -380,6 +344,7 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
         "keyword_sets": keyword_sets,
         "typed_maps": _typed_maps(schema, typer),
         "facts": _facts(schema),
+        "fact_classes": ", ".join(language.classes()),
         "aliases": aliases,
         "exported": sorted([*class_names, *(a.name for a in [*keyword_sets, *aliases]),
                             "Namespace",

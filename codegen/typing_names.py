@@ -271,7 +271,8 @@ class Typer:
         type_name = a.namespace_from
         assert type_name is not None and rows
         type_attribute = rows[0].attribute(type_name)
-        renames = self.schema.language.type_namespaces
+        language = self.schema.language
+        renames = dict(language.type_namespaces) if language is not None else dict[str, str]()
         if type_attribute.enum is not None:
             words = self.schema.enums[type_attribute.enum].keywords
         else:

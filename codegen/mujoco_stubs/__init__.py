@@ -1,8 +1,10 @@
 """Type stubs for MuJoCo's Python module ``mujoco``, generated from the installed wheel.
 
 MuJoCo ships no type information. This package writes ``generated/mujoco-stubs/``, a PEP 561
-stub-only package that the typed-mjcf wheel installs, so that ``import mujoco`` is typed for
-mypy and pyright. How:
+stub-only package that types ``import mujoco`` for mypy and pyright: this repository's checks
+find it on the path of an editable install; the typed-mjcf wheel carries it inside
+``typed_mjcf`` (``_mujoco_stubs``, never as an installed ``mujoco-stubs/``) and ``typed-mjcf
+mujoco-stubs`` copies it into a user's project. How:
 
 1. ``sources``: draft stubs from two pinned tools run on the installed wheel. pybind11-stubgen
    reads the compiled modules (``_structs``, ``_functions``, ``_specs``, ``_enums``, ...): the

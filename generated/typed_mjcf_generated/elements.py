@@ -13,10 +13,10 @@ from typing import Literal, TypeAlias, TypedDict, get_args
 
 from typed_mjcf import types as _t
 from typed_mjcf._base import Attachable, Element, ModelRoot
-from typed_mjcf._grammar import AttachFacts, FlexcompFacts, GrammarFacts, KeyframeFacts
 from typed_mjcf._grammar import AttributeSpec as A
 from typed_mjcf._grammar import ChildSpec as C
 from typed_mjcf._grammar import ElementSpec as S
+from typed_mjcf._language import AttachFacts, FlexcompFacts, GrammarFacts, KeyframeFacts
 from typed_mjcf._tree import finish_grammar
 
 __all__ = [
@@ -777,7 +777,7 @@ class Adhesion(Element):
             A('forcelimited', 'keyword', keywords=get_args(FalseTrueAuto), default='auto', doc='one of: false, true, auto; default "auto".'),
             A('forcerange', 'real', arity=(2, 2), doc='double[2]; no default (unset when absent).'),
             A('body', 'ref', namespace='body', doc='reference to namespace ``body``; no default (unset when absent).'),
-            A('gain', 'real', doc='double; no default (unset when absent).'),
+            A('gain', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
         ),
         anchor='actuator-adhesion',
         defaults='adhesion',
@@ -1046,7 +1046,7 @@ class Config(Element):
         'config',
         attributes=(
             A('key', 'string', required=True, doc='string; required.'),
-            A('value', 'string', doc='string; no default (unset when absent).'),
+            A('value', 'string', required=True, doc='string; required.'),
         ),
         anchor='instance-config',
     )
@@ -1140,6 +1140,7 @@ class Cylinder(Element):
             A('diameter', 'real', doc='double; no default (unset when absent).'),
             A('bias', 'real', arity=(3, 3), doc='double[3]; no default (unset when absent).'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-cylinder',
         defaults='cylinder',
     )
@@ -1158,7 +1159,7 @@ class Damper(Element):
             A('nsample', 'int', doc='int; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('interp', 'keyword', keywords=get_args(Interp), doc='one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('delay', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('ctrlrange', 'real', arity=(2, 2), doc='double[2]; no default (unset when absent).'),
+            A('ctrlrange', 'real', arity=(2, 2), bounds=(('>=', 0.0),), doc='double[2]; no default (unset when absent); each value >= 0.'),
             A('user', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
             A('forcelimited', 'keyword', keywords=get_args(FalseTrueAuto), default='auto', doc='one of: false, true, auto; default "auto".'),
             A('forcerange', 'real', arity=(2, 2), doc='double[2]; no default (unset when absent).'),
@@ -1174,8 +1175,9 @@ class Damper(Element):
             A('cranksite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
-            A('kv', 'real', doc='double; no default (unset when absent).'),
+            A('kv', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-damper',
         defaults='damper',
     )
@@ -1209,8 +1211,8 @@ class Dcmotor(Element):
             A('cranksite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('motorconst', 'real', arity=(1, 2), doc='double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('resistance', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
+            A('motorconst', 'real', arity=(1, 2), bounds=(('>', 0.0),), doc='double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.'),
+            A('resistance', 'real', bounds=(('>', 0.0),), doc='double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.'),
             A('nominal', 'real', arity=(1, 3), doc='double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('saturation', 'real', arity=(1, 3), doc='double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('inductance', 'real', arity=(1, 2), doc='double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
@@ -1220,6 +1222,7 @@ class Dcmotor(Element):
             A('lugre', 'real', arity=(1, 5), doc='double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('input', 'flags', keywords=get_args(DcmotorInput), alone=get_args(DcmotorInputAlone), ordered=True, doc='any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-dcmotor',
         defaults='dcmotor',
     )
@@ -1281,7 +1284,7 @@ class DefaultAdhesion(Element):
             A('user', 'real', arity=(0, None), anchor='actuator-adhesion-user', doc='double[] (any length); no default (unset when absent).'),
             A('forcelimited', 'keyword', keywords=get_args(FalseTrueAuto), default='auto', anchor='actuator-adhesion-forcelimited', doc='one of: false, true, auto; default "auto".'),
             A('forcerange', 'real', arity=(2, 2), anchor='actuator-adhesion-forcerange', doc='double[2]; no default (unset when absent).'),
-            A('gain', 'real', anchor='actuator-adhesion-gain', doc='double; no default (unset when absent).'),
+            A('gain', 'real', bounds=(('>=', 0.0),), anchor='actuator-adhesion-gain', doc='double; no default (unset when absent); >= 0.'),
         ),
         anchor='default-adhesion',
     )
@@ -1360,7 +1363,7 @@ class DefaultDamper(Element):
             A('nsample', 'int', anchor='actuator-damper-nsample', doc='int; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('interp', 'keyword', keywords=get_args(Interp), anchor='actuator-damper-interp', doc='one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('delay', 'real', anchor='actuator-damper-delay', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('ctrlrange', 'real', arity=(2, 2), anchor='actuator-damper-ctrlrange', doc='double[2]; no default (unset when absent).'),
+            A('ctrlrange', 'real', arity=(2, 2), bounds=(('>=', 0.0),), anchor='actuator-damper-ctrlrange', doc='double[2]; no default (unset when absent); each value >= 0.'),
             A('user', 'real', arity=(0, None), anchor='actuator-damper-user', doc='double[] (any length); no default (unset when absent).'),
             A('forcelimited', 'keyword', keywords=get_args(FalseTrueAuto), default='auto', anchor='actuator-damper-forcelimited', doc='one of: false, true, auto; default "auto".'),
             A('forcerange', 'real', arity=(2, 2), anchor='actuator-damper-forcerange', doc='double[2]; no default (unset when absent).'),
@@ -1368,7 +1371,7 @@ class DefaultDamper(Element):
             A('damping', 'real', arity=(1, 3), anchor='actuator-damper-damping', doc='double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.'),
             A('armature', 'real', anchor='actuator-damper-armature', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('cranklength', 'real', anchor='actuator-damper-cranklength', doc='double; no default (unset when absent).'),
-            A('kv', 'real', anchor='actuator-damper-kv', doc='double; no default (unset when absent).'),
+            A('kv', 'real', bounds=(('>=', 0.0),), anchor='actuator-damper-kv', doc='double; no default (unset when absent); >= 0.'),
         ),
         anchor='default-damper',
     )
@@ -1393,8 +1396,8 @@ class DefaultDcmotor(Element):
             A('damping', 'real', arity=(1, 3), anchor='actuator-dcmotor-damping', doc='double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.'),
             A('armature', 'real', anchor='actuator-dcmotor-armature', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('cranklength', 'real', anchor='actuator-dcmotor-cranklength', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('motorconst', 'real', arity=(1, 2), anchor='actuator-dcmotor-motorconst', doc='double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('resistance', 'real', anchor='actuator-dcmotor-resistance', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
+            A('motorconst', 'real', arity=(1, 2), bounds=(('>', 0.0),), anchor='actuator-dcmotor-motorconst', doc='double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.'),
+            A('resistance', 'real', bounds=(('>', 0.0),), anchor='actuator-dcmotor-resistance', doc='double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.'),
             A('nominal', 'real', arity=(1, 3), anchor='actuator-dcmotor-nominal', doc='double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('saturation', 'real', arity=(1, 3), anchor='actuator-dcmotor-saturation', doc='double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('inductance', 'real', arity=(1, 2), anchor='actuator-dcmotor-inductance', doc='double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.'),
@@ -1536,8 +1539,8 @@ class DefaultIntvelocity(Element):
             A('armature', 'real', anchor='actuator-intvelocity-armature', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('cranklength', 'real', anchor='actuator-intvelocity-cranklength', doc='double; no default (unset when absent).'),
             A('kp', 'real', anchor='actuator-intvelocity-kp', doc='double; no default (unset when absent).'),
-            A('kv', 'real', anchor='actuator-intvelocity-kv', doc='double; no default (unset when absent).'),
-            A('dampratio', 'real', anchor='actuator-intvelocity-dampratio', doc='double; no default (unset when absent).'),
+            A('kv', 'real', bounds=(('>=', 0.0),), anchor='actuator-intvelocity-kv', doc='double; no default (unset when absent); >= 0.'),
+            A('dampratio', 'real', bounds=(('>=', 0.0),), anchor='actuator-intvelocity-dampratio', doc='double; no default (unset when absent); >= 0.'),
         ),
         anchor='default-intvelocity',
     )
@@ -1784,8 +1787,8 @@ class DefaultPid(Element):
             A('armature', 'real', anchor='actuator-pid-armature', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('cranklength', 'real', anchor='actuator-pid-cranklength', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('kp', 'real', anchor='actuator-pid-kp', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('kv', 'real', anchor='actuator-pid-kv', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('dampratio', 'real', anchor='actuator-pid-dampratio', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
+            A('kv', 'real', bounds=(('>=', 0.0),), anchor='actuator-pid-kv', doc='double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.'),
+            A('dampratio', 'real', bounds=(('>=', 0.0),), anchor='actuator-pid-dampratio', doc='double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.'),
             A('ki', 'real', anchor='actuator-pid-ki', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('imax', 'real', anchor='actuator-pid-imax', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('slewmax', 'real', anchor='actuator-pid-slewmax', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
@@ -1818,8 +1821,8 @@ class DefaultPosition(Element):
             A('armature', 'real', anchor='actuator-position-armature', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('cranklength', 'real', anchor='actuator-position-cranklength', doc='double; no default (unset when absent).'),
             A('kp', 'real', anchor='actuator-position-kp', doc='double; no default (unset when absent).'),
-            A('kv', 'real', anchor='actuator-position-kv', doc='double; no default (unset when absent).'),
-            A('dampratio', 'real', anchor='actuator-position-dampratio', doc='double; no default (unset when absent).'),
+            A('kv', 'real', bounds=(('>=', 0.0),), anchor='actuator-position-kv', doc='double; no default (unset when absent); >= 0.'),
+            A('dampratio', 'real', bounds=(('>=', 0.0),), anchor='actuator-position-dampratio', doc='double; no default (unset when absent); >= 0.'),
             A('timeconst', 'real', anchor='actuator-position-timeconst', doc='double; no default (unset when absent).'),
         ),
         anchor='default-position',
@@ -2213,7 +2216,7 @@ class FixedJoint(Element):
         'fixed_joint',
         attributes=(
             A('joint', 'ref', namespace='joint', required=True, doc='reference to namespace ``joint``; required.'),
-            A('coef', 'real', doc='double; no default (unset when absent).'),
+            A('coef', 'real', required=True, doc='double; required.'),
         ),
         anchor='fixed-joint',
     )
@@ -2786,6 +2789,7 @@ class General(Element):
             A('biasprm', 'real', arity=(1, 10), doc='double[1..10] (1 to 10 values); no default (unset when absent).'),
             A('actearly', 'bool', doc='bool; no default (unset when absent).'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-general',
         defaults='general',
     )
@@ -2861,7 +2865,7 @@ class Global(Element):
             A('glow', 'real', dtype='float', default='0.3', doc='float; default "0.3".'),
             A('offwidth', 'int', default='640', doc='int; default "640".'),
             A('offheight', 'int', default='480', doc='int; default "480".'),
-            A('realtime', 'real', dtype='float', default='1', doc='float; default "1".'),
+            A('realtime', 'real', dtype='float', default='1', bounds=(('>', 0.0),), doc='float; default "1"; > 0.'),
             A('ellipsoidinertia', 'bool', default='false', doc='bool; default "false".'),
             A('bvactive', 'bool', default='false', doc='bool; default "false".'),
         ),
@@ -2900,7 +2904,7 @@ class Headlight(Element):
             A('ambient', 'real', dtype='float', arity=(3, 3), default='0.1 0.1 0.1', doc='float[3]; default "0.1 0.1 0.1".'),
             A('diffuse', 'real', dtype='float', arity=(3, 3), default='0.4 0.4 0.4', doc='float[3]; default "0.4 0.4 0.4".'),
             A('specular', 'real', dtype='float', arity=(3, 3), default='0.5 0.5 0.5', doc='float[3]; default "0.5 0.5 0.5".'),
-            A('active', 'int', default='1', doc='int; default "1".'),
+            A('active', 'int', default='1', bounds=(('>=', 0.0), ('<=', 1.0)), doc='int; default "1"; >= 0 and <= 1.'),
         ),
         anchor='visual-headlight',
     )
@@ -3022,9 +3026,10 @@ class Intvelocity(Element):
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('kp', 'real', doc='double; no default (unset when absent).'),
-            A('kv', 'real', doc='double; no default (unset when absent).'),
-            A('dampratio', 'real', doc='double; no default (unset when absent).'),
+            A('kv', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
+            A('dampratio', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
         ),
+        constraints=(('exclusive', (('kv',), ('dampratio',))), ('exclusive', (('actrange',), ('inheritrange',))), ('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-intvelocity',
         defaults='intvelocity',
     )
@@ -3236,7 +3241,7 @@ class Layer(Element):
     spec = S(
         'layer',
         attributes=(
-            A('texture', 'ref', namespace='texture', doc='reference to namespace ``texture``; no default (unset when absent).'),
+            A('texture', 'ref', namespace='texture', required=True, doc='reference to namespace ``texture``; required.'),
             A('role', 'string', required=True, doc='string; required.'),
         ),
         anchor='material-layer',
@@ -3335,7 +3340,7 @@ class Map(Element):
             A('alpha', 'real', dtype='float', default='0.3', doc='float; default "0.3".'),
             A('fogstart', 'real', dtype='float', default='3', doc='float; default "3".'),
             A('fogend', 'real', dtype='float', default='10', doc='float; default "10".'),
-            A('znear', 'real', dtype='float', default='0.01', doc='float; default "0.01".'),
+            A('znear', 'real', dtype='float', default='0.01', bounds=(('>', 0.0),), doc='float; default "0.01"; > 0.'),
             A('zfar', 'real', dtype='float', default='50', doc='float; default "50".'),
             A('haze', 'real', dtype='float', default='0.3', doc='float; default "0.3".'),
             A('shadowclip', 'real', dtype='float', default='1', doc='float; default "1".'),
@@ -3402,7 +3407,7 @@ class Mesh(Element):
         children=(
             C('plugin', 'Plugin'),
         ),
-        constraints=(('exclusive', (('builtin',), ('file',))), ('exclusive', (('builtin',), ('vertex',)))),
+        constraints=(('exclusive', (('builtin',), ('file',))), ('exclusive', (('builtin',), ('vertex',))), ('requires', (('builtin',), ('params',)))),
         anchor='asset-mesh',
         defaults='mesh',
     )
@@ -3454,6 +3459,7 @@ class Motor(Element):
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-motor',
         defaults='motor',
     )
@@ -3488,7 +3494,7 @@ class Muscle(Element):
             A('slidersite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('cranksite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('timeconst', 'real', arity=(2, 2), doc='double[2]; no default (unset when absent).'),
-            A('tausmooth', 'real', doc='double; no default (unset when absent).'),
+            A('tausmooth', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
             A('range', 'real', arity=(2, 2), doc='double[2]; no default (unset when absent).'),
             A('force', 'real', doc='double; no default (unset when absent).'),
             A('scale', 'real', doc='double; no default (unset when absent).'),
@@ -3498,6 +3504,7 @@ class Muscle(Element):
             A('fpmax', 'real', doc='double; no default (unset when absent).'),
             A('fvmax', 'real', doc='double; no default (unset when absent).'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',)))),
         anchor='actuator-muscle',
         defaults='muscle',
     )
@@ -3539,6 +3546,7 @@ class Numeric(Element):
             A('size', 'int', doc='int; no default (unset when absent).'),
             A('data', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
         ),
+        constraints=(('oneof', (('size',), ('data',))),),
         anchor='custom-numeric',
     )
 
@@ -3576,7 +3584,7 @@ class Option(Element):
             A('ccd_iterations', 'int', default='35', doc='int; default "35".'),
             A('sdf_iterations', 'int', default='10', doc='int; default "10".'),
             A('sdf_initpoints', 'int', default='40', doc='int; default "40".'),
-            A('actuatorgroupdisable', 'int', arity=(0, None), doc='int[] (any length); no default (unset when absent). Bits of disableactuator.'),
+            A('actuatorgroupdisable', 'int', arity=(0, None), bounds=(('>=', 0.0), ('<=', 30.0)), doc='int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator.'),
         ),
         children=(
             C('flag', 'Flag', single=True, card='?'),
@@ -3676,13 +3684,14 @@ class Pid(Element):
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('kp', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('kv', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
-            A('dampratio', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
+            A('kv', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.'),
+            A('dampratio', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.'),
             A('ki', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('imax', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('slewmax', 'real', doc='double; no default (unset when absent); in MuJoCo >= 3.17.0.'),
             A('input', 'flags', keywords=get_args(PidInput), alone=get_args(PidInputAlone), ordered=True, doc='any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.'),
         ),
+        constraints=(('exclusive', (('kv',), ('dampratio',))), ('exclusive', (('posrange',), ('inheritrange',))), ('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-pid',
         defaults='pid',
     )
@@ -3754,10 +3763,11 @@ class Position(Element):
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('kp', 'real', doc='double; no default (unset when absent).'),
-            A('kv', 'real', doc='double; no default (unset when absent).'),
-            A('dampratio', 'real', doc='double; no default (unset when absent).'),
+            A('kv', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
+            A('dampratio', 'real', bounds=(('>=', 0.0),), doc='double; no default (unset when absent); >= 0.'),
             A('timeconst', 'real', doc='double; no default (unset when absent).'),
         ),
+        constraints=(('exclusive', (('kv',), ('dampratio',))), ('exclusive', (('ctrlrange',), ('inheritrange',))), ('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-position',
         defaults='position',
     )
@@ -3770,7 +3780,7 @@ class Pulley(Element):
     spec = S(
         'pulley',
         attributes=(
-            A('divisor', 'real', doc='double; no default (unset when absent).'),
+            A('divisor', 'real', required=True, doc='double; required.'),
         ),
         anchor='spatial-pulley',
     )
@@ -4000,7 +4010,7 @@ class SensorContact(Element):
             A('subtree1', 'ref', namespace='body', doc='reference to namespace ``body``; no default (unset when absent).'),
             A('subtree2', 'ref', namespace='body', doc='reference to namespace ``body``; no default (unset when absent).'),
             A('site', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
-            A('num', 'int', doc='int; no default (unset when absent).'),
+            A('num', 'int', bounds=(('>', 0.0),), doc='int; no default (unset when absent); > 0.'),
             A('data', 'flags', keywords=get_args(ConData), ordered=True, doc='any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).'),
             A('reduce', 'keyword', keywords=get_args(Reduce), doc='one of: none, mindist, maxforce, netforce; no default (unset when absent).'),
         ),
@@ -4079,14 +4089,14 @@ class Size(Element):
             A('nstack', 'int', default='-1', doc='int; default "-1".'),
             A('nuserdata', 'int', doc='int; no default (unset when absent).'),
             A('nkey', 'int', doc='int; no default (unset when absent).'),
-            A('nuser_body', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_jnt', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_geom', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_site', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_cam', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_tendon', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_actuator', 'int', default='-1', doc='int; default "-1".'),
-            A('nuser_sensor', 'int', default='-1', doc='int; default "-1".'),
+            A('nuser_body', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_jnt', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_geom', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_site', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_cam', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_tendon', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_actuator', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
+            A('nuser_sensor', 'int', default='-1', bounds=(('>=', -1.0),), doc='int; default "-1"; >= -1.'),
         ),
         constraints=(('exclusive', (('memory',), ('nstack',))), ('exclusive', (('memory',), ('njmax',)))),
         anchor='size',
@@ -4109,7 +4119,7 @@ class Skin(Element):
             A('vertex', 'real', dtype='float', arity=(0, None), anchor='deformable-skin-vertex', doc='float[] (any length); no default (unset when absent).'),
             A('texcoord', 'real', dtype='float', arity=(0, None), anchor='deformable-skin-texcoord', doc='float[] (any length); no default (unset when absent).'),
             A('face', 'int', arity=(0, None), anchor='deformable-skin-face', doc='int[] (any length); no default (unset when absent).'),
-            A('group', 'int', anchor='deformable-skin-group', doc='int; no default (unset when absent).'),
+            A('group', 'int', bounds=(('>=', 0.0), ('<=', 5.0)), anchor='deformable-skin-group', doc='int; no default (unset when absent); >= 0 and <= 5.'),
         ),
         children=(
             C('bone', 'Bone'),
@@ -4197,7 +4207,7 @@ class Statistic(Element):
             A('meaninertia', 'real', doc='double; no default (unset when absent).'),
             A('meanmass', 'real', doc='double; no default (unset when absent).'),
             A('meansize', 'real', doc='double; no default (unset when absent).'),
-            A('extent', 'real', doc='double; no default (unset when absent).'),
+            A('extent', 'real', bounds=(('>', 0.0),), doc='double; no default (unset when absent); > 0.'),
             A('center', 'real', arity=(3, 3), doc='double[3]; no default (unset when absent).'),
         ),
         anchor='statistic',
@@ -4437,7 +4447,7 @@ class Text(Element):
         'text',
         attributes=(
             A('name', 'id', namespace='text', required=True, doc='name declared in namespace ``text``; required.'),
-            A('data', 'string', doc='string; no default (unset when absent).'),
+            A('data', 'string', required=True, doc='string; required.'),
         ),
         anchor='custom-text',
     )
@@ -4567,7 +4577,7 @@ class User(Element):
             A('objname', 'string', namespace_from=('objtype', _NAMESPACES_ACTUATOR_BODY_CAMERA_DEFAULT_EQUALITY_EXCLUDE_FLEX_FRAME_GEOM_HFIELD_INSTANCE_JOINT_KEY_LIGHT_MATERIAL_MESH_MODEL_NUMERIC_PAIR_SENSOR_SITE_SKIN_TENDON_TEXT_TEXTURE_TUPLE_XBODY), doc='reference to the element ``objtype`` names; no default (unset when absent).'),
             A('datatype', 'keyword', keywords=get_args(Datatype), default='real', doc='one of: real, positive, axis, quaternion; default "real".'),
             A('needstage', 'keyword', keywords=get_args(Stage), default='acc', doc='one of: none, pos, vel, acc; default "acc".'),
-            A('dim', 'int', doc='int; no default (unset when absent).'),
+            A('dim', 'int', required=True, doc='int; required.'),
             A('cutoff', 'real', doc='double; no default (unset when absent).'),
             A('noise', 'real', doc='double; no default (unset when absent).'),
             A('user', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
@@ -4630,6 +4640,7 @@ class Velocity(Element):
             A('refsite', 'ref', namespace='site', doc='reference to namespace ``site``; no default (unset when absent).'),
             A('kv', 'real', doc='double; no default (unset when absent).'),
         ),
+        constraints=(('requires', (('cranklength',), ('cranksite',))), ('requires', (('slidersite',), ('cranksite',))), ('requires', (('refsite',), ('site',)))),
         anchor='actuator-velocity',
         defaults='velocity',
     )
@@ -4724,8 +4735,10 @@ finish_grammar(GrammarFacts(
     dclass='class',
     class_namespace='default',
     actuator_namespace='actuator',
+    model_name='model',
     named_after_file={'hfield': 'file', 'mesh': 'file', 'skin': 'file', 'texture': 'file'},
     named_from_contents=frozenset(['model']),
+    attach=AttachFacts(tag='attach', model='model', prefix='prefix', references=('body', 'frame')),
     replicate_separator='sep',
     merge_rules={'map@zfar': 'max', 'map@znear': 'min', 'option@ccd_iterations': 'max', 'option@ccd_tolerance': 'min', 'option@iterations': 'max', 'option@ls_iterations': 'max', 'option@ls_tolerance': 'min', 'option@noslip_iterations': 'max', 'option@noslip_tolerance': 'min', 'option@sdf_initpoints': 'max', 'option@sdf_iterations': 'max', 'option@timestep': 'min', 'option@tolerance': 'min', 'size@memory': 'max-bytes', 'size@nconmax': 'max', 'size@njmax': 'max'},
     skin_file='skin@file',
@@ -4733,9 +4746,10 @@ finish_grammar(GrammarFacts(
     replicate_copy='{name}{sep}{index}',
     copied_with_replicate=frozenset(['actuator', 'contact', 'custom', 'deformable', 'equality', 'sensor', 'tendon']),
     name_lists={'flex@body': 'body', 'flex@node': 'body'},
-    keyframe=KeyframeFacts(**{'act': 'act', 'ctrl': 'ctrl', 'mpos': 'mpos', 'mquat': 'mquat', 'qpos': 'qpos', 'qvel': 'qvel', 'time': 'time'}),
-    attach=AttachFacts('attach', 'model', 'prefix', ('body', 'frame')),
-    flexcomp=FlexcompFacts('flexcomp', 'body', 'dof', 'rigid', '{name}_{vertex}', '{name}_{i}_{j}_{k}', {'quadratic': 3, 'trilinear': 2}),
+    typed_references={'objname': 'objtype', 'refname': 'reftype'},
+    type_namespaces={'xbody': 'body'},
+    flexcomp=FlexcompFacts(tag='flexcomp', namespace='body', dof='dof', rigid='rigid', vertex_body='{name}_{vertex}', node_body='{name}_{i}_{j}_{k}', nodes={'quadratic': 3, 'trilinear': 2}),
+    keyframe=KeyframeFacts(qpos='qpos', qvel='qvel', act='act', ctrl='ctrl', mpos='mpos', mquat='mquat', time='time'),
 ))
 
 Integers2: TypeAlias = tuple[_t.Integer, _t.Integer] | _t.NumberList[_t.Integer] | _t.IntArrayLike

@@ -912,7 +912,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             ccd_iterations: int; default "35".
             sdf_iterations: int; default "10".
             sdf_initpoints: int; default "40".
-            actuatorgroupdisable: int[] (any length); no default (unset when absent). Bits of disableactuator.
+            actuatorgroupdisable: int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator.
         """
 
     @property
@@ -949,14 +949,14 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             nstack: int; default "-1".
             nuserdata: int; no default (unset when absent).
             nkey: int; no default (unset when absent).
-            nuser_body: int; default "-1".
-            nuser_jnt: int; default "-1".
-            nuser_geom: int; default "-1".
-            nuser_site: int; default "-1".
-            nuser_cam: int; default "-1".
-            nuser_tendon: int; default "-1".
-            nuser_actuator: int; default "-1".
-            nuser_sensor: int; default "-1".
+            nuser_body: int; default "-1"; >= -1.
+            nuser_jnt: int; default "-1"; >= -1.
+            nuser_geom: int; default "-1"; >= -1.
+            nuser_site: int; default "-1"; >= -1.
+            nuser_cam: int; default "-1"; >= -1.
+            nuser_tendon: int; default "-1"; >= -1.
+            nuser_actuator: int; default "-1"; >= -1.
+            nuser_sensor: int; default "-1"; >= -1.
         """
 
     @property
@@ -981,7 +981,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             meaninertia: double; no default (unset when absent).
             meanmass: double; no default (unset when absent).
             meansize: double; no default (unset when absent).
-            extent: double; no default (unset when absent).
+            extent: double; no default (unset when absent); > 0.
             center: double[3]; no default (unset when absent).
         """
 
@@ -1633,8 +1633,8 @@ class Actuator(_Typed):
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             timeconst: double; no default (unset when absent).
             dclass: dm_control's name for ``class_``.
         """
@@ -1772,8 +1772,8 @@ class Actuator(_Typed):
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1902,8 +1902,8 @@ class Actuator(_Typed):
             cranksite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kv: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
+            dampratio: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
             ki: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             imax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             slewmax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -1953,7 +1953,7 @@ class Actuator(_Typed):
             nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
             interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
             delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
@@ -1969,7 +1969,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kv: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2110,7 +2110,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             timeconst: double[2]; no default (unset when absent).
-            tausmooth: double; no default (unset when absent).
+            tausmooth: double; no default (unset when absent); >= 0.
             force: double; no default (unset when absent).
             scale: double; no default (unset when absent).
             lmin: double; no default (unset when absent).
@@ -2157,7 +2157,7 @@ class Actuator(_Typed):
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
-            gain: double; no default (unset when absent).
+            gain: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2226,8 +2226,8 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranksite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            resistance: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
+            resistance: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
             nominal: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             saturation: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             inductance: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -2743,7 +2743,7 @@ class ActuatorPlugin(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -3295,13 +3295,13 @@ class Adhesion(_Typed):
 
     @property
     def gain(self) -> _builtins.float | None:
-        """``gain``: double; no default (unset when absent).
+        """``gain``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
     @gain.setter
     def gain(self, value: _t.Real | None) -> None:
-        """``gain``: double; no default (unset when absent)."""
+        """``gain``: double; no default (unset when absent); >= 0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -3453,7 +3453,7 @@ class AssetSection(_Typed):
             vertex: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; no default (unset when absent); >= 0 and <= 5.
         """
 
     @property
@@ -5740,13 +5740,13 @@ class Config(_Typed):
 
     @property
     def value(self) -> _builtins.str | None:
-        """``value``: string; no default (unset when absent).
+        """``value``: string; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
         """
     @value.setter
     def value(self, value: _builtins.str | None) -> None:
-        """``value``: string; no default (unset when absent)."""
+        """``value``: string; required."""
 
     def resolve(self, name: Literal["key", "value"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -6035,7 +6035,7 @@ class Custom(_Typed):
 
         Args:
             name: name declared in namespace ``text``; required.
-            data: string; no default (unset when absent).
+            data: string; required.
         """
 
     @property
@@ -6483,13 +6483,13 @@ class Damper(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
     @ctrlrange.setter
     def ctrlrange(self, value: Reals2 | None) -> None:
-        """``ctrlrange``: double[2]; no default (unset when absent)."""
+        """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -6643,13 +6643,13 @@ class Damper(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent)."""
+        """``kv``: double; no default (unset when absent); >= 0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -6915,23 +6915,23 @@ class Dcmotor(_Typed):
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
     @motorconst.setter
     def motorconst(self, value: Reals1To2 | None) -> None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0."""
 
     @property
     def resistance(self) -> _builtins.float | None:
-        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``resistance``: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
     @resistance.setter
     def resistance(self, value: _t.Real | None) -> None:
-        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``resistance``: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0."""
 
     @property
     def nominal(self) -> _t.Float64Array | None:
@@ -7723,8 +7723,8 @@ class Default(_Typed):
             armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
             timeconst: double; no default (unset when absent).
         """
 
@@ -7822,8 +7822,8 @@ class Default(_Typed):
             armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
-            dampratio: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
+            dampratio: double; no default (unset when absent); >= 0.
         """
 
     @property
@@ -7922,8 +7922,8 @@ class Default(_Typed):
             armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kv: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
+            dampratio: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
             ki: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             imax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             slewmax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -7961,7 +7961,7 @@ class Default(_Typed):
             nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
             interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
             delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
@@ -7969,7 +7969,7 @@ class Default(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
             armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
+            kv: double; no default (unset when absent); >= 0.
         """
 
     @property
@@ -8113,7 +8113,7 @@ class Default(_Typed):
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
             forcerange: double[2]; no default (unset when absent).
-            gain: double; no default (unset when absent).
+            gain: double; no default (unset when absent); >= 0.
         """
 
     @property
@@ -8162,8 +8162,8 @@ class Default(_Typed):
             damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
             armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            resistance: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            motorconst: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
+            resistance: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
             nominal: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             saturation: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
             inductance: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -8479,13 +8479,13 @@ class DefaultAdhesion(_Typed):
 
     @property
     def gain(self) -> _builtins.float | None:
-        """``gain``: double; no default (unset when absent).
+        """``gain``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
         """
     @gain.setter
     def gain(self, value: _t.Real | None) -> None:
-        """``gain``: double; no default (unset when absent)."""
+        """``gain``: double; no default (unset when absent); >= 0."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8969,13 +8969,13 @@ class DefaultDamper(_Typed):
 
     @property
     def ctrlrange(self) -> _t.Float64Array | None:
-        """``ctrlrange``: double[2]; no default (unset when absent).
+        """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
         """
     @ctrlrange.setter
     def ctrlrange(self, value: Reals2 | None) -> None:
-        """``ctrlrange``: double[2]; no default (unset when absent)."""
+        """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0."""
 
     @property
     def user(self) -> _t.Float64Array | None:
@@ -9049,13 +9049,13 @@ class DefaultDamper(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent)."""
+        """``kv``: double; no default (unset when absent); >= 0."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9198,23 +9198,23 @@ class DefaultDcmotor(_Typed):
 
     @property
     def motorconst(self) -> _t.Float64Array | None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
         """
     @motorconst.setter
     def motorconst(self, value: Reals1To2 | None) -> None:
-        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0."""
 
     @property
     def resistance(self) -> _builtins.float | None:
-        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``resistance``: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
         """
     @resistance.setter
     def resistance(self, value: _t.Real | None) -> None:
-        """``resistance``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``resistance``: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0."""
 
     @property
     def nominal(self) -> _t.Float64Array | None:
@@ -10257,23 +10257,23 @@ class DefaultIntvelocity(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent)."""
+        """``kv``: double; no default (unset when absent); >= 0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
     @dampratio.setter
     def dampratio(self, value: _t.Real | None) -> None:
-        """``dampratio``: double; no default (unset when absent)."""
+        """``dampratio``: double; no default (unset when absent); >= 0."""
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10891,7 +10891,7 @@ class DefaultMaterial(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer
 
         Args:
-            texture: reference to namespace ``texture``; no default (unset when absent).
+            texture: reference to namespace ``texture``; required.
             role: string; required.
         """
 
@@ -11837,23 +11837,23 @@ class DefaultPid(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``dampratio``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
     @dampratio.setter
     def dampratio(self, value: _t.Real | None) -> None:
-        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``dampratio``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0."""
 
     @property
     def ki(self) -> _builtins.float | None:
@@ -12079,23 +12079,23 @@ class DefaultPosition(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent)."""
+        """``kv``: double; no default (unset when absent); >= 0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
     @dampratio.setter
     def dampratio(self, value: _t.Real | None) -> None:
-        """``dampratio``: double; no default (unset when absent)."""
+        """``dampratio``: double; no default (unset when absent); >= 0."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -12994,7 +12994,7 @@ class Deformable(_Typed):
             vertex: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; no default (unset when absent); >= 0 and <= 5.
         """
 
     @overload
@@ -14477,7 +14477,7 @@ class Fixed(_Typed):
 
         Args:
             joint: reference to namespace ``joint``; required.
-            coef: double; no default (unset when absent).
+            coef: double; required.
         """
 
     @overload
@@ -14551,13 +14551,13 @@ class FixedJoint(_Typed):
 
     @property
     def coef(self) -> _builtins.float | None:
-        """``coef``: double; no default (unset when absent).
+        """``coef``: double; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
         """
     @coef.setter
     def coef(self, value: _t.Real | None) -> None:
-        """``coef``: double; no default (unset when absent)."""
+        """``coef``: double; required."""
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None:
@@ -19613,13 +19613,13 @@ class Global(_Typed):
 
     @property
     def realtime(self) -> _builtins.float | None:
-        """``realtime``: float; default "1".
+        """``realtime``: float; default "1"; > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
         """
     @realtime.setter
     def realtime(self, value: _t.Real | None) -> None:
-        """``realtime``: float; default "1"."""
+        """``realtime``: float; default "1"; > 0."""
 
     @property
     def ellipsoidinertia(self) -> _builtins.bool | None:
@@ -19812,13 +19812,13 @@ class Headlight(_Typed):
 
     @property
     def active(self) -> _builtins.int | None:
-        """``active``: int; default "1".
+        """``active``: int; default "1"; >= 0 and <= 1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
         """
     @active.setter
     def active(self, value: _t.Integer | None) -> None:
-        """``active``: int; default "1"."""
+        """``active``: int; default "1"; >= 0 and <= 1."""
 
     @overload
     def resolve(self, name: Literal["ambient", "diffuse", "specular"]) -> _t.Float32Array:
@@ -20223,7 +20223,7 @@ class Instance(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -20535,23 +20535,23 @@ class Intvelocity(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent)."""
+        """``kv``: double; no default (unset when absent); >= 0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
         """
     @dampratio.setter
     def dampratio(self, value: _t.Real | None) -> None:
-        """``dampratio``: double; no default (unset when absent)."""
+        """``dampratio``: double; no default (unset when absent); >= 0."""
 
     @property
     def dclass(self) -> _builtins.str | Default | None:
@@ -21795,13 +21795,13 @@ class Layer(_Typed):
 
     @property
     def texture(self) -> _builtins.str | Texture | None:
-        """``texture``: reference to namespace ``texture``; no default (unset when absent).
+        """``texture``: reference to namespace ``texture``; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
         """
     @texture.setter
     def texture(self, value: _builtins.str | Texture | None) -> None:
-        """``texture``: reference to namespace ``texture``; no default (unset when absent)."""
+        """``texture``: reference to namespace ``texture``; required."""
 
     @property
     def role(self) -> _builtins.str | None:
@@ -22415,13 +22415,13 @@ class Map(_Typed):
 
     @property
     def znear(self) -> _builtins.float | None:
-        """``znear``: float; default "0.01".
+        """``znear``: float; default "0.01"; > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
         """
     @znear.setter
     def znear(self, value: _t.Real | None) -> None:
-        """``znear``: float; default "0.01"."""
+        """``znear``: float; default "0.01"; > 0."""
 
     @property
     def zfar(self) -> _builtins.float | None:
@@ -22628,7 +22628,7 @@ class Material(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer
 
         Args:
-            texture: reference to namespace ``texture``; no default (unset when absent).
+            texture: reference to namespace ``texture``; required.
             role: string; required.
         """
 
@@ -23506,13 +23506,13 @@ class Muscle(_Typed):
 
     @property
     def tausmooth(self) -> _builtins.float | None:
-        """``tausmooth``: double; no default (unset when absent).
+        """``tausmooth``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
         """
     @tausmooth.setter
     def tausmooth(self, value: _t.Real | None) -> None:
-        """``tausmooth``: double; no default (unset when absent)."""
+        """``tausmooth``: double; no default (unset when absent); >= 0."""
 
     @property
     def range(self) -> _t.Float64Array | None:
@@ -24110,13 +24110,13 @@ class Option(_Typed):
 
     @property
     def actuatorgroupdisable(self) -> _t.Int32Array | None:
-        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent). Bits of disableactuator.
+        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
         """
     @actuatorgroupdisable.setter
     def actuatorgroupdisable(self, value: IntegersAny | None) -> None:
-        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent). Bits of disableactuator."""
+        """``actuatorgroupdisable``: int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator."""
 
     @property
     def flag(self) -> Flag:
@@ -24916,23 +24916,23 @@ class Pid(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+        """``dampratio``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
         """
     @dampratio.setter
     def dampratio(self, value: _t.Real | None) -> None:
-        """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0."""
+        """``dampratio``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0."""
 
     @property
     def ki(self) -> _builtins.float | None:
@@ -25117,7 +25117,7 @@ class Plugin(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -25413,23 +25413,23 @@ class Position(_Typed):
 
     @property
     def kv(self) -> _builtins.float | None:
-        """``kv``: double; no default (unset when absent).
+        """``kv``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
         """
     @kv.setter
     def kv(self, value: _t.Real | None) -> None:
-        """``kv``: double; no default (unset when absent)."""
+        """``kv``: double; no default (unset when absent); >= 0."""
 
     @property
     def dampratio(self) -> _builtins.float | None:
-        """``dampratio``: double; no default (unset when absent).
+        """``dampratio``: double; no default (unset when absent); >= 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
         """
     @dampratio.setter
     def dampratio(self, value: _t.Real | None) -> None:
-        """``dampratio``: double; no default (unset when absent)."""
+        """``dampratio``: double; no default (unset when absent); >= 0."""
 
     @property
     def timeconst(self) -> _builtins.float | None:
@@ -25495,13 +25495,13 @@ class Pulley(_Typed):
 
     @property
     def divisor(self) -> _builtins.float | None:
-        """``divisor``: double; no default (unset when absent).
+        """``divisor``: double; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
         """
     @divisor.setter
     def divisor(self, value: _t.Real | None) -> None:
-        """``divisor``: double; no default (unset when absent)."""
+        """``divisor``: double; required."""
 
     def resolve(self, name: Literal["divisor"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -28308,7 +28308,7 @@ class Sensor(_Typed):
             subtree1: reference to namespace ``body``; no default (unset when absent).
             subtree2: reference to namespace ``body``; no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
-            num: int; no default (unset when absent).
+            num: int; no default (unset when absent); > 0.
             data: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).
             reduce: one of: none, mindist, maxforce, netforce; no default (unset when absent).
         """
@@ -28461,7 +28461,7 @@ class Sensor(_Typed):
             objname: reference to the element ``objtype`` names; no default (unset when absent).
             datatype: one of: real, positive, axis, quaternion; default "real".
             needstage: one of: none, pos, vel, acc; default "acc".
-            dim: int; no default (unset when absent).
+            dim: int; required.
             cutoff: double; no default (unset when absent).
             noise: double; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
@@ -28972,13 +28972,13 @@ class SensorContact(_Typed):
 
     @property
     def num(self) -> _builtins.int | None:
-        """``num``: int; no default (unset when absent).
+        """``num``: int; no default (unset when absent); > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
         """
     @num.setter
     def num(self, value: _t.Integer | None) -> None:
-        """``num``: int; no default (unset when absent)."""
+        """``num``: int; no default (unset when absent); > 0."""
 
     @property
     def data(self) -> tuple[ConData, ...] | None:
@@ -29146,7 +29146,7 @@ class SensorPlugin(_Typed):
 
         Args:
             key: string; required.
-            value: string; no default (unset when absent).
+            value: string; required.
         """
 
     @overload
@@ -29467,83 +29467,83 @@ class Size(_Typed):
 
     @property
     def nuser_body(self) -> _builtins.int | None:
-        """``nuser_body``: int; default "-1".
+        """``nuser_body``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
         """
     @nuser_body.setter
     def nuser_body(self, value: _t.Integer | None) -> None:
-        """``nuser_body``: int; default "-1"."""
+        """``nuser_body``: int; default "-1"; >= -1."""
 
     @property
     def nuser_jnt(self) -> _builtins.int | None:
-        """``nuser_jnt``: int; default "-1".
+        """``nuser_jnt``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
         """
     @nuser_jnt.setter
     def nuser_jnt(self, value: _t.Integer | None) -> None:
-        """``nuser_jnt``: int; default "-1"."""
+        """``nuser_jnt``: int; default "-1"; >= -1."""
 
     @property
     def nuser_geom(self) -> _builtins.int | None:
-        """``nuser_geom``: int; default "-1".
+        """``nuser_geom``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
         """
     @nuser_geom.setter
     def nuser_geom(self, value: _t.Integer | None) -> None:
-        """``nuser_geom``: int; default "-1"."""
+        """``nuser_geom``: int; default "-1"; >= -1."""
 
     @property
     def nuser_site(self) -> _builtins.int | None:
-        """``nuser_site``: int; default "-1".
+        """``nuser_site``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
         """
     @nuser_site.setter
     def nuser_site(self, value: _t.Integer | None) -> None:
-        """``nuser_site``: int; default "-1"."""
+        """``nuser_site``: int; default "-1"; >= -1."""
 
     @property
     def nuser_cam(self) -> _builtins.int | None:
-        """``nuser_cam``: int; default "-1".
+        """``nuser_cam``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
         """
     @nuser_cam.setter
     def nuser_cam(self, value: _t.Integer | None) -> None:
-        """``nuser_cam``: int; default "-1"."""
+        """``nuser_cam``: int; default "-1"; >= -1."""
 
     @property
     def nuser_tendon(self) -> _builtins.int | None:
-        """``nuser_tendon``: int; default "-1".
+        """``nuser_tendon``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
         """
     @nuser_tendon.setter
     def nuser_tendon(self, value: _t.Integer | None) -> None:
-        """``nuser_tendon``: int; default "-1"."""
+        """``nuser_tendon``: int; default "-1"; >= -1."""
 
     @property
     def nuser_actuator(self) -> _builtins.int | None:
-        """``nuser_actuator``: int; default "-1".
+        """``nuser_actuator``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
         """
     @nuser_actuator.setter
     def nuser_actuator(self, value: _t.Integer | None) -> None:
-        """``nuser_actuator``: int; default "-1"."""
+        """``nuser_actuator``: int; default "-1"; >= -1."""
 
     @property
     def nuser_sensor(self) -> _builtins.int | None:
-        """``nuser_sensor``: int; default "-1".
+        """``nuser_sensor``: int; default "-1"; >= -1.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
         """
     @nuser_sensor.setter
     def nuser_sensor(self, value: _t.Integer | None) -> None:
-        """``nuser_sensor``: int; default "-1"."""
+        """``nuser_sensor``: int; default "-1"; >= -1."""
 
     @overload
     def resolve(self, name: Literal["memory"]) -> _builtins.str | None:
@@ -29647,13 +29647,13 @@ class Skin(_Typed):
 
     @property
     def group(self) -> _builtins.int | None:
-        """``group``: int; no default (unset when absent).
+        """``group``: int; no default (unset when absent); >= 0 and <= 5.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
         """
     @group.setter
     def group(self, value: _t.Integer | None) -> None:
-        """``group``: int; no default (unset when absent)."""
+        """``group``: int; no default (unset when absent); >= 0 and <= 5."""
 
     @property
     def bone(self) -> _List[Bone]:
@@ -30013,7 +30013,7 @@ class Spatial(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley
 
         Args:
-            divisor: double; no default (unset when absent).
+            divisor: double; required.
         """
 
     @overload
@@ -30185,13 +30185,13 @@ class Statistic(_Typed):
 
     @property
     def extent(self) -> _builtins.float | None:
-        """``extent``: double; no default (unset when absent).
+        """``extent``: double; no default (unset when absent); > 0.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
         """
     @extent.setter
     def extent(self, value: _t.Real | None) -> None:
-        """``extent``: double; no default (unset when absent)."""
+        """``extent``: double; no default (unset when absent); > 0."""
 
     @property
     def center(self) -> _t.Float64Array | None:
@@ -31578,13 +31578,13 @@ class Text(_Typed):
 
     @property
     def data(self) -> _builtins.str | None:
-        """``data``: string; no default (unset when absent).
+        """``data``: string; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
         """
     @data.setter
     def data(self, value: _builtins.str | None) -> None:
-        """``data``: string; no default (unset when absent)."""
+        """``data``: string; required."""
 
     def resolve(self, name: Literal["name", "data"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -32330,13 +32330,13 @@ class User(_Typed):
 
     @property
     def dim(self) -> _builtins.int | None:
-        """``dim``: int; no default (unset when absent).
+        """``dim``: int; required.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
         """
     @dim.setter
     def dim(self, value: _t.Integer | None) -> None:
-        """``dim``: int; no default (unset when absent)."""
+        """``dim``: int; required."""
 
     @property
     def cutoff(self) -> _builtins.float | None:
@@ -32848,7 +32848,7 @@ class Visual(_Typed):
             glow: float; default "0.3".
             offwidth: int; default "640".
             offheight: int; default "480".
-            realtime: float; default "1".
+            realtime: float; default "1"; > 0.
             ellipsoidinertia: bool; default "false".
             bvactive: bool; default "false".
         """
@@ -32900,7 +32900,7 @@ class Visual(_Typed):
             ambient: float[3]; default "0.1 0.1 0.1".
             diffuse: float[3]; default "0.4 0.4 0.4".
             specular: float[3]; default "0.5 0.5 0.5".
-            active: int; default "1".
+            active: int; default "1"; >= 0 and <= 1.
         """
 
     @property
@@ -32937,7 +32937,7 @@ class Visual(_Typed):
             alpha: float; default "0.3".
             fogstart: float; default "3".
             fogend: float; default "10".
-            znear: float; default "0.01".
+            znear: float; default "0.01"; > 0.
             zfar: float; default "50".
             haze: float; default "0.3".
             shadowclip: float; default "1".

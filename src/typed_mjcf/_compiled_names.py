@@ -8,7 +8,7 @@ models included) and answers which element a name comes from, so that ``validate
 report such references and compile errors can point at the element that made the object.
 
 How MuJoCo derives each name is a fact of the language (``schema/facts.toml``, rendered
-into :class:`~typed_mjcf._grammar.GrammarFacts`): name templates with placeholders
+into :class:`~typed_mjcf._language.GrammarFacts`): name templates with placeholders
 (``{name}_{vertex}``), which this module turns into patterns. A family of names is the
 literal text every name starts with (its *head*) and a pattern for the rest, so a name is
 looked up by its prefixes, in time proportional to its length.
@@ -24,7 +24,7 @@ from typing import Final
 
 from typed_mjcf import _tree
 from typed_mjcf._files import element_file_stem
-from typed_mjcf._grammar import GrammarFacts
+from typed_mjcf._language import GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 

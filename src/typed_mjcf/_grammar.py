@@ -2,16 +2,15 @@
 
 Everything the runtime knows about particular tags comes from here: the generated tables
 build an :class:`ElementSpec` per grammar row, with an :class:`AttributeSpec` per attribute
-and a :class:`ChildSpec` per legal child, plus one :class:`GrammarFacts` for the facts that
-concern the language as a whole (the name of the root default class, the world body, ...).
-The specs are plain data; :mod:`typed_mjcf._codecs` gives each attribute the codec of its
-kind.
+and a :class:`ChildSpec` per legal child; the facts that concern the language as a whole
+(the name of the root default class, the world body, ...) are declared in
+:mod:`typed_mjcf._language`. The specs are plain data; :mod:`typed_mjcf._codecs` gives each
+attribute the codec of its kind.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Final, Literal
 
 from typed_mjcf._codecs import Codec, make_codec
@@ -32,6 +31,7 @@ class AttributeSpec:
         "alone",
         "anchor",
         "as_is",
+        "bounds",
         "codec",
         "default",
         "direct",
@@ -72,6 +72,7 @@ class AttributeSpec:
     default: str | None
     required: bool
     pattern: str | None
+    bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
     directory: tuple[str, ...]
     anchor: str | None
     doc: str
@@ -100,6 +101,7 @@ class AttributeSpec:
         default: str | None = None,
         required: bool = False,
         pattern: str | None = None,
+        bounds: Sequence[tuple[str, float]] = (),
         directory: Sequence[str] = (),
         anchor: str | None = None,
         doc: str = "",
@@ -122,6 +124,8 @@ class AttributeSpec:
         self.default = default
         self.required = required
         self.pattern = pattern
+        # every value keeps these, or MuJoCo refuses the model (validate() checks them)
+        self.bounds = tuple(bounds)
         self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
         self.anchor = anchor
         self.doc = doc
@@ -312,83 +316,3 @@ class ElementSpec:
     def __repr__(self) -> str:
         return f"<row {self.name!r}: <{self.tag}>>"
 
-
-@dataclass(frozen=True)
-class KeyframeFacts:
-    """How a keyframe's vectors map onto the compiled model (for combining keyframes)."""
-
-    qpos: str = "qpos"
-    qvel: str = "qvel"
-    act: str = "act"
-    ctrl: str = "ctrl"
-    mpos: str = "mpos"
-    mquat: str = "mquat"
-    time: str = "time"
-
-
-@dataclass(frozen=True)
-class AttachFacts:
-    """``<attach>``: the attribute naming the child model (a model asset), the prefix it
-    scopes the child's names with, and the attributes naming a body or frame of the child
-    (or, without a model, of this model: self-attachment needs one of them)."""
-
-    tag: str
-    model: str
-    prefix: str
-    references: tuple[str, ...]
-
-
-@dataclass(frozen=True)
-class FlexcompFacts:
-    """``<flexcomp>``: the bodies MuJoCo's compiler makes for it, named after it by a
-    template: ``{name}`` the flexcomp's name, ``{vertex}`` a vertex's index, ``{i}``,
-    ``{j}``, ``{k}`` a grid node's indices along each axis."""
-
-    tag: str
-    namespace: str  # of the bodies it makes
-    dof: str  # the attribute choosing vertex bodies or grid-node bodies
-    rigid: str  # the attribute that, true, makes no bodies
-    vertex_body: str
-    node_body: str
-    nodes: Mapping[str, int]  # dof keyword -> grid nodes per axis (the dofs with node bodies)
-
-
-@dataclass(frozen=True)
-class GrammarFacts:
-    """Facts about the language as a whole, from ``schema/facts.toml``."""
-
-    root: str  # the declaration name of the root row
-    main_class: str  # the name of the top-level default class
-    world_body: str  # the name MuJoCo gives the world body
-    body: str  # the tag of bodies (attachment frames are bodies)
-    frame: str  # the tag of <frame>, transparent in the kinematic tree
-    replicate: str  # the tag of <replicate>
-    joints: frozenset[str]  # rows (declaration names) of joints: what adds to qpos
-    freejoint: str  # the tag of a free joint (so is a joint whose type is free_type)
-    free_type: str
-    joint_type: str  # the joint attribute naming its kind
-    shared_defaults: frozenset[str]  # namespaces whose kinds share one default per class
-    ordered_children: frozenset[str]  # tags whose children's order matters across tags
-    class_for_children: frozenset[str]  # tags whose class= applies to their children too
-    inertia: str  # the tag of a body's <inertial>
-    sensor_section: str  # the tag of the root's <sensor> section
-    mocap: str  # the body attribute that makes a body a mocap body
-    childclass: str  # the attribute naming the default class of a subtree
-    dclass: str  # the attribute naming an element's default class
-    class_namespace: str  # the namespace of default classes
-    actuator_namespace: str  # its elements are the model's controls
-    named_after_file: Mapping[str, str] = field(default_factory=lambda: {})  # namespace -> attribute
-    named_from_contents: frozenset[str] = frozenset()  # namespaces named by the file they read
-    attach: AttachFacts | None = None
-    replicate_separator: str = "sep"  # <replicate>'s attribute suffixing copies' names
-    # global settings combined on attach rather than refused: "tag@attribute" -> rule
-    merge_rules: Mapping[str, str] = field(default_factory=lambda: {})
-    skin_file: str = ""  # "row@attribute" of binary skin files (bone names to scope)
-    replicate_count: str = "count"  # <replicate>'s attribute counting its copies
-    # a copy's name: {name} the original's, {sep} the separator, {index} the copy's index
-    replicate_copy: str = "{name}{sep}{index}"
-    copied_with_replicate: frozenset[str] = frozenset()  # root sections copied with targets
-    # string attributes listing names: "tag@attribute" -> the namespace of the names
-    name_lists: Mapping[str, str] = field(default_factory=lambda: {})
-    flexcomp: FlexcompFacts | None = None
-    keyframe: KeyframeFacts = KeyframeFacts()

@@ -50,7 +50,9 @@ from typed_mjcf._codecs import ArrayCodec, Rejected
 from typed_mjcf._compat import STATE as _COMPAT
 from typed_mjcf._compat import dm_control_namespace
 from typed_mjcf._debuginfo import RECORDER as _RECORDER
-from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec, GrammarFacts
+from typed_mjcf._doclines import DCLASS_DOC, adder_listing
+from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._language import GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._releases import keyword_note, restrict
 from typed_mjcf._releases import note as release_note
@@ -74,7 +76,6 @@ _Slice: TypeAlias = "slice[int | None, int | None, int | None]"  # not subscript
 _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
-DCLASS_DOC: Final = "dm_control's name for ``class_``."
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
 _NO_CHILDREN: tuple[()] = ()
@@ -997,38 +998,21 @@ def document_adders() -> None:
                        for a in spec.attributes]
         setattr(function, "__signature__", inspect.Signature(
             parameters, return_annotation=child_spec.class_name))
-        function.__doc__ = attribute_listing(spec, f"Add a ``<{spec.tag}>`` child and return it.")
+        function.__doc__ = attribute_listing(spec)
 
 
 def _annotation(attribute: AttributeSpec) -> str:
     return attribute.describe()
 
 
-def attribute_listing(spec: ElementSpec, head: str) -> str:
-    """``add_<tag>()``'s docstring, laid out as ``elements.pyi`` lays it out (a test compares
-    them): the head, the reference, then ``Args:`` with each attribute's one line, written by
-    the generator (``codegen/docs.py``) into the attribute's ``doc``."""
-    lines = [head]
-    if spec.url:
-        lines += ["", f"Reference: {spec.url}"]
+def attribute_listing(spec: ElementSpec) -> str:
+    """``add_<tag>()``'s docstring, laid out by ``_doclines`` as ``elements.pyi``'s is, from
+    each attribute's one line, written by the generator (``codegen/docs.py``) into its
+    ``doc``."""
     entries = {a.py_name: a.doc for a in spec.attributes}
     if DCLASS in spec.by_key:
         entries[DCLASS] = DCLASS_DOC
-    if entries:
-        lines += ["", "Args:", *(f"    {name}: {entries[name]}"
-                                 for name in doc_order(list(entries)))]
-    return "\n".join(lines)
-
-
-def doc_order(names: list[str]) -> list[str]:
-    """``names`` in order, except that a name comes before every name ending with it: an
-    editor shows keyword ``p`` the first line containing ``p: ``, which must be its own."""
-    placed: list[str] = []
-    for name in names:
-        at = next((i for i, other in enumerate(placed)
-                   if other != name and other.endswith(name)), len(placed))
-        placed.insert(at, name)
-    return placed
+    return adder_listing(spec.tag, spec.url, entries)
 
 
 # ---------------------------------------------------------------------------- creation

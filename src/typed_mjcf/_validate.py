@@ -14,9 +14,12 @@ Every finding has a rule name (see :data:`RULES`), the path of the element and a
 from __future__ import annotations
 
 import functools
-from collections.abc import Iterable, Sequence
+import operator
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Final, Literal
+from typing import Final, Literal, cast
+
+import numpy as np
 
 from typed_mjcf import _tree
 from typed_mjcf._compiled_names import CompiledNames
@@ -28,7 +31,7 @@ from typed_mjcf.errors import InvalidValueError, did_you_mean
 Severity = Literal["error", "warning"]
 Rule = Literal[
     "exclusive", "together", "requires", "oneof", "required-attribute", "required-child",
-    "unresolved-reference", "default-class", "world-body", "replicate-joint", "self-attach",
+    "range", "unresolved-reference", "default-class", "world-body", "replicate-joint", "self-attach",
     "replicate-names", "unused-default",
 ]
 
@@ -39,6 +42,7 @@ RULES: Final[dict[Rule, str]] = {
     "oneof": "at least one of the grammar's alternative attribute bundles is complete",
     "required-attribute": "a required attribute is set (not checked in <default> classes)",
     "required-child": "a required child element is present",
+    "range": "each number is within the bounds MuJoCo accepts (schema/facts.toml's bounds)",
     "unresolved-reference": "a reference names an element of the model (or one MuJoCo "
                             "defines); a warning in a <default> class",
     "default-class": "a nested <default> has a class name; the top-level one is 'main'",
@@ -116,6 +120,7 @@ class _Plan:
     required: tuple[AttributeSpec, ...]
     required_children: tuple[str, ...]
     references: tuple[AttributeSpec, ...]
+    bounded: tuple[AttributeSpec, ...]  # numbers with bounds
 
 
 @functools.cache
@@ -152,6 +157,7 @@ def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
         required=() if projection else tuple(a for a in spec.attributes if a.required),
         required_children=tuple(c.tag for c in spec.children.values() if c.card == "!"),
         references=spec.references,
+        bounded=tuple(a for a in spec.attributes if a.bounds),
     )
 
 
@@ -273,6 +279,9 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
                 state.add(order, element, "required-child",
                           f"<{tag}> requires a <{child_tag}> child, which it does not have "
                           f"(an empty one is not written)")
+    for attribute in plan.bounded:
+        if attribute.name in attrs:
+            _check_bounds(state, order, element, attribute)
     if spec.namespace == grammar_facts().class_namespace:
         _declare_class(state, order, element, parent)
     if plan.references:
@@ -343,6 +352,24 @@ def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[st
                           f"{', '.join(missing)}")
     elif kind == "oneof" and not any(all(name in attrs for name in b) for b in bundles):
         state.add(order, element, "oneof", f"<{tag}> must set all of at least one of {listing}")
+
+
+_KEEPS: Final[dict[str, Callable[[float, float], bool]]] = {
+    ">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le}
+
+
+def _check_bounds(state: _Pass, order: int, element: Element,
+                  attribute: AttributeSpec) -> None:
+    value = _tree.read_value(element, attribute)
+    numbers = (cast(list[float], value.tolist()) if isinstance(value, np.ndarray)
+               else [cast(float, value)])
+    if all(_KEEPS[op](float(x), limit) for x in numbers for op, limit in attribute.bounds):
+        return
+    text = " ".join(f"{float(x):g}" for x in numbers)
+    each = "each value " if attribute.is_array else ""
+    expected = " and ".join(f"{op} {limit:g}" for op, limit in attribute.bounds)
+    state.add(order, element, "range", f"<{element.spec.tag}> {attribute.name}=\"{text}\": "
+                                       f"expected {each}{expected} (MuJoCo refuses others)")
 
 
 def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> str:

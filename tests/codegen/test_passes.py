@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import copy
+import dataclasses
 import textwrap
 from pathlib import Path
 
@@ -316,14 +317,14 @@ def test_override_to_keyword_needs_an_enum() -> None:
 
 @pytest.mark.parametrize(("override", "message"), [
     (AttributeOverride("joint", "type", kind="real"),
-     "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
+     "schema/facts.toml [[attribute]] joint@type: a real attribute needs dtype 'double' or 'float'"),
     (AttributeOverride("joint", "type", kind="chars"),
-     "attribute override joint@type: chars attribute needs a bounded arity"),
+     "schema/facts.toml [[attribute]] joint@type: chars attribute needs a bounded arity"),
     (AttributeOverride("joint", "type", kind="ref"),
-     "attribute override joint@type: ref attribute needs a namespace"),
+     "schema/facts.toml [[attribute]] joint@type: ref attribute needs a namespace"),
 ])
 def test_override_errors(override: AttributeOverride, message: str) -> None:
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(FactsError) as info:
         normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
     assert str(info.value) == message
 
@@ -370,9 +371,9 @@ def test_a_kind_other_than_flags_forgets_alone_and_order() -> None:
      "keyword 'hinge' of enum 'jt' is also one of enum 'jt': a value would be ambiguous"),
 ])
 def test_keywords_alone_errors(override: AttributeOverride, message: str) -> None:
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(FactsError) as info:
         normalized(Facts(root_children=FACTS.root_children, attributes=[override]))
-    assert str(info.value) == f"attribute override joint@type: {message}"
+    assert str(info.value) == f"schema/facts.toml [[attribute]] joint@type: {message}"
 
 
 def test_check_keywords_alone() -> None:
@@ -562,6 +563,7 @@ def test_reference_grammar_normalizes() -> None:
 
 def test_naming_facts_are_read_into_the_language() -> None:
     language = load_facts().language
+    assert language is not None
     assert language.replicate_copy == "{name}{sep}{index}"
     assert "sensor" in language.copied_with_replicate
     assert language.flexcomp is not None and language.flexcomp.nodes["trilinear"] == 2
@@ -580,10 +582,12 @@ FLEXCOMP = ('tag = "flexcomp"\nnamespace = "body"\ndof = "dof"\nrigid = "rigid"\
 
 
 @pytest.mark.parametrize(("flexcomp", "message"), [
-    (FLEXCOMP, "[language] flexcomp: unknown or missing key 'nodes'"),
-    (FLEXCOMP + "nodes = { trilinear = 0 }\n",
-     "[language] flexcomp nodes trilinear: expected a positive integer, got 0"),
-    (FLEXCOMP + "nodes = {}\nextra = 1\n", "[language] flexcomp: unknown or missing key 'extra'"),
+    (FLEXCOMP, "[language] flexcomp: missing key 'nodes' (a table of integers)"),
+    (FLEXCOMP + "nodes = { trilinear = \"2\" }\n",
+     "[language] flexcomp nodes trilinear: expected an integer, got '2'"),
+    (FLEXCOMP + "nodes = {}\nextra = 1\n", ("[language] flexcomp: unknown key 'extra' (known "
+                                           "keys: tag, namespace, dof, rigid, vertex_body, "
+                                           "node_body, nodes)")),
 ])
 def test_malformed_naming_facts(flexcomp: str, message: str) -> None:
     with pytest.raises(FactsError) as info:
@@ -595,16 +599,22 @@ def test_naming_facts_agree_with_the_grammar() -> None:
     schema = ir.load()
     assert passes._naming_fact_problems(schema) == []  # pyright: ignore[reportPrivateUsage]
     broken = copy.deepcopy(schema)
-    assert broken.language.flexcomp is not None
-    broken.language.flexcomp.rigid = "stiff"
-    broken.language.flexcomp.nodes["cubic"] = 4
-    broken.language.replicate_copy = "{name}{separator}{index}"
-    broken.language.copied_with_replicate.append("sensors")
-    broken.language.name_lists["flex@bodies"] = "body"
+    language = broken.facts()
+    assert language.flexcomp is not None
+    flexcomp = dataclasses.replace(language.flexcomp, rigid="stiff",
+                                   nodes={**language.flexcomp.nodes, "cubic": 4, "linear": 0})
+    broken.language = dataclasses.replace(
+        language, flexcomp=flexcomp, replicate_copy="{name}{separator}{index}",
+        copied_with_replicate=language.copied_with_replicate | {"sensors"},
+        name_lists={**language.name_lists, "flex@bodies": "body"},
+        merge_rules={**language.merge_rules, "timestep": "min"})
     assert passes._naming_fact_problems(broken) == [  # pyright: ignore[reportPrivateUsage]
         "language replicate_copy: unknown placeholder {separator} (known: index, name, sep)",
+        'language merge_rules timestep: expected a key "tag@attribute"',
         "language facts: <flex> has no string attribute 'bodies'",
         "language copied_with_replicate: no root section 'sensors'",
         "language facts: <flexcomp> has no bool attribute 'stiff'",
         "language flexcomp nodes: 'cubic' is no keyword of <flexcomp> dof",
+        "language flexcomp nodes: 'linear' is no keyword of <flexcomp> dof",
+        "language flexcomp nodes linear: expected a positive integer, got 0",
     ]

@@ -9,7 +9,7 @@ from collections.abc import Mapping
 import pytest
 
 from codegen import ir, naming
-from codegen.facts import AttributeOverride, EnumFact, Facts
+from codegen.facts import AttributeOverride, EnumFact, Facts, FactsError
 from codegen.probe import PROBE_VALUE, Outcome, Parser
 from codegen.reconcile import Report, describe, sync
 from codegen.wheel import Wheel, parse_print_schema, parse_reference
@@ -490,14 +490,14 @@ def test_enum_facts_add_enums_and_replace_keywords() -> None:
     (AttributeOverride("nope", "x", kind="string"),
      "schema/facts.toml [[attribute]] nope@x: the synced schema has no such attribute"),
     (AttributeOverride("site", "name", kind="ref"),
-     "attribute override site@name: ref attribute needs a namespace"),
+     "schema/facts.toml [[attribute]] site@name: ref attribute needs a namespace"),
     (AttributeOverride("joint", "type", kind="real"),
-     "attribute override joint@type: a real attribute needs dtype 'double' or 'float'"),
+     "schema/facts.toml [[attribute]] joint@type: a real attribute needs dtype 'double' or 'float'"),
     (AttributeOverride("joint", "type", kind="flags", alone=("nope",)),
-     "attribute override joint@type: alone names undeclared enum 'nope'"),
+     "schema/facts.toml [[attribute]] joint@type: alone names undeclared enum 'nope'"),
 ])
 def test_malformed_overrides(override: AttributeOverride, message: str) -> None:
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(FactsError) as info:
         sync(schema(), wheel(), Facts(single=FACTS.single, attributes=[override]))
     assert str(info.value).startswith(message)
 

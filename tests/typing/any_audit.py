@@ -15,7 +15,7 @@ variable without annotation), ``unresolved`` (from an import mypy could not reso
 ``mujoco`` without stubs), and the others mypy distinguishes.
 
 ``--as-user`` ignores missing imports, as a user's mypy may. ``mujoco`` is typed either
-way, by ``generated/mujoco-stubs`` (installed with the package).
+way, by ``generated/mujoco-stubs`` (copied into a project by ``typed-mjcf mujoco-stubs``).
 
 Relies on mypy internals (mypy is pinned in the dev extra).
 """

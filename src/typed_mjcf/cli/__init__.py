@@ -18,7 +18,7 @@ from collections.abc import Callable, Sequence
 
 from typed_mjcf import __version__
 from typed_mjcf._releases import describe as describe_releases
-from typed_mjcf.cli import check, diff, fmt, render, to_python
+from typed_mjcf.cli import check, diff, fmt, mujoco_stubs, render, to_python
 
 DESCRIPTION = """\
 Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
@@ -28,6 +28,7 @@ Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
   typed-mjcf fmt robot.xml                     rewrite in the canonical form
   typed-mjcf diff a.xml b.xml                  what differs, element by element
   typed-mjcf render robot.xml -o robot.png     a picture of the model (offscreen)
+  typed-mjcf mujoco-stubs                      the type stubs of `mujoco`, into typings/
 
 Run "typed-mjcf COMMAND --help" for a command's options.
 
@@ -42,7 +43,7 @@ def parser() -> argparse.ArgumentParser:
     main_parser.add_argument("--version", action="version",
                              version=f"typed-mjcf {__version__}\n{describe_releases()}")
     commands = main_parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
-    for module in (to_python, check, fmt, diff, render):
+    for module in (to_python, check, fmt, diff, render, mujoco_stubs):
         module.arguments(commands.add_parser(
             module.NAME, help=module.HELP, description=module.DESCRIPTION,
             formatter_class=argparse.RawDescriptionHelpFormatter))
