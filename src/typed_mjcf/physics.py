@@ -40,6 +40,7 @@ from typed_mjcf._binding import (
     new_binding,
 )
 from typed_mjcf._compat import STATE
+from typed_mjcf._dmcompat.debugging import explained
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
@@ -282,7 +283,13 @@ class Physics(Bind):
         self._reload_from_data(Data(_load_path(file_path)))
 
     def _load_mjcf(self, mjcf_model: ModelRoot) -> None:
-        compiled = compile_for_physics(mjcf_model)
+        try:
+            compiled = compile_for_physics(mjcf_model)
+        except ValueError as error:
+            if not STATE[0]:
+                raise
+            # dm_control's debug mode: where the elements named were made and set
+            raise explained(error, mjcf_model) from None
         self._source = mjcf_model
         self._unnamed = compiled.unnamed
         self._reload_from_data(Data(_as_model(compiled.model)))

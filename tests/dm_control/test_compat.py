@@ -10,6 +10,7 @@ import subprocess
 import sys
 import textwrap
 from collections.abc import Iterator
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -314,3 +315,70 @@ def test_debug_mode_records_where_elements_were_made_and_set(dm: None) -> None:
     later = model.worldbody.add_body()
     assert later.get_init_stack() == [] and not debugging.debug_mode()
     assert np.all([not s for s in later.get_last_modified_stacks_for_all_attributes().values()])
+
+
+_FLAG_PROBE = textwrap.dedent("""
+    import sys
+    import typed_mjcf
+    typed_mjcf.install_as_dm_control_mjcf()
+    from absl import flags
+    from dm_control import mjcf
+    flags.FLAGS(["prog", *sys.argv[1:]])  # as absl.app.run parses, after the imports
+    model = mjcf.RootElement()
+    body = model.worldbody.add("body", name="b")
+    print(mjcf.debugging.debug_mode(), bool(body.get_init_stack()),
+          repr(mjcf.debugging.get_full_dump_dir()))
+""")
+
+
+@pytest.mark.skipif(harness.mjcf_folder() is None, reason="dm_control is not installed")
+@pytest.mark.parametrize(("arguments", "expected"), [
+    ([], "False False ''"),
+    (["--pymjcf_debug"], "True True ''"),
+    (["--pymjcf_debug", "--pymjcf_debug_full_dump_dir=/x"], "True True '/x'"),
+])
+def test_debug_mode_follows_dm_controls_flags(arguments: list[str], expected: str) -> None:
+    """dm_control defines --pymjcf_debug and reads it when the first element is made."""
+    run = subprocess.run([sys.executable, "-c", _FLAG_PROBE, *arguments], capture_output=True,
+                         text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == expected
+
+
+def test_a_refused_model_names_where_its_element_was_made_and_set(dm: None) -> None:
+    debugging.enable_debug_mode()
+    try:
+        model = mjcf.RootElement(model="m")
+        model.worldbody.add_body(name="b").add_joint(name="j")
+        motor = model.actuator.add_motor(name="drive", joint="j")
+        motor.joint = "nowhere"
+        with pytest.raises(mjcf.ValidationError) as caught:
+            mjcf.Physics.from_mjcf_model(model)
+    finally:
+        debugging.disable_debug_mode()
+    lines = str(caught.value).splitlines()
+    assert lines[-3:] == [
+        "  * Element object was created by "
+        f"`test_a_refused_model_names_where_its_element_was_made_and_set` at {__file__}:"
+        f"{_line_of('motor = model.actuator.add_motor')}",
+        '  * name="drive" was set when the element was created',
+        f'  * joint="nowhere" was set by `test_a_refused_model_names_where_its_element_was_'
+        f'made_and_set` at {__file__}:{_line_of("motor.joint = ")}',
+    ]
+    assert caught.value.findings[0].element is motor  # the same error, findings kept
+    debugging.disable_debug_mode()
+    with pytest.raises(mjcf.ValidationError, match="run again with --pymjcf_debug"):
+        mjcf.Physics.from_mjcf_model(model)
+
+
+def test_without_dm_controls_behaviour_errors_are_unchanged() -> None:
+    model = mjcf.RootElement(model="m")
+    model.actuator.add_motor(name="drive", joint="nowhere")
+    with pytest.raises(mjcf.ValidationError) as caught:
+        mjcf.Physics.from_mjcf_model(model)
+    assert "pymjcf" not in str(caught.value)
+
+
+def _line_of(text: str) -> int:
+    lines = Path(__file__).read_text(encoding="utf-8").splitlines()
+    return next(i for i, line in enumerate(lines, 1) if text in line and "_line_of" not in line)

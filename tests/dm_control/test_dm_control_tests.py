@@ -20,9 +20,6 @@ pytestmark = pytest.mark.skipif(harness.mjcf_folder() is None, reason="dm_contro
 # Each reason names the README's "Migrating from dm_control" entry it is documented under.
 INTERNALS = ("a test of dm_control's internals: its schema objects (spec.children[...]"
              ".repeated/.on_demand, spec.attributes as a dict) or private slots (_spec)")
-DEBUG_FLAGS = ("dm_control's --pymjcf_debug flags and its instrumented XML dump are not "
-               "implemented; a model MuJoCo would refuse is refused by validate() first, "
-               "naming the element's path (README: Running dm_control's code unchanged)")
 MIXED_BODIES = ("bind() takes mocap and other bodies together, as bodies; dm_control refuses "
                 "the list as of two element types (README: Physics)")
 SPELLING = ("the XML is written without dm_control's class=\"/\" on every element (the "
@@ -45,9 +42,6 @@ DIFFERENCES: dict[str, str] = {
     "element_test.ElementTest.testAttachmentFrames": SPELLING,
     "element_test.ElementTest.testDefaultIdentifier": SPELLING,
     "element_test.ElementTest.testSetAndGetAttributes": MESSAGES,
-    "debugging_test.DebuggingTest.test_full_debug_dump": DEBUG_FLAGS,
-    "debugging_test.DebuggingTest.test_physics_error_message_in_debug_mode": DEBUG_FLAGS,
-    "debugging_test.DebuggingTest.test_physics_error_message_outside_of_debug_mode": DEBUG_FLAGS,
 }
 
 
