@@ -93,15 +93,7 @@ def written_nodes(model: ModelBase, collected: CollectedFiles,
     """The model written as for MuJoCo (as :func:`locate` reads it, keyframes of composed
     models left out) and each node of it that is one of our elements, with that element, in
     document order (dm_control's debug dump)."""
-    locator = _Locator(model, collected)
-    root = locator._marked_root()
-    pairs: list[tuple[XmlNode, Element]] = []
-    for node in root.iter():
-        if not isinstance(node.tag, str) or node is root:
-            continue
-        element = locator._element_of(node)
-        if element is not None:
-            pairs.append((node, element))
+    root, pairs = _Locator(model, collected).nodes()
     for node, element in pairs:  # the marker names are ours, not the model's
         id_attribute = element.spec.id_attribute
         value = node.get(id_attribute.name) if id_attribute is not None else None
@@ -120,6 +112,18 @@ class _Locator:
         self.root: XmlNode | None = None  # of the marked text
         self.compiled: CompiledNames | None = None
         self.exported: dict[str, list[Element]] | None = None
+
+    def nodes(self) -> tuple[XmlNode, list[tuple[XmlNode, Element]]]:
+        """The marked text's root and each node that is one of our elements, with it."""
+        root = self._marked_root()
+        pairs: list[tuple[XmlNode, Element]] = []
+        for node in root.iter():
+            if not isinstance(node.tag, str) or node is root:
+                continue
+            element = self._element_of(node)
+            if element is not None:
+                pairs.append((node, element))
+        return root, pairs
 
     # ------------------------------------------------------------------ finding
 

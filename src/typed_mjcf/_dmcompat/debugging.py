@@ -3,9 +3,9 @@ and each attribute last set (``element.get_init_stack()``,
 ``element.get_last_modified_stacks_for_all_attributes()``), and says so when MuJoCo (or
 ``validate()`` before it) refuses a model given to ``mjcf.Physics``.
 
-Debug mode is on by ``--pymjcf_debug`` (absl flags, defined here when absl is installed, as
-dm_control defines them; read when the first element is made after
-``install_as_dm_control_mjcf()``) or :func:`enable_debug_mode`. With
+Debug mode is on by ``--pymjcf_debug`` (absl flags, defined by
+``install_as_dm_control_mjcf()`` when absl is installed, as dm_control defines them, and read
+when the first element is made) or :func:`enable_debug_mode`. With
 ``--pymjcf_debug_full_dump_dir`` (or :func:`set_full_dump_dir`), a refused model is written
 there as ``model.xml``, every element's line ending in ``<!--pymjcfdebug:<id>-->``, with
 ``<id>.dump`` telling where that element was made and each attribute set.
@@ -40,6 +40,7 @@ _MARK_ON_NEXT_LINE: Final = re.compile(r"\n\s*<!--" + DEBUG_METADATA_PREFIX)
 # [debug mode, dump folder]: None until set, or read from the flags when first asked
 _MODE: Final[list[bool | None]] = [None]
 _DUMP_DIR: Final[list[str | None]] = [None]
+_FLAGS: Final[list[object]] = []  # absl's FLAGS, once the flags are defined
 
 
 class ElementDebugInfo(NamedTuple):
@@ -48,36 +49,36 @@ class ElementDebugInfo(NamedTuple):
     attribute_stacks: dict[str, list[StackTraceEntry]]
 
 
-def _absl_flags() -> object | None:
-    """absl's ``FLAGS``, with dm_control's two flags defined, if absl is installed (it is a
-    dependency of dm_control, not of typed-mjcf)."""
+def _define_flags() -> None:
+    """Define dm_control's two flags in absl's ``FLAGS``, if absl is installed (a dependency
+    of dm_control, not of typed-mjcf) and they are not defined yet. They may be overridden:
+    dm_control's own debugging module, imported in the same process, defines them again."""
+    if _FLAGS:
+        return
     try:
         flags = importlib.import_module("absl.flags")
     except ImportError:
-        return None
+        return
     values: object = flags.FLAGS
     defined = getattr(values, "__contains__")  # noqa: B009 - absl's FlagValues, untyped here
-    if not defined(_DEBUG_FLAG):  # dm_control's own debugging module may have defined them
+    if not defined(_DEBUG_FLAG):
         flags.DEFINE_boolean(
             _DEBUG_FLAG, False, "Enables PyMJCF debug mode (SLOW!): where each element of "
             "an MJCF model was made and each attribute set is recorded, and said when "
-            "MuJoCo refuses the model (typed-mjcf's dm_control.mjcf).")
+            "MuJoCo refuses the model (typed-mjcf's dm_control.mjcf).", allow_override=True)
     if not defined(_DUMP_FLAG):
         flags.DEFINE_string(_DUMP_FLAG, "", "Path to dump full debug info when MuJoCo "
-                            "refuses a model (typed-mjcf's dm_control.mjcf).")
-    return values
-
-
-_FLAGS: Final = _absl_flags()
+                            "refuses a model (typed-mjcf's dm_control.mjcf).",
+                            allow_override=True)
+    _FLAGS.append(values)
 
 
 def _flag(name: str) -> object:
     """A flag's value: the command line's once absl parsed it, its default before."""
-    if _FLAGS is None:
+    if not _FLAGS:
         return None
-    if getattr(_FLAGS, "is_parsed")():  # noqa: B009 - absl's FlagValues, untyped here
-        return getattr(_FLAGS, name)
-    return getattr(getattr(_FLAGS, "__getitem__")(name), "default")  # noqa: B009
+    # absl's Flag: its value is the default until the command line is parsed
+    return getattr(getattr(_FLAGS[0], "__getitem__")(name), "value")  # noqa: B009 - untyped
 
 
 def debug_mode() -> bool:
@@ -113,8 +114,10 @@ def _resolve_then_record(element: object, names: tuple[str, ...] | None,
 
 
 def arm() -> None:
-    """Read ``--pymjcf_debug`` when the first element is made (``install()`` calls it:
-    absl parses the command line after the imports, in ``app.run``)."""
+    """Define dm_control's flags and read ``--pymjcf_debug`` when the first element is made
+    (``install()`` calls it: absl parses the command line after the imports, in
+    ``app.run``)."""
+    _define_flags()
     if _MODE[0] is None:
         _debuginfo.RECORDER[0] = _resolve_then_record
 
@@ -172,12 +175,12 @@ def explained(error: ValueError, model: ModelRoot) -> ValueError:
 
 def _named_elements(error: ValueError, model: ModelRoot) -> list[Element]:
     """The elements ``error`` is about."""
+    found: list[object] = []
     if isinstance(error, ValidationError):
-        found = [f.element for f in error.errors if f.element is not None]
-        return list(dict.fromkeys(found))
-    if isinstance(error, CompileError) and error.path is not None:
-        return [e for e in _tree.iter_composed(model, True) if e.path == error.path][:1]
-    return []
+        found += [f.element for f in error.errors]
+    elif isinstance(error, CompileError) and error.path is not None:
+        found += [e for e in _tree.iter_composed(model, True) if e.path == error.path][:1]
+    return [e for e in dict.fromkeys(found) if isinstance(e, Element)]
 
 
 def _where(entry: StackTraceEntry) -> str:
@@ -216,6 +219,8 @@ def dump_full_debug_info(model: ModelRoot, dump_dir: str) -> None:
             node.text = None
         node.tail = None
     for node, element in pairs:
+        if not isinstance(element, Element):
+            continue
         mark = f"{DEBUG_METADATA_PREFIX}:{id(element)}"
         with open(os.path.join(dump_dir, f"{id(element)}.dump"), "w", encoding="utf-8") as f:
             f.write(f"{mark}\n{_self_only(node)}\n")
