@@ -46,26 +46,38 @@ TIMEOUT = 1800
 
 
 def run(python: str, typed: bool) -> dict[str, dict[str, str]]:
-    """Each project's tests by id: "passed", "skipped", or the first line of the failure."""
+    """Each project's tests by id: "passed", "skipped", or the first line of the failure.
+    Each test file runs in a process of its own: a crash (dm-robotics-controllers' binary is
+    built against MuJoCo 3.3.3's structs) takes only that file's tests with it."""
     found: dict[str, dict[str, str]] = {}
     for project, package in PROJECTS.items():
         folder = subprocess.run(
             [python, "-c", f"import {package} as p, os; print(os.path.dirname(p.__file__))"],
             capture_output=True, text=True, check=True).stdout.strip()
-        with tempfile.TemporaryDirectory() as work:
-            report = Path(work) / "report.xml"
-            command = [python, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--rootdir",
-                       work, "-c", os.devnull, f"--junitxml={report}", folder]
-            if typed:
-                command[3:3] = ["-p", "tests.dm_control.install_plugin"]
-            env = {**os.environ, "MUJOCO_GL": "egl",
-                   "PYTHONPATH": str(REPO) if typed else ""}
-            subprocess.run(command, cwd=work, env=env, capture_output=True, text=True,
-                           timeout=TIMEOUT, check=False)
-            found[project] = _outcomes(report)
+        found[project] = {}
+        for test_file in sorted(Path(folder).rglob("*_test.py")):
+            found[project].update(_run_file(python, typed, test_file, Path(folder)))
         passed = sum(1 for o in found[project].values() if o == "passed")
         print(f"{project}: {passed} of {len(found[project])} passed", file=sys.stderr)
     return found
+
+
+def _run_file(python: str, typed: bool, test_file: Path, folder: Path) -> dict[str, str]:
+    with tempfile.TemporaryDirectory() as work:
+        report = Path(work) / "report.xml"
+        command = [python, "-m", "pytest", "-q", "-p", "no:cacheprovider", "--rootdir", work,
+                   "-c", os.devnull, f"--junitxml={report}", str(test_file)]
+        if typed:
+            command[3:3] = ["-p", "tests.dm_control.install_plugin"]
+        env = {**os.environ, "MUJOCO_GL": "egl", "PYTHONPATH": str(REPO) if typed else ""}
+        done = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True,
+                              timeout=TIMEOUT, check=False)
+        name = test_file.relative_to(folder).as_posix()
+        outcomes = {f"{name}::{test}": outcome for test, outcome in _outcomes(report).items()}
+        if not outcomes:
+            outcomes = {name: f"failed: the test process ended with {done.returncode} "
+                              "before reporting"}
+        return outcomes
 
 
 def _outcomes(report: Path) -> dict[str, str]:
@@ -73,7 +85,7 @@ def _outcomes(report: Path) -> dict[str, str]:
         return {}
     outcomes: dict[str, str] = {}
     for case in ET.parse(report).getroot().iter("testcase"):
-        test_id = f"{case.get('classname')}.{case.get('name')}"
+        test_id = f"{(case.get('classname') or '').split('.')[-1]}.{case.get('name')}"
         problem = next((c for c in case if c.tag in ("failure", "error")), None)
         if problem is not None:
             message = (problem.get("message") or problem.text or "").strip()
