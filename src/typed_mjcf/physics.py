@@ -97,9 +97,9 @@ class Model(mujoco.MjModel):
         """The model itself (dm_control code passes ``model.ptr`` to ``mujoco``)."""
         return self
 
-    def name2id(self, name: str, object_type: str | mujoco.mjtObj) -> int:
-        """The id of the object named ``name`` of ``object_type`` (``"geom"`` or
-        ``mujoco.mjtObj.mjOBJ_GEOM``); ``InvalidValueError`` if there is none."""
+    def name2id(self, name: str, object_type: str | int | mujoco.mjtObj) -> int:
+        """The id of the object named ``name`` of ``object_type`` (``"geom"``,
+        ``mujoco.mjtObj.mjOBJ_GEOM`` or its int value); ``InvalidValueError`` if none."""
         objtype = _objtype(object_type)
         _check_name(name)
         found = mujoco.mj_name2id(self, objtype, name)
@@ -108,7 +108,7 @@ class Model(mujoco.MjModel):
                                     "compiled model")
         return found
 
-    def id2name(self, object_id: int, object_type: str | mujoco.mjtObj) -> str:
+    def id2name(self, object_id: int, object_type: str | int | mujoco.mjtObj) -> str:
         """The name of the object ``object_id`` of ``object_type`` (``""`` if unnamed)."""
         objtype = _objtype(object_type)
         if not 0 <= object_id < _count(self, objtype):
@@ -142,9 +142,15 @@ def _check_name(name: object) -> None:
         raise InvalidValueError(f"name2id: a name is a string, got {name!r}")
 
 
-def _objtype(object_type: str | mujoco.mjtObj) -> mujoco.mjtObj:
+def _objtype(object_type: str | int | mujoco.mjtObj) -> mujoco.mjtObj:
     if isinstance(object_type, mujoco.mjtObj):
         return object_type
+    if isinstance(object_type, int):  # dm_control's enums are plain ints
+        try:
+            return mujoco.mjtObj(object_type)
+        except ValueError:
+            raise InvalidValueError(f"{object_type!r} is not a kind of MuJoCo object (an "
+                                    f"mjtObj value)") from None
     name = f"mjOBJ_{object_type.upper()}"
     members = mujoco.mjtObj.__members__
     if name not in members:

@@ -489,3 +489,14 @@ def test_a_one_control_actuator_binds_as_its_row() -> None:
     low, high = physics.bind(motor).ctrlrange
     assert (low, high) == (-1, 2) and physics.bind(motor).gear.shape == (6,)
     assert physics.bind([motor]).ctrlrange.shape == (1, 2)
+
+
+def test_object_types_may_be_given_as_ints() -> None:
+    """dm_control's enums (``mjbindings.enums.mjtObj``) are plain ints."""
+    model = mjcf.RootElement(model="m")
+    model.worldbody.add_site(name="s")
+    physics = mjcf.Physics.from_mjcf_model(model)
+    site = int(mujoco.mjtObj.mjOBJ_SITE)
+    assert physics.model.name2id("s", site) == 0 and physics.model.id2name(0, site) == "s"
+    with pytest.raises(mjcf.InvalidValueError, match="not a kind of MuJoCo object"):
+        physics.model.name2id("s", 999)
