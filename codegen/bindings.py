@@ -44,6 +44,7 @@ class Ragged:
     adr: str | None = None
     num: str | None = None
     index: str | None = None
+    single: str | None = None  # "row": a single element owning one row is bound to it
 
 
 @dataclass(frozen=True)
@@ -88,11 +89,14 @@ def load_facts(path: Path = FACTS_PATH) -> Facts:
     ragged: dict[str, Ragged] = {}
     for size, body in _table(raw.get("ragged", {}), "ragged").items():
         entry = _table(body, f"ragged.{size}")
-        _keys(entry, {"owner", "adr", "num", "index"}, f"ragged.{size}")
+        _keys(entry, {"owner", "adr", "num", "index", "single"}, f"ragged.{size}")
         values = {k: str(v) for k, v in entry.items()}
         if "owner" not in values or ("adr" in values) == ("index" in values):
             raise BindingFactsError(f"{FACTS_PATH.name}: [ragged.{size}] needs owner and one "
                                     "of adr or index")
+        if values.get("single", "row") != "row":
+            raise BindingFactsError(f"{FACTS_PATH.name}: [ragged.{size}] single must be "
+                                    f"\"row\", got {values['single']!r}")
         ragged[size] = Ragged(**values)
     columns = {k: _strings(v, f"columns.{k}")
                for k, v in _table(raw.get("columns", {}), "columns").items()}

@@ -725,15 +725,15 @@ finish_bindings(BindingTables(
         }, "tuples"),
     },
     ragged={
-        "na": Ragged(owner="nactuator", adr="actuator_actadr", num="actuator_actnum"),
+        "na": Ragged(owner="nactuator", adr="actuator_actadr", num="actuator_actnum", single="row"),
         "nmocap": Ragged(owner="nbody", index="body_mocapid"),
         "nnumericdata": Ragged(owner="nnumeric", adr="numeric_adr", num="numeric_size"),
-        "nout": Ragged(owner="nactuator", adr="actuator_outadr", num="actuator_outnum"),
+        "nout": Ragged(owner="nactuator", adr="actuator_outadr", num="actuator_outnum", single="row"),
         "nq": Ragged(owner="njnt", adr="jnt_qposadr"),
         "nsensordata": Ragged(owner="nsensor", adr="sensor_adr", num="sensor_dim"),
         "ntextdata": Ragged(owner="ntext", adr="text_adr", num="text_size"),
         "ntupledata": Ragged(owner="ntuple", adr="tuple_adr", num="tuple_size"),
-        "nu": Ragged(owner="nactuator", adr="actuator_ctrladr", num="actuator_ctrlnum"),
+        "nu": Ragged(owner="nactuator", adr="actuator_ctrladr", num="actuator_ctrlnum", single="row"),
         "nv": Ragged(owner="njnt", adr="jnt_dofadr"),
     },
     columns={

@@ -66,11 +66,18 @@ class Element(_tree.Element):
         body); a top-level section of a composed model, the attached models' sections'.
 
         With dm_control's behaviour on, a once-only child's tag gives that child itself
-        (``None`` if it does not exist), as dm_control's ``get_children`` does."""
-        if tag is not None and dm_control_behaviour():
-            child_spec = self.spec.children.get(tag)
-            if child_spec is not None and child_spec.single:
-                return cast("list[Element]", getattr(self, child_spec.py_name))
+        (``None`` if it does not exist), as dm_control's ``get_children`` does, and the
+        once-only children that are not on demand are among all children (dm_control makes
+        them with their parent)."""
+        if dm_control_behaviour():
+            if tag is None:
+                for child_spec in self.spec.children.values():
+                    if child_spec.single and not child_spec.on_demand:
+                        getattr(self, child_spec.py_name)
+            else:
+                once = self.spec.children.get(tag)
+                if once is not None and once.single:
+                    return cast("list[Element]", getattr(self, once.py_name))
         own = _tree.children_with_tag(self, tag)
         return cast("list[Element]", own + [e for e in attached_children(self)
                                             if tag is None or e.spec.tag == tag])
@@ -111,6 +118,8 @@ class Element(_tree.Element):
         name = _tree.element_name(self)
         if name is None and dm_control_behaviour():
             parent = self.parent
+            if self.spec.compose == "nest" and isinstance(parent, ModelRoot):
+                return prefix or "/"  # the model's own default class: dm_control names it so
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: the frame's name
                 return parent.prefixed_identifier(prefix_root)
@@ -264,7 +273,7 @@ class Element(_tree.Element):
 
     def get_last_modified_stacks_for_all_attributes(self) -> dict[str, list[StackTraceEntry]]:
         """Where each attribute (by XML name) was last set, in dm_control's debug mode."""
-        return attribute_stacks(self, tuple(a.name for a in self.spec.attributes))
+        return attribute_stacks(self, tuple(self.spec.attributes))
 
     # ------------------------------------------------------------------ defaults
 

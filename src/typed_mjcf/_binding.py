@@ -57,12 +57,14 @@ class BindingError(MjcfError, ValueError):
 class Ragged:
     """A size whose rows belong to the elements of ``owner``: each owns ``num`` rows from
     ``adr`` (without ``num``: up to the next element's address), or the one row ``index``
-    gives (-1: none)."""
+    gives (-1: none). ``single="row"``: a single element that owns one row is bound to that
+    row itself (as to a row of its own size), as dm_control's named indexers give it."""
 
     owner: str
     adr: str | None = None
     num: str | None = None
     index: str | None = None
+    single: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -325,7 +327,8 @@ class Binding:
                                  f"rows of {size} (a body's mocap_pos: mocap bodies)")
         kind = tables.kinds[self._kind]
         ragged = tables.ragged.get(size)
-        one_each = size == kind.size or (ragged is not None and ragged.index is not None)
+        one_each = size == kind.size or (ragged is not None and (
+            ragged.index is not None or ragged.single == "row"))
         single_row = self._single and one_each and len(found) == 1
         index = int(found[0]) if single_row else found
         self._indices[name] = index

@@ -106,7 +106,7 @@ def resolve(element: Element, name: str, grammar_defaults: bool = True) -> objec
     spec = element.spec
     attribute = spec.by_key.get(name)
     if attribute is None:
-        known = [a.py_name for a in spec.attributes]
+        known = [a.py_name for a in spec.attributes.values()]
         raise UnknownAttributeError(f"{element.path}: <{spec.tag}> has no attribute {name!r}"
                                     f"{did_you_mean(name, known)}")
     own = _tree.read_value(element, attribute)

@@ -455,7 +455,7 @@ class Writer:
         if namespace is None or model is None:
             return
         facts = grammar_facts()
-        if element.spec.name in facts.joints:
+        if element.spec.row in facts.joints:
             self.joint_owners.append(model)
             body = element.parent
             while body is not None and body.spec.tag != facts.body:  # frames are transparent
@@ -612,7 +612,7 @@ def folder_attributes() -> frozenset[str]:
     """The <compiler> attributes that name folders of files: each model keeps its own."""
     names: set[str] = set()
     for cls in _tree.element_classes().values():
-        for attribute in cls.spec.attributes:
+        for attribute in cls.spec.attributes.values():
             names.update(attribute.directory)
     return frozenset(names)
 

@@ -110,6 +110,36 @@ def resolve_path(model: ModelBase, attribute: AttributeSpec, file: str,
     return os.path.normpath(os.path.join(base, folder, file))
 
 
+def rebase_files(copy: Element, source: ModelBase, target: ModelBase) -> None:
+    """A copy of ``source``'s elements, now in ``target`` (``include_copy``), keeps naming
+    the files it named there. As dm_control's copy holds the file itself, ``target`` is given
+    the file's contents in memory under the name the copy keeps; where it holds other
+    contents by that name, under that name with a ``-2`` (``-3``...) suffix, which the copy
+    then names. A file ``source`` cannot read stays as it was (the error comes when the model
+    is written)."""
+    if source is target:
+        return
+    folders = compiler_folders(source)
+    given, taken = _tree.memory_files(source), _tree.memory_files(target)
+    collected = CollectedFiles()
+    for element in copy.iter_elements():
+        for name, value in list(_tree.values(element).items()):
+            attribute = element.spec.by_name[name]
+            if attribute.kind != "file" or not isinstance(value, str) or os.path.isabs(value):
+                continue
+            try:
+                contents = _read(element, attribute, value, source, folders, given, collected)[0]
+            except MjcfError:
+                continue
+            key, stem, extension, n = value, *os.path.splitext(value), 1
+            while taken.get(key, contents) != contents:  # another file by that name here
+                n += 1
+                key = f"{stem}-{n}{extension}"
+            taken[key] = contents
+            if key != value:
+                _tree.assign(element, attribute, key)
+
+
 def absolute_file(model: ModelBase, attribute: AttributeSpec, file: str) -> str:
     """An attached model's file, as a path that does not depend on the parent's folders."""
     return resolve_path(model, attribute, file, compiler_folders(model))
@@ -185,7 +215,7 @@ def unique_name(name: str, key: object, collected: CollectedFiles,
 
 def is_skin_file(element: Element, attribute: AttributeSpec) -> bool:
     """Whether the attribute holds a binary skin file (whose bones name bodies)."""
-    return f"{element.spec.name}@{attribute.name}" == grammar_facts().skin_file
+    return f"{element.spec.row}@{attribute.name}" == grammar_facts().skin_file
 
 
 def name_files(model: ModelBase, collected: CollectedFiles | None = None,
@@ -200,7 +230,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
         stored = _tree.values(element)
         if not stored:
             continue
-        for attribute in element.spec.attributes:
+        for attribute in element.spec.attributes.values():
             if attribute.kind != "file":
                 continue
             directories.update(attribute.directory)

@@ -14,6 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Final, Literal
 
 from typed_mjcf._codecs import Codec, make_codec
+from typed_mjcf._compat import STATE as _COMPAT
 
 if TYPE_CHECKING:
     from typed_mjcf._tree import Element
@@ -179,9 +180,15 @@ WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], 
 
 
 class ChildSpec:
-    """A legal child of a row: its tag, Python class name and whether it appears once."""
+    """A legal child of a row: its tag, Python class name and whether it appears once.
 
-    __slots__ = ("card", "class_name", "cls", "index", "once", "py_name", "single", "tag")
+    It also reads as dm_control's spec of a child (``repeated``, ``on_demand``, and the
+    child row's ``name``, ``attributes``, ``children``, ``namespace``, ``identifier``), and
+    equals the child's row: ``child.spec == parent.spec.children[child.tag]``.
+    """
+
+    __slots__ = ("card", "class_name", "cls", "holder", "index", "once", "py_name", "single",
+                 "tag")
 
     tag: str
     py_name: str
@@ -191,6 +198,7 @@ class ChildSpec:
     once: bool
     index: int
     cls: type[Element]  # the generated class, set once every class exists
+    holder: ElementSpec  # the row this is a child of, set once every class exists
 
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
                  py_name: str | None = None) -> None:
@@ -203,12 +211,61 @@ class ChildSpec:
         self.once = card in ("?", "!")
         self.index = 0
 
+    # dm_control's ElementSpec of a child, read from the child's row
+    @property
+    def name(self) -> str:
+        return self.tag
+
+    @property
+    def repeated(self) -> bool:
+        """Whether the parent holds a list of these (dm_control: ``repeated``)."""
+        return not self.single
+
+    @property
+    def on_demand(self) -> bool:
+        """Whether this once-only child exists only once added: under dm_control's
+        behaviour, those of the rows that hold bodies (``<inertial>``)."""
+        return self.single and _COMPAT[0] and self.holder.holds_bodies
+
+    @property
+    def attributes(self) -> dict[str, AttributeSpec]:
+        return self.cls.spec.attributes
+
+    @property
+    def children(self) -> dict[str, ChildSpec]:
+        return self.cls.spec.children
+
+    @property
+    def namespace(self) -> str | None:
+        return self.cls.spec.namespace
+
+    @property
+    def identifier(self) -> str | None:
+        return self.cls.spec.identifier
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, ElementSpec):  # the child's own row
+            return other is self.cls.spec
+        return other is self
+
+    def __hash__(self) -> int:
+        return id(self)
+
+    def __repr__(self) -> str:
+        return f"<child <{self.tag}> of {self.holder!r}>"
+
 
 Constraint = tuple[str, tuple[tuple[str, ...], ...]]
 
 
 class ElementSpec:
-    """One grammar row: tag, attributes in grammar order, legal children, constraints."""
+    """One grammar row: tag, attributes in grammar order, legal children, constraints.
+
+    Shaped as dm_control's ``ElementSpec`` where they meet: ``name`` is the tag,
+    ``attributes`` maps XML names to attributes, ``children`` tags to :class:`ChildSpec`
+    (``repeated``, ``on_demand``), ``namespace`` and ``identifier``. ``row`` is the grammar
+    row's own name (``default_geom`` for a ``<geom>`` in a default class).
+    """
 
     __slots__ = (
         "anchor",
@@ -229,13 +286,15 @@ class ElementSpec:
         "order",
         "plans",
         "references",
+        "row",
         "scope_attribute",
         "tag",
     )
 
     tag: str
-    name: str
-    attributes: tuple[AttributeSpec, ...]
+    name: str  # the tag, as dm_control names it
+    row: str
+    attributes: dict[str, AttributeSpec]  # by XML name, in grammar order
     by_key: dict[str, AttributeSpec]
     by_name: dict[str, AttributeSpec]
     order: dict[str, int]  # XML attribute name -> grammar position
@@ -271,20 +330,21 @@ class ElementSpec:
         ignores_unknown: bool = False,
     ) -> None:
         self.tag = tag
-        self.name = tag if name is None else name
+        self.name = tag
+        self.row = tag if name is None else name
         self.compose = compose  # top-level sections: how an attached model's section joins
         self.attachable = attachable  # a model can be attached here
         # MuJoCo's reader ignores attributes it does not know on this row
         self.ignores_unknown = ignores_unknown
         self.defaults_tag = defaults  # the child of a <default> class holding our defaults
-        self.attributes = tuple(attributes)
         self.by_key = {}
         self.by_name = {}
+        self.attributes = self.by_name
         self.order = {}
         self.plans = {}
         self.id_attribute = None
         self.scope_attribute = None
-        for i, attribute in enumerate(self.attributes):
+        for i, attribute in enumerate(attributes):
             attribute.index = i
             if attribute.anchor is None and anchor is not None:
                 attribute.anchor = f"{anchor}-{attribute.name}"
@@ -295,9 +355,9 @@ class ElementSpec:
                 self.id_attribute = attribute
             if attribute.scope:
                 self.scope_attribute = attribute
-        for attribute in self.attributes:
+        for attribute in attributes:
             self.by_key.setdefault(attribute.name, attribute)
-        self.references = tuple(a for a in self.attributes if a.is_reference)
+        self.references = tuple(a for a in attributes if a.is_reference)
         self.namespace = self.id_attribute.namespace if self.id_attribute else None
         self.children = {}
         for i, child in enumerate(children):
@@ -309,10 +369,15 @@ class ElementSpec:
         self.doc = doc
 
     @property
+    def identifier(self) -> str | None:
+        """The attribute that names elements of this row (dm_control: ``identifier``)."""
+        return None if self.id_attribute is None else self.id_attribute.name
+
+    @property
     def url(self) -> str | None:
         """This element's entry in MuJoCo's XML reference."""
         return f"{DOCS_URL}#{self.anchor}" if self.anchor else None
 
     def __repr__(self) -> str:
-        return f"<row {self.name!r}: <{self.tag}>>"
+        return f"<row {self.row!r}: <{self.tag}>>"
 

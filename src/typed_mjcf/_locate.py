@@ -88,6 +88,20 @@ def locate(model: ModelBase, message: str, collected: CollectedFiles) -> Locatio
     return _Locator(model, collected).locate(found, message)
 
 
+def written_nodes(model: ModelBase, collected: CollectedFiles,
+                  ) -> tuple[XmlNode, list[tuple[XmlNode, Element]]]:
+    """The model written as for MuJoCo (as :func:`locate` reads it, keyframes of composed
+    models left out) and each node of it that is one of our elements, with that element, in
+    document order (dm_control's debug dump)."""
+    root, pairs = _Locator(model, collected).nodes()
+    for node, element in pairs:  # the marker names are ours, not the model's
+        id_attribute = element.spec.id_attribute
+        value = node.get(id_attribute.name) if id_attribute is not None else None
+        if id_attribute is not None and value is not None and _MARKED.search(value):
+            del node.attrib[id_attribute.name]
+    return root, pairs
+
+
 class _Locator:
     def __init__(self, model: ModelBase, collected: CollectedFiles) -> None:
         self.model = model
@@ -98,6 +112,18 @@ class _Locator:
         self.root: XmlNode | None = None  # of the marked text
         self.compiled: CompiledNames | None = None
         self.exported: dict[str, list[Element]] | None = None
+
+    def nodes(self) -> tuple[XmlNode, list[tuple[XmlNode, Element]]]:
+        """The marked text's root and each node that is one of our elements, with it."""
+        root = self._marked_root()
+        pairs: list[tuple[XmlNode, Element]] = []
+        for node in root.iter():
+            if not isinstance(node.tag, str) or node is root:
+                continue
+            element = self._element_of(node)
+            if element is not None:
+                pairs.append((node, element))
+        return root, pairs
 
     # ------------------------------------------------------------------ finding
 

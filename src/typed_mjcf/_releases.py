@@ -95,16 +95,16 @@ def note(spec: ElementSpec, name: str) -> str | None:
     """Why ``name`` (an attribute, a child's tag or Python name, or ``add_<tag>``) is not on
     ``spec``'s row with the release in use: "needs MuJoCo >= X; installed Y"; None when the
     release is not the reason."""
-    having = _GONE_ATTRIBUTES.get(spec.name, {}).get(name)
+    having = _GONE_ATTRIBUTES.get(spec.row, {}).get(name)
     if having is None:
-        children = _GONE_CHILDREN.get(spec.name, {})
+        children = _GONE_CHILDREN.get(spec.row, {})
         having = children.get(name) or children.get(name.removeprefix("add_"))
     return None if having is None else _needs(having)
 
 
 def keyword_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> str | None:
     """Why the keyword ``value`` is refused, when another release covered takes it."""
-    by_release = KEYWORDS.get(spec.name, {}).get(attribute.name)
+    by_release = KEYWORDS.get(spec.row, {}).get(attribute.name)
     if by_release is None or not isinstance(value, str):
         return None
     words = value.split() if attribute.kind == "flags" else [value]
@@ -123,7 +123,7 @@ _NEWEST_KEYWORDS: dict[tuple[str, str], tuple[str, ...]] = {}
 
 def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, ...]:
     """``attribute``'s keywords in the newest release (the typing surface's)."""
-    return _NEWEST_KEYWORDS.get((spec.name, attribute.name), attribute.keywords)
+    return _NEWEST_KEYWORDS.get((spec.row, attribute.name), attribute.keywords)
 
 
 def restrict(classes: Mapping[str, type[Element]], release: str = RELEASE) -> None:
@@ -131,17 +131,17 @@ def restrict(classes: Mapping[str, type[Element]], release: str = RELEASE) -> No
     children (their lists and ``add_<tag>()``), keywords (the codec is the release's)."""
     for cls in classes.values():
         spec = cls.spec
-        gone = {name: having for name, having in ATTRIBUTES.get(spec.name, {}).items()
+        gone = {name: having for name, having in ATTRIBUTES.get(spec.row, {}).items()
                 if release not in having}
         if gone:
             _drop_attributes(cls, spec, gone)
-        for name, by_release in KEYWORDS.get(spec.name, {}).items():
+        for name, by_release in KEYWORDS.get(spec.row, {}).items():
             words = by_release.get(release)
             attribute = spec.by_name.get(name)
             if words is not None and attribute is not None:
-                _NEWEST_KEYWORDS[(spec.name, name)] = attribute.keywords
+                _NEWEST_KEYWORDS[(spec.row, name)] = attribute.keywords
                 _set_keywords(cls, attribute, words)
-        for tag, having in CHILDREN.get(spec.name, {}).items():
+        for tag, having in CHILDREN.get(spec.row, {}).items():
             child = spec.children.get(tag)
             if release in having or child is None:
                 continue
@@ -149,16 +149,16 @@ def restrict(classes: Mapping[str, type[Element]], release: str = RELEASE) -> No
             for member in (child.py_name, "add_" + tag):
                 if member in cls.__dict__:
                     delattr(cls, member)
-            found = _GONE_CHILDREN.setdefault(spec.name, {})
+            found = _GONE_CHILDREN.setdefault(spec.row, {})
             found[tag] = found[child.py_name] = having
 
 
 def _drop_attributes(cls: type[Element], spec: ElementSpec,
                      gone: dict[str, tuple[str, ...]]) -> None:
-    dropped = [a for a in spec.attributes if a.name in gone]
-    spec.attributes = tuple(a for a in spec.attributes if a.name not in gone)
+    dropped = [a for a in spec.attributes.values() if a.name in gone]
+    spec.attributes = {name: a for name, a in spec.attributes.items() if name not in gone}
     spec.references = tuple(a for a in spec.references if a.name not in gone)
-    found = _GONE_ATTRIBUTES.setdefault(spec.name, {})
+    found = _GONE_ATTRIBUTES.setdefault(spec.row, {})
     for attribute in dropped:
         del spec.by_name[attribute.name]
         del spec.order[attribute.name]

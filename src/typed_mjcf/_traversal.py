@@ -18,7 +18,8 @@ def commit_defaults(element: Element, attributes: Iterable[str] | None = None) -
     spec = element.spec
     if spec.defaults_tag is None:
         return
-    names = [a.py_name for a in spec.attributes] if attributes is None else list(attributes)
+    names = ([a.py_name for a in spec.attributes.values()] if attributes is None
+             else list(attributes))
     for name in names:
         attribute = spec.by_key[name]
         if attribute.kind == "id":
@@ -41,7 +42,7 @@ def get_freejoint(element: Element) -> Element | None:
         if child.spec.tag == facts.freejoint:
             return child
         joint_type = child.spec.by_name.get(facts.joint_type)
-        if child.spec.name in facts.joints and joint_type is not None and (
+        if child.spec.row in facts.joints and joint_type is not None and (
                 _tree.read_value(child, joint_type) == facts.free_type):
             return child
     return None
@@ -61,7 +62,7 @@ def get_frame_joints(model: Element) -> list[Element]:
     frame = _frame(model)
     if frame is None:
         return []
-    return [child for child in _tree.children(frame) if child.spec.name in grammar_facts().joints]
+    return [child for child in _tree.children(frame) if child.spec.row in grammar_facts().joints]
 
 
 def _frame(element: Element) -> Element | None:

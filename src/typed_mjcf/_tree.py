@@ -78,6 +78,7 @@ _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
+_ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names the tag by
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
@@ -107,12 +108,13 @@ def finish_grammar(facts: GrammarFacts) -> None:
     _RESERVED_NAMES.add(facts.world_body)
     for cls in _CLASSES.values():
         cls.spec.holds_bodies = facts.body in cls.spec.children
-        for attribute in cls.spec.attributes:
+        for attribute in cls.spec.attributes.values():
             namespace = facts.name_lists.get(f"{cls.spec.tag}@{attribute.name}")
             if namespace is not None:
                 attribute.mark_name_list(namespace)
         for child in cls.spec.children.values():
             child.cls = _CLASSES[child.class_name]
+            child.holder = cls.spec
     restrict(_CLASSES)  # the installed MuJoCo's grammar: what it lacks is refused
     document_adders()
 
@@ -203,7 +205,7 @@ class Element(_Layout):
         if spec is None:
             return
         _CLASSES[cls.__name__] = cls
-        for attribute in spec.attributes:
+        for attribute in spec.attributes.values():
             setattr(cls, attribute.py_name, Attribute(attribute))
         for child in spec.children.values():
             setattr(cls, child.py_name, SingleChild(child) if child.single else ChildList(child))
@@ -275,6 +277,13 @@ class Element(_Layout):
     def __repr__(self) -> str:
         return f"<{type(self).__name__} {self.path}>"
 
+    def __dir__(self) -> list[str]:
+        """Also the MJCF spellings ``getattr`` takes where they differ (``global``)."""
+        spec = self.spec
+        spelled = [name for name in (*spec.children, *spec.by_name)
+                   if _python_name(spec, name) is not None]
+        return sorted({*super().__dir__(), *spelled})
+
     # ------------------------------------------------------------------ attributes
 
     if not TYPE_CHECKING:  # run time only: checkers should see unknown attributes as errors
@@ -309,7 +318,7 @@ class Element(_Layout):
         missing = release_note(spec, name)
         if missing is not None:
             return UnknownAttributeError(f"{self.path}: {name!r} of <{spec.tag}> {missing}")
-        known = [a.py_name for a in spec.attributes]
+        known = [a.py_name for a in spec.attributes.values()]
         hint = did_you_mean(name, known + [c.py_name for c in spec.children.values()])
         what = f"{action} {name!r}" if action else (
             f"{type(self).__name__!r} object has no attribute {name!r}")
@@ -479,16 +488,30 @@ class Element(_Layout):
 
     # ------------------------------------------------------------------ children
 
-    def add(self, tag: str, /, **kwargs: object) -> Element:
-        """Add a child ``<tag>`` with the given attributes and return it."""
-        return self._add_child(self._child_spec(tag), None, kwargs)
+    if TYPE_CHECKING:
+        def add(self, tag: str, /, **kwargs: object) -> Element:
+            """Add a child ``<tag>`` with the given attributes and return it."""
+            ...
+    else:  # dm_control's code also names the tag by keyword: add(element_name="geom", ...)
+        def add(self, tag=None, /, **kwargs):
+            """Add a child ``<tag>`` with the given attributes and return it."""
+            return self._add_child(self._new_child_spec(_tag_given(self, tag, kwargs)), None,
+                                   kwargs)
 
     def insert(self, tag: str, /, position: int, **kwargs: object) -> Element:
         """Add a child ``<tag>`` at ``position`` among this element's children."""
         if isinstance(position, bool) or not isinstance(position, int):  # pyright: ignore[reportUnnecessaryIsInstance]
             raise InvalidTypeError(f"{self.path}: insert() position must be an int, "
                                    f"got {position!r}")
-        return self._add_child(self._child_spec(tag), position, kwargs)
+        return self._add_child(self._new_child_spec(tag), position, kwargs)
+
+    def _new_child_spec(self, tag: str) -> ChildSpec:
+        """The child spec ``add(tag)`` adds; under dm_control's behaviour a once-only child
+        that is not on demand exists with its parent there, so adding another is refused."""
+        child_spec = self._child_spec(tag)
+        if _COMPAT[0] and child_spec.single and not child_spec.on_demand:
+            getattr(self, child_spec.py_name)
+        return child_spec
 
     def _child_spec(self, tag: str) -> ChildSpec:
         child_spec = self.spec.children.get(tag)
@@ -995,7 +1018,7 @@ def document_adders() -> None:
         parameters = [inspect.Parameter("self", inspect.Parameter.POSITIONAL_OR_KEYWORD)]
         parameters += [inspect.Parameter(a.py_name, inspect.Parameter.KEYWORD_ONLY,
                                          default=None, annotation=_annotation(a))
-                       for a in spec.attributes]
+                       for a in spec.attributes.values()]
         setattr(function, "__signature__", inspect.Signature(
             parameters, return_annotation=child_spec.class_name))
         function.__doc__ = attribute_listing(spec)
@@ -1009,7 +1032,7 @@ def attribute_listing(spec: ElementSpec) -> str:
     """``add_<tag>()``'s docstring, laid out by ``_doclines`` as ``elements.pyi``'s is, from
     each attribute's one line, written by the generator (``codegen/docs.py``) into its
     ``doc``."""
-    entries = {a.py_name: a.doc for a in spec.attributes}
+    entries = {a.py_name: a.doc for a in spec.attributes.values()}
     if DCLASS in spec.by_key:
         entries[DCLASS] = DCLASS_DOC
     return adder_listing(spec.tag, spec.url, entries)
@@ -1718,6 +1741,17 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
 # the arrays handed out for in-place edits: element -> {XML name: the stored array}
 _Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
 _HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
+
+
+def _tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+    """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
+    ``element_name`` (taken out of the attributes)."""
+    if tag is None and _COMPAT[0] and _ELEMENT_NAME in kwargs:
+        return cast(str, kwargs.pop(_ELEMENT_NAME))
+    if tag is None:
+        raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
+                               f"add('<tag>', ...)")
+    return tag
 
 
 def _python_name(spec: ElementSpec, name: str) -> str | None:

@@ -125,7 +125,7 @@ class _Plan:
 
 @functools.cache
 def _rows_by_name() -> dict[str, ElementSpec]:
-    return {cls.spec.name: cls.spec for cls in _tree.element_classes().values()}
+    return {cls.spec.row: cls.spec for cls in _tree.element_classes().values()}
 
 
 @functools.cache
@@ -138,7 +138,7 @@ def _projection_constraints(spec: ElementSpec) -> list[tuple[str, tuple[tuple[st
     """The exclusive constraints of the row a <default> row projects, over attributes the
     projection keeps: MuJoCo checks them in default classes too (e.g. <default><camera
     fovy sensorsize/>) though the generated projection rows do not carry them."""
-    primary = _rows_by_name().get(spec.name.removeprefix("default_"))
+    primary = _rows_by_name().get(spec.row.removeprefix("default_"))
     if primary is None or primary is spec:
         return []
     return [(kind, bundles) for kind, bundles in primary.constraints
@@ -154,10 +154,10 @@ def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
         constraints += [c for c in _projection_constraints(spec) if c not in constraints]
     return _Plan(
         constraints=tuple(constraints),
-        required=() if projection else tuple(a for a in spec.attributes if a.required),
+        required=() if projection else tuple(a for a in spec.attributes.values() if a.required),
         required_children=tuple(c.tag for c in spec.children.values() if c.card == "!"),
         references=spec.references,
-        bounded=tuple(a for a in spec.attributes if a.bounds),
+        bounded=tuple(a for a in spec.attributes.values() if a.bounds),
     )
 
 
@@ -305,7 +305,7 @@ def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> Non
     """Rules of the kinematic tree: what the world body and replicates may hold."""
     facts = grammar_facts()
     tag = element.spec.tag
-    joint = element.spec.name in facts.joints
+    joint = element.spec.row in facts.joints
     if joint and owner == "in_world":
         state.add(order, element, "world-body",
                   f"the world body cannot have joints: move the <{tag}> into a <body>")

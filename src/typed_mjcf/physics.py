@@ -40,6 +40,7 @@ from typed_mjcf._binding import (
     new_binding,
 )
 from typed_mjcf._compat import STATE
+from typed_mjcf._dmcompat.debugging import explained
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
@@ -96,9 +97,9 @@ class Model(mujoco.MjModel):
         """The model itself (dm_control code passes ``model.ptr`` to ``mujoco``)."""
         return self
 
-    def name2id(self, name: str, object_type: str | mujoco.mjtObj) -> int:
-        """The id of the object named ``name`` of ``object_type`` (``"geom"`` or
-        ``mujoco.mjtObj.mjOBJ_GEOM``); ``InvalidValueError`` if there is none."""
+    def name2id(self, name: str, object_type: str | int | mujoco.mjtObj) -> int:
+        """The id of the object named ``name`` of ``object_type`` (``"geom"``,
+        ``mujoco.mjtObj.mjOBJ_GEOM`` or its int value); ``InvalidValueError`` if none."""
         objtype = _objtype(object_type)
         _check_name(name)
         found = mujoco.mj_name2id(self, objtype, name)
@@ -107,7 +108,7 @@ class Model(mujoco.MjModel):
                                     "compiled model")
         return found
 
-    def id2name(self, object_id: int, object_type: str | mujoco.mjtObj) -> str:
+    def id2name(self, object_id: int, object_type: str | int | mujoco.mjtObj) -> str:
         """The name of the object ``object_id`` of ``object_type`` (``""`` if unnamed)."""
         objtype = _objtype(object_type)
         if not 0 <= object_id < _count(self, objtype):
@@ -141,9 +142,15 @@ def _check_name(name: object) -> None:
         raise InvalidValueError(f"name2id: a name is a string, got {name!r}")
 
 
-def _objtype(object_type: str | mujoco.mjtObj) -> mujoco.mjtObj:
+def _objtype(object_type: str | int | mujoco.mjtObj) -> mujoco.mjtObj:
     if isinstance(object_type, mujoco.mjtObj):
         return object_type
+    if isinstance(object_type, int):  # dm_control's enums are plain ints
+        try:
+            return mujoco.mjtObj(object_type)
+        except ValueError:
+            raise InvalidValueError(f"{object_type!r} is not a kind of MuJoCo object (an "
+                                    f"mjtObj value)") from None
     name = f"mjOBJ_{object_type.upper()}"
     members = mujoco.mjtObj.__members__
     if name not in members:
@@ -282,7 +289,13 @@ class Physics(Bind):
         self._reload_from_data(Data(_load_path(file_path)))
 
     def _load_mjcf(self, mjcf_model: ModelRoot) -> None:
-        compiled = compile_for_physics(mjcf_model)
+        try:
+            compiled = compile_for_physics(mjcf_model)
+        except ValueError as error:
+            if not STATE[0]:
+                raise
+            # dm_control's debug mode: where the elements named were made and set
+            raise explained(error, mjcf_model) from None
         self._source = mjcf_model
         self._unnamed = compiled.unnamed
         self._reload_from_data(Data(_as_model(compiled.model)))

@@ -62,7 +62,7 @@ def _without_file_renames(model: mjcf.RootElement, lines: list[str]) -> list[str
 def test_an_edit_shows_as_exactly_that_edit(ident: str, path: Path) -> None:
     model = _load(ident, path)
     edited = _load(ident, path)
-    found = next(((e, a) for e in edited.iter_elements() for a in e.spec.attributes
+    found = next(((e, a) for e in edited.iter_elements() for a in e.spec.attributes.values()
                   if a.kind == "real" and a.name in _tree.values(e)), None)
     if found is None:
         pytest.skip(f"{ident} sets no real-valued attribute")

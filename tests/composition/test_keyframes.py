@@ -140,8 +140,8 @@ def test_joints_mujoco_makes_itself_are_refused_with_a_reason() -> None:
 def test_the_rows_counted_as_joints_are_the_joint_namespace() -> None:
     """The `joints` fact names rows: the tag <joint> is also an equality, a fixed tendon's
     part and a default, none of which adds to qpos."""
-    rows = {cls.spec.name: cls.spec for cls in element_classes().values()}
+    rows = {cls.spec.row: cls.spec for cls in element_classes().values()}
     joint_rows = {name for name, spec in rows.items() if spec.namespace == "joint"}
     assert grammar_facts().joints == joint_rows
-    assert {spec.name for spec in rows.values() if spec.tag == "joint"} - joint_rows == {
+    assert {spec.row for spec in rows.values() if spec.tag == "joint"} - joint_rows == {
         "equality_joint", "fixed_joint", "default_joint"}

@@ -5,6 +5,15 @@ Run as a script in a fresh interpreter (the ``dm_control.mjcf`` redirection is p
     python tests/dm_control/builders.py typed OUT.pickle   # after install_as_dm_control_mjcf()
     python tests/dm_control/builders.py dm_control OUT.pickle   # dm_control's own mjcf
 
+Builders that pose their walker with ``mjcf.Physics`` cannot run on dm_control's side on
+MuJoCo 4; for them (for all), dm_control's models are built in an environment with MuJoCo 3
+and compiled here (not at test time)::
+
+    python3.11 -m venv /tmp/dm3 && /tmp/dm3/bin/pip install dm_control==1.0.49 mujoco==3.17.0
+    /tmp/dm3/bin/python tests/dm_control/builders.py xml DM3.pickle   # XML text and assets
+    python tests/dm_control/builders.py typed TYPED.pickle
+    python tests/dm_control/builders.py compare TYPED.pickle DM3.pickle
+
 Each builder is one of dm_control's locomotion walkers and arenas, manipulation props and
 arenas, or entities (and a few compositions of them, as its tasks make them), built with the
 code as dm_control ships it. A builder's entry in the output is either the compiled model's
@@ -18,6 +27,7 @@ import pickle
 import sys
 import traceback
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -169,7 +179,8 @@ def _fields(model: Any) -> dict[str, Any]:
     return out
 
 
-def build_all(typed: bool) -> dict[str, Any]:
+def build_all(typed: bool, text_only: bool = False) -> dict[str, Any]:
+    """Each builder's compiled fields (``text_only``: its XML text and assets instead)."""
     if typed:
         import typed_mjcf
 
@@ -183,19 +194,50 @@ def build_all(typed: bool) -> dict[str, Any]:
         try:
             built = make()
             model = getattr(built, "mjcf_model", built)
-            compiled = mujoco.MjModel.from_xml_string(model.to_xml_string(), model.get_assets())
-            results[name] = _fields(compiled)
+            text, assets = model.to_xml_string(), model.get_assets()
+            results[name] = ((text, assets) if text_only else
+                             _fields(mujoco.MjModel.from_xml_string(text, assets)))
         except Exception:  # noqa: BLE001 - reported, compared by the test
             results[name] = traceback.format_exc(limit=-6)
     return results
 
 
+def compare(typed_path: str, text_path: str) -> None:
+    """Print, per builder, what differs between typed-mjcf's compiled model and dm_control's
+    XML (built elsewhere, with ``xml``) compiled by the installed MuJoCo."""
+    import mujoco
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+    from tests.dm_control.test_builders import differences
+
+    with open(typed_path, "rb") as handle:
+        ours = pickle.load(handle)
+    with open(text_path, "rb") as handle:
+        texts = pickle.load(handle)
+    same = 0
+    for name in ours:
+        theirs = texts.get(name, "not built there")
+        if not isinstance(theirs, str):
+            try:
+                theirs = _fields(mujoco.MjModel.from_xml_string(*theirs))
+            except Exception:  # noqa: BLE001 - reported
+                theirs = traceback.format_exc(limit=-2)
+        found = differences(ours[name], theirs)
+        same += not found
+        print(f"{name}: {'same model' if not found else chr(10).join(['', *found])}")
+    print(f"{same} of {len(ours)} the same")
+
+
 def main(argv: list[str]) -> None:
-    which, out = argv[1], argv[2]
-    if which not in ("typed", "dm_control"):
-        raise SystemExit("usage: builders.py typed|dm_control OUT.pickle")
-    with open(out, "wb") as handle:
-        pickle.dump(build_all(which == "typed"), handle)
+    which = argv[1] if len(argv) > 1 else ""
+    if which == "compare" and len(argv) == 4:
+        compare(argv[2], argv[3])
+        return
+    if which not in ("typed", "dm_control", "xml") or len(argv) != 3:
+        raise SystemExit("usage: builders.py typed|dm_control|xml OUT.pickle, or "
+                         "builders.py compare TYPED.pickle XML.pickle")
+    with open(argv[2], "wb") as handle:
+        pickle.dump(build_all(which == "typed", text_only=which == "xml"), handle)
 
 
 if __name__ == "__main__":

@@ -45,7 +45,8 @@ NAMES = (
 )
 
 NEEDS_PHYSICS = ("built with mjcf.Physics (the walker's initial pose), which dm_control's own "
-                 "cannot run on MuJoCo 4: dm_control's side cannot be built, not comparable here")
+                 "cannot run on MuJoCo 4: dm_control's side cannot be built, not comparable here "
+                 "(builders.py xml/compare compares them with dm_control on MuJoCo 3: the same)")
 # builder -> why typed-mjcf's model differs from dm_control's
 DIFFERENT: dict[str, str] = {
     "walker.CMUHumanoidPositionControlledV2020": NEEDS_PHYSICS,

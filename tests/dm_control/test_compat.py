@@ -10,6 +10,7 @@ import subprocess
 import sys
 import textwrap
 from collections.abc import Iterator
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -314,3 +315,188 @@ def test_debug_mode_records_where_elements_were_made_and_set(dm: None) -> None:
     later = model.worldbody.add_body()
     assert later.get_init_stack() == [] and not debugging.debug_mode()
     assert np.all([not s for s in later.get_last_modified_stacks_for_all_attributes().values()])
+
+
+_FLAG_PROBE = textwrap.dedent("""
+    import sys
+    import typed_mjcf
+    typed_mjcf.install_as_dm_control_mjcf()
+    from absl import flags
+    from dm_control import mjcf
+    flags.FLAGS(["prog", *sys.argv[1:]])  # as absl.app.run parses, after the imports
+    model = mjcf.RootElement()
+    body = model.worldbody.add("body", name="b")
+    print(mjcf.debugging.debug_mode(), bool(body.get_init_stack()),
+          repr(mjcf.debugging.get_full_dump_dir()))
+""")
+
+
+@pytest.mark.skipif(harness.mjcf_folder() is None, reason="dm_control is not installed")
+@pytest.mark.parametrize(("arguments", "expected"), [
+    ([], "False False ''"),
+    (["--pymjcf_debug"], "True True ''"),
+    (["--pymjcf_debug", "--pymjcf_debug_full_dump_dir=/x"], "True True '/x'"),
+])
+def test_debug_mode_follows_dm_controls_flags(arguments: list[str], expected: str) -> None:
+    """dm_control defines --pymjcf_debug and reads it when the first element is made."""
+    run = subprocess.run([sys.executable, "-c", _FLAG_PROBE, *arguments], capture_output=True,
+                         text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip() == expected
+
+
+def test_a_refused_model_names_where_its_element_was_made_and_set(dm: None) -> None:
+    debugging.enable_debug_mode()
+    try:
+        model = mjcf.RootElement(model="m")
+        model.worldbody.add_body(name="b").add_joint(name="j")
+        motor = model.actuator.add_motor(name="drive", joint="j")
+        motor.joint = "nowhere"
+        with pytest.raises(mjcf.ValidationError) as caught:
+            mjcf.Physics.from_mjcf_model(model)
+    finally:
+        debugging.disable_debug_mode()
+    lines = str(caught.value).splitlines()
+    where = f"`test_a_refused_model_names_where_its_element_was_made_and_set` at {__file__}"
+    assert lines[-3:] == [
+        f"  * Element object was created by {where}:{_line_of('motor = model.actuator.add')}",
+        '  * name="drive" was set when the element was created',
+        f'  * joint="nowhere" was set by {where}:{_line_of("motor.joint = ")}',
+    ]
+    assert caught.value.findings[0].element is motor  # the same error, findings kept
+    debugging.disable_debug_mode()
+    with pytest.raises(mjcf.ValidationError, match="run again with --pymjcf_debug"):
+        mjcf.Physics.from_mjcf_model(model)
+
+
+def test_without_dm_controls_behaviour_errors_are_unchanged() -> None:
+    model = mjcf.RootElement(model="m")
+    model.actuator.add_motor(name="drive", joint="nowhere")
+    with pytest.raises(mjcf.ValidationError) as caught:
+        mjcf.Physics.from_mjcf_model(model)
+    assert "pymjcf" not in str(caught.value)
+
+
+def _line_of(text: str) -> int:
+    lines = Path(__file__).read_text(encoding="utf-8").splitlines()
+    return next(i for i, line in enumerate(lines, 1) if text in line and "_line_of" not in line)
+
+
+# ---------------------------------------------------------------------------- spec, add, copies
+
+
+def test_element_spec_has_dm_controls_shape() -> None:
+    model = mjcf.RootElement(model="m")
+    geom = model.default.geom  # a <geom> in a default class: its own grammar row
+    assert (geom.spec.name, geom.spec.row) == ("geom", "default_geom")
+    body = model.worldbody.add_body(name="b")
+    assert list(body.spec.attributes)[:2] == ["name", "childclass"]
+    assert body.spec.attributes["pos"].kind == "real" and body.spec.identifier == "name"
+    assert body.spec.namespace == "body" and model.default.spec.identifier == "class"
+    children = body.spec.children
+    assert children["geom"].repeated and not children["inertial"].repeated
+    assert children["inertial"] == body.add_inertial(mass=1).spec
+    assert children["inertial"] != body.add_geom(size=(1,)).spec
+    assert children["geom"].attributes is body.geom[0].spec.attributes
+    assert not children["inertial"].on_demand  # the typed API makes it on first access
+    with installed():
+        assert children["inertial"].on_demand and not model.spec.children["option"].on_demand
+
+
+def test_get_children_lists_dm_controls_eager_children(dm: None) -> None:
+    model = mjcf.RootElement(model="m")
+    tags = [child.tag for child in model.get_children()]
+    assert {"compiler", "option", "default", "worldbody", "actuator"} <= set(tags)
+    assert model.worldbody.add_body().get_children() == []  # inertial is on demand
+    with pytest.raises(mjcf.ChildError, match="a <compiler> child already exists"):
+        model.add("compiler")
+
+
+def test_typed_children_exist_once_used() -> None:
+    model = mjcf.RootElement(model="m")
+    assert model.get_children() == []
+    assert model.add("compiler", angle="radian").angle == "radian"
+
+
+def test_add_takes_dm_controls_keyword_for_the_tag(dm: None) -> None:
+    body = mjcf.RootElement(model="m").worldbody.add("body")
+    geom = body.add(element_name="geom", size=[0.1], name="g")
+    assert geom.tag == "geom" and geom.name == "g"
+
+
+def test_typed_add_takes_the_tag_first() -> None:
+    body = mjcf.RootElement(model="m").worldbody.add_body()
+    with pytest.raises(mjcf.InvalidTypeError, match="takes the child's tag first"):
+        body.add(element_name="geom")  # type: ignore[call-arg]
+
+
+def test_dir_lists_mjcf_spellings() -> None:
+    visual = mjcf.RootElement(model="m").visual
+    assert {"global", "global_"} <= set(dir(visual))
+    assert "class" in dir(mjcf.RootElement(model="m").worldbody.add_geom(size=(1,)))
+
+
+def test_the_models_own_default_class_is_named_by_its_prefix(dm: None) -> None:
+    parent, child = mjcf.RootElement(model="p"), mjcf.RootElement(model="c")
+    parent.attach(child)
+    assert parent.default.full_identifier == "/"
+    assert child.default.full_identifier == "c/"
+
+
+def test_include_copy_keeps_the_files_of_the_copy(tmp_path: Path) -> None:
+    source_folder = tmp_path / "source"
+    (source_folder / "meshes").mkdir(parents=True)
+    (source_folder / "meshes" / "box.stl").write_bytes(box_stl(0.2))
+    (source_folder / "model.xml").write_text(
+        '<mujoco><compiler meshdir="meshes"/><asset><mesh name="box" file="box.stl"/>'
+        "</asset><worldbody><geom type='mesh' mesh='box'/></worldbody></mujoco>")
+    source = mjcf.from_path(source_folder / "model.xml")
+    target = mjcf.RootElement(model="t")
+    target.include_copy(source)
+    mesh = target.find("mesh", "box")
+    assert mesh is not None and mesh.file == "box.stl"
+    assert list(target.get_assets().values()) == [box_stl(0.2)]
+    compiled = target.compile()
+    assert compiled.nmesh == 1
+
+
+def test_include_copy_of_a_file_named_alike_with_other_contents(tmp_path: Path) -> None:
+    (tmp_path / "box.stl").write_bytes(box_stl(0.2))
+    (tmp_path / "model.xml").write_text(
+        '<mujoco><asset><mesh name="box" file="box.stl"/></asset></mujoco>')
+    source = mjcf.from_path(tmp_path / "model.xml")
+    target = mjcf.from_xml_string('<mujoco><asset><mesh name="other" file="box.stl"/>'
+                                  "</asset></mujoco>", assets={"box.stl": box_stl(0.5)})
+    target.include_copy(source)
+    mesh = target.find("mesh", "box")
+    assert mesh is not None and mesh.file == "box-2.stl"
+    assert sorted(target.get_assets().values()) == sorted([box_stl(0.2), box_stl(0.5)])
+
+
+@pytest.mark.skipif(harness.mjcf_folder() is None, reason="dm_control is not installed")
+def test_dm_controls_private_binding_names(dm: None) -> None:
+    from typed_mjcf.physics import EmptyBinding
+
+    assert sys.modules["dm_control.mjcf.physics"]._EmptyBinding is EmptyBinding
+
+
+def test_a_one_control_actuator_binds_as_its_row() -> None:
+    model = mjcf.RootElement(model="m")
+    joint = model.worldbody.add_body().add_joint(name="j")
+    model.worldbody.body[0].add_geom(size=(0.1,))
+    motor = model.actuator.add_motor(joint=joint, ctrlrange=(-1, 2), ctrllimited="true")
+    physics = mjcf.Physics.from_mjcf_model(model)
+    low, high = physics.bind(motor).ctrlrange
+    assert (low, high) == (-1, 2) and physics.bind(motor).gear.shape == (6,)
+    assert physics.bind([motor]).ctrlrange.shape == (1, 2)
+
+
+def test_object_types_may_be_given_as_ints() -> None:
+    """dm_control's enums (``mjbindings.enums.mjtObj``) are plain ints."""
+    model = mjcf.RootElement(model="m")
+    model.worldbody.add_site(name="s")
+    physics = mjcf.Physics.from_mjcf_model(model)
+    site = int(mujoco.mjtObj.mjOBJ_SITE)
+    assert physics.model.name2id("s", site) == 0 and physics.model.id2name(0, site) == "s"
+    with pytest.raises(mjcf.InvalidValueError, match="not a kind of MuJoCo object"):
+        physics.model.name2id("s", 999)

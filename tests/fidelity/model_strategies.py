@@ -139,7 +139,7 @@ def value_of(attribute: AttributeSpec, row: str = "") -> st.SearchStrategy[objec
 
 
 def _rows_by_name() -> dict[str, ElementSpec]:
-    return {cls.spec.name: cls.spec for cls in element_classes().values()}
+    return {cls.spec.row: cls.spec for cls in element_classes().values()}
 
 
 ROWS = _rows_by_name()
@@ -148,7 +148,7 @@ ROWS = _rows_by_name()
 def exclusive_groups(spec: ElementSpec) -> list[tuple[tuple[str, ...], ...]]:
     """The exclusive bundles of a row, and of the row a <default> row projects."""
     groups = [bundles for kind, bundles in spec.constraints if kind == "exclusive"]
-    primary = ROWS.get(spec.name.removeprefix("default_"))
+    primary = ROWS.get(spec.row.removeprefix("default_"))
     if primary is not None and primary is not spec:
         groups += [bundles for kind, bundles in primary.constraints if kind == "exclusive"
                    and all(n in spec.by_name for b in bundles for n in b)]
@@ -189,17 +189,17 @@ class Builder:
     def attributes(self, spec: ElementSpec, *, skip: Sequence[str] = (),
                    most: int = 4) -> dict[str, object]:
         """Random attributes of drawn kinds, by XML name."""
-        candidates = [a for a in spec.attributes
-                      if is_drawn(a, spec.name) and a.name not in skip]
+        candidates = [a for a in spec.attributes.values()
+                      if is_drawn(a, spec.row) and a.name not in skip]
         if not candidates:
             return {}
         chosen = self.draw(st.lists(st.sampled_from(candidates), unique_by=lambda a: a.name,
                                     max_size=min(most, len(candidates))))
-        values = {a.name: self.draw(value_of(a, spec.name), label=f"{spec.tag}@{a.name}")
+        values = {a.name: self.draw(value_of(a, spec.row), label=f"{spec.tag}@{a.name}")
                   for a in chosen}
-        for name, value in PARSER_REQUIRED.get(spec.name.removeprefix("default_"), {}).items():
+        for name, value in PARSER_REQUIRED.get(spec.row.removeprefix("default_"), {}).items():
             values.setdefault(name, value)
-        groups = PARSER_EXCLUSIVE.get(spec.name.removeprefix("default_"), [])
+        groups = PARSER_EXCLUSIVE.get(spec.row.removeprefix("default_"), [])
         if self.strict:
             groups = groups + exclusive_groups(spec)
         for bundles in groups:

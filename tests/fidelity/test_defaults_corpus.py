@@ -23,7 +23,7 @@ def _strip_classes(model: mjcf.RootElement) -> int:
     """Remove every default class and every attribute naming one; how many were named."""
     named = 0
     for element in list(model.iter_elements()):
-        for attribute in element.spec.attributes:
+        for attribute in element.spec.attributes.values():
             if attribute.namespace == "default" and attribute.name in _tree.values(element):
                 element.set_attributes(**{attribute.py_name: None})
                 named += 1

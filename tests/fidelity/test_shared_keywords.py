@@ -143,7 +143,7 @@ def shared_attributes() -> list[Probe]:
 
 def _spec(row: str) -> ElementSpec:
     for cls in _tree.element_classes().values():
-        if cls.spec.name == row:
+        if cls.spec.row == row:
             return cls.spec
     raise AssertionError(f"no generated class for the row {row}")
 
@@ -153,7 +153,7 @@ def _references(spec: ElementSpec, probed: AttributeSpec) -> dict[str, str]:
     selects (``objtype="body" objname="x"``; ``x`` in the probed type's namespace), else
     the element's first reference to a namespace of :data:`WORLD`."""
     found: dict[str, str] = {}
-    typed = [a for a in spec.attributes if a.namespace_from is not None]
+    typed = [a for a in spec.attributes.values() if a.namespace_from is not None]
     for i, attribute in enumerate(typed):
         type_attribute = spec.by_name[cast(tuple[str, object], attribute.namespace_from)[0]]
         if type_attribute is probed:
@@ -162,7 +162,7 @@ def _references(spec: ElementSpec, probed: AttributeSpec) -> dict[str, str]:
             found[type_attribute.name] = "body"
             found[attribute.name] = "x"
     if not typed:
-        first = next((a for a in spec.attributes if a.is_reference
+        first = next((a for a in spec.attributes.values() if a.is_reference
                       and isinstance(a.namespace, str) and a.namespace in _NAMESPACES), None)
         if first is not None:
             found[first.name] = "x"
@@ -213,7 +213,7 @@ def model_text(probe: Probe, keyword: str | None) -> str:
                   **_references(spec, spec.by_name[probe.attribute])}
     probed = spec.by_name[probe.attribute]
     if keyword is None and any(a.namespace_from is not None and a.namespace_from[0] == probed.name
-                               for a in spec.attributes):
+                               for a in spec.attributes.values()):
         keyword = probed.keywords[0]  # a type whose object is named: the first type
     if keyword is not None:
         attributes[probe.attribute] = keyword
@@ -267,7 +267,7 @@ def library_assigns(probe: Probe, keyword: str) -> bool:
     """Whether the element of the probe model (read without the attribute) takes
     ``keyword`` by assignment."""
     model = mjcf.from_xml_string(model_text(probe, None))
-    element = [e for e in model.iter_elements() if e.spec.name == probe.row][-1]
+    element = [e for e in model.iter_elements() if e.spec.row == probe.row][-1]
     attribute = element.spec.by_name[probe.attribute]
     extra = {element.spec.by_name[k].py_name: v
              for k, v in NEEDS.get((element.spec.tag, keyword), {}).items()}

@@ -52,7 +52,7 @@ def _kept_texts(model: mjcf.RootElement) -> list[tuple[Element, AttributeSpec, s
     kept: list[tuple[Element, AttributeSpec, str]] = []
     for element in model.iter_elements():
         stored = _tree.values(element)
-        for attribute in element.spec.attributes:
+        for attribute in element.spec.attributes.values():
             value = stored.get(attribute.name)
             if type(value) is str and isinstance(attribute.codec, ArrayCodec | RealCodec):
                 kept.append((element, attribute, value))

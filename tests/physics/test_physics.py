@@ -111,7 +111,9 @@ def test_unnamed_elements_bind_by_where_they_were_compiled() -> None:
     assert physics.bind(hinge).element_id == 2
     physics.bind(motor).ctrl = 0.75
     assert physics.data.ctrl[0] == 0.75
-    np.testing.assert_array_equal(physics.bind(motor).gear[0, :1], [1])  # its one output
+    # its one output, bound as that row (a single actuator owning one row of a size)
+    np.testing.assert_array_equal(physics.bind(motor).gear[:1], [1])
+    assert physics.bind([motor]).gear.shape == (1, 6)
     assert physics.bind(model.worldbody).element_id == 0
     # a physics made from the model's text finds them the same way
     text = mjcf.Physics.from_xml_string(model.to_xml_string())

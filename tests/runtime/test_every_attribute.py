@@ -46,7 +46,7 @@ def test_every_class_is_reachable_from_the_root() -> None:
 
 def _cases() -> Iterator[tuple[str, str]]:
     for class_name in sorted(ROUTES):
-        for attribute in element_classes()[class_name].spec.attributes:
+        for attribute in element_classes()[class_name].spec.attributes.values():
             yield class_name, attribute.name
 
 

@@ -145,7 +145,8 @@ def test_the_generator_knows_the_runtime_public_names() -> None:
               for name in dir(cls) if not name.startswith("_")}
     runtime = {name for name in public
                if not any(name == a.py_name or name == "dclass"
-                          for cls in (mjcf.Body, mjcf.RootElement) for a in cls.spec.attributes)
+                          for cls in (mjcf.Body, mjcf.RootElement)
+                          for a in cls.spec.attributes.values())
                and name not in {c.py_name for cls in (mjcf.Body, mjcf.RootElement)
                                 for c in cls.spec.children.values()}
                and not name.startswith("add_")}

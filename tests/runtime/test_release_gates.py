@@ -18,7 +18,7 @@ from typed_mjcf.errors import (
     UnknownAttributeError,
 )
 
-CLASSES = {cls.spec.name: cls for cls in element_classes().values()}
+CLASSES = {cls.spec.row: cls for cls in element_classes().values()}
 
 
 def test_the_release_in_use_is_the_newest_covered_not_newer_than_the_installed() -> None:
@@ -71,7 +71,7 @@ def test_an_attribute_is_there_exactly_in_the_releases_that_have_it(
         assert _releases.note(spec, name) is None
     else:
         assert name not in spec.by_name
-        assert all(a.name != name for a in spec.attributes)
+        assert all(a.name != name for a in spec.attributes.values())
         note = _releases.note(spec, name)
         assert note is not None and having[0] in note and f"installed {_releases.INSTALLED}" in note
         assert not any(isinstance(member, Attribute) and member.name == name
@@ -145,7 +145,7 @@ def test_a_missing_attribute_is_refused_on_every_route_naming_the_release() -> N
 
 
 def test_a_missing_child_is_refused_naming_the_release() -> None:
-    root = CLASSES[mjcf.RootElement.spec.name].spec.name
+    root = CLASSES[mjcf.RootElement.spec.row].spec.row
     gone = [(row, tag, having) for row, tag, having in _gated_pairs()
             if _releases.RELEASE not in having and row in {root, "actuator", "equality"}]
     if not gone:

@@ -46,7 +46,8 @@ def file_attributes() -> list[tuple[str, str, str]]:
     """(class name, tag, attribute) of every file attribute in the grammar."""
     found: list[tuple[str, str, str]] = []
     for name, cls in sorted(_tree.element_classes().items()):
-        found += [(name, cls.spec.tag, a.name) for a in cls.spec.attributes if a.kind == "file"]
+        found += [(name, cls.spec.tag, a.name) for a in cls.spec.attributes.values()
+                  if a.kind == "file"]
     return found
 
 

@@ -39,7 +39,8 @@ EXAMPLES = int(os.environ.get("FUZZ_EXAMPLES", "500"))
 
 SEEDS: list[tuple[str, Path, bytes]] = [(ident, path, path.read_bytes()) for ident, path in corpus()]
 TAGS = sorted({cls.spec.tag for cls in element_classes().values()} | {"include"})
-ATTRIBUTES = sorted({a.name for cls in element_classes().values() for a in cls.spec.attributes})
+ATTRIBUTES = sorted({a.name for cls in element_classes().values()
+                     for a in cls.spec.attributes.values()})
 VALUES = [
     "", " ", "nan", "NaN", "inf", "-inf", "1e400", "-1e400", "1e-400", "0x10", "1_000",
     "\u0661\u0662", "1,2", "true", "false", "TRUE", "2147483648", "-2147483649",

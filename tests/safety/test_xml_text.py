@@ -35,7 +35,7 @@ def _model() -> tuple[mjcf.RootElement, dict[str, tuple[mjcf.Element, str]]]:
 
 
 def test_every_string_like_kind_is_covered() -> None:
-    kinds = {a.kind for cls in element_classes().values() for a in cls.spec.attributes
+    kinds = {a.kind for cls in element_classes().values() for a in cls.spec.attributes.values()
              if a.kind in ("id", "ref", "string", "file", "chars")}
     assert kinds == {"id", "ref", "string", "file", "chars"}
     _, attributes = _model()

@@ -110,7 +110,8 @@ def test_each_keyword_shows_its_own_facts(class_name: str, adder: str) -> None:
     assert doc is not None
     cls = child_spec(class_name, adder)
     keywords = [a.arg for a in function.args.kwonlyargs]
-    assert {a.py_name for a in cls.spec.attributes} <= set(keywords), f"{class_name}.{adder}"
+    assert {a.py_name for a in cls.spec.attributes.values()} <= set(keywords), (
+        f"{class_name}.{adder}")
     for keyword in keywords:
         shown = pyright_parameter_doc(doc, keyword)
         assert shown is not None, f"{class_name}.{adder}({keyword}=): no documentation"

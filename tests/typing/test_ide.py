@@ -101,7 +101,7 @@ def test_keyword_completion_lists_the_attributes(server: LanguageServer) -> None
     items = complete_at_end(server, "kwargs", "body.add_geom(")
     offered = {str(item["label"]).removesuffix("=") for item in items
                if str(item["label"]).endswith("=")}
-    attributes = {a.py_name for a in mjcf.Geom.spec.attributes}
+    attributes = {a.py_name for a in mjcf.Geom.spec.attributes.values()}
     attributes.add("dclass")  # dm_control's spelling of class_, offered alongside it
     assert offered == attributes, (f"missing: {sorted(attributes - offered)}; "
                                    f"extra: {sorted(offered - attributes)}")

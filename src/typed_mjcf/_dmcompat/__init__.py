@@ -62,6 +62,7 @@ def install() -> None:
         sys.modules["dm_control"] = parent
     setattr(parent, "mjcf", mjcf)
     set_dm_control_behaviour(True)
+    debugging.arm()  # --pymjcf_debug, read when the first element is made
 
 
 @contextmanager

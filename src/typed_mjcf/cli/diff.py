@@ -298,7 +298,7 @@ def _stored_texts(element: Element) -> dict[str, str | None]:
 def _resolved_texts(element: Element) -> dict[str, str | None]:
     """Every attribute as MuJoCo will use it (defaults applied), as canonical text."""
     texts: dict[str, str | None] = {}
-    for attribute in element.spec.attributes:
+    for attribute in element.spec.attributes.values():
         try:
             value = resolve(element, attribute.name)
         except MjcfError:  # a class that is not defined: compare what is set
