@@ -25,7 +25,7 @@ import inspect
 import os
 import re
 import warnings
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Protocol, TypeAlias, cast
 
@@ -906,10 +906,18 @@ def _section_defaults(section: Element) -> dict[_Key, object]:
 def _element_defaults(level: Element) -> dict[_Key, object]:
     """The attributes a hierarchy level sets on its element children, by (tag, attribute)."""
     found: dict[_Key, object] = {}
-    for child in _tree.children(level):
-        if child.spec.tag != level.spec.tag:
+    own_tag = level.spec.tag
+    for tag, child_spec in level.spec.children.items():
+        if tag == own_tag:
+            continue  # nested classes: not walked (a level holds any number of them)
+        if child_spec.single:  # by tag, in constant time
+            child = _tree.single_child(level, tag)
+            children: Sequence[Element] = () if child is None else (child,)
+        else:
+            children = _tree.children_with_tag(level, tag)
+        for child in children:
             for name, value in _tree.values(child).items():
-                found[(child.spec.tag, name)] = value
+                found[(tag, name)] = value
     return found
 
 
