@@ -19,7 +19,7 @@ from __future__ import annotations
 import functools
 import os
 from collections import deque
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from typing import Final, cast
 
 from typed_mjcf import _tree
@@ -199,7 +199,7 @@ class Writer:
                 texts[name] = text
         return texts
 
-    def attribute_text(self, element: Element, stored: dict[str, object]) -> str:
+    def attribute_text(self, element: Element, stored: Mapping[str, object]) -> str:
         """`` name="value"`` for each of ``element``'s ``stored`` values (this loop is most
         of an export's time). In verbatim output, texts stored as read are written as they
         are (as their codecs write them then: see :meth:`Codec.write`), into the template of the element's set of attributes, and escaped only if the
@@ -233,7 +233,7 @@ class Writer:
             return self.escaped_attribute_text(element, stored, plan[0])
         return out
 
-    def escaped_attribute_text(self, element: Element, stored: dict[str, object],
+    def escaped_attribute_text(self, element: Element, stored: Mapping[str, object],
                                names: tuple[str, ...]) -> str:
         """:meth:`attribute_text` value by value (``names``: ``stored``'s in grammar order),
         each text escaped: for output that is not verbatim, and values that need escaping."""
@@ -603,7 +603,7 @@ def write_plan(spec: ElementSpec, key: tuple[str, ...]) -> WritePlan:
     return plan
 
 
-def grammar_order(spec: ElementSpec, stored: dict[str, object]) -> tuple[str, ...]:
+def grammar_order(spec: ElementSpec, stored: Mapping[str, object]) -> tuple[str, ...]:
     """The names of ``stored`` (an element's values) in the order of ``spec``'s grammar."""
     return write_plan(spec, tuple(stored))[0]
 

@@ -501,7 +501,7 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
     items = attributes_of(node) if context.long_tags else node.items()
-    _read_attributes(element, items, _tree.values(element), node, source, context)
+    _read_attributes(element, items, node, source, context)
 
 
 def attributes_of(node: XmlNode) -> list[tuple[str, str]]:
@@ -518,26 +518,39 @@ class _XPathAttribute(Protocol):
     attrname: str
 
 
-def _read_attributes(element: Element, items: list[tuple[str, str]], values: dict[str, object],
-                     node: XmlNode, source: str | None, context: _Context) -> None:
-    """Read ``items``, ``node``'s attributes, into ``element`` (whose values are ``values``);
-    references whose namespace another attribute names (``objname`` by ``objtype``) are read
-    last. Most of a parse is this loop: plain values are stored here, the rest is
-    :func:`_set_other`."""
-    by_name = element.spec.by_name
+def _read_attributes(element: Element, items: list[tuple[str, str]], node: XmlNode,
+                     source: str | None, context: _Context) -> None:
+    """Read ``items``, ``node``'s attributes, into ``element``: values stored as their codec
+    reads them and names by the tree (most of a parse), the rest by :func:`_read_rest`."""
+    rest = _tree.assign_texts(element, items, not context.options.escape_separators)
+    if rest is not None:
+        _read_rest(element, rest, node, source, context)
+
+
+def _read_rest(element: Element,
+               rest: list[tuple[str, AttributeSpec | None, str, Exception | None]],
+               node: XmlNode, source: str | None, context: _Context) -> None:
+    """The attributes :func:`_tree.assign_texts` refused or left (references, empty texts,
+    ones the row lacks); references whose namespace another attribute names (``objname``
+    by ``objtype``) last."""
     later: list[tuple[AttributeSpec, str]] | None = None
-    for key, text in items:
-        attribute = by_name.get(key)
-        if attribute is not None and attribute.direct and text:
-            try:  # the common case, as _tree.assign_text does it
-                values[attribute.name] = attribute.codec.parse(text)
-            except Rejected as rejected:
-                context.refuse("invalid-value", element.path, _rejected(
-                    element, attribute, text, rejected, node, source, context))
-            continue
-        later = _set_other(element, attribute, key, text, node, source, context, later)
+    for key, attribute, text, refused in rest:
+        if attribute is not None and isinstance(refused, Rejected):
+            context.refuse("invalid-value", element.path, _rejected(
+                element, attribute, text, refused, node, source, context))
+        elif refused is not None:
+            _refuse_name(element, refused, node, source, context)
+        else:
+            later = _set_other(element, attribute, key, text, node, source, context, later)
     for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
+
+
+def _refuse_name(element: Element, error: Exception, node: XmlNode, source: str | None,
+                 context: _Context) -> None:
+    rule = "duplicate-name" if isinstance(error, DuplicateIdentifierError) else "invalid-value"
+    context.refuse(rule, element.path, context.error(str(error), source,
+                                                     context.line(node, source)))
 
 
 def _rejected(element: Element, attribute: AttributeSpec, text: str, rejected: Rejected,
@@ -572,10 +585,7 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
                 name = escape_separators(name)
             _tree.assign_name_text(element, attribute, name)
         except MjcfError as error:
-            rule = "duplicate-name" if isinstance(error, DuplicateIdentifierError) else \
-                "invalid-value"
-            context.refuse(rule, element.path, context.error(
-                str(error), source, context.line(node, source)))
+            _refuse_name(element, error, node, source, context)
         return later
     if attribute.namespace_from is not None:
         later = [] if later is None else later
@@ -710,8 +720,7 @@ class _Builder:
                     parent, nodes, source, depth, top, on_exit = stack[-1]
                     child_specs, parent_tag = parent.spec.children, parent.spec.tag
                     continue
-            values: dict[str, object] = {}
-            child = new_child(parent, child_spec, values)
+            child = new_child(parent, child_spec)
             if merged and parent in merged:
                 self.read_in[child] = merged[parent]
             line_of[child] = child_node.sourceline
@@ -719,7 +728,7 @@ class _Builder:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()
             if items:
-                read_attributes(child, items, values, child_node, source, context)
+                read_attributes(child, items, child_node, source, context)
             child_top = child
             if tag == parent_tag:
                 child_top = top

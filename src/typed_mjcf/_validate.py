@@ -14,7 +14,7 @@ Every finding has a rule name (see :data:`RULES`), the path of the element and a
 from __future__ import annotations
 
 import functools
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal
 
@@ -316,7 +316,7 @@ def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> Non
                       f"needs {' or '.join(a + '=' for a in attach.references)}")
 
 
-def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[str, object],
+def _check_constraint(state: _Pass, order: int, element: Element, attrs: Mapping[str, object],
                       kind: str, bundles: tuple[tuple[str, ...], ...]) -> None:
     tag = element.spec.tag
     listing = " | ".join("+".join(bundle) for bundle in bundles)
@@ -345,7 +345,7 @@ def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[st
         state.add(order, element, "oneof", f"<{tag}> must set all of at least one of {listing}")
 
 
-def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> str:
+def _set_names(bundles: Iterable[tuple[str, ...]], attrs: Mapping[str, object]) -> str:
     return ", ".join(name for bundle in bundles for name in bundle if name in attrs)
 
 
@@ -365,7 +365,7 @@ def _declare_class(state: _Pass, order: int, element: Element, parent: Element |
         state.classes[name] = (order, element)
 
 
-def _child_model_references(spec: ElementSpec, attrs: dict[str, object]) -> frozenset[str]:
+def _child_model_references(spec: ElementSpec, attrs: Mapping[str, object]) -> frozenset[str]:
     attach = grammar_facts().attach
     if attach is None or spec.tag != attach.tag or attrs.get(attach.model) is None:
         return frozenset()
