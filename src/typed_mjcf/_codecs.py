@@ -133,7 +133,8 @@ class Format:
         threshold = self.zero_threshold
         if threshold:
             values = [0.0 if abs(x) < threshold else x for x in values]
-        return real_text(values, single, self.digits)
+        precision = self.precision  # (not self.digits: a property costs a call per value)
+        return real_text(values, single, DEFAULT_PRECISION if precision is None else precision)
 
 
 def _check_option(name: str, value: object, valid: Callable[[object], bool], expected: str,

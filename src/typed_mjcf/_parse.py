@@ -501,7 +501,9 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
     items = attributes_of(node) if context.long_tags else node.items()
-    _read_attributes(element, items, node, source, context)
+    rest = _tree.assign_texts(element, items, not context.options.escape_separators)
+    if rest is not None:
+        _read_rest(element, rest, node, source, context)
 
 
 def attributes_of(node: XmlNode) -> list[tuple[str, str]]:
@@ -518,21 +520,12 @@ class _XPathAttribute(Protocol):
     attrname: str
 
 
-def _read_attributes(element: Element, items: list[tuple[str, str]], node: XmlNode,
-                     source: str | None, context: _Context) -> None:
-    """Read ``items``, ``node``'s attributes, into ``element``: values stored as their codec
-    reads them and names by the tree (most of a parse), the rest by :func:`_read_rest`."""
-    rest = _tree.assign_texts(element, items, not context.options.escape_separators)
-    if rest is not None:
-        _read_rest(element, rest, node, source, context)
-
-
 def _read_rest(element: Element,
                rest: list[tuple[str, AttributeSpec | None, str, Exception | None]],
                node: XmlNode, source: str | None, context: _Context) -> None:
-    """The attributes :func:`_tree.assign_texts` refused or left (references, empty texts,
-    ones the row lacks); references whose namespace another attribute names (``objname``
-    by ``objtype``) last."""
+    """Read the attributes of ``node`` (into ``element``) that :func:`_tree.assign_texts`
+    refused or left (references, empty texts, ones the row lacks); references whose
+    namespace another attribute names (``objname`` by ``objtype``) last."""
     later: list[tuple[AttributeSpec, str]] | None = None
     for key, attribute, text, refused in rest:
         if attribute is not None and isinstance(refused, Rejected):
@@ -666,7 +659,8 @@ class _Builder:
         # where each element was read (SourceMap.add, inline: it is per element)
         line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
-        new_child, read_attributes = _tree.new_child, _read_attributes
+        new_child, assign_texts, read_rest = _tree.new_child, _tree.assign_texts, _read_rest
+        names = not context.options.escape_separators  # the tree claims names as read
         long_tags = context.long_tags  # (read again after an include)
         merged = self.merged
         self.count(node, source, 1)  # the root
@@ -727,8 +721,10 @@ class _Builder:
             if source is not main:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()
-            if items:
-                read_attributes(child, items, child_node, source, context)
+            if items:  # values and names by the tree, the rest here
+                rest = assign_texts(child, items, names)
+                if rest is not None:
+                    read_rest(child, rest, child_node, source, context)
             child_top = child
             if tag == parent_tag:
                 child_top = top

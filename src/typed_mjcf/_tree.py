@@ -345,10 +345,11 @@ class Element(_Layout):
     def _store(self, attribute: AttributeSpec, stored: object) -> None:
         """Keep ``stored`` (what the codec gave) as the attribute's value, with what comes with
         it: names claimed, links waited for, the model renamed. A direct attribute has nothing
-        that comes with it (that is what ``direct`` means): it is only put in the dict, which
-        the two loops of building (``_init_attributes``) and parsing (``assign_texts``) do
-        themselves, a call per value costing ~4% of a build (``tests/runtime/test_tree.py``
-        checks the three store alike)."""
+        that comes with it (that is what ``direct`` means), nor has a link to an element: it
+        is only put in the dict, which the loops of building (``_init_attributes``) and
+        parsing (``assign_texts``, ``assign_text``'s links) do themselves, a call per value
+        costing 3-4% of a build or parse (``tests/runtime/test_tree.py`` checks that building,
+        assigning and parsing store every direct value alike)."""
         values = self._values
         if attribute.direct:
             values[attribute.name] = stored
@@ -1654,22 +1655,23 @@ def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool
     by_name = element.spec.by_name
     values = element._values
     rest: list[tuple[str, AttributeSpec | None, str, Exception | None]] | None = None
+    refused: Exception | None
     for key, text in items:
         attribute = by_name.get(key)
-        refused: Exception | None = None
-        if attribute is not None and text:
-            if attribute.direct:
-                try:
-                    values[attribute.name] = attribute.codec.parse(text)  # _store's direct case
-                    continue
-                except Rejected as rejected:
-                    refused = rejected
-            elif names and attribute.kind == "id":
-                try:
-                    assign_name_text(element, attribute, text)
-                    continue
-                except MjcfError as error:
-                    refused = error
+        if attribute is not None and attribute.direct and text:
+            try:
+                values[attribute.name] = attribute.codec.parse(text)  # _store's direct case
+                continue
+            except Rejected as rejected:
+                refused = rejected
+        elif names and attribute is not None and text and attribute.kind == "id":
+            try:
+                assign_name_text(element, attribute, text)
+                continue
+            except MjcfError as error:
+                refused = error
+        else:
+            refused = None
         if rest is None:
             rest = []
         rest.append((key, attribute, text, refused))
@@ -1689,8 +1691,8 @@ def assign_text(element: Element, attribute: AttributeSpec, text: str,
         table = element._scope.tables.get(namespace)
         found = None if table is None else table.get(text)
         if isinstance(found, Element):  # names an element already: linked at once
-            element._store(attribute, found)
-            return
+            element._values[attribute.name] = found  # _store's effect for a link (a call:
+            return  # +3% of parsing a model with references)
     stored = attribute.codec.parse(text)
     if attribute.is_reference:
         if not link:
