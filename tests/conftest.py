@@ -51,7 +51,8 @@ SLOW = {
     "cli/test_diff.py::test_an_edit_shows_as_exactly_that_edit": "the corpus, edited",
     "cli/test_diff.py::test_formatting_does_not_show": "the corpus, formatted",
     "cli/test_fmt.py::test_the_formatted_model_compiles_the_same": "the corpus, compiled",
-    "safety/test_errors.py::test_repeated_default_sections_take_linear_time": "a 250 kB model",
+    "safety/test_errors.py::test_repeated_default_sections_take_linear_work":
+        "every Python line of two parses counted",
     "safety/test_entities.py::test_entity_bombs_use_no_memory": "entity expansion bombs",
     "fidelity/test_validate.py::test_validate_is_linear_in_the_number_of_elements":
         "models of growing size",

@@ -241,7 +241,8 @@ class Element(_tree.Element):
         attached models' sections too).
 
         Numbers read from a file are written as they were read; values set in Python in the
-        shortest form that reads back exactly. ``precision`` (significant digits),
+        shortest form that reads back exactly. ``precision`` (significant digits; ``None``:
+        the library's default, ``typed_mjcf._codecs.DEFAULT_PRECISION``, the shortest form),
         ``zero_threshold`` (smaller magnitudes are written as 0) and ``canonical=True`` (every
         number in the canonical form, as if set in Python) reformat every number. Names are
         written as seen from the element's model, or from ``prefix_root`` (a name scope);

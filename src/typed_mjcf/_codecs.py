@@ -71,15 +71,37 @@ def _type_rejected(expected: str) -> Rejected:
     return Rejected(expected, InvalidTypeError)
 
 
+# The precision of every MJCF writer when none is asked for (significant digits; ``None``:
+# the shortest text that reads back exactly). The one place it is decided: :class:`Format`
+# reads it whenever it writes, so every route (assignment, export, ``str()``, composed models,
+# keyframes, the MjSpec bridge, the CLI) follows it.
+DEFAULT_PRECISION: int | None = None
+
+
+def real_text(values: Sequence[float], single: bool = False, precision: int | None = None) -> str:
+    """Real numbers as MJCF text, space-separated: the one spelling of a float every writer
+    uses (one number is a sequence of one). With ``precision``, that many significant digits;
+    else the shortest text that reads back exactly (as a float32 when ``single``), without a
+    trailing ``.0``."""
+    if precision is not None:
+        spec = f".{precision}g"
+        return " ".join([format(x, spec) for x in values])
+    if single:
+        text = " ".join([str(np.float32(x)) for x in values])
+    else:
+        text = " ".join(map(repr, values))  # one C-level join
+    return text.replace(".0 ", " ").removesuffix(".0")
+
+
 class Format:
-    """Export options, applied by every codec the same way."""
+    """Export options, applied by every codec the same way. ``precision=None`` is the
+    library's default (:data:`DEFAULT_PRECISION`), read when a number is written."""
 
-    __slots__ = ("canonical", "plain", "precision", "zero_threshold")
+    __slots__ = ("canonical", "precision", "zero_threshold")
 
-    precision: int | None
+    precision: int | None  # as asked for; None: DEFAULT_PRECISION
     zero_threshold: float
     canonical: bool
-    plain: bool
 
     def __init__(self, precision: int | None = None, zero_threshold: float = 0.0,
                  canonical: bool = False) -> None:
@@ -90,24 +112,29 @@ class Format:
         self.precision = precision
         self.zero_threshold = float(zero_threshold)
         self.canonical = canonical
-        # no option: numbers read from a file are written as they were read
-        self.plain = precision is None and not zero_threshold and not canonical
+
+    @property
+    def digits(self) -> int | None:
+        """The precision numbers are written with (``None``: shortest round-trip form)."""
+        return DEFAULT_PRECISION if self.precision is None else self.precision
+
+    @property
+    def keeps_source_text(self) -> bool:
+        """Whether numbers read from a file are written as they were read: nothing asks
+        for them to be reformatted."""
+        return self.digits is None and not self.zero_threshold and not self.canonical
 
     def number(self, x: float, single: bool = False) -> str:
-        """One number: shortest round-trip form (of a float32 when ``single``), unless the
-        options say otherwise."""
-        if self.zero_threshold and abs(x) < self.zero_threshold:
-            return "0"
-        if self.precision is not None:
-            return format(x, f".{self.precision}g")
-        if single:
-            return str(np.float32(x)).removesuffix(".0")
-        return repr(x).removesuffix(".0")
+        """One number (of a float32 when ``single``), as :func:`real_text` spells it."""
+        return self.numbers((x,), single)
 
     def numbers(self, values: Sequence[float], single: bool = False) -> str:
-        if not self.zero_threshold and self.precision is None and not single:
-            return shortest_doubles(values)
-        return " ".join([self.number(x, single) for x in values])
+        """Numbers, space-separated, as :func:`real_text` spells them with these options."""
+        threshold = self.zero_threshold
+        if threshold:
+            values = [0.0 if abs(x) < threshold else x for x in values]
+        precision = self.precision  # (not self.digits: a property costs a call per value)
+        return real_text(values, single, DEFAULT_PRECISION if precision is None else precision)
 
 
 def _check_option(name: str, value: object, valid: Callable[[object], bool], expected: str,
@@ -117,13 +144,8 @@ def _check_option(name: str, value: object, valid: Callable[[object], bool], exp
     raise InvalidValueError(f"{name} must be {expected}, got {value!r}")
 
 
+# The default options (the precision is read from DEFAULT_PRECISION as each number is written)
 DEFAULT_FORMAT: Final = Format()
-
-
-def shortest_doubles(values: Iterable[float]) -> str:
-    """Space-separated shortest forms: one C-level join, then drop each trailing ".0"."""
-    text = " ".join(map(repr, values)).replace(".0 ", " ")
-    return text.removesuffix(".0")
 
 
 # ---------------------------------------------------------------------------- the interface
@@ -150,7 +172,9 @@ class Codec:
         return stored
 
     def write(self, stored: object, fmt: Format) -> str:
-        """The stored value as attribute text."""
+        """The stored value as attribute text. A text stored as read from a file comes back
+        unchanged when ``fmt.keeps_source_text``: the exporter writes such texts without
+        the call (``AttributeSpec.as_is``), and a test holds every codec to it."""
         return cast(str, stored)
 
 
@@ -387,10 +411,10 @@ class RealCodec(Codec):
 
     def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
-            if fmt.plain:
+            if fmt.keeps_source_text:
                 return stored
             stored = to_float(stored)
-        return fmt.number(cast(float, stored), self.single)
+        return fmt.numbers((cast(float, stored),), self.single)
 
 
 # ---------------------------------------------------------------------------- arrays
@@ -465,7 +489,7 @@ def _frozen(array: Array) -> Array:
 class ArrayCodec(Codec):
     """A list of numbers of a fixed or bounded length, stored as a read-only numpy array."""
 
-    __slots__ = ("checked", "dtype", "expected", "hi", "is_int", "lo", "pattern", "plain_types",
+    __slots__ = ("checked", "dtype", "exact_types", "expected", "hi", "is_int", "lo", "pattern",
                  "single")
     lazy = True
 
@@ -474,11 +498,11 @@ class ArrayCodec(Codec):
         self.is_int = kind == "int"
         self.dtype = DTYPES[dtype]
         self.single = dtype == "float"
-        self.plain_types = frozenset({int}) if self.is_int else frozenset({int, float})
+        self.exact_types = frozenset({int}) if self.is_int else frozenset({int, float})
         self.expected = f"{count_text(lo, hi)} {'integers' if self.is_int else 'numbers'}"
         number = _INTEGER if self.is_int else _FLOAT if self.single else _DOUBLE
         low, high = max(lo - 1, 0), "" if hi is None else str(max(hi - 1, 0))
-        # Possessive ("}+"): the engine keeps no backtracking state per number (a plain
+        # Possessive ("}+"): the engine keeps no backtracking state per number (an ordinary
         # repeat costs ~600 bytes a number: 14 GB for a 60 MB list). It accepts the same
         # texts: a number never ends inside a word, so giving one back cannot help a match.
         repeat = f"(?:\\s+{number}){{{low},{high}}}+"
@@ -487,14 +511,14 @@ class ArrayCodec(Codec):
 
     def accept(self, value: object) -> object:
         kind = type(value)
-        if kind is tuple or kind is list:  # the common case: a few plain Python numbers
+        if kind is tuple or kind is list:  # the common case: a few Python ints and floats
             items = cast("tuple[object, ...] | list[object]", value)
             n = len(items)
             hi = self.hi
             if self.lo <= n and (hi is None or n <= hi):
-                plain = self.plain_types
+                exact_types = self.exact_types
                 for item in items:
-                    if type(item) not in plain:
+                    if type(item) not in exact_types:
                         break
                 else:
                     try:
@@ -528,7 +552,7 @@ class ArrayCodec(Codec):
 
     def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
-            if fmt.plain:
+            if fmt.keeps_source_text:
                 return stored
             stored = self.from_text(stored)
         array = cast(Array, stored)
@@ -541,8 +565,6 @@ class ArrayCodec(Codec):
     def _write_numbers(self, array: Array, fmt: Format) -> str:
         if self.is_int:
             return " ".join(map(str, array.tolist()))
-        if fmt.plain and not self.single:
-            return shortest_doubles(cast(list[float], array.tolist()))
         return fmt.numbers(cast(list[float], array.tolist()), self.single)
 
     def _check_length(self, n: int) -> None:

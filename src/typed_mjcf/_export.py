@@ -19,7 +19,7 @@ from __future__ import annotations
 import functools
 import os
 from collections import deque
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from typing import Final, cast
 
 from typed_mjcf import _tree
@@ -97,8 +97,9 @@ class Writer:
         self.top_scope = scope
         self.prefixes: dict[int, str] = {id(scope): ""}
         self.composed = root is not None and bool(own.attached)
-        # plain output: nothing renamed or reformatted, so common values format inline
-        self.plain = fmt.plain and file_namer is None
+        # verbatim output: nothing renamed or reformatted, so texts stored as read are
+        # written as they are (what their codecs write for them with such a format)
+        self.verbatim = fmt.keeps_source_text and file_namer is None
         # elements with an attachment frame in their subtree: written as nodes, so attached
         # models' bodies can join them; everything else is written as chunks of text
         self.hosts: set[int] = _hosts(root) if self.composed and root is not None else set()
@@ -115,8 +116,8 @@ class Writer:
         self.keyframe_sections: list[tuple[ModelBase, Element]] = []
         self._flat_names: dict[tuple[int, str], str] | None = None
         self.targets: dict[int, str] = {}  # the text of each element references link to
-        # the scope whose elements' texts are written as stored (plain output; else none)
-        self.plain_scope = scope if self.plain and not skip_attributes else None
+        # the scope whose elements' texts are written as stored (verbatim output; else none)
+        self.verbatim_scope = scope if self.verbatim and not skip_attributes else None
         # names this export gives unnamed elements that references link to
         self.given_names: dict[int, str] = _names_to_give(top, scope)
         if self.composed:
@@ -198,17 +199,17 @@ class Writer:
                 texts[name] = text
         return texts
 
-    def attribute_text(self, element: Element, stored: dict[str, object]) -> str:
+    def attribute_text(self, element: Element, stored: Mapping[str, object]) -> str:
         """`` name="value"`` for each of ``element``'s ``stored`` values (this loop is most
-        of an export's time). In plain output, texts stored as read are written as they
-        are, into the template of the element's set of attributes, and escaped only if the
+        of an export's time). In verbatim output, texts stored as read are written as they
+        are (as their codecs write them then: see :meth:`Codec.write`), into the template of the element's set of attributes, and escaped only if the
         result shows something to escape (one check per element rather than per value)."""
         spec = element.spec
         key = tuple(stored)
         plan = spec.plans.get(key)
         if plan is None:
             plan = write_plan(spec, key)
-        if _tree.scope_of(element) is not self.plain_scope or (
+        if _tree.scope_of(element) is not self.verbatim_scope or (
                 self.given_names and id(element) in self.given_names):
             return self.escaped_attribute_text(element, stored, plan[0])
         texts: list[str] = []
@@ -216,9 +217,9 @@ class Writer:
         fmt, targets = self.fmt, self.targets
         for name, attribute, as_is in plan[1]:
             value = stored[name]
-            if as_is and type(value) is str:
+            if as_is and type(value) is str:  # = attribute.codec.write(value, fmt) here
                 append(value)
-            elif attribute.plain_text:
+            elif attribute.codec_only:
                 append(attribute.codec.write(value, fmt))
             elif id(value) in targets:  # a link to an element already written to
                 append(targets[id(value)])
@@ -232,12 +233,12 @@ class Writer:
             return self.escaped_attribute_text(element, stored, plan[0])
         return out
 
-    def escaped_attribute_text(self, element: Element, stored: dict[str, object],
+    def escaped_attribute_text(self, element: Element, stored: Mapping[str, object],
                                names: tuple[str, ...]) -> str:
         """:meth:`attribute_text` value by value (``names``: ``stored``'s in grammar order),
-        each text escaped: for output that is not plain, and values that need escaping."""
+        each text escaped: for output that is not verbatim, and values that need escaping."""
         by_name = element.spec.by_name
-        plain = self.plain and _tree.scope_of(element) is self.top_scope
+        verbatim = self.verbatim and _tree.scope_of(element) is self.top_scope
         parts: list[str] = []
         if self.given_names and id(element) in self.given_names:
             parts.append(f' {self.given_name(element)}')
@@ -248,14 +249,14 @@ class Writer:
                 continue
             value = stored[name]
             attribute = by_name[name]
-            if attribute.plain_text:
+            if attribute.codec_only:
                 if type(value) is str:  # text (or numbers as read: they may hold tabs)
-                    text = value if plain else attribute.codec.write(value, fmt)
+                    text = attribute.codec.write(value, fmt)
                     parts.append(f' {name}="{escape(text)}"')
                 else:  # numbers set in Python: nothing to escape
                     parts.append(f' {name}="{attribute.codec.write(value, fmt)}"')
                 continue
-            if plain and type(value) is str and attribute.kind == "id":
+            if verbatim and type(value) is str and attribute.kind == "id":
                 parts.append(f' {name}="{escape(value)}"')
                 continue
             written = self.value(element, attribute, value)
@@ -300,7 +301,7 @@ class Writer:
         return attribute.codec.write(value, self.fmt)
 
     def file_text(self, element: Element, attribute: AttributeSpec, value: object) -> str:
-        """A file as plain text writes it: as written (an attached model's as an absolute
+        """A file path as the MJCF text writes it: as written (an attached model's as an absolute
         path, which its parent's folders cannot change), unless it needs the flat name
         ``get_assets()`` gives it (in-memory contents, or a file whose name another file has
         too): then ``from_xml_string(text, model.get_assets())`` loads each file right."""
@@ -602,7 +603,7 @@ def write_plan(spec: ElementSpec, key: tuple[str, ...]) -> WritePlan:
     return plan
 
 
-def grammar_order(spec: ElementSpec, stored: dict[str, object]) -> tuple[str, ...]:
+def grammar_order(spec: ElementSpec, stored: Mapping[str, object]) -> tuple[str, ...]:
     """The names of ``stored`` (an element's values) in the order of ``spec``'s grammar."""
     return write_plan(spec, tuple(stored))[0]
 

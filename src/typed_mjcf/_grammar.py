@@ -34,6 +34,7 @@ class AttributeSpec:
         "as_is",
         "bounds",
         "codec",
+        "codec_only",
         "default",
         "direct",
         "directory",
@@ -52,7 +53,6 @@ class AttributeSpec:
         "namespace_from",
         "ordered",
         "pattern",
-        "plain_text",
         "py_name",
         "required",
         "scope",
@@ -82,7 +82,7 @@ class AttributeSpec:
     codec: Codec
     is_reference: bool  # names another element (a fixed or an attribute-given namespace)
     direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
-    plain_text: bool  # direct, and written by its codec alone (not a file, nor names)
+    codec_only: bool  # direct, and written by its codec alone (not a file, nor names)
     name_list: str | None  # a text listing names of this namespace (a <flex>'s bodies)
     as_is: bool
 
@@ -134,10 +134,11 @@ class AttributeSpec:
         self.index = 0  # position in the row, set by ElementSpec
         self.is_reference = kind == "ref" or namespace_from is not None
         self.direct = not self.is_reference and kind != "id" and not scope
-        self.plain_text = self.direct and kind != "file"
+        self.codec_only = self.direct and kind != "file"
         self.name_list = None  # set by the language's facts (see mark_name_list)
-        # a text stored for it is written as it is (plain output, names of the model written)
-        self.as_is = self.plain_text or kind == "id" or self.is_reference
+        # a text stored for it is written as it is (verbatim output, names of the model
+        # written): what its codec writes for such a text then (see Codec.write)
+        self.as_is = self.codec_only or kind == "id" or self.is_reference
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern,
                                 alone=self.alone, ordered=ordered)
@@ -146,7 +147,7 @@ class AttributeSpec:
         """This text lists names of ``namespace``: an attached model's are scoped when
         written, so it is not written by its codec alone."""
         self.name_list = namespace
-        self.plain_text = False
+        self.codec_only = False
 
     @property
     def url(self) -> str | None:
@@ -175,7 +176,7 @@ class AttributeSpec:
 
 # How an export writes the attributes of an element that sets a given set of them: their
 # names in grammar order; each name with its attribute and whether a text stored for it is
-# written as it is (in plain output); the template of their `` name="%s"``.
+# written as it is (in verbatim output); the template of their `` name="%s"``.
 WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
 
 

@@ -136,13 +136,18 @@ def combine_keyframes(writer: Writer, node: Node, m: mujoco.MjModel) -> None:
             _combine(key, part, combined, owners, m)
     section_node = writer.section_node(node, sections[0][1].spec.tag)
     key_tag = next(iter(sections[0][1].spec.children))
-    number = writer.fmt.number
+    key_attributes = sections[0][1].spec.children[key_tag].cls.spec.by_name
+    fmt = writer.fmt
+
+    def text(attribute: str, value: object) -> str:  # as every value: by its codec
+        return key_attributes[attribute].codec.write(value, fmt)
+
     for name, combined in keys.items():
         attrib: dict[str, str] = {} if name.startswith("#") else {"name": name}
         if combined.time is not None:
-            attrib[keys_facts.time] = number(combined.time)
+            attrib[keys_facts.time] = text(keys_facts.time, combined.time)
         for kind, vector in combined.values.items():
-            attrib[kind] = " ".join(number(float(x)) for x in vector)
+            attrib[kind] = text(kind, vector)
         section_node.sub(key_tag, attrib)
 
 

@@ -25,7 +25,7 @@ import inspect
 import os
 import re
 import warnings
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Protocol, TypeAlias, cast
 
@@ -502,7 +502,9 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
     items = attributes_of(node) if context.long_tags else node.items()
-    _read_attributes(element, items, _tree.values(element), node, source, context)
+    rest = _tree.assign_texts(element, items, not context.options.escape_separators)
+    if rest is not None:
+        _read_rest(element, rest, node, source, context)
 
 
 def attributes_of(node: XmlNode) -> list[tuple[str, str]]:
@@ -519,26 +521,30 @@ class _XPathAttribute(Protocol):
     attrname: str
 
 
-def _read_attributes(element: Element, items: list[tuple[str, str]], values: dict[str, object],
-                     node: XmlNode, source: str | None, context: _Context) -> None:
-    """Read ``items``, ``node``'s attributes, into ``element`` (whose values are ``values``);
-    references whose namespace another attribute names (``objname`` by ``objtype``) are read
-    last. Most of a parse is this loop: plain values are stored here, the rest is
-    :func:`_set_other`."""
-    by_name = element.spec.by_name
+def _read_rest(element: Element,
+               rest: list[tuple[str, AttributeSpec | None, str, Exception | None]],
+               node: XmlNode, source: str | None, context: _Context) -> None:
+    """Read the attributes of ``node`` (into ``element``) that :func:`_tree.assign_texts`
+    refused or left (references, empty texts, ones the row lacks); references whose
+    namespace another attribute names (``objname`` by ``objtype``) last."""
     later: list[tuple[AttributeSpec, str]] | None = None
-    for key, text in items:
-        attribute = by_name.get(key)
-        if attribute is not None and attribute.direct and text:
-            try:  # the common case, as _tree.assign_text does it
-                values[attribute.name] = attribute.codec.parse(text)
-            except Rejected as rejected:
-                context.refuse("invalid-value", element.path, _rejected(
-                    element, attribute, text, rejected, node, source, context))
-            continue
-        later = _set_other(element, attribute, key, text, node, source, context, later)
+    for key, attribute, text, refused in rest:
+        if attribute is not None and isinstance(refused, Rejected):
+            context.refuse("invalid-value", element.path, _rejected(
+                element, attribute, text, refused, node, source, context))
+        elif refused is not None:
+            _refuse_name(element, refused, node, source, context)
+        else:
+            later = _set_other(element, attribute, key, text, node, source, context, later)
     for attribute, text in later or ():
         _set_text(element, attribute, text, node, source, context)
+
+
+def _refuse_name(element: Element, error: Exception, node: XmlNode, source: str | None,
+                 context: _Context) -> None:
+    rule = "duplicate-name" if isinstance(error, DuplicateIdentifierError) else "invalid-value"
+    context.refuse(rule, element.path, context.error(str(error), source,
+                                                     context.line(node, source)))
 
 
 def _rejected(element: Element, attribute: AttributeSpec, text: str, rejected: Rejected,
@@ -575,10 +581,7 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
                 name = escape_separators(name)
             _tree.assign_name_text(element, attribute, name)
         except MjcfError as error:
-            rule = "duplicate-name" if isinstance(error, DuplicateIdentifierError) else \
-                "invalid-value"
-            context.refuse(rule, element.path, context.error(
-                str(error), source, context.line(node, source)))
+            _refuse_name(element, error, node, source, context)
         return later
     if attribute.namespace_from is not None:
         later = [] if later is None else later
@@ -659,7 +662,8 @@ class _Builder:
         # where each element was read (SourceMap.add, inline: it is per element)
         line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
-        new_child, read_attributes = _tree.new_child, _read_attributes
+        new_child, assign_texts, read_rest = _tree.new_child, _tree.assign_texts, _read_rest
+        names = not context.options.escape_separators  # the tree claims names as read
         long_tags = context.long_tags  # (read again after an include)
         merged = self.merged
         self.count(node, source, 1)  # the root
@@ -715,16 +719,17 @@ class _Builder:
                     parent, nodes, source, depth, top, on_exit = stack[-1]
                     child_specs, parent_tag = parent.spec.children, parent.spec.tag
                     continue
-            values: dict[str, object] = {}
-            child = new_child(parent, child_spec, values)
+            child = new_child(parent, child_spec)
             if merged and parent in merged:
                 self.read_in[child] = merged[parent]
             line_of[child] = child_node.sourceline
             if source is not main:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()
-            if items:
-                read_attributes(child, items, values, child_node, source, context)
+            if items:  # values and names by the tree, the rest here
+                rest = assign_texts(child, items, names)
+                if rest is not None:
+                    read_rest(child, rest, child_node, source, context)
             child_top = child
             if tag == parent_tag:
                 child_top = top
@@ -911,10 +916,18 @@ def _section_defaults(section: Element) -> dict[_Key, object]:
 def _element_defaults(level: Element) -> dict[_Key, object]:
     """The attributes a hierarchy level sets on its element children, by (tag, attribute)."""
     found: dict[_Key, object] = {}
-    for child in _tree.children(level):
-        if child.spec.tag != level.spec.tag:
+    own_tag = level.spec.tag
+    for tag, child_spec in level.spec.children.items():
+        if tag == own_tag:
+            continue  # nested classes: not walked (a level holds any number of them)
+        if child_spec.single:  # by tag, in constant time
+            child = _tree.single_child(level, tag)
+            children: Sequence[Element] = () if child is None else (child,)
+        else:
+            children = _tree.children_with_tag(level, tag)
+        for child in children:
             for name, value in _tree.values(child).items():
-                found[(child.spec.tag, name)] = value
+                found[(tag, name)] = value
     return found
 
 

@@ -64,6 +64,7 @@ from typed_mjcf.errors import (
     InvalidReferenceError,
     InvalidTypeError,
     InvalidValueError,
+    MjcfError,
     UnknownAttributeError,
     did_you_mean,
 )
@@ -359,6 +360,13 @@ class Element(_Layout):
         return stored
 
     def _store(self, attribute: AttributeSpec, stored: object) -> None:
+        """Keep ``stored`` (what the codec gave) as the attribute's value, with what comes with
+        it: names claimed, links waited for, the model renamed. A direct attribute has nothing
+        that comes with it (that is what ``direct`` means), nor has a link to an element: it
+        is only put in the dict, which the loops of building (``_init_attributes``) and
+        parsing (``assign_texts``, ``assign_text``'s links) do themselves, a call per value
+        costing 3-4% of a build or parse (``tests/runtime/test_tree.py`` checks that building,
+        assigning and parsing store every direct value alike)."""
         values = self._values
         if attribute.direct:
             values[attribute.name] = stored
@@ -449,7 +457,7 @@ class Element(_Layout):
                 except Rejected as rejected:
                     raise self._reject(attribute, value, rejected) from None
                 if attribute.lo != 0 or not _is_empty_array(stored):
-                    values[attribute.name] = stored
+                    values[attribute.name] = stored  # _store's direct case
             elif attribute.kind == "id":
                 identifier = (attribute, value)
             else:
@@ -995,11 +1003,7 @@ def _adder(child_spec: ChildSpec) -> Callable[..., Element]:
             child = _create(child_spec.cls, self)
             if kwargs:
                 child._init_attributes(kwargs)
-            children = self._children  # _append, inline: once per element built
-            if type(children) is tuple:
-                _set_children(self, [child])
-            else:
-                cast(list[Element], children).append(child)
+            _append(self, child)
             return child
     add_child.__name__ = add_child.__qualname__ = f"add_{child_spec.tag}"
     _ADDERS[key] = add_child
@@ -1060,14 +1064,13 @@ _set_singles = _slot_writer("_singles")
 _set_attached = _slot_writer("_attached")
 
 
-def _create(cls: type[Element], parent: Element,
-            values: dict[str, object] | None = None) -> Element:
+def _create(cls: type[Element], parent: Element) -> Element:
     """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
-    children), with ``values`` (empty, for a caller that fills it) as its values."""
+    children), with no values."""
     # made as a _Blank (its slots written directly, past Element.__setattr__), then given
     # its class: about three times faster than writing each slot through its descriptor
     element = _new_blank(_Blank)
-    element._values = {} if values is None else values
+    element._values = {}
     element._children = _NO_CHILDREN
     element._parent = parent
     element._root = parent._root
@@ -1089,6 +1092,7 @@ def _child_scope(parent: Element) -> NameScope:
 
 
 def _append(parent: Element, child: Element) -> None:
+    """Put ``child`` last among ``parent``'s children (the one place that does)."""
     children = parent._children
     if type(children) is tuple:
         _set_children(parent, [child])
@@ -1180,6 +1184,11 @@ def _claim(element: Element, attribute: AttributeSpec, name: str) -> None:
         return
     scope = element._scope
     namespace = attribute.namespace or ""  # ids have one
+    table = scope.tables.get(namespace)
+    if (table is not None and name not in table and not scope.waiting
+            and SEPARATOR not in name and name not in _RESERVED_NAMES):
+        table[name] = element  # a new name nothing waits for (most names): scope.claim's
+        return  # effect, without its checks, which cannot fail here
     if name in _RESERVED_NAMES:
         facts = grammar_facts()
         if element.spec.tag == facts.body:
@@ -1502,9 +1511,10 @@ def _children_by_tag(element: Element) -> dict[str, list[Element]]:
 # What the features (parse, export, composition, validation, ...) use of the tree.
 
 
-def values(element: Element) -> dict[str, object]:
-    """The stored values by XML name (read only: set through the element or the functions
-    below). Lazy text and links are as stored; :func:`read_value` gives what users read."""
+def values(element: Element) -> Mapping[str, object]:
+    """The stored values by XML name (read only, as its type says to type checkers: set
+    through the element or the functions below). Lazy text and links are as stored;
+    :func:`read_value` gives what users read."""
     return element._values
 
 
@@ -1622,19 +1632,13 @@ def read_value(element: Element, attribute: AttributeSpec) -> object:
     return _read(element, attribute)
 
 
-def new_child(parent: Element, child_spec: ChildSpec,
-              values: dict[str, object] | None = None) -> Element:
-    """A new child of ``parent``, last among its children; ``values`` (empty) becomes its
-    values dict, for a caller that fills it (the parser)."""
-    child = _create(child_spec.cls, parent, values)
+def new_child(parent: Element, child_spec: ChildSpec) -> Element:
+    """A new child of ``parent``, last among its children, with no attributes."""
+    child = _create(child_spec.cls, parent)
     if child_spec.single:
         _place(parent, child, child_spec, None)
         return child
-    children = parent._children  # _append, inline: once per element parsed (a call: +3%)
-    if type(children) is tuple:
-        _set_children(parent, [child])
-    else:
-        cast(list[Element], children).append(child)
+    _append(parent, child)
     return child
 
 
@@ -1655,14 +1659,41 @@ def assign_name_text(element: Element, attribute: AttributeSpec, text: str) -> N
     if attribute.name in values or not text:
         assign_text(element, attribute, text)  # a repeated section renames: the general path
         return
-    scope = element._scope
-    table = scope.tables.get(attribute.namespace or "")
-    if (table is not None and text not in table and element._root is not None
-            and not scope.waiting and SEPARATOR not in text and text not in _RESERVED_NAMES):
-        table[text] = element  # what _claim does for a new plain name (most of a parse)
-    else:
-        _claim(element, attribute, text)
+    _claim(element, attribute, text)
     values[attribute.name] = text
+
+
+def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True
+                 ) -> list[tuple[str, AttributeSpec | None, str, Exception | None]] | None:
+    """Set the attributes ``items`` (name, text) read from a file that are stored as their
+    codec reads them, and (if ``names``) the element's name: most of a parse. Return the
+    others, in order, for the caller: each with its attribute (``None``: the row lacks it)
+    and the refusal (a :class:`Rejected` or a library error), or ``None`` for one not set
+    here (a reference, an empty text, a name when not ``names``)."""
+    by_name = element.spec.by_name
+    values = element._values
+    rest: list[tuple[str, AttributeSpec | None, str, Exception | None]] | None = None
+    refused: Exception | None
+    for key, text in items:
+        attribute = by_name.get(key)
+        if attribute is not None and attribute.direct and text:
+            try:
+                values[attribute.name] = attribute.codec.parse(text)  # _store's direct case
+                continue
+            except Rejected as rejected:
+                refused = rejected
+        elif names and attribute is not None and text and attribute.kind == "id":
+            try:
+                assign_name_text(element, attribute, text)
+                continue
+            except MjcfError as error:
+                refused = error
+        else:
+            refused = None
+        if rest is None:
+            rest = []
+        rest.append((key, attribute, text, refused))
+    return rest
 
 
 def assign_text(element: Element, attribute: AttributeSpec, text: str,
@@ -1677,9 +1708,9 @@ def assign_text(element: Element, attribute: AttributeSpec, text: str,
     if link and namespace is not None and attribute.kind == "ref":
         table = element._scope.tables.get(namespace)
         found = None if table is None else table.get(text)
-        if isinstance(found, Element):  # names an element already: as _resolve and _store do
-            element._values[attribute.name] = found
-            return
+        if isinstance(found, Element):  # names an element already: linked at once
+            element._values[attribute.name] = found  # _store's effect for a link (a call:
+            return  # +3% of parsing a model with references)
     stored = attribute.codec.parse(text)
     if attribute.is_reference:
         if not link:

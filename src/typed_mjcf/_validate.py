@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import functools
 import operator
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal, cast
 
@@ -325,7 +325,7 @@ def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> Non
                       f"needs {' or '.join(a + '=' for a in attach.references)}")
 
 
-def _check_constraint(state: _Pass, order: int, element: Element, attrs: dict[str, object],
+def _check_constraint(state: _Pass, order: int, element: Element, attrs: Mapping[str, object],
                       kind: str, bundles: tuple[tuple[str, ...], ...]) -> None:
     tag = element.spec.tag
     listing = " | ".join("+".join(bundle) for bundle in bundles)
@@ -372,7 +372,7 @@ def _check_bounds(state: _Pass, order: int, element: Element,
                                        f"expected {each}{expected} (MuJoCo refuses others)")
 
 
-def _set_names(bundles: Iterable[tuple[str, ...]], attrs: dict[str, object]) -> str:
+def _set_names(bundles: Iterable[tuple[str, ...]], attrs: Mapping[str, object]) -> str:
     return ", ".join(name for bundle in bundles for name in bundle if name in attrs)
 
 
@@ -392,7 +392,7 @@ def _declare_class(state: _Pass, order: int, element: Element, parent: Element |
         state.classes[name] = (order, element)
 
 
-def _child_model_references(spec: ElementSpec, attrs: dict[str, object]) -> frozenset[str]:
+def _child_model_references(spec: ElementSpec, attrs: Mapping[str, object]) -> frozenset[str]:
     attach = grammar_facts().attach
     if attach is None or spec.tag != attach.tag or attrs.get(attach.model) is None:
         return frozenset()

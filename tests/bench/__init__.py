@@ -14,5 +14,9 @@ Every library runs the same workloads in one process, round-robin, and the repor
 (:mod:`tests.bench.report`) gives medians, ratios to the raw-lxml floor, growth with size
 and the performance targets met or missed.
 
+:mod:`tests.bench.scaling` (``python -m tests.bench.scaling``) reports how the time of
+``validate()`` and of parsing repeated ``<default>`` sections grows with the model: the unit
+suite checks that growth by counting operations (``tests/operations.py``), never by timing.
+
 Only ``test_bench_smoke.py`` is a test module; the others are not collected by pytest.
 """

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.bench import scaling
 from tests.bench.cli import main
 
 
@@ -38,3 +39,10 @@ def test_quick_benchmark_runs_and_reports(tmp_path: Path,
     # a saved run renders again to the same report
     assert main(["--from-json", str(out)]) == 0
     assert capsys.readouterr().out == report
+
+
+def test_scaling_report_runs(capsys: pytest.CaptureFixture[str]) -> None:
+    assert scaling.main(["--quick"]) == 0
+    report = capsys.readouterr().out
+    assert "| validate(), bodies | 100 | 800 |" in report
+    assert "| parse, repeated <default> sections | 37 | 300 |" in report

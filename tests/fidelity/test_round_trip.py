@@ -17,6 +17,8 @@ import typed_mjcf as mjcf
 from typed_mjcf import Element
 from typed_mjcf._validate import validate
 
+from ..runtime.model_compare import model_differences
+
 DOCUMENT = """<?xml version="1.0"?>
 <!-- a comment before the root -->
 <mujoco model="every-value">
@@ -150,8 +152,13 @@ def test_values_are_read_bit_for_bit() -> None:
 
 
 @needs_document
-def test_the_document_is_one_mujoco_reads() -> None:
-    mujoco.MjSpec.from_string(DOCUMENT)
+@pytest.mark.parametrize("canonical", [False, True])
+def test_mujoco_compiles_the_export_to_the_documents_model(canonical: bool) -> None:
+    """What the library writes for the document, MuJoCo compiles to the model it compiles
+    from the document itself (every field of the MjModel compared)."""
+    expected = mujoco.MjModel.from_xml_string(DOCUMENT)
+    written = mjcf.from_xml_string(DOCUMENT).to_xml_string(canonical=canonical)
+    assert model_differences(expected, mujoco.MjModel.from_xml_string(written)) == []
 
 
 @needs_document

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf import _grammar, _tree
 
 
 @pytest.fixture
@@ -236,3 +237,41 @@ def test_copy_of_a_subtree_is_detached(model: mjcf.RootElement) -> None:
 def test_elements_are_created_by_their_parent() -> None:
     with pytest.raises(TypeError, match="add_geom"):
         mjcf.Geom()
+
+
+def _sample_text(attribute: _grammar.AttributeSpec) -> str | None:
+    """A text ``attribute`` takes (``None``: a file, not stored as its codec gives it)."""
+    if attribute.kind == "file":
+        return None
+    if attribute.kind in ("keyword", "flags"):
+        return attribute.keywords[0]
+    if attribute.kind == "bool":
+        return "true"
+    if attribute.kind in ("int", "real"):
+        return " ".join(["1"] * max(attribute.lo, 1)) if attribute.is_array else "1"
+    return "x" * max(attribute.lo, 1) if attribute.kind == "chars" else "x"
+
+
+@pytest.mark.parametrize("tag", ["body", "geom", "joint", "site", "camera", "light"])
+def test_building_assigning_and_parsing_store_a_value_alike(tag: str) -> None:
+    """``_store`` keeps a direct attribute's value only in the values dict; building
+    (``_init_attributes``) and parsing (``assign_texts``) do that themselves, for speed: the
+    three must store every such value alike."""
+    world = mjcf.RootElement().worldbody.add_body()
+    checked = 0
+    for attribute in world.spec.children[tag].cls.spec.attributes:
+        text = _sample_text(attribute)
+        if not attribute.direct or text is None:
+            continue
+        built = world.add(tag, **{attribute.py_name: text})
+        assigned = world.add(tag)
+        setattr(assigned, attribute.py_name, text)
+        parsed = world.add(tag)
+        assert _tree.assign_texts(parsed, [(attribute.name, text)]) is None
+        stored = [_tree.values(e) for e in (built, assigned, parsed)]
+        assert [list(s) for s in stored] == [[attribute.name]] * 3, attribute
+        read = [np.asarray(_tree.read_value(e, attribute)).tolist()
+                for e in (built, assigned, parsed)]
+        assert read[0] == read[1] == read[2], attribute
+        checked += 1
+    assert checked >= 5

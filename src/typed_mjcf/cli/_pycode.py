@@ -16,6 +16,8 @@ import re
 from dataclasses import dataclass
 from typing import Final
 
+from typed_mjcf import _codecs
+
 WIDTH: Final = 100
 INDENT: Final = "    "
 MAX_ONE_PER_LINE: Final = 12  # numbers: a longer tuple that must split is filled instead
@@ -51,17 +53,18 @@ def string(text: str) -> str:
 
 
 def number(x: float) -> str:
-    """A float as a person would type it: ``1`` for 1.0, ``2e-6``, ``0.1``; ``-0.0`` keeps its
-    sign; infinities and NaN as ``math.inf`` and ``math.nan``."""
+    """A float as a person would type it: MJCF's spelling (``_codecs.real_text``: ``1`` for
+    1.0, ``0.1``) with a short exponent (``2e-6``); ``-0.0`` keeps its sign; infinities and
+    NaN as ``math.inf`` and ``math.nan``. The export's precision does not apply: the code
+    builds the model exactly."""
     if math.isnan(x):
         return "math.nan"
     if math.isinf(x):
         return "math.inf" if x > 0 else "-math.inf"
-    if x == 0:
-        return "-0.0" if math.copysign(1.0, x) < 0 else "0"
-    if x.is_integer() and abs(x) < 1e16:
-        return str(int(x))
-    return _EXPONENT.sub(lambda m: f"e{'-' if m.group(1) == '-' else ''}{m.group(2)}", repr(x))
+    if x == 0 and math.copysign(1.0, x) < 0:
+        return "-0.0"
+    text = _codecs.real_text((x,))
+    return _EXPONENT.sub(lambda m: f"e{'-' if m.group(1) == '-' else ''}{m.group(2)}", text)
 
 
 def identifier(text: str, fallback: str) -> str:
