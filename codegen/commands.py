@@ -14,6 +14,10 @@ def generate(grammar: Path | None, allow_untyped: bool) -> int:
     before = ir.load() if ir.SCHEMA_PATH.exists() else None
     schema, report = refresh(before, grammar)
     print(report.format())
+    if report.drift_errors:
+        for line in report.drift_errors:
+            print(f"python -m codegen: error: {line}", file=sys.stderr)
+        return 2
     if report.untyped and not allow_untyped:
         print("error: the attributes above cannot be typed precisely; add them to "
               "schema/facts.toml ([[attribute]]) or pass --allow-untyped", file=sys.stderr)
