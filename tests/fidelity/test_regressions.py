@@ -231,7 +231,7 @@ KNOWN_GAPS: dict[str, str] = {
     "skin-group-above-5": _RANGES, "zero-quaternion": _RANGES, "negative-kv": _RANGES,
     "negative-dampratio": _RANGES, "negative-tausmooth": _RANGES,
     "negative-adhesion-gain": _RANGES, "negative-damper-ctrlrange": _RANGES,
-    "maxhullvert-below-4": _RANGES, "headlight-active-5": _RANGES,
+    "maxhullvert-below-4": _RANGES,
     "contact-sensor-num-zero": _RANGES, "actuatorgroupdisable-above-30": _RANGES,
     "actuatorgroupdisable-negative": _RANGES, "dcmotor-zero-resistance": _RANGES,
     "frame-scale-two-values": "arity 1..3 in the schema; the parser takes 1 or 3 values",
