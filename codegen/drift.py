@@ -87,6 +87,7 @@ class Drift:
     applied: list[Change] = field(default_factory=list[Change])
     untypable: list[tuple[Change, str]] = field(default_factory=list[tuple[Change, str]])
     probed: int = 0  # attributes checked
+    defaults: int = 0  # of them, defaults compared in a model MuJoCo saves
     rows_skipped: list[str] = field(default_factory=list[str])  # no probe model loads
 
 
@@ -170,21 +171,22 @@ def _plain(attr: ir.AttributeDef, schema: ir.Schema) -> str:
 
 
 def probe_counts(p: _Probe, attr: ir.AttributeDef) -> tuple[int, int | None] | None:
-    """The value counts the reader takes (``None`` high: more than were tried), or None
-    when it says nothing about counts (it takes every count tried)."""
+    """The value counts the reader takes (``None`` high: more than the cap), or None when it
+    says nothing about counts (it takes every count tried)."""
     low, high = attr.arity if attr.arity is not None else (1, 1)
     top = min(_COUNT_CAP, (high if high is not None else max(low, 1)) + _COUNT_MARGIN)
-    verdicts = {n: p.verdict(attr.name, " ".join(["1"] * n)) for n in range(1, top + 1)}
+    verdicts: dict[int, Verdict] = {}
+    for n in range(1, _COUNT_CAP + 1):
+        verdicts[n] = p.verdict(attr.name, " ".join(["1"] * n))
+        bounded = any(v in ("short", "long") for v in verdicts.values())
+        if verdicts[n] == "long" or (n >= top and not bounded):
+            break  # past the last count taken, or the reader does not count
     if not any(v in ("short", "long") for v in verdicts.values()):
         return None
     fits = [n for n, v in verdicts.items() if v not in ("short", "long")]
     if not fits:
         return None
-    last = max(fits)
-    if last == top:  # still taken at the top: try further, up to the cap
-        while last < _COUNT_CAP and p.verdict(attr.name, " ".join(["1"] * (last + 1))) != "long":
-            last += 1
-    return min(fits), None if last >= _COUNT_CAP else last
+    return min(fits), max(fits) if "long" in verdicts.values() else None
 
 
 def probe_keywords(p: _Probe, attr: ir.AttributeDef, candidates: list[str]) -> list[str]:
@@ -243,8 +245,8 @@ class _Checker:
         # enum -> (row, attribute, keywords the parser took) for every probed user
         self.keyword_sets: dict[str, list[tuple[str, str, list[str]]]] = {}
 
-    def run(self) -> Drift:
-        for name in sorted(self.schema.elements):
+    def run(self, rows: set[str] | None) -> Drift:
+        for name in sorted(self.schema.elements if rows is None else rows):
             row = self.schema.elements[name]
             if row.projection_of is not None or row.alias is not None or not row.attributes:
                 continue
@@ -284,7 +286,9 @@ class _Checker:
             words = list(documented.keywords) or ["false", "true"]
             taken = [w for w in words if p.verdict(attr.name, w) == "ok"]
             if taken:  # numbers still read, and keywords too (headlight active: 0, auto)
-                return self._kind_changed(row, attr, "keyword " + _words(taken), "keyword")
+                fields = (f'keyword", enum = "<an [[enum]] of {", ".join(taken)}>'
+                          + (f'", default = "{documented.default}' if documented.default else ""))
+                return self._kind_changed(row, attr, "keyword " + _words(taken), fields)
         if attr.kind == "int" and p.verdict(attr.name, " ".join(["1.5"] * count)) == "ok":
             return self._kind_changed(row, attr, "real", "real")
         return True
@@ -325,6 +329,7 @@ class _Checker:
     def _default(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
         if attr.default is None or p.baseline.saved.startswith(probe.UNSAVED):
             return  # MuJoCo cannot save the probe model: nothing to compare
+        self.drift.defaults += 1
         if p.load(attr.name, attr.default).saved == p.baseline.saved:
             return
         documented = _documented(attr, self.ref)
@@ -428,7 +433,8 @@ def _fact(row: str, name: str, fields: str) -> str:
 def check(schema: ir.Schema, parser: probe.Parser, ref: Reference,
           enums: Mapping[str, Mapping[str, int]], structs: Mapping[str, Mapping[str, str]],
           sites: Mapping[str, Mapping[str, str]],
-          hand: set[tuple[str, str]], hand_enums: set[str]) -> Drift:
-    """Probe every attribute of ``schema`` that a loading model reaches; ``schema`` is edited
-    for the changes that can be typed."""
-    return _Checker(schema, parser, ref, enums, structs, sites, hand, hand_enums).run()
+          hand: set[tuple[str, str]], hand_enums: set[str],
+          rows: set[str] | None = None) -> Drift:
+    """Probe every attribute of ``schema`` (of ``rows``, when given) that a loading model
+    reaches; ``schema`` is edited for the changes that can be typed."""
+    return _Checker(schema, parser, ref, enums, structs, sites, hand, hand_enums).run(rows)

@@ -656,7 +656,8 @@ class _Sync:
             self.report.drift_errors.append(f"{change.line()}; type it in schema/facts.toml: "
                                             f"{fact}")
         self.report.notes.append(
-            f"attribute types probed: {found.probed} attributes; rows without a probe model "
+            f"attribute types probed: {found.probed} attributes ({found.defaults} defaults "
+            "in a model MuJoCo saves); rows without a probe model "
             f"that MuJoCo reads (schema/probe.toml): {', '.join(found.rows_skipped) or 'none'}")
 
     # -- hand-kept types on existing attributes

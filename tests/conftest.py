@@ -32,6 +32,7 @@ SLOW = {
     "cli/test_to_python_types.py": "mypy and pyright over the corpus in Python",
     "codegen/test_mujoco_stubs.py": "pybind11-stubgen and mypy's stubgen",
     "codegen/test_drift.py": "the generator over MuJoCo's grammar",
+    "codegen/test_type_drift.py": "MuJoCo's parser over the schema's attributes (drift probe)",
     "dm_control/test_dm_control_tests.py": "dm_control's own test suite",
     "dm_control/test_parity.py": "dm_control beside typed-mjcf over the corpus",
     "dm_control/test_composer.py::test_environments_with_cameras_run":
