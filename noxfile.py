@@ -8,6 +8,7 @@ installed, a session fails (it does not skip) and says which Python it looked fo
 
 from __future__ import annotations
 
+import json
 import re
 import tomllib
 from pathlib import Path
@@ -71,7 +72,10 @@ def pictures(session: nox.Session) -> None:
     session.run("python", "-m", "tests.pictures", *session.posargs)
 
 
-MUJOCO_VERSION = "4.0.0"  # what schema/ describes; keep in step with the dev extra
+# What schema/ describes: one place. `python -m codegen generate` writes it and moves
+# pyproject.toml's pins with it (the dev extra's mujoco==X, the dependency range).
+MUJOCO_VERSION = json.loads(Path("schema/mjcf.json").read_text(encoding="utf-8"))[
+    "mujoco_version"]
 
 
 @nox.session(python=PYTHON)
@@ -91,7 +95,8 @@ def generate(session: nox.Session) -> None:
         session.error(str(error))
     # The release generated for, whatever release the project depends on now (that is the
     # pin being moved): the project without its dependencies, the rest by hand.
-    session.install(*_requirements("codegen"), f"mujoco-core=={version}")
+    # `mujoco`, not `mujoco-core`: the package the dev extra pins (3.x has no mujoco-core)
+    session.install(*_requirements("codegen"), f"mujoco=={version}")
     session.install("--no-deps", "-e", ".")
     session.run("python", "-m", "codegen", "generate", *args)
 
@@ -136,7 +141,7 @@ def bench(session: nox.Session) -> None:
     nox -s bench -- --json bench.json     # also save the raw numbers
     nox -s bench -- --only W1,W3 --libs typed,lxml
     """
-    session.install("-e", ".", f"mujoco-core=={MUJOCO_VERSION}", "dm_control>=1.0.50")
+    session.install("-e", ".", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
     session.run("python", "-m", "tests.bench", *session.posargs)
 
 
