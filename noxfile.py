@@ -14,6 +14,7 @@ import tomllib
 from pathlib import Path
 
 import nox
+from nox.command import CommandFailed
 
 # python="<version range>" (interpreter discovery by python-discovery) came in nox 2026.8.10;
 # older versions would look for an interpreter literally named ">=3.11" and find none.
@@ -96,7 +97,12 @@ def generate(session: nox.Session) -> None:
     # The release generated for, whatever release the project depends on now (that is the
     # pin being moved): the project without its dependencies, the rest by hand.
     # `mujoco`, not `mujoco-core`: the package the dev extra pins (3.x has no mujoco-core)
-    session.install(*_requirements("codegen"), f"mujoco=={version}")
+    try:
+        session.install(*_requirements("codegen"), f"mujoco=={version}")
+    except CommandFailed:
+        session.error(f"no `mujoco` {version} to install (pip says why above): the pins name "
+                      "the package users and dm_control install, so a release published as "
+                      "mujoco-core alone (4.0.1) is not one to move to; see CONTRIBUTING.md")
     session.install("--no-deps", "-e", ".")
     session.run("python", "-m", "codegen", "generate", *args)
 
