@@ -274,6 +274,16 @@ class _Checker:
                 self._default(p, row, attr)
         elif attr.kind in _STRING_KINDS:
             self._string_list(row, attr)
+        elif attr.kind == "string":
+            self._string_kind(p, row, attr)
+
+    def _string_kind(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        """Free text that the reader now reads as numbers or as a keyword."""
+        seen = p.verdict(attr.name, probe.PROBE_VALUE)
+        if seen == "bad":
+            self._kind_changed(row, attr, "a number", 'real", arity = [<count>]')
+        elif seen == "keyword":
+            self._kind_changed(row, attr, "keyword", 'keyword", enum = "<an [[enum]]>')
 
     def _numeric_kind(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> bool:
         """False (and an untypable change) when the attribute is no longer a number."""

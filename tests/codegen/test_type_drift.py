@@ -160,3 +160,12 @@ def test_the_three_4_0_0_changes_are_found(schema: ir.Schema, wheel: Wheel) -> N
     assert errors == ["flex@material count: 1 -> 1..",
                       "headlight@active kind: int -> keyword [false, true, auto]"]
     assert "facts.toml" in report.format() and "schema/ not written" in report.format()
+
+
+@pytest.mark.parametrize(("name", "after"), [("density", "a number"), ("type", "keyword")])
+def test_free_text_that_the_reader_now_types_stops(schema: ir.Schema, wheel: Wheel,
+                                                   name: str, after: str) -> None:
+    attr = schema.elements["geom"].attribute(name)
+    attr.kind, attr.dtype, attr.enum, attr.arity, attr.default = "string", None, None, None, None
+    found = check(schema, wheel, {"geom"})
+    assert [c.line() for c, _ in found.untypable] == [f"geom@{name} kind: string -> {after}"]
