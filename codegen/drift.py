@@ -365,10 +365,10 @@ class _Checker:
         else:
             return
         change = Change(row.name, attr.name, "count", _count_text(attr.arity), _count_text(new))
-        # the runtime's id and ref codecs hold one name: a list of them is typed by hand
-        arity = "[1]" if new is not None else "(none)"
-        self.drift.untypable.append(
-            (change, _fact(row.name, attr.name, f'kind = "string", arity = {arity}')))
+        # the runtime's id and ref codecs hold one name: a list of them is free text (as
+        # flex@body's bodies), typed by hand; one name again is a ref of a namespace
+        fields = 'kind = "string"' if new is not None else 'kind = "ref", namespace = "<...>"'
+        self.drift.untypable.append((change, _fact(row.name, attr.name, fields)))
 
     def _apply(self, row: ir.ElementDef, attr: ir.AttributeDef, change: Change,
                **fields: object) -> None:

@@ -4500,7 +4500,7 @@ class Body(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: string[1..] (at least 1); no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -12169,7 +12169,7 @@ class Deformable(_Typed):
             group: int; no default (unset when absent).
             dim: int; default "2".
             radius: double; default "0.005".
-            material: string[1..] (at least 1); no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
             flatskin: bool; no default (unset when absent).
             body: string; required. Space-separated body names.
@@ -13949,7 +13949,7 @@ class Flex(_Typed):
 
     @property
     def material(self) -> _builtins.str | None:
-        """``material``: string[1..] (at least 1); no default (unset when absent).
+        """``material``: string; no default (unset when absent).
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
         """
@@ -14405,7 +14405,7 @@ class Flexcomp(_Typed):
 
     @property
     def material(self) -> _builtins.str | None:
-        """``material``: string[1..] (at least 1); no default (unset when absent).
+        """``material``: string; no default (unset when absent).
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
         """
@@ -15839,7 +15839,7 @@ class Frame(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: string[1..] (at least 1); no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -31453,7 +31453,7 @@ class Worldbody(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: string[1..] (at least 1); no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
