@@ -8,11 +8,13 @@ installed, a session fails (it does not skip) and says which Python it looked fo
 
 from __future__ import annotations
 
+import json
 import re
 import tomllib
 from pathlib import Path
 
 import nox
+from nox.command import CommandFailed
 
 # python="<version range>" (interpreter discovery by python-discovery) came in nox 2026.8.10;
 # older versions would look for an interpreter literally named ">=3.11" and find none.
@@ -57,7 +59,10 @@ def pictures(session: nox.Session) -> None:
     session.run("python", "-m", "tests.pictures", *session.posargs)
 
 
-MUJOCO_VERSION = "4.0.0"  # what schema/ describes; keep in step with the dev extra
+# What schema/ describes: one place. `python -m codegen generate` writes it and moves
+# pyproject.toml's pins with it (the dev extra's mujoco==X, the dependency range).
+MUJOCO_VERSION = json.loads(Path("schema/mjcf.json").read_text(encoding="utf-8"))[
+    "mujoco_version"]
 
 
 @nox.session(python=PYTHON)
@@ -78,15 +83,15 @@ def generate(session: nox.Session) -> None:
     # The release generated for, whatever release the project depends on now (that is the
     # pin being moved): the project without its dependencies, the rest by hand. A release
     # older than schema/mjcf.json's becomes schema/releases/<version>.json (codegen/releases.py).
-    session.install(*_requirements("codegen"), _mujoco_requirement(version))
+    # `mujoco`, not `mujoco-core`: the package the dev extra pins (3.x has no mujoco-core)
+    try:
+        session.install(*_requirements("codegen"), f"mujoco=={version}")
+    except CommandFailed:
+        session.error(f"no `mujoco` {version} to install (pip says why above): the pins name "
+                      "the package users and dm_control install, so a release published as "
+                      "mujoco-core alone (4.0.1) is not one to move to; see CONTRIBUTING.md")
     session.install("--no-deps", "-e", ".")
     session.run("python", "-m", "codegen", "generate", *args)
-
-
-def _mujoco_requirement(version: str) -> str:
-    """The package that installs MuJoCo ``version``: MuJoCo 4's engine is ``mujoco-core``
-    (``mujoco`` is a meta-package over it, with the viewer); MuJoCo 3 is ``mujoco`` alone."""
-    return f"mujoco-core=={version}" if int(version.split(".")[0]) >= 4 else f"mujoco=={version}"
 
 
 def _requirements(extra: str) -> list[str]:
@@ -129,7 +134,7 @@ def bench(session: nox.Session) -> None:
     nox -s bench -- --json bench.json     # also save the raw numbers
     nox -s bench -- --only W1,W3 --libs typed,lxml
     """
-    session.install("-e", ".", f"mujoco-core=={MUJOCO_VERSION}", "dm_control>=1.0.50")
+    session.install("-e", ".", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
     session.run("python", "-m", "tests.bench", *session.posargs)
 
 

@@ -83,7 +83,7 @@ def main(argv: list[str] | None = None) -> int:
         if error.name is None or error.name.partition(".")[0] not in EXTRA:
             raise
         problem = (f"{error.name} is not installed; `nox -s generate` installs what the "
-                   "generator needs, or: pip install -e '.[codegen]' mujoco-core")
+                   "generator needs, or: pip install -e '.[codegen]' mujoco")
     except OSError as error:  # an input that cannot be read (the grammar, schema/, facts)
         problem = f"{error.filename or ''}: {error.strerror or error}".lstrip(": ")
     print(f"{PROG}: error: {problem}", file=sys.stderr)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from codegen import bindings, ir, mujoco_stubs, releases, render
+from codegen import bindings, ir, mujoco_stubs, pins, releases, render, wheel
 from codegen.pipeline import refresh
 
 
@@ -18,11 +18,17 @@ def generate(grammar: Path | None, allow_untyped: bool) -> int:
         return generate_older(before, installed)
     schema, report = refresh(before, grammar)
     print(report.format())
+    if report.drift_errors:
+        for line in report.drift_errors:
+            print(f"python -m codegen: error: {line}", file=sys.stderr)
+        return 2
     if report.untyped and not allow_untyped:
         print("error: the attributes above cannot be typed precisely; add them to "
               "schema/facts.toml ([[attribute]]) or pass --allow-untyped", file=sys.stderr)
         return 1
     ir.dump(schema)
+    for line in pins.update(schema.mujoco_version):  # noxfile.py reads schema/ itself
+        print(f"pyproject.toml: {line}")
     if bindings.dump(bindings.read_wheel()):
         print("schema/bindings.json: rewritten from the installed mujoco")
     changed = render.write(render.render(schema))
@@ -68,7 +74,18 @@ def render_only() -> int:
 
 
 def check() -> int:
-    files = render.render(ir.load())
+    schema = ir.load()
+    installed = wheel.read_version()
+    if installed != schema.mujoco_version:  # every comparison below would be with another
+        print(f"schema/ describes MuJoCo {schema.mujoco_version}, the installed mujoco is "
+              f"{installed}: pip install -e '.[dev]' installs the pinned release (or "
+              f"`nox -s generate -- --mujoco-version {installed}` moves schema/ and the pins)")
+        return 1
+    problems = pins.disagreements(pins.PYPROJECT.read_text(encoding="utf-8"), installed)
+    if problems:
+        print(f"pyproject.toml: {'; '.join(problems)}; `nox -s generate` moves the pins")
+        return 1
+    files = render.render(schema)
     stale = [name for name, text in sorted(files.items())
              if not (render.GENERATED_DIR / name).exists()
              or (render.GENERATED_DIR / name).read_text(encoding="utf-8") != text]

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import importlib
 import re
+import warnings
 from collections import deque
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
@@ -151,6 +152,11 @@ def site_for(schema: ir.Schema, row_name: str) -> Site | None:
     return Site(tuple(schema.elements[n].tag for n in path), required, holds_bodies)
 
 
+def path_to(schema: ir.Schema, target: str) -> list[str] | None:
+    """The rows from the root down to ``target`` by child edges, outside <default>."""
+    return _path(schema, target)
+
+
 def _path(schema: ir.Schema, target: str) -> list[str] | None:
     parents: dict[str, str | None] = {schema.root: None}
     queue = deque([schema.root])
@@ -213,6 +219,39 @@ class MujocoParser:
         if not isinstance(saved, str):
             raise TypeError("MjSpec.to_xml did not return text")
         return Outcome(saved=saved)
+
+
+UNSAVED = "\0unsaved: "  # ``saved`` of a model the parser read but MuJoCo could not save
+
+
+class SpecParser:
+    """The installed parser, telling apart what it refuses (``error``) from a model it read
+    but cannot compile (``saved`` starts with :data:`UNSAVED`): the reader's verdicts do not
+    need a model that compiles, only the default probe does."""
+
+    def __init__(self) -> None:
+        module = importlib.import_module("mujoco")
+        self._from_string = cast(Callable[[str], object], _get(_get(module, "MjSpec"), "from_string"))
+        self._outcomes: dict[str, Outcome] = {}
+
+    def __call__(self, xml: str) -> Outcome:
+        outcome = self._outcomes.get(xml)
+        if outcome is None:
+            outcome = self._outcomes[xml] = self._load(xml)
+        return outcome
+
+    def _load(self, xml: str) -> Outcome:
+        try:
+            spec = self._from_string(xml)
+        except (ValueError, RuntimeError) as exc:
+            return Outcome(error=str(exc))
+        try:
+            with warnings.catch_warnings():  # deprecated attributes warn when saved
+                warnings.simplefilter("ignore")
+                saved: object = cast(Callable[[], object], _get(spec, "to_xml"))()
+        except (ValueError, RuntimeError) as exc:  # to_xml compiles first
+            return Outcome(saved=UNSAVED + str(exc))
+        return Outcome(saved=str(saved))
 
 
 def _get(obj: object, name: str) -> object:

@@ -24,7 +24,7 @@ import dataclasses
 import re
 from dataclasses import dataclass, field
 
-from codegen import ir, naming, probe
+from codegen import drift, ir, naming, probe
 from codegen.errors import FactsError
 from codegen.facts import AttributeOverride, Facts
 from codegen.passes import (
@@ -63,6 +63,9 @@ class Report:
     removed_enums: list[str] = field(default_factory=list[str])
     changed_enums: list[str] = field(default_factory=list[str])
     untyped: list[str] = field(default_factory=list[str])  # added as strings: fix by hand
+    # types of existing attributes the installed parser disagrees with (codegen.drift)
+    drifted: list[str] = field(default_factory=list[str])  # applied
+    drift_errors: list[str] = field(default_factory=list[str])  # to type in facts.toml
     notes: list[str] = field(default_factory=list[str])  # inferences and oddities to review
     anchors: int = 0  # row and attribute anchors set or changed
 
@@ -81,7 +84,7 @@ class Report:
     def is_empty(self) -> bool:
         """True when the IR already agreed with the wheel (notes do not count)."""
         return (self.version is None and self.anchors == 0 and not self.untyped
-                and not self.changed_rows and not any(lines for _, _, lines in self._sections()))
+                and not self.drifted and not self.drift_errors and not self.changed_rows and not any(lines for _, _, lines in self._sections()))
 
     def format(self) -> str:
         """A readable summary, one change per line, grouped by what changed."""
@@ -101,6 +104,12 @@ class Report:
                        f"({', '.join(self.changed_rows)})")
         if self.anchors:
             out.append(f"anchors: {self.anchors} set or changed")
+        if self.drifted:
+            out.append("types (probed against the installed parser):")
+            out.extend(f"  ~ {line}" for line in self.drifted)
+        if self.drift_errors:
+            out.append("DRIFT that cannot be typed automatically (schema/ not written):")
+            out.extend(f"  ! {line}" for line in self.drift_errors)
         if self.untyped:
             out.append("UNTYPED (added as strings; add [[attribute]] entries to "
                        "schema/facts.toml):")
@@ -194,6 +203,7 @@ class _Sync:
         for row in self._alias_rows():
             self._sync_probed_attributes(row)
         self._apply_enum_facts()
+        self._probe_types()
         self._apply_overrides()
         self._report_committed_untyped()
         self._check_enums()
@@ -631,6 +641,30 @@ class _Sync:
             if name in self.schema.enums:
                 del self.schema.enums[name]
                 self.report.removed_enums.append(name)
+
+    # -- types of existing attributes, probed
+
+    def _probe_types(self) -> None:
+        """Kinds, keyword sets, counts and defaults the installed parser disagrees with
+        (codegen.drift); attributes and enums facts.toml types are left to it."""
+        if self.wheel.drift_parser is None:
+            self.report.notes.append("attribute types not probed (the wheel has no parser)")
+            return
+        hand = {key for key, o in self.overrides.items() if o.kind is not None
+                or o.enum is not None or o.arity is not None or o.default is not None}
+        found = drift.check(self.schema, self.wheel.drift_parser, self.ref, self.wheel.enums,
+                            self.wheel.structs, drift.load_sites(), hand,
+                            {e.name for e in self.enum_facts})
+        for change in found.applied:
+            self.report.drifted.append(change.line())
+            self.touched.add(change.row)
+        for change, fact in found.untypable:
+            self.report.drift_errors.append(f"{change.line()}; type it in schema/facts.toml: "
+                                            f"{fact}")
+        self.report.notes.append(
+            f"attribute types probed: {found.probed} attributes ({found.defaults} defaults "
+            "in a model MuJoCo saves); rows without a probe model "
+            f"that MuJoCo reads (schema/probe.toml): {', '.join(found.rows_skipped) or 'none'}")
 
     # -- hand-kept types on existing attributes
 

@@ -28,7 +28,7 @@ from types import ModuleType
 from typing import Literal, SupportsInt, cast
 
 from codegen import ir
-from codegen.probe import MujocoParser, Parser
+from codegen.probe import MujocoParser, Parser, SpecParser
 
 # ----------------------------------------------------------------------- printSchema tree
 
@@ -365,6 +365,8 @@ class Wheel:
         default_factory=dict[str, Mapping[str, str]])
     # loads MJCF text: sync asks it which attributes rows without a printSchema row take
     parser: Parser | None = None
+    # loads MJCF text telling refusals from models it cannot compile: the drift probe's
+    drift_parser: Parser | None = None
 
 
 def _module(name: str) -> ModuleType:
@@ -451,7 +453,7 @@ def read_reference() -> Reference:
 def read_wheel() -> Wheel:
     """Everything sync reads, from the installed ``mujoco``."""
     return Wheel(read_version(), read_print_schema(), read_enums(), read_reference(),
-                 read_structs(), MujocoParser())
+                 read_structs(), MujocoParser(), SpecParser())
 
 
 # -------------------------------------------------------------------- MjSpec default objects

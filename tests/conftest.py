@@ -36,6 +36,7 @@ SLOW = {
     "codegen/test_facts_errors.py": "the generator's sync, once per mistake",
     "codegen/test_language.py::test_a_new_fact_goes_from_facts_toml_to_the_runtime":
         "the generator, twice, on a copy of the repository",
+    "codegen/test_type_drift.py": "MuJoCo's parser over the schema's attributes (drift probe)",
     "dm_control/test_dm_control_tests.py": "dm_control's own test suite",
     "dm_control/test_parity.py": "dm_control beside typed-mjcf over the corpus",
     "dm_control/test_composer.py::test_environments_with_cameras_run":

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import importlib
 import importlib.metadata
 import importlib.util
 import re
@@ -21,6 +22,15 @@ HEADER = """\
 
 def _version(distribution: str) -> str:
     return importlib.metadata.version(distribution)
+
+
+def _mujoco_version() -> str:
+    """The installed MuJoCo's release, whichever distribution ships the module: ``mujoco``
+    (3.x: the only one) or ``mujoco-core`` (4.x; ``mujoco`` is then a meta-package)."""
+    version: object = getattr(importlib.import_module("mujoco"), "__version__", None)
+    if not isinstance(version, str):
+        raise TypeError("mujoco.__version__ is not a string")
+    return version
 
 
 def stub_path(module: str) -> str:
@@ -73,7 +83,7 @@ class IncompleteStubs(ValueError):
 def build(drafts: dict[str, str] | None = None) -> dict[str, str]:
     """``{path inside mujoco-stubs/: text}`` for the installed ``mujoco``."""
     drafts = sources.draft_stubs() if drafts is None else drafts
-    header = HEADER.format(mujoco=_version("mujoco-core"), mypy=_version("mypy"),
+    header = HEADER.format(mujoco=_mujoco_version(), mypy=_version("mypy"),
                            pybind11_stubgen=_version("pybind11-stubgen"), module="{module}")
     files: dict[str, str] = {}
     problems: list[str] = []

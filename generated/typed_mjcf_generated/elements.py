@@ -228,6 +228,7 @@ __all__ = [
     "Gyro",
     "GyroAttributes",
     "Headlight",
+    "HeadlightActive",
     "HeadlightAttributes",
     "Hfield",
     "HfieldAttributes",
@@ -478,7 +479,7 @@ FalseTrueAuto: TypeAlias = Literal["false", "true", "auto"]
 Fcomp: TypeAlias = Literal["grid", "box", "cylinder", "ellipsoid", "square", "disc", "circle", "mesh", "gmsh", "direct"]
 """The keywords of fcomp."""
 
-Flexeq: TypeAlias = Literal["false", "true", "vert", "strain"]
+Flexeq: TypeAlias = Literal["false", "true", "strain"]
 """The keywords of flexeq."""
 
 Flexself: TypeAlias = Literal["none", "narrow", "bvh", "sap", "auto"]
@@ -495,6 +496,9 @@ Gain: TypeAlias = Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", 
 
 GeomType: TypeAlias = Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
 """The keywords of geomtype."""
+
+HeadlightActive: TypeAlias = Literal["false", "true", "auto"]
+"""The keywords of headlight_active."""
 
 Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 """The keywords of bitflags: tokens combine bitwise, canonical order enforced."""
@@ -2273,7 +2277,7 @@ class Flex(Element):
             A('group', 'int', doc='int; no default (unset when absent).'),
             A('dim', 'int', default='2', doc='int; default "2".'),
             A('radius', 'real', default='0.005', doc='double; default "0.005".'),
-            A('material', 'ref', namespace='material', doc='reference to namespace ``material``; no default (unset when absent).'),
+            A('material', 'string', doc='string; no default (unset when absent).'),
             A('rgba', 'real', dtype='float', arity=(4, 4), default='0.5 0.5 0.5 1', doc='float[4]; default "0.5 0.5 0.5 1".'),
             A('flatskin', 'bool', doc='bool; no default (unset when absent).'),
             A('body', 'string', required=True, doc='string; required. Space-separated body names.'),
@@ -2334,7 +2338,7 @@ class Flexcomp(Element):
             A('point', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
             A('element', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
             A('texcoord', 'real', arity=(0, None), doc='double[] (any length); no default (unset when absent).'),
-            A('material', 'ref', namespace='material', doc='reference to namespace ``material``; no default (unset when absent).'),
+            A('material', 'string', doc='string; no default (unset when absent).'),
             A('rgba', 'real', dtype='float', arity=(4, 4), doc='float[4]; no default (unset when absent).'),
             A('flatskin', 'bool', doc='bool; no default (unset when absent).'),
             A('pos', 'real', arity=(3, 3), doc='double[3]; no default (unset when absent).'),
@@ -2391,7 +2395,7 @@ class FlexcompEdge(Element):
         'edge',
         'flexcomp_edge',
         attributes=(
-            A('equality', 'keyword', keywords=get_args(Flexeq), doc='one of: false, true, vert, strain; no default (unset when absent).'),
+            A('equality', 'keyword', keywords=get_args(Flexeq), doc='one of: false, true, strain; no default (unset when absent).'),
             A('solref', 'real', arity=(1, 2), doc='double[1..2] (1 to 2 values); no default (unset when absent).'),
             A('solimp', 'real', arity=(1, 5), doc='double[1..5] (1 to 5 values); no default (unset when absent).'),
             A('stiffness', 'real', doc='double; no default (unset when absent).'),
@@ -2904,7 +2908,7 @@ class Headlight(Element):
             A('ambient', 'real', dtype='float', arity=(3, 3), default='0.1 0.1 0.1', doc='float[3]; default "0.1 0.1 0.1".'),
             A('diffuse', 'real', dtype='float', arity=(3, 3), default='0.4 0.4 0.4', doc='float[3]; default "0.4 0.4 0.4".'),
             A('specular', 'real', dtype='float', arity=(3, 3), default='0.5 0.5 0.5', doc='float[3]; default "0.5 0.5 0.5".'),
-            A('active', 'int', default='1', bounds=(('>=', 0.0), ('<=', 1.0)), doc='int; default "1"; >= 0 and <= 1.'),
+            A('active', 'keyword', keywords=get_args(HeadlightActive), default='auto', doc='one of: false, true, auto; default "auto".'),
         ),
         anchor='visual-headlight',
     )
@@ -6641,7 +6645,7 @@ class FlexAttributes(TypedDict, total=False):
 
     radius: _t.Real | None
 
-    material: _builtins.str | Material | None
+    material: _builtins.str | None
 
     rgba: Reals4 | None
 
@@ -6711,7 +6715,7 @@ class FlexcompAttributes(TypedDict, total=False):
 
     texcoord: RealsAny | None
 
-    material: _builtins.str | Material | None
+    material: _builtins.str | None
 
     rgba: Reals4 | None
 
@@ -7353,7 +7357,7 @@ class HeadlightAttributes(TypedDict, total=False):
 
     specular: Reals3 | None
 
-    active: _t.Integer | None
+    active: HeadlightActive | _builtins.bool | None
 
 
 class HfieldAttributes(TypedDict, total=False):

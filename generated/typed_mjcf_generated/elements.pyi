@@ -225,6 +225,7 @@ __all__ = [
     "Gyro",
     "GyroAttributes",
     "Headlight",
+    "HeadlightActive",
     "HeadlightAttributes",
     "Hfield",
     "HfieldAttributes",
@@ -475,7 +476,7 @@ FalseTrueAuto: TypeAlias = Literal["false", "true", "auto"]
 Fcomp: TypeAlias = Literal["grid", "box", "cylinder", "ellipsoid", "square", "disc", "circle", "mesh", "gmsh", "direct"]
 """The keywords of fcomp."""
 
-Flexeq: TypeAlias = Literal["false", "true", "vert", "strain"]
+Flexeq: TypeAlias = Literal["false", "true", "strain"]
 """The keywords of flexeq."""
 
 Flexself: TypeAlias = Literal["none", "narrow", "bvh", "sap", "auto"]
@@ -492,6 +493,9 @@ Gain: TypeAlias = Literal["fixed", "affine", "muscle", "dcmotor", "so3", "pid", 
 
 GeomType: TypeAlias = Literal["plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf"]
 """The keywords of geomtype."""
+
+HeadlightActive: TypeAlias = Literal["false", "true", "auto"]
+"""The keywords of headlight_active."""
 
 Inputbit: TypeAlias = Literal["pos", "vel", "ff", "voltage", "pressure"]
 """The keywords of bitflags: tokens combine bitwise, canonical order enforced."""
@@ -4633,7 +4637,7 @@ class Body(_Typed, _Attachable):
         point: RealsAny | None = ...,
         element: RealsAny | None = ...,
         texcoord: RealsAny | None = ...,
-        material: _builtins.str | Material | None = ...,
+        material: _builtins.str | None = ...,
         rgba: Reals4 | None = ...,
         flatskin: _builtins.bool | None = ...,
         pos: Reals3 | None = ...,
@@ -4667,7 +4671,7 @@ class Body(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: reference to namespace ``material``; no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -12929,7 +12933,7 @@ class Deformable(_Typed):
         group: _t.Integer | None = ...,
         dim: _t.Integer | None = ...,
         radius: _t.Real | None = ...,
-        material: _builtins.str | Material | None = ...,
+        material: _builtins.str | None = ...,
         rgba: Reals4 | None = ...,
         flatskin: _builtins.bool | None = ...,
         body: _builtins.str | None = ...,
@@ -12951,7 +12955,7 @@ class Deformable(_Typed):
             group: int; no default (unset when absent).
             dim: int; default "2".
             radius: double; default "0.005".
-            material: reference to namespace ``material``; no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
             flatskin: bool; no default (unset when absent).
             body: string; required. Space-separated body names.
@@ -14910,14 +14914,14 @@ class Flex(_Typed):
         """``radius``: double; default "0.005"."""
 
     @property
-    def material(self) -> _builtins.str | Material | None:
-        """``material``: reference to namespace ``material``; no default (unset when absent).
+    def material(self) -> _builtins.str | None:
+        """``material``: string; no default (unset when absent).
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None:
-        """``material``: reference to namespace ``material``; no default (unset when absent)."""
+    def material(self, value: _builtins.str | None) -> None:
+        """``material``: string; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -15162,7 +15166,7 @@ class Flex(_Typed):
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     @overload
-    def resolve(self, name: Literal["name", "body", "node"]) -> _builtins.str | None:
+    def resolve(self, name: Literal["name", "material", "body", "node"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -15174,9 +15178,6 @@ class Flex(_Typed):
 
     @overload
     def resolve(self, name: Literal["radius"]) -> _builtins.float: ...
-
-    @overload
-    def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
 
     @overload
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
@@ -15412,14 +15413,14 @@ class Flexcomp(_Typed):
         """``texcoord``: double[] (any length); no default (unset when absent)."""
 
     @property
-    def material(self) -> _builtins.str | Material | None:
-        """``material``: reference to namespace ``material``; no default (unset when absent).
+    def material(self) -> _builtins.str | None:
+        """``material``: string; no default (unset when absent).
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
         """
     @material.setter
-    def material(self, value: _builtins.str | Material | None) -> None:
-        """``material``: reference to namespace ``material``; no default (unset when absent)."""
+    def material(self, value: _builtins.str | None) -> None:
+        """``material``: string; no default (unset when absent)."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -15540,7 +15541,7 @@ class Flexcomp(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge
 
         Args:
-            equality: one of: false, true, vert, strain; no default (unset when absent).
+            equality: one of: false, true, strain; no default (unset when absent).
             solref: double[1..2] (1 to 2 values); no default (unset when absent).
             solimp: double[1..5] (1 to 5 values); no default (unset when absent).
             stiffness: double; no default (unset when absent).
@@ -15712,7 +15713,7 @@ class Flexcomp(_Typed):
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     @overload
-    def resolve(self, name: Literal["name"]) -> _builtins.str | None:
+    def resolve(self, name: Literal["name", "material"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -15739,9 +15740,6 @@ class Flexcomp(_Typed):
 
     @overload
     def resolve(self, name: Literal["file"]) -> _builtins.str | _t.Asset | None: ...
-
-    @overload
-    def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
 
     @overload
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array | None: ...
@@ -15922,13 +15920,13 @@ class FlexcompEdge(_Typed):
 
     @property
     def equality(self) -> Flexeq | None:
-        """``equality``: one of: false, true, vert, strain; no default (unset when absent).
+        """``equality``: one of: false, true, strain; no default (unset when absent).
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
         """
     @equality.setter
     def equality(self, value: Flexeq | _builtins.bool | None) -> None:
-        """``equality``: one of: false, true, vert, strain; no default (unset when absent)."""
+        """``equality``: one of: false, true, strain; no default (unset when absent)."""
 
     @property
     def solref(self) -> _t.Float64Array | None:
@@ -16887,7 +16885,7 @@ class Frame(_Typed, _Attachable):
         point: RealsAny | None = ...,
         element: RealsAny | None = ...,
         texcoord: RealsAny | None = ...,
-        material: _builtins.str | Material | None = ...,
+        material: _builtins.str | None = ...,
         rgba: Reals4 | None = ...,
         flatskin: _builtins.bool | None = ...,
         pos: Reals3 | None = ...,
@@ -16921,7 +16919,7 @@ class Frame(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: reference to namespace ``material``; no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -19811,14 +19809,14 @@ class Headlight(_Typed):
         """``specular``: float[3]; default "0.5 0.5 0.5"."""
 
     @property
-    def active(self) -> _builtins.int | None:
-        """``active``: int; default "1"; >= 0 and <= 1.
+    def active(self) -> HeadlightActive | None:
+        """``active``: one of: false, true, auto; default "auto".
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
         """
     @active.setter
-    def active(self, value: _t.Integer | None) -> None:
-        """``active``: int; default "1"; >= 0 and <= 1."""
+    def active(self, value: HeadlightActive | _builtins.bool | None) -> None:
+        """``active``: one of: false, true, auto; default "auto"."""
 
     @overload
     def resolve(self, name: Literal["ambient", "diffuse", "specular"]) -> _t.Float32Array:
@@ -19826,7 +19824,7 @@ class Headlight(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["active"]) -> _builtins.int: ...
+    def resolve(self, name: Literal["active"]) -> HeadlightActive: ...
 
 
 class Hfield(_Typed):
@@ -32890,7 +32888,7 @@ class Visual(_Typed):
         ambient: Reals3 | None = ...,
         diffuse: Reals3 | None = ...,
         specular: Reals3 | None = ...,
-        active: _t.Integer | None = ...,
+        active: HeadlightActive | _builtins.bool | None = ...,
     ) -> Headlight:
         """Add a ``<headlight>`` child and return it.
 
@@ -32900,7 +32898,7 @@ class Visual(_Typed):
             ambient: float[3]; default "0.1 0.1 0.1".
             diffuse: float[3]; default "0.4 0.4 0.4".
             specular: float[3]; default "0.5 0.5 0.5".
-            active: int; default "1"; >= 0 and <= 1.
+            active: one of: false, true, auto; default "auto".
         """
 
     @property
@@ -33712,7 +33710,7 @@ class Worldbody(_Typed, _Attachable):
         point: RealsAny | None = ...,
         element: RealsAny | None = ...,
         texcoord: RealsAny | None = ...,
-        material: _builtins.str | Material | None = ...,
+        material: _builtins.str | None = ...,
         rgba: Reals4 | None = ...,
         flatskin: _builtins.bool | None = ...,
         pos: Reals3 | None = ...,
@@ -33746,7 +33744,7 @@ class Worldbody(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: reference to namespace ``material``; no default (unset when absent).
+            material: string; no default (unset when absent).
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -35657,7 +35655,7 @@ class FlexAttributes(TypedDict, total=False):
 
     radius: _t.Real | None
 
-    material: _builtins.str | Material | None
+    material: _builtins.str | None
 
     rgba: Reals4 | None
 
@@ -35727,7 +35725,7 @@ class FlexcompAttributes(TypedDict, total=False):
 
     texcoord: RealsAny | None
 
-    material: _builtins.str | Material | None
+    material: _builtins.str | None
 
     rgba: Reals4 | None
 
@@ -36369,7 +36367,7 @@ class HeadlightAttributes(TypedDict, total=False):
 
     specular: Reals3 | None
 
-    active: _t.Integer | None
+    active: HeadlightActive | _builtins.bool | None
 
 
 class HfieldAttributes(TypedDict, total=False):

@@ -57,7 +57,6 @@ NOT_DRAWN_IN = {"builtin": frozenset({"mesh"})}  # a builtin mesh requires param
 NOT_DRAWN_IN_DEFAULTS = frozenset({"inheritrange", "dampratio", "gainprm", "biasprm", "dynprm"})
 SPECIAL_VALUES: dict[tuple[str, str], st.SearchStrategy[object]] = {
     ("mesh", "maxhullvert"): st.sampled_from([-1, 4, 5, 100]),
-    ("headlight", "active"): st.sampled_from([0, 1]),
     ("skin", "group"): st.integers(0, 5),
     ("sensor_contact", "num"): st.integers(1, 5),
     # arity 1..3 in the schema, but "attribute 'scale' must have 1 or 3 values"

@@ -275,8 +275,6 @@ FINDINGS: dict[str, str] = {
         "tendon/fixed[0]/joint[0]: required-attribute: <joint> requires the attribute 'coef', which is not set",
     'global-realtime-zero':
         'visual/global: range: <global> realtime="0": expected > 0 (MuJoCo refuses others)',
-    'headlight-active-5':
-        'visual/headlight: range: <headlight> active="5": expected >= 0 and <= 1 (MuJoCo refuses others)',
     'kv-and-dampratio':
         'actuator/position[0]: exclusive: <position> may set at most one of kv | dampratio; it sets kv, dampratio',
     'map-znear-zero':

@@ -155,6 +155,8 @@ TYPE_ONLY_UPWARD = {
                            "the tree's Element, which is built from the rows)",
     ("_base", "_generated.elements"): "the facade's methods return generated classes "
                                       "(RootElement, Body, ...), which subclass it",
+    ("_releases", "_tree"): "restrict() edits the element classes the tree builds from the "
+                            "rows, before any element exists (typed as the tree's Element)",
 }
 
 

@@ -1,0 +1,450 @@
+"""Ask the installed MuJoCo parser whether each attribute still has the type schema/ gives it.
+
+Sync adds and removes attribute *names*; this module checks what the bindings encode about
+an attribute the schema already has, by loading tiny models through the installed parser
+(``MjSpec.from_string``, as :mod:`codegen.probe` does for names) and reading its messages:
+
+* **count**: n values of ``1`` for n around the schema's bounds; the reader says ``attribute
+  'x' does not have enough data`` or ``has too much data`` when n is outside its own;
+* **kind**: an int that takes ``1.5``, a number that is refused (``invalid keyword: '1'``) or a
+  keyword or bool attribute that takes any word is no longer what the schema says;
+* **keywords**: each keyword of the schema's enum, of XMLreference.rst's ``:at-val:`` list and
+  of the bound C enum, one at a time: ``invalid keyword: 'w'`` refuses it;
+* **default**: the model with the attribute set to the schema's default is saved back by
+  ``MjSpec.to_xml`` (which writes values that differ from MuJoCo's defaults) exactly as the
+  model without it; the new default is the documented one when that saves back unchanged;
+* **string lists**: an id, reference or string stored in an ``mj*Vec`` field of its ``mjs``
+  struct (what MjSpec reports) takes several values.
+
+A change that can be typed from what the probe saw (a count, a keyword set, a default) is
+applied; one that cannot (a kind, a keyword set shared by attributes that now differ) is
+listed in :attr:`Drift.untypable` with the ``schema/facts.toml`` entry that types it, and
+``python -m codegen generate`` stops. Attributes and enums that facts.toml sets by hand are
+left to it: the facts record what the parser alone does not say.
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal, cast
+
+from codegen import ir, probe
+from codegen.wheel import AtVal, Reference, parse_at_val
+
+PROBE_SITES = Path(__file__).resolve().parents[1] / "schema" / "probe.toml"
+Verdict = Literal["ok", "short", "long", "bad", "keyword", "unknown"]
+# How far past the schema's bounds counts are tried, and the most values ever tried.
+_COUNT_MARGIN = 2
+_COUNT_CAP = 24
+_VECTOR_TYPES = frozenset({"mjStringVec", "mjIntVec", "mjFloatVec", "mjDoubleVec"})
+# Names: one name, or a list of them when the mjs field is a vector (free text holds either).
+_STRING_KINDS = frozenset({"id", "ref"})
+
+
+def verdict(name: str, value: str, outcome: probe.Outcome) -> Verdict:
+    """What loading ``name="value"`` says about the value (``ok``: the attribute's reader
+    took it, whatever failed later)."""
+    if outcome.error is None:
+        return "ok"
+    message = (outcome.error.strip().splitlines() or [""])[0]
+    quoted = f"'{name}'"
+    if "unrecognized attribute" in message:
+        return "unknown"
+    if "does not have enough data" in message and quoted in message:
+        return "short"
+    if "has too much data" in message and quoted in message:
+        return "long"
+    if "invalid keyword:" in message:  # quotes the value, or "(null)" for flags
+        return "keyword"
+    if quoted in message and ("bad format" in message or "problem reading" in message):
+        return "bad"
+    return "ok"
+
+
+@dataclass(frozen=True)
+class Change:
+    """One attribute whose type the installed MuJoCo no longer agrees with."""
+
+    row: str
+    name: str
+    what: Literal["kind", "keywords", "count", "default"]
+    before: str
+    after: str
+
+    def line(self) -> str:
+        return f"{self.row}@{self.name} {self.what}: {self.before} -> {self.after}"
+
+
+@dataclass
+class Drift:
+    """What the probe found: changes applied, changes to type by hand, and coverage."""
+
+    applied: list[Change] = field(default_factory=list[Change])
+    untypable: list[tuple[Change, str]] = field(default_factory=list[tuple[Change, str]])
+    probed: int = 0  # attributes checked
+    defaults: int = 0  # of them, defaults compared in a model MuJoCo saves
+    rows_skipped: list[str] = field(default_factory=list[str])  # no probe model loads
+
+
+@dataclass
+class _Probe:
+    """One row's probe model and the parser; ``value`` loads the row with one attribute."""
+
+    site: probe.Site
+    parser: probe.Parser
+    baseline: probe.Outcome
+
+    def load(self, name: str, text: str) -> probe.Outcome:
+        xml = self.site.model(name).replace(f'{name}="{probe.PROBE_VALUE}"',
+                                            f'{name}="{_escape(text)}"', 1)
+        return self.parser(xml)
+
+    def verdict(self, name: str, text: str) -> Verdict:
+        return verdict(name, text, self.load(name, text))
+
+
+def _escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace('"', "&quot;").replace("<", "&lt;")
+
+
+def site(schema: ir.Schema, row: str, parser: probe.Parser,
+         extra: Mapping[str, Mapping[str, str]] | None = None) -> _Probe | None:
+    """A probe model for ``row`` that the parser reads: the shortest path to it, each
+    required attribute given a plain value of its kind (a name for references: the reader
+    does not resolve them), bodies on the path named (flexcomp needs it), and ``extra``
+    (tag -> attributes, schema/probe.toml) where a row needs more to be read at all."""
+    path = probe.path_to(schema, row)
+    if path is None:
+        return None
+    required: dict[str, dict[str, str]] = {}
+    for name in path:
+        element = schema.elements[name]
+        attrs = required.setdefault(element.tag, {})
+        for attr in element.attributes:
+            if attr.required:
+                attrs[attr.name] = _plain(attr, schema)
+        attrs.update((extra or {}).get(name, {}))
+    tags = tuple(schema.elements[n].tag for n in path)
+    if "body" in tags[:-1]:
+        required.setdefault("body", {}).setdefault("name", "typedmjcf_body")
+    holds = any(schema.elements[c.element].tag == "body"
+                for c in schema.elements[row].children)
+    found = probe.Site(tags, required, holds)
+    baseline = parser(found.model())
+    return None if baseline.error is not None else _Probe(found, parser, baseline)
+
+
+def load_sites(path: Path = PROBE_SITES) -> dict[str, dict[str, str]]:
+    """schema/probe.toml: row -> the attributes its probe model needs besides required ones."""
+    if not path.exists():
+        return {}
+    raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    out: dict[str, dict[str, str]] = {}
+    for row, attrs in raw.items():
+        if not isinstance(attrs, dict) or not all(
+                isinstance(v, str) for v in cast("dict[str, object]", attrs).values()):
+            raise ValueError(f"{path}: [{row}] must hold attribute = \"text\" lines")
+        out[row] = {str(k): str(v) for k, v in cast("dict[str, object]", attrs).items()}
+    return out
+
+
+def _plain(attr: ir.AttributeDef, schema: ir.Schema) -> str:
+    """A value of the attribute's kind that the reader takes."""
+    if attr.default is not None:
+        return attr.default
+    count = attr.arity[0] if attr.arity is not None and attr.arity[0] > 0 else 1
+    if attr.kind in ("int", "real"):
+        return " ".join(["1"] * count)
+    if attr.kind == "bool":
+        return "false"
+    if attr.kind in ("keyword", "flags") and attr.enum in schema.enums:
+        return schema.enums[attr.enum].keywords[0]
+    return "p"
+
+
+# ------------------------------------------------------------------------------ probing
+
+
+def probe_counts(p: _Probe, attr: ir.AttributeDef) -> tuple[int, int | None] | None:
+    """The value counts the reader takes (``None`` high: more than the cap), or None when it
+    says nothing about counts (it takes every count tried)."""
+    low, high = attr.arity if attr.arity is not None else (1, 1)
+    top = min(_COUNT_CAP, (high if high is not None else max(low, 1)) + _COUNT_MARGIN)
+    verdicts: dict[int, Verdict] = {}
+    for n in range(1, _COUNT_CAP + 1):
+        verdicts[n] = p.verdict(attr.name, " ".join(["1"] * n))
+        bounded = any(v in ("short", "long") for v in verdicts.values())
+        if verdicts[n] == "long" or (n >= top and not bounded):
+            break  # past the last count taken, or the reader does not count
+    if not any(v in ("short", "long") for v in verdicts.values()):
+        return None
+    fits = [n for n, v in verdicts.items() if v not in ("short", "long")]
+    if not fits:
+        return None
+    return min(fits), max(fits) if "long" in verdicts.values() else None
+
+
+def probe_keywords(p: _Probe, attr: ir.AttributeDef, candidates: list[str]) -> list[str]:
+    """The candidates the reader takes as the attribute's value, in candidate order."""
+    return [k for k in candidates if p.verdict(attr.name, k) == "ok"]
+
+
+def candidate_keywords(attr: ir.AttributeDef, schema: ir.Schema, ref: Reference,
+                       enums: Mapping[str, Mapping[str, int]]) -> list[str]:
+    """The schema's keywords, then those XMLreference.rst documents."""
+    words: list[str] = []
+    enum = schema.enums.get(attr.enum or "")
+    if enum is not None:
+        words += enum.keywords
+    documented = _documented(attr, ref)
+    if documented is not None:
+        words += documented.keywords
+    # Not every constant of the C enum: some readers take all of mjtObj and leave the
+    # choice to the compiler (a sensor's reftype), so only a documented keyword is new.
+    return list(dict.fromkeys(words))
+
+
+def _documented(attr: ir.AttributeDef, ref: Reference) -> AtVal | None:
+    text = ref.at_val(attr.anchor) if attr.anchor else None
+    return parse_at_val(text) if text is not None else None
+
+
+def _count_text(arity: tuple[int, int | None] | None) -> str:
+    if arity is None:
+        return "1"
+    low, high = arity
+    return str(low) if low == high else f"{low}..{'' if high is None else high}"
+
+
+def _words(values: list[str]) -> str:
+    return "[" + ", ".join(values) + "]"
+
+
+class _Checker:
+    """Compares every probed attribute of ``schema`` with the parser, editing ``schema``."""
+
+    def __init__(self, schema: ir.Schema, parser: probe.Parser, ref: Reference,
+                 enums: Mapping[str, Mapping[str, int]],
+                 structs: Mapping[str, Mapping[str, str]],
+                 sites: Mapping[str, Mapping[str, str]],
+                 hand: set[tuple[str, str]], hand_enums: set[str]) -> None:
+        self.sites = sites
+        self.schema = schema
+        self.parser = parser
+        self.ref = ref
+        self.enums = enums
+        self.structs = structs
+        self.hand = hand
+        self.hand_enums = hand_enums
+        self.drift = Drift()
+        # enum -> (row, attribute, keywords the parser took) for every probed user
+        self.keyword_sets: dict[str, list[tuple[str, str, list[str]]]] = {}
+
+    def run(self, rows: set[str] | None) -> Drift:
+        for name in sorted(self.schema.elements if rows is None else rows):
+            row = self.schema.elements[name]
+            if row.projection_of is not None or row.alias is not None or not row.attributes:
+                continue
+            p = site(self.schema, name, self.parser, self.sites)
+            if p is None:
+                self.drift.rows_skipped.append(name)
+                continue
+            for attr in list(row.attributes):
+                if (name, attr.name) in self.hand:
+                    continue
+                self.drift.probed += 1
+                self._attribute(p, row, attr)
+        self._enums()
+        return self.drift
+
+    # -- one attribute
+
+    def _attribute(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        if attr.kind in ("int", "real"):
+            if self._numeric_kind(p, row, attr):
+                self._counts(p, row, attr)
+                self._default(p, row, attr)
+        elif attr.kind in ("keyword", "bool", "flags"):
+            if self._keyword_kind(p, row, attr):
+                self._default(p, row, attr)
+        elif attr.kind in _STRING_KINDS:
+            self._string_list(row, attr)
+        elif attr.kind == "string":
+            self._string_kind(p, row, attr)
+
+    def _string_kind(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        """Free text that the reader now reads as numbers or as a keyword."""
+        seen = p.verdict(attr.name, probe.PROBE_VALUE)
+        if seen == "bad":
+            self._kind_changed(row, attr, "a number", 'real", arity = [<count>]')
+        elif seen == "keyword":
+            self._kind_changed(row, attr, "keyword", 'keyword", enum = "<an [[enum]]>')
+
+    def _numeric_kind(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> bool:
+        """False (and an untypable change) when the attribute is no longer a number."""
+        count = attr.arity[0] if attr.arity is not None and attr.arity[0] > 0 else 1
+        ones = " ".join(["1"] * count)
+        if p.verdict(attr.name, ones) == "keyword":
+            return self._kind_changed(row, attr, "keyword", "keyword or flags")
+        documented = _documented(attr, self.ref)
+        if documented is not None and documented.kind in ("keyword", "bool"):
+            words = list(documented.keywords) or ["false", "true"]
+            taken = [w for w in words if p.verdict(attr.name, w) == "ok"]
+            if taken:  # numbers still read, and keywords too (headlight active: 0, auto)
+                fields = (f'keyword", enum = "<an [[enum]] of {", ".join(taken)}>'
+                          + (f'", default = "{documented.default}' if documented.default else ""))
+                return self._kind_changed(row, attr, "keyword " + _words(taken), fields)
+        if attr.kind == "int" and p.verdict(attr.name, " ".join(["1.5"] * count)) == "ok":
+            return self._kind_changed(row, attr, "real", "real")
+        return True
+
+    def _keyword_kind(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> bool:
+        if p.verdict(attr.name, probe.PROBE_VALUE) == "ok" and _saves(p) \
+                and not p.load(attr.name, probe.PROBE_VALUE).saved.startswith(probe.UNSAVED):
+            return self._kind_changed(row, attr, "string", "string")  # not checked late
+        if attr.kind == "bool":
+            words = [w for w in ("false", "true") if p.verdict(attr.name, w) == "ok"]
+            if words != ["false", "true"]:
+                return self._kind_changed(row, attr, "keyword " + _words(words), "keyword")
+            return True
+        if attr.enum in self.hand_enums or attr.alone:
+            return True
+        candidates = candidate_keywords(attr, self.schema, self.ref, self.enums)
+        taken = probe_keywords(p, attr, candidates)
+        self.keyword_sets.setdefault(attr.enum or "", []).append((row.name, attr.name, taken))
+        return True
+
+    def _kind_changed(self, row: ir.ElementDef, attr: ir.AttributeDef, after: str,
+                      kind: str) -> bool:
+        change = Change(row.name, attr.name, "kind", attr.kind, after)
+        self.drift.untypable.append((change, _fact(row.name, attr.name, f'kind = "{kind}"')))
+        return False
+
+    def _counts(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        seen = probe_counts(p, attr)
+        old = attr.arity if attr.arity is not None else (1, 1)
+        if seen is None or seen == old:
+            return
+        if old[1] is not None and old[1] >= _COUNT_CAP and seen[1] is None:
+            return  # more values than the probe tries: as many as it saw
+        new = None if seen == (1, 1) else seen
+        self._apply(row, attr, Change(row.name, attr.name, "count", _count_text(attr.arity),
+                                      _count_text(new)), arity=new)
+
+    def _default(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        if attr.default is None or p.baseline.saved.startswith(probe.UNSAVED):
+            return  # MuJoCo cannot save the probe model: nothing to compare
+        self.drift.defaults += 1
+        if p.load(attr.name, attr.default).saved == p.baseline.saved:
+            return
+        documented = _documented(attr, self.ref)
+        new = documented.default if documented is not None else None
+        if new is not None and p.load(attr.name, new).saved == p.baseline.saved \
+                and p.load(attr.name, new).error is None:
+            self._apply(row, attr, Change(row.name, attr.name, "default", f'"{attr.default}"',
+                                          f'"{new}"'), default=new)
+            return
+        change = Change(row.name, attr.name, "default", f'"{attr.default}"', "(another)")
+        self.drift.untypable.append(
+            (change, _fact(row.name, attr.name, 'default = "<the value MuJoCo uses>"')))
+
+    def _string_list(self, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        c_type = self.structs.get(row.struct or "", {}).get(attr.field or attr.name)
+        if c_type is None:
+            return
+        is_list = c_type in _VECTOR_TYPES
+        if is_list and attr.arity is None:
+            new: tuple[int, int | None] | None = (1, None)
+        elif not is_list and attr.arity is not None:
+            new = None
+        else:
+            return
+        change = Change(row.name, attr.name, "count", _count_text(attr.arity), _count_text(new))
+        # the runtime's id and ref codecs hold one name: a list of them is free text (as
+        # flex@body's bodies), typed by hand; one name again is a ref of a namespace
+        fields = 'kind = "string"' if new is not None else 'kind = "ref", namespace = "<...>"'
+        self.drift.untypable.append((change, _fact(row.name, attr.name, fields)))
+
+    def _apply(self, row: ir.ElementDef, attr: ir.AttributeDef, change: Change,
+               **fields: object) -> None:
+        """Change the attribute and the default-class rows' copies that agreed with it."""
+        old = copy.deepcopy(attr)
+        for target in [row, *self._projections(row.name)]:
+            for index, other in enumerate(target.attributes):
+                if other.name == attr.name and (target is row or _same_type(other, old)):
+                    for key, value in fields.items():
+                        setattr(other, key, value)
+                    target.attributes[index] = other
+        self.drift.applied.append(change)
+
+    def _projections(self, name: str) -> list[ir.ElementDef]:
+        return [r for _, r in sorted(self.schema.elements.items()) if r.projection_of == name]
+
+    # -- keyword sets, once every user of an enum is probed
+
+    def _enums(self) -> None:
+        for enum_name, users in sorted(self.keyword_sets.items()):
+            enum = self.schema.enums.get(enum_name)
+            if enum is None:
+                continue
+            sets = {tuple(taken) for _, _, taken in users}
+            if all(set(t) == set(enum.keywords) for t in sets):
+                continue
+            row, name, taken = users[0]
+            change = Change(row, name, "keywords", _words(enum.keywords), _words(taken))
+            if len({frozenset(t) for t in sets}) > 1 or not taken:
+                lines = "; ".join(f"{r}@{n} {_words(t)}" for r, n, t in users)
+                fact = (f"[[enum]] entries for the keyword sets the users of {enum_name} now "
+                        f"take ({lines}), and [[attribute]] entries naming them")
+                self.drift.untypable.append((change, fact))
+                continue
+            self._set_keywords(enum, taken)
+            self.drift.applied.extend(
+                Change(r, n, "keywords", change.before, change.after) for r, n, _ in users)
+
+    def _set_keywords(self, enum: ir.EnumDef, taken: list[str]) -> None:
+        """Keep the values of kept keywords; bind new ones to the C enum or to integers."""
+        values = dict(enum.values)
+        consts = {c.split("_", 1)[-1].lower(): c for c in self.enums.get(enum.ctype or "", {})}
+        used = [int(v) for v in values.values() if re.fullmatch(r"-?\d+", v)]
+        next_int = max(used, default=-1) + 1
+        out: list[tuple[str, str]] = []
+        for word in taken:
+            if word in values:
+                out.append((word, values[word]))
+            elif word.lower() in consts:
+                out.append((word, consts[word.lower()]))
+            else:
+                out.append((word, str(next_int)))
+                next_int += 1
+        kept = [k for k in enum.keywords if k in taken]
+        order = {k: i for i, k in enumerate(kept)}
+        enum.values = sorted(out, key=lambda kv: order.get(kv[0], len(order)))
+
+
+def _saves(p: _Probe) -> bool:
+    return not p.baseline.saved.startswith(probe.UNSAVED)
+
+
+def _same_type(a: ir.AttributeDef, b: ir.AttributeDef) -> bool:
+    return (a.kind, a.arity, a.enum, a.default) == (b.kind, b.arity, b.enum, b.default)
+
+
+def _fact(row: str, name: str, fields: str) -> str:
+    return (f'[[attribute]] element = "{row}", name = "{name}", {fields}, '
+            'reason = "<what MuJoCo X changed>"')
+
+
+def check(schema: ir.Schema, parser: probe.Parser, ref: Reference,
+          enums: Mapping[str, Mapping[str, int]], structs: Mapping[str, Mapping[str, str]],
+          sites: Mapping[str, Mapping[str, str]],
+          hand: set[tuple[str, str]], hand_enums: set[str],
+          rows: set[str] | None = None) -> Drift:
+    """Probe every attribute of ``schema`` (of ``rows``, when given) that a loading model
+    reaches; ``schema`` is edited for the changes that can be typed."""
+    return _Checker(schema, parser, ref, enums, structs, sites, hand, hand_enums).run(rows)
