@@ -144,7 +144,7 @@ def test_every_codec_writes_a_text_it_kept_as_it_is() -> None:
     ``AttributeSpec.as_is`` fast path): that is what every codec writes for them."""
     checked = 0
     for cls in element_classes().values():
-        for attribute in cls.spec.attributes:
+        for attribute in cls.spec.attributes.values():
             if not attribute.as_is:
                 continue
             codec = attribute.codec

@@ -259,7 +259,7 @@ def test_building_assigning_and_parsing_store_a_value_alike(tag: str) -> None:
     three must store every such value alike."""
     world = mjcf.RootElement().worldbody.add_body()
     checked = 0
-    for attribute in world.spec.children[tag].cls.spec.attributes:
+    for attribute in world.spec.children[tag].cls.spec.attributes.values():
         text = _sample_text(attribute)
         if not attribute.direct or text is None:
             continue
