@@ -224,21 +224,10 @@ class MujocoParser:
 UNSAVED = "\0unsaved: "  # ``saved`` of a model the parser read but MuJoCo could not save
 
 
-class SpecParser:
+class SpecParser(MujocoParser):
     """The installed parser, telling apart what it refuses (``error``) from a model it read
     but cannot compile (``saved`` starts with :data:`UNSAVED`): the reader's verdicts do not
     need a model that compiles, only the default probe does."""
-
-    def __init__(self) -> None:
-        module = importlib.import_module("mujoco")
-        self._from_string = cast(Callable[[str], object], _get(_get(module, "MjSpec"), "from_string"))
-        self._outcomes: dict[str, Outcome] = {}
-
-    def __call__(self, xml: str) -> Outcome:
-        outcome = self._outcomes.get(xml)
-        if outcome is None:
-            outcome = self._outcomes[xml] = self._load(xml)
-        return outcome
 
     def _load(self, xml: str) -> Outcome:
         try:

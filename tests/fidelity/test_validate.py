@@ -18,6 +18,7 @@ from typed_mjcf._validate import (
     validate,
 )
 
+from ..bench.scaling import chain
 from ..operations import growth
 
 
@@ -394,18 +395,6 @@ def test_findings_are_in_document_order_and_the_error_lists_them_all() -> None:
 
 
 def test_validate_is_linear_in_the_number_of_elements() -> None:
-    def chain(n: int) -> mjcf.RootElement:
-        model = mjcf.RootElement()
-        model.default.add_default(class_="c")
-        parent: mjcf.Body | mjcf.Worldbody = model.worldbody
-        for i in range(n):
-            body = parent.add_body(name=f"b{i}", childclass="c")
-            body.add_geom(size=(0.1,), class_="c")
-            body.add_joint(name=f"j{i}")
-            model.actuator.add_motor(joint=f"j{i}")
-            parent = body if i % 50 else model.worldbody
-        return model
-
     def validating(n: int) -> Callable[[], object]:
         model = chain(n)
         return lambda: validate(model)

@@ -18,7 +18,7 @@ import copy
 import importlib
 import os
 import re
-from collections.abc import Generator
+from collections.abc import Generator, Iterator
 from typing import Final, NamedTuple
 
 from lxml import etree
@@ -196,18 +196,28 @@ def _summary(element: Element, folder: str) -> str:
     init = element.get_init_stack()
     out.append(f"  * Element object was created by {_where(init[-1])}" if init else
                "  * Element object was made before debug mode was on")
-    for name, stack in element.get_last_modified_stacks_for_all_attributes().items():
-        value = element.get_attribute_xml_string(name)
-        if not stack:
-            continue
-        if init and stack[-1] == init[-1]:
-            if value is not None:
-                out.append(f'  * {name}="{value}" was set when the element was created')
+    for name, value, stack, at_creation in _changes(element, init):
+        if at_creation:
+            out.append(f'  * {name}="{value}" was set when the element was created')
         elif value is not None:
             out.append(f'  * {name}="{value}" was set by {_where(stack[-1])}')
         else:
             out.append(f"  * {name} was CLEARED by {_where(stack[-1])}")
     return "\n".join(out)
+
+
+def _changes(element: Element, init: list[StackTraceEntry],
+             ) -> Iterator[tuple[str, str | None, list[StackTraceEntry], bool]]:
+    """Each attribute with a recorded change: name, value (None: cleared), the stack of its
+    last change, and whether that was the element's creation (reported only when set)."""
+    for name, stack in element.get_last_modified_stacks_for_all_attributes().items():
+        value = element.get_attribute_xml_string(name)
+        if not stack:
+            continue
+        at_creation = bool(init) and stack[-1] == init[-1]
+        if at_creation and value is None:
+            continue
+        yield name, value, stack, at_creation
 
 
 def dump_full_debug_info(model: ModelRoot, dump_dir: str) -> None:
@@ -258,14 +268,10 @@ def _dump_stacks(f: object, element: Element) -> None:
 
     init = element.get_init_stack()
     stack_lines("Element creation", init)
-    for name, stack in element.get_last_modified_stacks_for_all_attributes().items():
-        value = element.get_attribute_xml_string(name)
-        if not stack:
-            continue
-        if init and stack[-1] == init[-1]:
-            if value is not None:
-                write(f'Attribute {name}="{value}"\n    was set when the element was created'
-                      f"{_SEPARATOR}")
+    for name, value, stack, at_creation in _changes(element, init):
+        if at_creation:
+            write(f'Attribute {name}="{value}"\n    was set when the element was created'
+                  f"{_SEPARATOR}")
         elif value is not None:
             stack_lines(f'Attribute {name}="{value}"', stack)
         else:
