@@ -12,7 +12,7 @@ from codegen.pipeline import refresh
 
 def generate(grammar: Path | None, allow_untyped: bool) -> int:
     before = ir.load() if ir.SCHEMA_PATH.exists() else None
-    installed = releases.installed_version()
+    installed = wheel.read_version()
     if (grammar is None and before is not None
             and releases.version_key(installed) < releases.version_key(before.mujoco_version)):
         return generate_older(before, installed)

@@ -17,6 +17,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+from codegen.releases import version_key
+
 PYPROJECT = Path(__file__).resolve().parents[1] / "pyproject.toml"
 # "mujoco==4.0.0" in the dev extra (the only exact MuJoCo pin of pyproject.toml)
 _DEV_PIN = re.compile(r'"mujoco(?:-core)?==(?P<version>[0-9][0-9.]*)"')
@@ -26,10 +28,6 @@ _RANGE = re.compile(r'"mujoco(?:>=(?P<low>[0-9][0-9.]*),)?<(?P<high>[0-9][0-9.]*
 
 class PinError(ValueError):
     """pyproject.toml does not hold the pins in the form this module rewrites."""
-
-
-def _release(text: str) -> tuple[int, ...]:
-    return tuple(int(part) for part in text.split("."))
 
 
 def read(text: str) -> tuple[str, tuple[str, str]]:
@@ -52,8 +50,8 @@ def moved(text: str, version: str) -> tuple[str, list[str]]:
     if _DEV_PIN.search(text) and (pin != version or '"mujoco-core==' in text):
         text = _DEV_PIN.sub(f'"mujoco=={version}"', text)
         changes.append(f"dev extra: mujoco=={pin} -> mujoco=={version}")
-    if _release(version) >= _release(high):
-        major, minor = _release(version)[:2]
+    if version_key(version) >= version_key(high):
+        major, minor = version_key(version)[:2]
         new_high = f"{major}.{minor + 1}"
         lower = f">={low}," if low else ""
         text = _RANGE.sub(f'"mujoco{lower}<{new_high}"', text)
@@ -67,8 +65,8 @@ def disagreements(text: str, version: str) -> list[str]:
     problems: list[str] = []
     if pin != version or '"mujoco-core==' in text:
         problems.append(f"the dev extra pins {pin}, not mujoco=={version}")
-    below = bool(low) and _release(version) < _release(low)
-    if below or _release(version) >= _release(high):
+    below = bool(low) and version_key(version) < version_key(low)
+    if below or version_key(version) >= version_key(high):
         lower = f">={low}," if low else ""
         problems.append(f"the dependency range mujoco{lower}<{high} leaves out {version}")
     return problems

@@ -135,7 +135,7 @@ def site_for(schema: ir.Schema, row_name: str) -> Site | None:
     """The shortest path of child edges from the root to ``row_name`` (outside <default>),
     with the required attributes along it; None when none leads there or a required
     attribute has no value the probe can make up (a reference, a file)."""
-    path = _path(schema, row_name)
+    path = path_to(schema, row_name)
     if path is None:
         return None
     required: dict[str, dict[str, str]] = {}
@@ -154,10 +154,6 @@ def site_for(schema: ir.Schema, row_name: str) -> Site | None:
 
 def path_to(schema: ir.Schema, target: str) -> list[str] | None:
     """The rows from the root down to ``target`` by child edges, outside <default>."""
-    return _path(schema, target)
-
-
-def _path(schema: ir.Schema, target: str) -> list[str] | None:
     parents: dict[str, str | None] = {schema.root: None}
     queue = deque([schema.root])
     while queue:

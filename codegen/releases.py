@@ -11,7 +11,6 @@ runtime picks the installed release's gates once, at import (``typed_mjcf._relea
 
 from __future__ import annotations
 
-import importlib
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -136,11 +135,3 @@ def notes(result: Gates) -> Notes:
     return {row: {name: availability(having, result.releases) for name, having in attrs.items()}
             for row, attrs in result.attributes.items()}
 
-
-def installed_version() -> str:
-    """The installed ``mujoco``'s release (what ``generate`` syncs with)."""
-    # the codegen extra's; imported here so that rendering needs no MuJoCo
-    version = getattr(importlib.import_module("mujoco"), "__version__", None)
-    if not isinstance(version, str):
-        raise TypeError("mujoco.__version__ is not a string")
-    return version

@@ -222,10 +222,10 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
                notes: releases.Notes | None = None) -> ClassView:
     notes = {} if notes is None else notes  # row -> attribute -> the releases that have it
     mine = notes.get(el.name, {})
-    properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
-                               docs.property_doc(typer, el, a, mine.get(a.name)),
-                               docs.property_doc(typer, el, a, mine.get(a.name)).split("\n")[0])
-                  for a in el.attributes]
+    properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a), doc,
+                               doc.split("\n")[0])
+                  for a in el.attributes
+                  for doc in [docs.property_doc(typer, el, a, mine.get(a.name))]]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     if any(a.name == schema.facts().dclass for a in el.attributes):
         dclass = next(a for a in el.attributes if a.name == schema.facts().dclass)

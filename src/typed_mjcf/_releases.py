@@ -108,11 +108,11 @@ def keyword_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> 
     if by_release is None or not isinstance(value, str):
         return None
     words = value.split() if attribute.kind == "flags" else [value]
+    newest = newest_keywords(spec, attribute)
     for word in words:
         if word in attribute.keywords:
             continue
-        having = tuple(r for r in RELEASES
-                       if word in by_release.get(r, newest_keywords(spec, attribute)))
+        having = tuple(r for r in RELEASES if word in by_release.get(r, newest))
         if having:
             return f"{word!r} {_needs(having)}"
     return None

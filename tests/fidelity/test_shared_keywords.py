@@ -24,7 +24,7 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from codegen import ir
+from codegen import ir, probe
 from typed_mjcf import _tree
 from typed_mjcf._grammar import AttributeSpec, ElementSpec
 from typed_mjcf.errors import MjcfError
@@ -172,22 +172,9 @@ def _references(spec: ElementSpec, probed: AttributeSpec) -> dict[str, str]:
 def _path(row: str) -> tuple[str, ...]:
     """The tags from the root to ``row`` (outside default classes), shortest first."""
     schema = _schema()
-    parents: dict[str, str | None] = {schema.root: None}
-    queue = collections.deque([schema.root])
-    while queue:
-        name = queue.popleft()
-        if name == row:
-            path = [name]
-            while (parent := parents[path[-1]]) is not None:
-                path.append(parent)
-            return tuple(schema.elements[n].tag for n in reversed(path))
-        for edge in schema.elements[name].children:
-            child = schema.elements[edge.element]
-            if edge.element not in parents and child.projection_of is None \
-                    and child.tag != "default":
-                parents[edge.element] = name
-                queue.append(edge.element)
-    raise AssertionError(f"no path from the root to {row}")
+    path = probe.path_to(schema, row)
+    assert path is not None, f"no path from the root to {row}"
+    return tuple(schema.elements[n].tag for n in path)
 
 
 def _required(row: str) -> dict[str, str]:
