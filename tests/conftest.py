@@ -39,6 +39,8 @@ SLOW = {
     "codegen/test_type_drift.py": "MuJoCo's parser over the schema's attributes (drift probe)",
     "dm_control/test_dm_control_tests.py": "dm_control's own test suite",
     "dm_control/test_parity.py": "dm_control beside typed-mjcf over the corpus",
+    "dm_control/test_compat.py::test_dm_controls_own_references_read_alike":
+        "dm_control's own mjcf, in a subprocess",
     "dm_control/test_composer.py::test_environments_with_cameras_run":
         "dm_control's environments with cameras: an image rendered at each of 2000 steps",
     "fidelity/test_corpus_validate.py": "MuJoCo compiles the corpus",

@@ -43,6 +43,7 @@ from typed_mjcf._access import (
     open_regular,
 )
 from typed_mjcf._codecs import Rejected
+from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._releases import note as release_note
@@ -495,6 +496,8 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
         _Builder(context, sources).run(model, node, source)
+        if dm_control_behaviour() and context.options.resolve_references:
+            _tree.resolve_references(model)  # names given before their element (no waiting)
     return model
 
 

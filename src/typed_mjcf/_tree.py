@@ -355,7 +355,7 @@ class Element(_Layout):
             stored = attribute.codec.accept(value)
         except Rejected as rejected:
             raise self._reject(attribute, value, rejected) from None
-        if attribute.is_reference:
+        if attribute.is_reference and not _COMPAT[0]:  # dm_control: a name stays a name
             return _resolve(self, attribute, cast(str, stored))
         return stored
 
@@ -1262,7 +1262,11 @@ def _resolve(element: Element, attribute: AttributeSpec, name: str) -> object:
 
 
 def _wait(element: Element, attribute: AttributeSpec, name: str) -> None:
-    """Link ``attribute`` when an element named ``name`` appears in the element's scope."""
+    """Link ``attribute`` when an element named ``name`` appears in the element's scope
+    (under dm_control's behaviour a name given stays that name: it links only on
+    ``resolve_references()``, which a parse ends with)."""
+    if _COMPAT[0]:
+        return
     namespace = reference_namespace(element, attribute)
     if namespace is not None:
         element._scope.waiting.setdefault((namespace, name), []).append((element, attribute))
@@ -1284,7 +1288,8 @@ def _link_waiting(scope: NameScope, namespace: str, name: str, target: Element) 
 
 def _read_reference(element: Element, attribute: AttributeSpec, stored: object) -> object:
     """A link reads as its element (``None`` once the element is removed), a name as the
-    name (it links when an element of that name appears, or on ``resolve_references()``)."""
+    name (it links when an element of that name appears, or on ``resolve_references()``;
+    under dm_control's behaviour only on ``resolve_references()``)."""
     if isinstance(stored, Element):
         return None if stored._root is None else stored
     return stored
