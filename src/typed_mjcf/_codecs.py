@@ -45,6 +45,9 @@ _DOUBLE = r"[-+]?(?:\d{1,200}(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,2})?"
 _FLOAT = r"[-+]?(?:\d{1,20}(?:\.\d*)?|\.\d+)(?:[eE](?:-\d{1,2}|\+?\d))?"
 _INTEGER = r"[-+]?\d{1,9}"  # at most nine digits: always within 32 bits
 FLOAT32_MAX: Final = float(np.finfo(np.float32).max)
+# What a float attribute (dtype "float" in schema/) expects of each number: MuJoCo's reader
+# refuses a finite one beyond it ("number is too large"), where numpy would make it inf.
+FLOAT32_RANGE: Final = f"within the range of a float32 (magnitude at most {FLOAT32_MAX:.8g})"
 
 # Texts a codec has checked, to accept again without checking: models repeat the same few
 # values ("0 0 1") many times. Bounded, so that reading many distinct values costs no memory.
@@ -371,7 +374,15 @@ def check_float32(value: float) -> None:
     """Refuse a finite number too large for a float32 (MuJoCo: "number is too large"); an
     infinity reaches here only spelled as one (:func:`text_to_float`), and is kept."""
     if math.isfinite(value) and abs(value) > FLOAT32_MAX:
-        raise Rejected("a number within the range of a float32")
+        raise Rejected(f"a number {FLOAT32_RANGE}")
+
+
+def _beyond_float32(value: float | int) -> bool:
+    """Whether a Python number is finite and too large for a float32 (an infinity or NaN
+    is kept, as MuJoCo reads one spelled so; a huge int is compared exactly)."""
+    if -FLOAT32_MAX <= value <= FLOAT32_MAX:
+        return False
+    return not (type(value) is float and not math.isfinite(value))
 
 
 class IntCodec(Codec):
@@ -395,7 +406,10 @@ class RealCodec(Codec):
         self.checked: set[str] = set()
 
     def accept(self, value: object) -> object:
-        return to_float(value)
+        result = to_float(value)
+        if self.single:
+            check_float32(result)
+        return result
 
     def parse(self, text: str) -> object:
         if text in self.checked:
@@ -489,8 +503,8 @@ def _frozen(array: Array) -> Array:
 class ArrayCodec(Codec):
     """A list of numbers of a fixed or bounded length, stored as a read-only numpy array."""
 
-    __slots__ = ("checked", "dtype", "exact_types", "expected", "hi", "is_int", "lo", "pattern",
-                 "single")
+    __slots__ = ("checked", "dtype", "exact_types", "expected", "hi", "in_range", "is_int", "lo",
+                 "pattern", "single")
     lazy = True
 
     def __init__(self, kind: str, dtype: str, lo: int, hi: int | None) -> None:
@@ -500,6 +514,7 @@ class ArrayCodec(Codec):
         self.single = dtype == "float"
         self.exact_types = frozenset({int}) if self.is_int else frozenset({int, float})
         self.expected = f"{count_text(lo, hi)} {'integers' if self.is_int else 'numbers'}"
+        self.in_range = f"{self.expected}, each {FLOAT32_RANGE}"
         number = _INTEGER if self.is_int else _FLOAT if self.single else _DOUBLE
         low, high = max(lo - 1, 0), "" if hi is None else str(max(hi - 1, 0))
         # Possessive ("}+"): the engine keeps no backtracking state per number (an ordinary
@@ -521,6 +536,8 @@ class ArrayCodec(Codec):
                     if type(item) not in exact_types:
                         break
                 else:
+                    if self.single:
+                        self._check_single(items)
                     try:
                         return np.array(items, self.dtype)
                     except OverflowError:
@@ -604,9 +621,7 @@ class ArrayCodec(Codec):
             doubles = np.array([text_to_float(p) for p in parts], dtype=np.float64)
         if self.single:
             if not np.isfinite(doubles).all() or np.abs(doubles).max(initial=0.0) > FLOAT32_MAX:
-                for value in doubles.tolist():
-                    if not -FLOAT32_MAX <= value <= FLOAT32_MAX:
-                        check_float32(value)
+                self._check_single(cast(list[float], doubles.tolist()))
             return _doubles_to_float32(doubles, parts)
         return doubles
 
@@ -623,7 +638,16 @@ class ArrayCodec(Codec):
     def _from_items(self, items: list[object]) -> Array:
         if self.is_int:
             return np.array([to_int(x) for x in items], dtype=self.dtype)
-        return np.array([to_float(x) for x in items], dtype=self.dtype)
+        floats = [to_float(x) for x in items]
+        if self.single:
+            self._check_single(floats)
+        return np.array(floats, dtype=self.dtype)
+
+    def _check_single(self, values: Sequence[object]) -> None:
+        """Refuse numbers a float32 cannot hold (numpy would make them inf, silently)."""
+        for value in values:
+            if _beyond_float32(cast(float, value)):
+                raise Rejected(self.in_range)
 
     def _from_numpy(self, value: Array) -> Array:
         if value.ndim == 0:
@@ -634,6 +658,10 @@ class ArrayCodec(Codec):
         if kind in "iu" or (kind == "f" and not self.is_int):
             if self.is_int and value.size and (value.min() < INT32_MIN or value.max() > INT32_MAX):
                 raise Rejected(f"{self.expected} that fit in 32 bits")
+            if self.single and kind == "f" and value.dtype.itemsize > 4:
+                finite = value[np.isfinite(value)]
+                if finite.size and float(np.abs(finite).max()) > FLOAT32_MAX:
+                    raise Rejected(self.in_range)
             return value.astype(self.dtype)
         if kind == "f":  # floats for an integer attribute: only if none would be truncated
             return self._from_items(cast(list[object], value.tolist()))
