@@ -50,6 +50,8 @@ SLOW = {
     "runtime/test_corpus.py": "the corpus, compiled",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
     "safety/test_fuzz.py": "thousands of mutated models",
+    "safety/test_crashes.py::test_plugins_mujoco_answers_are_not_refused_for_crashing":
+        "MuJoCo in a child process per case",
     "cli/test_diff.py::test_a_model_does_not_differ_from_itself": "the corpus, diffed",
     "cli/test_diff.py::test_an_edit_shows_as_exactly_that_edit": "the corpus, edited",
     "cli/test_diff.py::test_formatting_does_not_show": "the corpus, formatted",

@@ -16,7 +16,7 @@ from typed_mjcf._base import Attachable, Element, ModelRoot
 from typed_mjcf._grammar import AttributeSpec as A
 from typed_mjcf._grammar import ChildSpec as C
 from typed_mjcf._grammar import ElementSpec as S
-from typed_mjcf._language import AttachFacts, FlexcompFacts, GrammarFacts, KeyframeFacts
+from typed_mjcf._language import AttachFacts, ChildNeeds, FlexcompFacts, GrammarFacts, KeyframeFacts
 from typed_mjcf._tree import finish_grammar
 
 __all__ = [
@@ -4749,11 +4749,12 @@ finish_grammar(GrammarFacts(
     replicate_count='count',
     replicate_copy='{name}{sep}{index}',
     copied_with_replicate=frozenset(['actuator', 'contact', 'custom', 'deformable', 'equality', 'sensor', 'tendon']),
-    name_lists={'flex@body': 'body', 'flex@node': 'body'},
+    name_lists={'flex@body': 'body', 'flex@material': 'material', 'flex@node': 'body', 'flexcomp@material': 'material'},
     typed_references={'objname': 'objtype', 'refname': 'reftype'},
     type_namespaces={'xbody': 'body'},
     flexcomp=FlexcompFacts(tag='flexcomp', namespace='body', dof='dof', rigid='rigid', vertex_body='{name}_{vertex}', node_body='{name}_{i}_{j}_{k}', nodes={'quadratic': 3, 'trilinear': 2}),
     keyframe=KeyframeFacts(qpos='qpos', qvel='qvel', act='act', ctrl='ctrl', mpos='mpos', mquat='mquat', time='time'),
+    child_needs={'flexcomp': ChildNeeds(child='plugin', when=(), needs=('plugin', 'instance'), effect='crashes the process compiling it (SIGSEGV)'), 'mesh': ChildNeeds(child='plugin', when=('file',), needs=('instance',), effect='crashes the process compiling it (SIGSEGV)')},
 ))
 
 Integers2: TypeAlias = tuple[_t.Integer, _t.Integer] | _t.NumberList[_t.Integer] | _t.IntArrayLike

@@ -61,6 +61,18 @@ class FlexcompFacts:
 
 
 @dataclass(frozen=True, kw_only=True)
+class ChildNeeds:
+    """A child MuJoCo cannot compile without some attributes when its parent sets others: it
+    crashes (no error to catch), so ``validate()`` refuses the model first."""
+
+    child: str  # the child's tag
+    # the parent's attributes: the need holds when any of them is set (always, if none)
+    when: tuple[str, ...]
+    needs: tuple[str, ...]  # the child's attributes: at least one must be set
+    effect: str  # what MuJoCo does otherwise, for the message
+
+
+@dataclass(frozen=True, kw_only=True)
 class GrammarFacts:
     """Facts about the language as a whole, from ``schema/facts.toml``'s ``[language]``
     (one key per field; a field typed ``X | None`` may be left out)."""
@@ -106,3 +118,5 @@ class GrammarFacts:
     type_namespaces: Mapping[str, str]
     flexcomp: FlexcompFacts | None = None
     keyframe: KeyframeFacts
+    # rows (declaration names) whose child needs attributes when the row sets others
+    child_needs: Mapping[str, ChildNeeds]

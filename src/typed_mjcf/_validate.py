@@ -25,6 +25,7 @@ from typed_mjcf import _tree
 from typed_mjcf._compiled_names import CompiledNames
 from typed_mjcf._export import is_empty_single
 from typed_mjcf._grammar import AttributeSpec, ElementSpec
+from typed_mjcf._language import ChildNeeds
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.errors import InvalidValueError, did_you_mean
 
@@ -32,7 +33,7 @@ Severity = Literal["error", "warning"]
 Rule = Literal[
     "exclusive", "together", "requires", "oneof", "required-attribute", "required-child",
     "range", "unresolved-reference", "default-class", "world-body", "replicate-joint", "self-attach",
-    "replicate-names", "unused-default",
+    "replicate-names", "unused-default", "child-needs",
 ]
 
 RULES: Final[dict[Rule, str]] = {
@@ -51,6 +52,8 @@ RULES: Final[dict[Rule, str]] = {
     "self-attach": "an <attach> without model= (self-attachment) names a body= or frame=",
     "replicate-names": "no named sensor without an object when the model has several <replicate>s",
     "unused-default": "a default class is used by some class= or childclass= (warning)",
+    "child-needs": "a child MuJoCo crashes on without some attributes has them "
+                   "(schema/facts.toml's child_needs)",
 }
 
 # Suggestions ("did you mean") compare a name with every name of its namespace: only the first
@@ -120,6 +123,7 @@ class _Plan:
     required: tuple[AttributeSpec, ...]
     required_children: tuple[str, ...]
     references: tuple[AttributeSpec, ...]
+    name_lists: tuple[AttributeSpec, ...]  # texts listing names, each checked as a reference
     bounded: tuple[AttributeSpec, ...]  # numbers with bounds
 
 
@@ -157,6 +161,7 @@ def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
         required=() if projection else tuple(a for a in spec.attributes.values() if a.required),
         required_children=tuple(c.tag for c in spec.children.values() if c.card == "!"),
         references=spec.references,
+        name_lists=tuple(a for a in spec.attributes.values() if a.name_list is not None),
         bounded=tuple(a for a in spec.attributes.values() if a.bounds),
     )
 
@@ -284,6 +289,9 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
             _check_bounds(state, order, element, attribute)
     if spec.namespace == grammar_facts().class_namespace:
         _declare_class(state, order, element, parent)
+    needs = facts.child_needs.get(spec.row)
+    if needs is not None and not projection:
+        _check_child_needs(state, order, element, attrs, needs)
     if plan.references:
         skipped = _child_model_references(spec, attrs)
         for attribute in plan.references:
@@ -293,6 +301,12 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
             namespace = _tree.reference_namespace(element, attribute)
             if namespace is not None and namespace in state.namespaces:
                 _check_reference(state, order, element, attribute.name, namespace, value)
+    for attribute in plan.name_lists:
+        value = attrs.get(attribute.name)
+        if isinstance(value, str) and attribute.name_list in state.namespaces:
+            for name in value.split():
+                _check_reference(state, order, element, attribute.name,
+                                 cast(str, attribute.name_list), name)
     if tag == facts.replicate:
         state.replicates += 1
     elif (parent is not None and parent.spec.tag == facts.sensor_section and spec.namespace
@@ -356,6 +370,37 @@ def _check_constraint(state: _Pass, order: int, element: Element, attrs: Mapping
 
 _KEEPS: Final[dict[str, Callable[[float, float], bool]]] = {
     ">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le}
+
+
+def _check_child_needs(state: _Pass, order: int, element: Element, attrs: Mapping[str, object],
+                       needs: ChildNeeds) -> None:
+    """The children of ``element`` that MuJoCo crashes on without attributes they lack."""
+    given = [name for name in needs.when if name in attrs]
+    if needs.when and not given:
+        return
+    for child in _tree.children(element):
+        if child.spec.tag != needs.child or not _is_written(element, child):
+            continue
+        if not any(name in _tree.values(child) for name in needs.needs):
+            with_given = f" with {', '.join(n + '=' for n in given)}" if given else ""
+            state.add(order, child, "child-needs",
+                      f"a <{needs.child}> in a <{element.spec.tag}>{with_given} needs "
+                      f"{' or '.join(n + '=' for n in needs.needs)}: without, MuJoCo "
+                      f"{needs.effect}")
+
+
+def ensure_no_crash(model: ModelBase) -> None:
+    """Raise :class:`ValidationError` for what would crash MuJoCo (``child_needs``), in
+    ``model`` and the models attached to it: for the routes that compile a model without
+    validating it (a composed model's keyframes)."""
+    state = _Pass(model, _namespaces())
+    rules = grammar_facts().child_needs
+    for order, element in enumerate(_tree.iter_composed(model, True)):
+        needs = rules.get(element.spec.row)
+        if needs is not None:
+            _check_child_needs(state, order, element, _tree.values(element), needs)
+    if state.found:
+        raise ValidationError(state.findings())
 
 
 def _check_bounds(state: _Pass, order: int, element: Element,

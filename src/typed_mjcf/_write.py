@@ -17,6 +17,7 @@ from typed_mjcf._keyframes import combine_keyframes, compile_layout, has_keyfram
 from typed_mjcf._names import NameScope
 from typed_mjcf._parse import ParseOptions, is_model_text, parse_text
 from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf._validate import ensure_no_crash
 from typed_mjcf._xmltext import serialize
 
 NO_ATTRIBUTES: Final[frozenset[str]] = frozenset()
@@ -62,6 +63,7 @@ def _model_text(writer: Writer, element: ModelBase, collected: CollectedFiles | 
     with collector_paused():
         node = writer.model(element)
         if has_keyframes(writer):
+            ensure_no_crash(element)  # MuJoCo compiles it below: nothing that crashes it
             if collected is None:  # the layout is compiled from memory: files by flat names
                 collected = collect(element)
                 layout = Writer(element, DEFAULT_FORMAT, collected.name_of,

@@ -31,6 +31,13 @@ CASES: dict[str, str] = {
                                     'reftype="body"/></sensor>'),
     "replicate-count": doc('<worldbody><replicate><geom size="1"/></replicate></worldbody>'),
     "undefined-class": doc('<worldbody><geom class="nope" size="1"/></worldbody>'),
+    "flexcomp-unknown-material": doc('<asset><material name="red"/></asset><worldbody><flexcomp '
+                                     'type="grid" count="2 2 1" spacing="1 1 1" dim="2" '
+                                     'name="f" material="red nope"/></worldbody>'),
+    "flex-unknown-material": doc('<worldbody><body name="b1"/><body name="b2"/><body '
+                                 'name="b3"/></worldbody><deformable><flex name="f" dim="2" '
+                                 'body="b1 b2 b3" vertex="0 0 0 1 0 0 0 1 0" element="0 1 2" '
+                                 'material="nope"/></deformable>'),
     "undefined-childclass": doc('<worldbody><frame childclass="nope"/></worldbody>'),
     "nested-default-without-class": doc('<default><default/></default>'),
     "renamed-main-class": doc('<default class="base"/>'),
@@ -203,6 +210,8 @@ MESSAGES: dict[str, str] = {
     'text-data': 'text field cannot be empty',
     'undefined-childclass': 'unknown default childclass',
     'undefined-class': "unknown default class name 'nope'",
+    'flexcomp-unknown-material': "unknown material 'nope' in flex",
+    'flex-unknown-material': "unknown material 'nope' in flex",
     'user-sensor-dim': "required attribute missing: 'dim'",
     'zero-quaternion': 'zero quaternion is not allowed',
     'number-with-underscore': "bad format in attribute 'pos'",
@@ -315,6 +324,10 @@ FINDINGS: dict[str, str] = {
         "custom/text[t]: required-attribute: <text> requires the attribute 'data', which is not set",
     'user-sensor-dim':
         "sensor/user[0]: required-attribute: <user> requires the attribute 'dim', which is not set",
+    'flexcomp-unknown-material':
+        "worldbody/flexcomp[f]: unresolved-reference: material='nope' names no material in the model",
+    'flex-unknown-material':
+        "deformable/flex[f]: unresolved-reference: material='nope' names no material in the model",
 }
 
 
