@@ -496,8 +496,10 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
         _Builder(context, sources).run(model, node, source)
-        if dm_control_behaviour() and context.options.resolve_references:
-            _tree.resolve_references(model)  # names given before their element (no waiting)
+        if dm_control_behaviour():  # as dm_control's parser: files name meshes..., then the
+            _tree.name_after_files(model)  # references are resolved (nothing waits for a name)
+            if context.options.resolve_references:
+                _tree.resolve_references(model)
     return model
 
 
