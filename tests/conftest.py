@@ -50,6 +50,8 @@ SLOW = {
     "runtime/test_corpus.py": "the corpus, compiled",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
     "safety/test_fuzz.py": "thousands of mutated models",
+    "render/test_gl.py::test_physics_render_after_mujoco_chose_glfw_says_to_set_mujoco_gl_first":
+        "MuJoCo's renderer in a subprocess",
     "safety/test_crashes.py::test_plugins_mujoco_answers_are_not_refused_for_crashing":
         "MuJoCo in a child process per case",
     "cli/test_diff.py::test_a_model_does_not_differ_from_itself": "the corpus, diffed",

@@ -15,6 +15,7 @@ import importlib
 import importlib.util
 import os
 import platform
+import sys
 import threading
 from typing import Final, Protocol, cast
 
@@ -152,6 +153,17 @@ def _no_backend_message(wanted: str, tried: tuple[str, ...], reasons: list[str])
             f"{'; '.join(reasons)}); {advice}")
 
 
+def _mujocos_back_end() -> str | None:
+    """The back end MuJoCo's renderer chose when ``mujoco`` was imported (``glfw`` when
+    MUJOCO_GL was unset then), if it is known."""
+    chooser = sys.modules.get("mujoco.rendering.classic.gl_context")
+    cls = getattr(chooser, "GLContext", None)
+    module = getattr(cls, "__module__", None)
+    if not isinstance(module, str) or not module.startswith("mujoco."):
+        return None
+    return module.split(".")[1]
+
+
 def _one_line(error: BaseException) -> str:
     text = " ".join(str(error).split()) or type(error).__name__
     return text if len(text) <= 200 else text[:197] + "..."
@@ -161,6 +173,15 @@ def gl_error(error: BaseException) -> RenderError:
     """What a failure to make an OpenGL context (outside :func:`gl_context`) says, as one
     error naming the back end and what to do."""
     backend = os.environ.get("MUJOCO_GL", "").strip().lower() or "glfw (MuJoCo's default)"
+    taken = _mujocos_back_end()
+    if taken is not None and taken != backend:
+        # mujoco.Renderer makes the context MuJoCo chose when it was imported: too late now
+        return RenderError(f"cannot render: mujoco was imported before MUJOCO_GL={backend} "
+                           f"was set, so its renderer uses {taken}: {_one_line(error)}; set "
+                           f"MUJOCO_GL before anything imports mujoco (before Python starts: "
+                           f"MUJOCO_GL=egl python ..., or os.environ['MUJOCO_GL'] = 'egl' "
+                           f"first in the script): egl renders without a display (a GPU, or "
+                           f"Mesa's EGL on the CPU), osmesa on the CPU, glfw with a display")
     return RenderError(f"cannot render: MuJoCo could not make an OpenGL context with "
                        f"MUJOCO_GL={backend}: {_one_line(error)}; set MUJOCO_GL before "
                        f"Python starts: egl renders without a display (a GPU, or Mesa's EGL "

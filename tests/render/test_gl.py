@@ -38,6 +38,34 @@ def test_headless_by_default_even_after_mujoco_chose_glfw() -> None:
     assert result.stdout.split() == ["egl", "(48,", "64,", "3)", "True"]
 
 
+def test_physics_render_after_mujoco_chose_glfw_says_to_set_mujoco_gl_first() -> None:
+    """``Physics.render`` draws with ``mujoco.Renderer``, whose back end MuJoCo chose when it
+    was imported (GLFW, with MUJOCO_GL unset then): the error says so and what to set, once
+    (no OpenGL traceback)."""
+    script = textwrap.dedent("""
+        import mujoco
+        import typed_mjcf as mjcf
+        model = mjcf.RootElement()
+        model.worldbody.add_geom(size=(1,))
+        physics = mjcf.Physics.from_mjcf_model(model)
+        try:
+            physics.render(32, 32)
+        except mjcf.RenderError as error:
+            print(error)
+    """)
+    env = {k: v for k, v in os.environ.items() if k not in ("MUJOCO_GL", "DISPLAY",
+                                                            "PYOPENGL_PLATFORM")}
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                            env=env, check=False, timeout=120)
+    assert result.returncode == 0, result.stderr
+    message = result.stdout.strip()
+    assert message.startswith("cannot render: mujoco was imported before MUJOCO_GL=egl was "
+                              "set, so its renderer uses glfw: "), message
+    assert "set MUJOCO_GL before anything imports mujoco" in message
+    assert "MUJOCO_GL=egl python" in message and "osmesa on the CPU" in message
+    assert len(message.splitlines()) == 1
+
+
 @pytest.fixture
 def unchosen(monkeypatch: pytest.MonkeyPatch) -> pytest.MonkeyPatch:
     """The process as if no back end had been chosen yet (restored afterwards)."""
