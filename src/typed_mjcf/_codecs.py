@@ -377,7 +377,7 @@ def check_float32(value: float) -> None:
         raise Rejected(f"a number {FLOAT32_RANGE}")
 
 
-def _beyond_float32(value: float | int) -> bool:
+def _beyond_float32(value: float) -> bool:
     """Whether a Python number is finite and too large for a float32 (an infinity or NaN
     is kept, as MuJoCo reads one spelled so; a huge int is compared exactly)."""
     if -FLOAT32_MAX <= value <= FLOAT32_MAX:

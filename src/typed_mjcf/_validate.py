@@ -302,11 +302,10 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
             if namespace is not None and namespace in state.namespaces:
                 _check_reference(state, order, element, attribute.name, namespace, value)
     for attribute in plan.name_lists:
-        value = attrs.get(attribute.name)
-        if isinstance(value, str) and attribute.name_list in state.namespaces:
+        value, listed = attrs.get(attribute.name), attribute.name_list
+        if isinstance(value, str) and listed is not None and listed in state.namespaces:
             for name in value.split():
-                _check_reference(state, order, element, attribute.name,
-                                 cast(str, attribute.name_list), name)
+                _check_reference(state, order, element, attribute.name, listed, name)
     if tag == facts.replicate:
         state.replicates += 1
     elif (parent is not None and parent.spec.tag == facts.sensor_section and spec.namespace

@@ -11,7 +11,6 @@ import sys
 import textwrap
 from collections.abc import Iterator
 from pathlib import Path
-from typing import cast
 
 import mujoco
 import numpy as np
@@ -22,7 +21,7 @@ from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._dmcompat import debugging, installed
 
 from ..runtime.test_io import box_stl
-from . import harness
+from . import harness, references
 
 
 @pytest.fixture
@@ -278,56 +277,15 @@ def test_meshes_without_a_name_are_named_after_their_file(dm: None) -> None:
 
 # ---------------------------------------------------------------------------- references
 
-# dm_control's Reference attribute (mjcf/attribute.py): a name given reads back as that name,
-# links only on resolve_references() (a parse ends with one), and stays that name when an
-# element of it is renamed, removed or added later; an element given reads back as the
-# element, renamed or not, and as None once removed. Run as typed-mjcf (switch on) and, in a
-# subprocess, as dm_control's own mjcf.
-REFERENCES = textwrap.dedent("""
-    def references(mjcf):
-        model = mjcf.RootElement()
-        b = model.worldbody.add("body", name="b")
-        exclude = model.contact.add("exclude", body1="b", body2="c")
-        c = model.worldbody.add("body", name="c")
-        seen = [exclude.body1, exclude.body2]
-        exclude.body1 = b
-        seen.append(exclude.body1 is b)
-        b.name = "b2"
-        seen += [exclude.body1 is b, exclude.get_attribute_xml_string("body1")]
-        c.name = "c2"
-        seen += [exclude.body2, exclude.get_attribute_xml_string("body2")]
-        model.resolve_references()
-        seen.append(exclude.body2)
-        exclude.body2 = "c2"
-        seen.append(exclude.body2)
-        model.resolve_references()
-        seen.append(exclude.body2 is c)
-        by_name = model.worldbody.add("camera", target="c2")
-        by_element = model.worldbody.add("camera", target=c)
-        c.remove()
-        seen += [by_name.target, by_element.target]
-        parsed = mjcf.from_xml_string(
-            '<mujoco><worldbody><body name="x"/></worldbody><contact><exclude body1="x" '
-            'body2="y"/></contact><worldbody><body name="y"/></worldbody></mujoco>')
-        exclude = parsed.contact.exclude[0]
-        seen.append([exclude.body1 is parsed.worldbody.body[0],
-                     exclude.body2 is parsed.worldbody.body[1]])
-        return seen
-""")
-DM_CONTROL_REFERENCES = ["b", "c", True, True, "b2", "c", "c", "c", "c2", True, "c2", None,
-                         [True, True]]
+# dm_control's semantics of references: tests/dm_control/references.py
 
 
 def _references() -> list[object]:
-    namespace: dict[str, object] = {}
-    exec(REFERENCES, namespace)
-    scenario = namespace["references"]
-    assert callable(scenario)
-    return cast(list[object], scenario(mjcf))
+    return references.references(mjcf)
 
 
 def test_a_reference_given_by_name_reads_as_that_name(dm: None) -> None:
-    assert _references() == DM_CONTROL_REFERENCES
+    assert _references() == references.DM_CONTROL
 
 
 def test_typed_references_link_to_their_element() -> None:
@@ -341,14 +299,15 @@ def test_typed_references_link_to_their_element() -> None:
 
 @pytest.mark.skipif(harness.mjcf_folder() is None, reason="dm_control is not installed")
 def test_dm_controls_own_references_read_alike() -> None:
-    code = REFERENCES + textwrap.dedent("""
+    code = textwrap.dedent("""
         from dm_control import mjcf
+        from tests.dm_control.references import references
         print(repr(references(mjcf)))
     """)
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          timeout=300, check=False)
+                          cwd=Path(__file__).resolve().parents[2], timeout=300, check=False)
     assert done.returncode == 0, done.stderr
-    assert done.stdout.strip().splitlines()[-1] == repr(DM_CONTROL_REFERENCES)
+    assert done.stdout.strip().splitlines()[-1] == repr(references.DM_CONTROL)
 
 
 # ---------------------------------------------------------------------------- defaults

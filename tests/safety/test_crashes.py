@@ -28,12 +28,13 @@ _TORUS = '<extension><plugin plugin="mujoco.sdf.torus"><instance name="t"/></plu
 REFUSED: dict[str, tuple[str, tuple[str, ...]]] = {
     "mesh-file-plugin": ('<asset><mesh file="box.stl"><plugin/></mesh></asset>',
                          ("child-needs", "oneof")),
-    "mesh-file-plugin-named": ('<asset><mesh file="box.stl"><plugin plugin="mujoco.sdf.torus"/>'
-                               '</mesh></asset>', ("child-needs",)),
-    "mesh-file-plugin-declared": (_TORUS + '<asset><mesh file="box.stl"><plugin '
-                                  'plugin="mujoco.sdf.torus"/></mesh></asset>', ("child-needs",)),
-    "mesh-file-plugin-config": ('<asset><mesh file="box.stl"><plugin plugin="x"><config key="a" '
-                                'value="1"/></plugin></mesh></asset>', ("child-needs",)),
+    "mesh-file-plugin-named": (('<asset><mesh file="box.stl"><plugin '
+                                'plugin="mujoco.sdf.torus"/></mesh></asset>'), ("child-needs",)),
+    "mesh-file-plugin-declared": ((_TORUS + '<asset><mesh file="box.stl"><plugin '
+                                   'plugin="mujoco.sdf.torus"/></mesh></asset>'),
+                                  ("child-needs",)),
+    "mesh-file-plugin-config": (('<asset><mesh file="box.stl"><plugin plugin="x"><config '
+                                 'key="a" value="1"/></plugin></mesh></asset>'), ("child-needs",)),
     "flexcomp-plugin": (f"<worldbody><flexcomp {_GRID}><plugin/></flexcomp></worldbody>",
                         ("child-needs", "oneof")),
     "flexcomp-plugin-config": ((f'<worldbody><flexcomp {_GRID}><plugin><config key="a" '
@@ -158,8 +159,8 @@ def test_check_compile_reports_a_crash_as_a_finding(stl: Path,
     fine.write_text('<mujoco><asset><mesh file="box.stl"/></asset></mujoco>')
     assert main(["check", "--compile", str(model), str(fine)]) == 1
     assert capsys.readouterr().out.splitlines() == [
-        f"{model}:1: child-needs: asset/mesh[0]/plugin[0]: a <plugin> in a <mesh> with file= "
-        "needs instance=: without, MuJoCo crashes the process compiling it (SIGSEGV)",
+        (f"{model}:1: child-needs: asset/mesh[0]/plugin[0]: a <plugin> in a <mesh> with "
+         "file= needs instance=: without, MuJoCo crashes the process compiling it (SIGSEGV)"),
         "checked 2 files: 1 error, 0 warnings"]
     report = compile_problem(mjcf.from_path(str(model)), str(model))
     assert report is not None
