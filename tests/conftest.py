@@ -46,6 +46,8 @@ SLOW = {
     "fidelity/test_round_trip.py": "round trips of the corpus",
     "fidelity/test_properties.py": "hypothesis",
     "runtime/test_corpus.py": "the corpus, compiled",
+    "runtime/test_release_driven.py": "the release tests again, in a fresh interpreter per "
+                                      "older release",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
     "safety/test_fuzz.py": "thousands of mutated models",
     "cli/test_diff.py::test_a_model_does_not_differ_from_itself": "the corpus, diffed",
