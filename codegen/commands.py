@@ -7,7 +7,8 @@ import sys
 from pathlib import Path
 
 from codegen import bindings, ir, mujoco_stubs, pins, releases, render, wheel
-from codegen.pipeline import refresh
+from codegen.facts import load_facts
+from codegen.pipeline import refresh, sync_schema
 
 
 def generate(grammar: Path | None, allow_untyped: bool) -> int:
@@ -43,14 +44,16 @@ def generate_older(newest: ir.Schema, installed: str) -> int:
     installed wheel) into schema/releases/<version>.json, then generated/ (whose release
     gates it changes). schema/mjcf.json, the bindings and the mujoco stubs stay the newest's:
     the typing surface is one."""
-    schema, report = refresh(newest, None, older=True)
+    facts = releases.release_facts(load_facts(), installed)
+    path = releases.release_path(installed)
+    previous = ir.load(path) if path.exists() else None
+    schema, report = sync_schema(releases.with_keywords_of(newest, previous), facts, older=True)
     print(report.format())
     if report.untyped:
         print(f"(MuJoCo {installed} is older than the typing surface, {newest.mujoco_version}: "
-              "only which attributes, children and keywords it has is used; the attributes "
-              "above stay untyped)")
+              "which attributes, children and keywords it has and how it types them is used; "
+              "the attributes above, of rows the typing surface lacks, stay untyped)")
     releases.RELEASES_DIR.mkdir(exist_ok=True)
-    path = releases.release_path(installed)
     ir.dump(schema, path)
     print(f"{path.relative_to(ir.SCHEMA_DIR.parent)}: MuJoCo {installed}, "
           f"{len(schema.elements)} rows, "

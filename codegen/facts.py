@@ -341,6 +341,12 @@ def _bounds(value: object, where: str) -> tuple[str, ...]:
 _OVERRIDE_KEYS = frozenset(f.name for f in dataclasses.fields(AttributeOverride))
 
 
+def attribute_entry(value: object, where: str) -> AttributeOverride:
+    """One ``[[attribute]]`` entry, as facts.toml holds them (schema/releases/facts.toml
+    holds them too, per release: codegen/releases.py)."""
+    return _override(value, where)
+
+
 def _override(value: object, where: str) -> AttributeOverride:
     entry = _keyed_table(value, where, _OVERRIDE_KEYS, ("element", "name", "reason"))
 

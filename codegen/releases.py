@@ -5,21 +5,36 @@ grammar is ``schema/releases/<version>.json``, the same IR as ``python -m codege
 writes under that MuJoCo (the newest schema synced with the older wheel; never edited by
 hand). :func:`gates` compares them with the newest and :func:`render_table` writes the
 result as ``generated/typed_mjcf_generated/releases.py``: per row, the attributes and children
-not every release has (the releases that have them), and the keyword sets that differ. The
-runtime picks the installed release's gates once, at import (``typed_mjcf._releases``).
+not every release has (the releases that have them), the keyword sets that differ, and the
+attributes whose type differs (kind, number type, value count, keywords, default or
+namespace: what codegen/drift.py probes). The runtime picks the installed release's gates
+once, at import (``typed_mjcf._releases``).
 """
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import re
+import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import cast
 
 from codegen import ir
+from codegen.errors import FactsError
+from codegen.facts import AttributeOverride, Facts, attribute_entry
 
 RELEASES_DIR = ir.SCHEMA_DIR / "releases"
+# [[attribute]] entries (facts.toml's) that hold for the releases before ``until`` instead of
+# facts.toml's entry for that attribute (which types the newest): what the probe cannot type
+RELEASE_FACTS = RELEASES_DIR / "facts.toml"
 
 Releases = tuple[str, ...]
+# An attribute's type in one release: AttributeSpec's keyword arguments (kind, dtype, arity,
+# keywords, default, namespace; those unset left out). Bounds and ``required`` are not here:
+# the probe does not measure them, so the newest's stand for every release.
+TypeFields = dict[str, object]
 
 
 def version_key(version: str) -> tuple[int, ...]:
@@ -29,6 +44,53 @@ def version_key(version: str) -> tuple[int, ...]:
 
 def release_path(version: str, directory: Path = RELEASES_DIR) -> Path:
     return directory / f"{version}.json"
+
+
+def release_facts(facts: Facts, version: str, path: Path = RELEASE_FACTS) -> Facts:
+    """``facts`` for an older ``version``: schema/releases/facts.toml's entries for releases
+    before their ``until`` replace facts.toml's entries for the same attributes."""
+    if not path.exists():
+        return facts
+    try:
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as exc:
+        raise FactsError(f"{path}: {exc}") from None
+    entries = raw.get("attribute", [])
+    if set(raw) - {"attribute"} or not isinstance(entries, list):
+        raise FactsError(f"{path}: expected [[attribute]] entries only")
+    older: list[AttributeOverride] = []
+    for at, entry in enumerate(cast("list[object]", entries), 1):
+        where = f"{path}: [[attribute]] #{at}"
+        if not isinstance(entry, dict) or not isinstance(
+                until := cast("dict[str, object]", entry).get("until"), str):
+            raise FactsError(f'{where}: expected until = "<the first release it does not '
+                             'hold for>"')
+        rest = {k: v for k, v in cast("dict[str, object]", entry).items() if k != "until"}
+        if version_key(version) < version_key(until):
+            older.append(attribute_entry(rest, where))
+    replaced = {(o.element, o.name) for o in older}
+    return dataclasses.replace(facts, attributes=[
+        *(o for o in facts.attributes if (o.element, o.name) not in replaced), *older])
+
+
+def with_keywords_of(newest: ir.Schema, previous: ir.Schema | None) -> ir.Schema:
+    """``newest`` with the keywords ``previous`` (the release file being regenerated) has in
+    its enums of the same name added: candidates for the drift probe, which keeps those the
+    release's reader takes (a keyword a later release dropped is in no newer source)."""
+    if previous is None:
+        return newest
+    found = copy.deepcopy(newest)
+    for name, enum in found.enums.items():
+        old = previous.enums.get(name)
+        if old is None:
+            continue
+        known = set(enum.keywords)
+        extra = [(k, v) for k, v in old.values if k not in known]
+        if extra:  # in the previous file's order, the newest's after
+            order = {k: i for i, k in enumerate(old.keywords)}
+            enum.values = sorted([*enum.values, *extra],
+                                 key=lambda kv: order.get(kv[0], len(order)))
+    return found
 
 
 def load_releases(directory: Path = RELEASES_DIR) -> dict[str, ir.Schema]:
@@ -49,6 +111,11 @@ class Gates:
     # row -> attribute -> release -> its keywords (only where they differ from the newest's)
     keywords: dict[str, dict[str, dict[str, tuple[str, ...]]]] = field(
         default_factory=lambda: {})
+    # row -> child tag -> the older releases where the row takes it, for children whose
+    # rows only older releases have (<composite>): the newest has no class for them
+    removed: dict[str, dict[str, Releases]] = field(default_factory=lambda: {})
+    # row -> attribute -> release -> its type (only where more than the keywords differ)
+    types: dict[str, dict[str, dict[str, TypeFields]]] = field(default_factory=lambda: {})
 
     def attribute_releases(self, row: str, attribute: str) -> Releases | None:
         """The releases that have ``row``'s ``attribute``, or None when all do."""
@@ -59,6 +126,37 @@ def _keywords(schema: ir.Schema, a: ir.AttributeDef) -> tuple[str, ...]:
     if a.enum is None or a.enum not in schema.enums:
         return ()
     return tuple(schema.enums[a.enum].keywords)
+
+
+def type_fields(schema: ir.Schema, a: ir.AttributeDef) -> TypeFields:
+    """What the runtime's AttributeSpec is built from, for ``a`` as ``schema`` types it."""
+    found: TypeFields = {"kind": a.kind}
+    if a.dtype is not None and a.dtype != ("int" if a.kind == "int" else "double"):
+        found["dtype"] = a.dtype
+    if a.arity is not None:
+        found["arity"] = tuple(a.arity)
+    words = _keywords(schema, a)
+    if words:
+        found["keywords"] = words
+    if a.default is not None:
+        found["default"] = a.default
+    if a.namespace is not None:
+        found["namespace"] = a.namespace
+    return found
+
+
+def type_row(fields: TypeFields) -> tuple[object, ...]:
+    """``fields`` as the generated table holds them (``typed_mjcf._releases.TypeRow``)."""
+    arity = fields.get("arity")
+    return (fields["kind"], fields.get("dtype"), arity, fields.get("keywords", ()),
+            fields.get("default"), fields.get("namespace"))
+
+
+def _differs(newest: TypeFields, old: TypeFields) -> bool:
+    """More than the keywords differ (keywords alone are :attr:`Gates.keywords`)."""
+    def rest(fields: TypeFields) -> TypeFields:
+        return {k: v for k, v in fields.items() if k != "keywords"}
+    return rest(newest) != rest(old)
 
 
 def gates(newest: ir.Schema, older: dict[str, ir.Schema]) -> Gates:
@@ -77,7 +175,10 @@ def gates(newest: ir.Schema, older: dict[str, ir.Schema]) -> Gates:
                 if match is None:
                     continue
                 having.append(version)
-                if a.kind in ("keyword", "flags") and match.kind == a.kind:
+                old_type = type_fields(older[version], match)
+                if _differs(type_fields(newest, a), old_type):
+                    result.types.setdefault(row, {}).setdefault(a.name, {})[version] = old_type
+                elif a.kind in ("keyword", "flags") and match.kind == a.kind:
                     words = _keywords(older[version], match)
                     if words and words != _keywords(newest, a):
                         result.keywords.setdefault(row, {}).setdefault(a.name, {})[
@@ -92,6 +193,15 @@ def gates(newest: ir.Schema, older: dict[str, ir.Schema]) -> Gates:
                       and any(c.element == child.element for c in old.children)]
             if len(having) < len(ordered):
                 result.children.setdefault(row, {})[tag] = (*having, newest.mujoco_version)
+    for version in ordered:
+        for row, old_row in sorted(older[version].elements.items()):
+            if row not in newest.elements:
+                continue
+            for child in old_row.children:
+                if child.element not in newest.elements:
+                    tag = older[version].elements[child.element].tag
+                    found = result.removed.setdefault(row, {}).setdefault(tag, ())
+                    result.removed[row][tag] = (*found, version)
     return result
 
 
@@ -124,6 +234,15 @@ def render_table(result: Gates, newest: str) -> str:
               "dict[str, dict[str, tuple[str, ...]]]", result.children),
         block("KEYWORDS", "row -> attribute -> release -> its keywords, where not the newest's",
               "dict[str, dict[str, dict[str, tuple[str, ...]]]]", result.keywords),
+        block("REMOVED", "row -> child tag -> the older releases where the row takes it, "
+              "for rows only older releases have (no class: refused)",
+              "dict[str, dict[str, tuple[str, ...]]]", result.removed),
+        block("TYPES", "row -> attribute -> release -> its type (kind, number type, value "
+              "count, keywords, default, namespace), where more than the keywords differ",
+              "dict[str, dict[str, dict[str, tuple[str, str | None, tuple[int, int | None] "
+              "| None, tuple[str, ...], str | None, str | None]]]]",
+              {row: {name: {version: type_row(fields) for version, fields in by.items()}
+                     for name, by in attrs.items()} for row, attrs in result.types.items()}),
     ])
 
 
@@ -131,7 +250,46 @@ Notes = dict[str, dict[str, str]]  # row -> attribute -> the releases that have 
 
 
 def notes(result: Gates) -> Notes:
-    """For the attribute docs: the releases having each attribute that not all releases have."""
-    return {row: {name: availability(having, result.releases) for name, having in attrs.items()}
-            for row, attrs in result.attributes.items()}
+    """For the attribute docs: the releases having each attribute that not all releases have,
+    and the releases typing it otherwise than the newest (``MuJoCo 3.17.0: int, default "1"``)."""
+    found = {row: {name: availability(having, result.releases) for name, having in attrs.items()}
+             for row, attrs in result.attributes.items()}
+    for row, attrs in result.types.items():
+        for name, by_release in attrs.items():
+            text = "; in ".join(f"MuJoCo {', '.join(group)}: {describe(fields)}"
+                                for fields, group in _grouped(by_release))
+            found.setdefault(row, {})[name] = (
+                f"{found[row][name]}; in {text}" if name in found.get(row, {}) else text)
+    return found
+
+
+def _grouped(by_release: dict[str, TypeFields]) -> list[tuple[TypeFields, list[str]]]:
+    """The releases sharing one type, oldest first."""
+    groups: list[tuple[TypeFields, list[str]]] = []
+    for version, fields in by_release.items():
+        same = next((g for f, g in groups if f == fields), None)
+        if same is None:
+            groups.append((fields, [version]))
+        else:
+            same.append(version)
+    return groups
+
+
+def describe(fields: TypeFields) -> str:
+    """One release's type in words: ``int, default "1"``, ``ref<material>``."""
+    kind = str(fields["kind"])
+    if "keywords" in fields:
+        words = cast(tuple[str, ...], fields["keywords"])
+        text = f"{kind} {'|'.join(words)}"
+    elif "namespace" in fields:
+        text = f"{kind}<{fields['namespace']}>"
+    else:
+        text = str(fields.get("dtype", kind))
+    arity = cast("tuple[int, int | None] | None", fields.get("arity"))
+    if arity is not None:
+        lo, hi = arity
+        text += (f"[{lo}]" if lo == hi else f"[{lo}..{'' if hi is None else hi}]")
+    if "default" in fields:
+        text += f', default "{fields["default"]}"'
+    return text
 

@@ -48,6 +48,8 @@ SLOW = {
     "fidelity/test_round_trip.py": "round trips of the corpus",
     "fidelity/test_properties.py": "hypothesis",
     "runtime/test_corpus.py": "the corpus, compiled",
+    "runtime/test_release_driven.py": "the release tests again, in a fresh interpreter per "
+                                      "older release",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
     "safety/test_fuzz.py": "thousands of mutated models",
     "render/test_gl.py::test_physics_render_after_mujoco_chose_glfw_says_to_set_mujoco_gl_first":

@@ -4671,7 +4671,7 @@ class Body(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: string; no default (unset when absent).
+            material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -12955,7 +12955,7 @@ class Deformable(_Typed):
             group: int; no default (unset when absent).
             dim: int; default "2".
             radius: double; default "0.005".
-            material: string; no default (unset when absent).
+            material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
             rgba: float[4]; default "0.5 0.5 0.5 1".
             flatskin: bool; no default (unset when absent).
             body: string; required. Space-separated body names.
@@ -14915,13 +14915,13 @@ class Flex(_Typed):
 
     @property
     def material(self) -> _builtins.str | None:
-        """``material``: string; no default (unset when absent).
+        """``material``: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
         """
     @material.setter
     def material(self, value: _builtins.str | None) -> None:
-        """``material``: string; no default (unset when absent)."""
+        """``material``: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -15414,13 +15414,13 @@ class Flexcomp(_Typed):
 
     @property
     def material(self) -> _builtins.str | None:
-        """``material``: string; no default (unset when absent).
+        """``material``: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
         """
     @material.setter
     def material(self, value: _builtins.str | None) -> None:
-        """``material``: string; no default (unset when absent)."""
+        """``material``: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>."""
 
     @property
     def rgba(self) -> _t.Float32Array | None:
@@ -16919,7 +16919,7 @@ class Frame(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: string; no default (unset when absent).
+            material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).
@@ -19810,13 +19810,13 @@ class Headlight(_Typed):
 
     @property
     def active(self) -> HeadlightActive | None:
-        """``active``: one of: false, true, auto; default "auto".
+        """``active``: one of: false, true, auto; default "auto"; in MuJoCo 3.3.7, 3.17.0: int, default "1".
 
         https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
         """
     @active.setter
     def active(self, value: HeadlightActive | _builtins.bool | None) -> None:
-        """``active``: one of: false, true, auto; default "auto"."""
+        """``active``: one of: false, true, auto; default "auto"; in MuJoCo 3.3.7, 3.17.0: int, default "1"."""
 
     @overload
     def resolve(self, name: Literal["ambient", "diffuse", "specular"]) -> _t.Float32Array:
@@ -32898,7 +32898,7 @@ class Visual(_Typed):
             ambient: float[3]; default "0.1 0.1 0.1".
             diffuse: float[3]; default "0.4 0.4 0.4".
             specular: float[3]; default "0.5 0.5 0.5".
-            active: one of: false, true, auto; default "auto".
+            active: one of: false, true, auto; default "auto"; in MuJoCo 3.3.7, 3.17.0: int, default "1".
         """
 
     @property
@@ -33744,7 +33744,7 @@ class Worldbody(_Typed, _Attachable):
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
-            material: string; no default (unset when absent).
+            material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
             rgba: float[4]; no default (unset when absent).
             flatskin: bool; no default (unset when absent).
             pos: double[3]; no default (unset when absent).

@@ -2,26 +2,37 @@
 
 The classes describe the newest release covered (the typing surface); the generated table
 ``releases.py`` says, per row, which releases have each attribute, child and keyword where
-not all do. The release is chosen once, at import, from the installed ``mujoco``'s package
+not all do, and each release's type of an attribute (kind, value count, default, ...) where
+it is not the newest's. The release is chosen once, at import, from the installed ``mujoco``'s package
 metadata (``mujoco`` itself is not imported, nor pathlib or importlib.metadata): the newest covered release not newer than the
 installed one. :func:`restrict` then takes out of the grammar tables what that release lacks,
-so the hot paths (parse, assignment, export) pay nothing; the error paths ask :func:`note`
-why a name is unknown ("needs MuJoCo >= 4.0.0; installed 3.17.0").
+and retypes what it types otherwise, so the hot paths (parse, assignment, export) pay
+nothing; the error paths ask :func:`note` why a name is unknown ("needs MuJoCo >= 4.0.0;
+installed 3.17.0") and :func:`value_note` why a value is refused.
 """
 
 from __future__ import annotations
 
+import copy
 import os
 import re
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from importlib.util import find_spec
-from typing import TYPE_CHECKING, Final
+from typing import TYPE_CHECKING, Final, cast
 
-from typed_mjcf._codecs import make_codec
-from typed_mjcf._generated.releases import ATTRIBUTES, CHILDREN, KEYWORDS, RELEASES
+from typed_mjcf._codecs import Codec, Rejected
+from typed_mjcf._generated.releases import (
+    ATTRIBUTES,
+    CHILDREN,
+    KEYWORDS,
+    RELEASES,
+    REMOVED,
+    TYPES,
+)
+from typed_mjcf._grammar import AttributeSpec
 
 if TYPE_CHECKING:
-    from typed_mjcf._grammar import AttributeSpec, ElementSpec
+    from typed_mjcf._grammar import ElementSpec, Kind
     from typed_mjcf._tree import Element
 
 # the distributions that install the `mujoco` module: MuJoCo 4's engine comes as
@@ -99,48 +110,126 @@ def note(spec: ElementSpec, name: str) -> str | None:
     if having is None:
         children = _GONE_CHILDREN.get(spec.row, {})
         having = children.get(name) or children.get(name.removeprefix("add_"))
-    return None if having is None else _needs(having)
+    if having is None:
+        return _removed(spec, name.removeprefix("add_"))
+    return _needs(having)
 
 
-def keyword_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> str | None:
-    """Why the keyword ``value`` is refused, when another release covered takes it."""
-    by_release = KEYWORDS.get(spec.row, {}).get(attribute.name)
-    if by_release is None or not isinstance(value, str):
+def _removed(spec: ElementSpec, tag: str) -> str | None:
+    """Why ``tag``, a child only older releases take (no class has it), is refused."""
+    having = REMOVED.get(spec.row, {}).get(tag)
+    if having is None:
         return None
-    words = value.split() if attribute.kind == "flags" else [value]
-    newest = newest_keywords(spec, attribute)
-    for word in words:
-        if word in attribute.keywords:
-            continue
-        having = tuple(r for r in RELEASES if word in by_release.get(r, newest))
-        if having:
-            return f"{word!r} {_needs(having)}"
-    return None
+    gone = next(r for r in RELEASES if version_key(r) > version_key(having[-1]))
+    shown = INSTALLED or "none"
+    if RELEASE in having:
+        return (f"is in MuJoCo {', '.join(having)} only, and typed-mjcf has no bindings for it "
+                f"(its typed API is MuJoCo {RELEASES[-1]}'s); installed {shown}")
+    if version_key(RELEASE) > version_key(having[-1]):
+        return f"was removed in MuJoCo {gone}; installed {shown}"
+    return f"is in MuJoCo {', '.join(having)} only; installed {shown}"
 
 
-_NEWEST_KEYWORDS: dict[tuple[str, str], tuple[str, ...]] = {}
+def value_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> str | None:
+    """Why ``value`` is refused, when other releases covered take it (a keyword they have,
+    a value of their kind or count): "needs MuJoCo >= 4.0.0; installed 3.17.0"."""
+    if attribute.name not in TYPES.get(spec.row, _NONE) and \
+            attribute.name not in KEYWORDS.get(spec.row, _NONE):
+        return None  # every release types it alike
+    newest = newest_type(spec, attribute)
+    having = tuple(r for r in RELEASES if _takes(release_codec(spec, newest, r), value))
+    return _needs(having) if having else None
+
+
+def _takes(codec: Codec, value: object) -> bool:
+    try:
+        codec.accept(value)
+    except Rejected:
+        return False
+    return True
+
+
+_NONE: Final[dict[str, object]] = {}
+# row, attribute -> the attribute as the newest types it, for those restrict() retyped
+_NEWEST: dict[tuple[str, str], AttributeSpec] = {}
+
+
+def newest_type(spec: ElementSpec, attribute: AttributeSpec) -> AttributeSpec:
+    """``attribute`` as the newest release (the typing surface) types it: itself unless
+    the release in use types it otherwise."""
+    return _NEWEST.get((spec.row, attribute.name), attribute)
 
 
 def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, ...]:
     """``attribute``'s keywords in the newest release (the typing surface's)."""
-    return _NEWEST_KEYWORDS.get((spec.row, attribute.name), attribute.keywords)
+    return newest_type(spec, attribute).keywords
+
+
+# One release's type of an attribute, as the generated TYPES table writes it: kind, number
+# type, value count (None: one value), keywords, default, namespace
+TypeRow = tuple[str, "str | None", "tuple[int, int | None] | None", tuple[str, ...],
+                "str | None", "str | None"]
+
+
+def release_codec(spec: ElementSpec, newest: AttributeSpec, release: str) -> Codec:
+    """The codec of ``newest`` (an attribute as the newest types it) in ``release``."""
+    return _typed(newest, _release_type(spec, newest, release)).codec
+
+
+def _release_type(spec: ElementSpec, newest: AttributeSpec, release: str) -> TypeRow:
+    """``release``'s type of ``newest`` (an attribute as the newest types it)."""
+    found = TYPES.get(spec.row, {}).get(newest.name, {}).get(release)
+    if found is not None:
+        return found
+    kind, dtype, arity, words, default, namespace = _type_of(newest)
+    words = KEYWORDS.get(spec.row, {}).get(newest.name, {}).get(release, words)
+    return kind, dtype, arity, words, default, namespace
+
+
+def _type_of(attribute: AttributeSpec) -> TypeRow:
+    arity = (attribute.lo, attribute.hi) if attribute.is_array or attribute.kind == "chars" \
+        else None
+    return (attribute.kind, attribute.dtype, arity, attribute.keywords, attribute.default,
+            attribute.namespace)
+
+
+def _typed(newest: AttributeSpec, typed_as: TypeRow) -> AttributeSpec:
+    """A copy of ``newest`` typed as ``typed_as`` says (what the kind does not fix, such as a
+    keyword's words taken alone or a number's bounds, kept when the kind is the newest's)."""
+    kind, dtype, arity, words, default, namespace = typed_as
+    same = kind == newest.kind
+    typed = AttributeSpec(
+        newest.name, cast("Kind", kind), py_name=newest.py_name, dtype=dtype, arity=arity,
+        keywords=words, alone=newest.alone if same else (), ordered=newest.ordered and same,
+        namespace=namespace, namespace_from=newest.namespace_from if same else None,
+        default=default, required=newest.required, pattern=newest.pattern if same else None,
+        bounds=newest.bounds if same else (), directory=newest.directory, anchor=newest.anchor,
+        doc=newest.doc, scope=newest.scope)
+    typed.index = newest.index
+    if newest.name_list is not None and same:
+        typed.mark_name_list(newest.name_list)
+    return typed
 
 
 def restrict(classes: Mapping[str, type[Element]], release: str = RELEASE) -> None:
     """Take out of every row what ``release`` lacks: attributes (and their properties),
-    children (their lists and ``add_<tag>()``), keywords (the codec is the release's)."""
+    children (their lists and ``add_<tag>()``); retype what it types otherwise: keywords,
+    kinds, value counts, defaults (the attribute's spec and codec become the release's)."""
     for cls in classes.values():
         spec = cls.spec
         gone = {name: having for name, having in ATTRIBUTES.get(spec.row, {}).items()
                 if release not in having}
         if gone:
             _drop_attributes(cls, spec, gone)
-        for name, by_release in KEYWORDS.get(spec.row, {}).items():
-            words = by_release.get(release)
-            attribute = spec.by_name.get(name)
-            if words is not None and attribute is not None:
-                _NEWEST_KEYWORDS[(spec.row, name)] = attribute.keywords
-                _set_keywords(cls, attribute, words)
+        for table in (TYPES, KEYWORDS):
+            for name, by_release in table.get(spec.row, {}).items():
+                attribute = spec.by_name.get(name)
+                if attribute is None or release not in by_release or (spec.row, name) in _NEWEST:
+                    continue
+                newest = copy.copy(attribute)
+                typed = _typed(newest, _release_type(spec, newest, release))
+                _NEWEST[(spec.row, name)] = newest
+                _retype(cls, spec, attribute, typed)
         for tag, having in CHILDREN.get(spec.row, {}).items():
             child = spec.children.get(tag)
             if release in having or child is None:
@@ -171,15 +260,18 @@ def _drop_attributes(cls: type[Element], spec: ElementSpec,
     spec.plans.clear()
 
 
-def _set_keywords(cls: type[Element], attribute: AttributeSpec, words: tuple[str, ...]) -> None:
-    attribute.keywords = words
-    attribute.codec = make_codec(attribute.kind, dtype=attribute.dtype,
-                                 is_array=attribute.is_array, lo=attribute.lo, hi=attribute.hi,
-                                 keywords=words, pattern=attribute.pattern,
-                                 alone=attribute.alone, ordered=attribute.ordered)
+def _retype(cls: type[Element], spec: ElementSpec, attribute: AttributeSpec,
+            typed: AttributeSpec) -> None:
+    """Make ``attribute`` (the object every table of the row holds) ``typed``, and the
+    property reading it follow (it keeps its own copies of the codec and the kind)."""
+    for slot in type(attribute).__slots__:
+        setattr(attribute, slot, getattr(typed, slot))
+    spec.references = tuple(a for a in spec.attributes.values() if a.is_reference)
+    spec.plans.clear()
     descriptor = cls.__dict__.get(attribute.py_name)
-    if descriptor is not None and hasattr(descriptor, "codec"):  # the property's own copy
-        setattr(descriptor, "codec", attribute.codec)
+    if descriptor is not None and hasattr(descriptor, "codec"):  # the property
+        make = cast("Callable[[AttributeSpec], object]", type(descriptor))
+        setattr(cls, attribute.py_name, make(attribute))
 
 
 def describe() -> str:

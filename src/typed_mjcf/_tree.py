@@ -54,8 +54,8 @@ from typed_mjcf._doclines import DCLASS_DOC, adder_listing
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._language import GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
-from typed_mjcf._releases import keyword_note, restrict
 from typed_mjcf._releases import note as release_note
+from typed_mjcf._releases import restrict, value_note
 from typed_mjcf._sourcelines import SourceText, file_start_line
 from typed_mjcf.errors import (
     ChildError,
@@ -329,10 +329,14 @@ class Element(_Layout):
         )
 
     def _reject(self, attribute: AttributeSpec, value: object, rejected: Rejected) -> Exception:
-        missing = keyword_note(self.spec, attribute, value) if attribute.keywords else None
+        missing = value_note(self.spec, attribute, value)  # another release takes it?
+        if missing is not None:
+            return rejected.error(
+                f"{self.path}: {_short(value)} for {attribute.py_name!r} of <{self.spec.tag}> "
+                f"{missing}; expected {rejected.expected}")
         return rejected.error(
             f"{self.path}: invalid {attribute.py_name}={_short(value)} on <{self.spec.tag}>: "
-            f"expected {rejected.expected}" + (f" ({missing})" if missing else "")
+            f"expected {rejected.expected}"
         )
 
     def _assign(self, attribute: AttributeSpec, value: object) -> None:

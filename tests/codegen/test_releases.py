@@ -4,8 +4,13 @@ the runtime applies and as the attribute docs say it."""
 from __future__ import annotations
 
 import copy
+from pathlib import Path
+
+import pytest
 
 from codegen import ir, releases, render
+from codegen.errors import FactsError
+from codegen.facts import load_facts
 
 
 def _older(newest: ir.Schema, version: str) -> ir.Schema:
@@ -71,3 +76,56 @@ def test_an_attribute_s_doc_names_the_releases_that_have_it() -> None:
 def test_version_order_is_numeric() -> None:
     assert sorted(["4.0.0", "3.17.0", "3.3.7"], key=releases.version_key) == [
         "3.3.7", "3.17.0", "4.0.0"]
+
+
+def test_gates_list_each_release_s_type_where_more_than_keywords_differ() -> None:
+    newest = ir.load()
+    old = _older(newest, "3.0.0")
+    damping = old.elements["joint"].attribute("damping")
+    damping.kind, damping.dtype, damping.arity, damping.default = "int", "int", (1, 2), "3"
+    gates = releases.gates(newest, {"3.0.0": old})
+    assert gates.types == {"joint": {"damping": {"3.0.0": {
+        "kind": "int", "arity": (1, 2), "default": "3"}}}}
+    assert gates.keywords == {} and gates.attributes == {}
+    namespace: dict[str, object] = {}
+    exec(releases.render_table(gates, newest.mujoco_version), namespace)  # noqa: S102
+    assert namespace["TYPES"] == {"joint": {"damping": {"3.0.0": (
+        "int", None, (1, 2), (), "3", None)}}}  # typed_mjcf._releases.TypeRow
+    notes = releases.notes(gates)
+    assert notes["joint"]["damping"] == 'MuJoCo 3.0.0: int[1..2], default "3"'
+
+
+def test_gates_list_the_children_only_older_releases_have() -> None:
+    newest = ir.load()
+    old = _older(newest, "3.0.0")
+    old.elements["gone"] = copy.deepcopy(old.elements["site"])
+    old.elements["gone"].name, old.elements["gone"].tag = "gone", "gone"
+    old.elements["body"].children.append(ir.ChildDef("gone", "*", single=False))
+    gates = releases.gates(newest, {"3.0.0": old})
+    assert gates.removed == {"body": {"gone": ("3.0.0",)}}
+
+
+def test_release_facts_replace_the_newest_s_entry_before_their_release(tmp_path: Path) -> None:
+    facts = load_facts()
+    path = tmp_path / "facts.toml"
+    path.write_text('[[attribute]]\nuntil = "4.0.0"\nelement = "headlight"\nname = "active"\n'
+                    'kind = "int"\ndefault = "1"\nreason = "MuJoCo 3 reads an int"\n',
+                    encoding="utf-8")
+    old = releases.release_facts(facts, "3.17.0", path)
+    entries = [o for o in old.attributes if (o.element, o.name) == ("headlight", "active")]
+    assert [(o.kind, o.default) for o in entries] == [("int", "1")]
+    assert releases.release_facts(facts, "4.0.0", path) == facts
+    path.write_text('[[attribute]]\nelement = "headlight"\nname = "active"\nreason = "x"\n',
+                    encoding="utf-8")
+    with pytest.raises(FactsError, match="until"):
+        releases.release_facts(facts, "3.17.0", path)
+
+
+def test_a_release_file_s_keywords_are_candidates_again() -> None:
+    newest = ir.load()
+    previous = _older(newest, "3.0.0")
+    name = next(iter(previous.enums))
+    previous.enums[name].values = [("older", "9"), *previous.enums[name].values]
+    found = releases.with_keywords_of(newest, previous)
+    assert found.enums[name].keywords == ["older", *newest.enums[name].keywords]
+    assert "older" not in newest.enums[name].keywords  # a copy
