@@ -23,6 +23,7 @@ from codegen.mujoco_stubs.syntax import (
     is_setter,
     members,
     parse_expr,
+    statements,
     union,
 )
 
@@ -40,7 +41,7 @@ def _map_annotations(tree: ast.Module,
                 arg.annotation = rewrite(arg.annotation, True)
         if function.returns is not None:
             function.returns = rewrite(function.returns, False)
-    for node in ast.walk(tree):
+    for node in statements(tree):
         if isinstance(node, ast.AnnAssign):
             node.annotation = rewrite(node.annotation, False)
 

@@ -95,3 +95,25 @@ def test_imports_are_added_and_own_names_unqualified() -> None:
     assert ast.unparse(tree).splitlines()[:3] == [
         "import typing", "import mujoco._structs", "import numpy.typing"]
     assert "def g(x: C) -> None" in ast.unparse(tree)
+
+
+def test_statements_and_classes_are_those_ast_walk_finds_in_its_order() -> None:
+    """``syntax.statements`` skips expressions (for speed): the same statements, classes
+    nested in every kind of body included, in the same order."""
+    from codegen.mujoco_stubs.syntax import classes, statements
+
+    tree = ast.parse(
+        "class A:\n    class B:\n        x: int\n    def f(self) -> None:\n"
+        "        class C: ...\n"
+        "if sys.version_info >= (3, 12):\n    class D: ...\nelse:\n    class E: ...\n"
+        "try:\n    class F: ...\nexcept ImportError:\n    class G:\n        y: 'A'\n"
+        "finally:\n    z: int = 1\n"
+        "for _ in []:\n    class H: ...\nwhile False:\n    class I: ...\n"
+        "with open('x'):\n    class J: ...\n"
+        "match 1:\n    case 1:\n        class K: ...\n"
+        "w: list[int] = [i for i in (lambda: [1])()]\n")
+    walked = [node for node in ast.walk(tree) if isinstance(node, ast.stmt)]
+    assert list(statements(tree)) == walked
+    assert [c.name for c in classes(tree)] == [
+        node.name for node in ast.walk(tree) if isinstance(node, ast.ClassDef)]
+    assert len(list(classes(tree))) == 11
