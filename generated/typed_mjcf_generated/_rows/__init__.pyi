@@ -1,0 +1,1 @@
+"""One typing module per grammar row: see ``elements.pyi``."""
