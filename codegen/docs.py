@@ -1,7 +1,7 @@
 """The documentation of attributes: one line per attribute, written once, read everywhere.
 
 ``attribute_doc()`` is the one source: the renderer puts its text in ``elements.py`` (the
-``doc`` of each attribute, which ``help()`` lists at run time) and in the row stubs (the
+``doc`` of each attribute, which ``help()`` lists at run time) and in ``elements.pyi`` (the
 properties' docstrings and the ``Args:`` of each ``add_<tag>()``, which editors show).
 
 The line says, first, what a checker cannot: the MJCF type, the allowed values or the number

@@ -1,12 +1,9 @@
 """Render ``schema/`` into the ``generated/`` package with jinja2 (StrictUndefined).
 
-Per grammar: ``elements.py``, the run-time tables (one class per row, each with its row as
-keyword-argument specs, defaults omitted), and the typing surface checkers and editors read
-(properties, ``add_<tag>()`` with one keyword parameter per attribute, documented, overloads
-of ``add``/``insert``/``find``/``resolve``, TypedDicts): one stub module per row in
-``_rows/`` (its class and TypedDict, importing only the names it uses), the shared aliases in
-``_rows/_common.pyi``, and ``elements.pyi`` naming them all. An editor binds a whole module
-to read one class of it; split this way, a script costs the rows it uses, not the grammar.
+Two files per grammar: ``elements.py``, the run-time tables (one class per row, each with
+its row as keyword-argument specs, defaults omitted), and ``elements.pyi``, the typing surface
+checkers and editors read (properties, ``add_<tag>()`` with one keyword parameter per
+attribute, documented, overloads of ``add``/``insert``/``find``/``resolve``, TypedDicts).
 The templates stay thin: every name, type and docstring is computed here by small typed
 functions, and the templates only lay them out.
 """
@@ -14,8 +11,6 @@ functions, and the templates only lay them out.
 from __future__ import annotations
 
 import dataclasses
-import keyword
-import re
 import textwrap
 from dataclasses import dataclass
 from pathlib import Path
@@ -82,12 +77,6 @@ class ClassView:
     child_tags: str  # the Literal's arguments: '"body", "geom"'
     misused_child: str  # add()'s deprecation messages, as Python string literals
     not_a_child: str
-
-
-@dataclass(frozen=True)
-class ModuleView:
-    module: str  # under _rows/
-    names: list[str]
 
 
 @dataclass(frozen=True)
@@ -330,112 +319,6 @@ def _typed_maps(schema: ir.Schema, typer: Typer) -> list[Alias]:
     return [Alias(name, value, "") for name, value in sorted(maps.items())]
 
 
-# ---------------------------------------------------------------------------- row modules
-
-ROWS = "_rows"  # the stub package of the row modules, beside elements.pyi
-COMMON = "_common"  # its module of shared names
-_PLACEHOLDER = "@@imports@@"
-# What a row module may use besides the grammar's names: local name -> (module, name); a
-# module is imported whole when the name is "".
-_LIBRARY: dict[str, tuple[str, str]] = {
-    "_builtins": ("builtins", ""),
-    "Collection": ("collections.abc", "Collection"),
-    "Sequence": ("collections.abc", "Sequence"),
-    "ClassVar": ("typing", "ClassVar"),
-    "Literal": ("typing", "Literal"),
-    "TypeAlias": ("typing", "TypeAlias"),
-    "TypedDict": ("typing", "TypedDict"),
-    "Unpack": ("typing", "Unpack"),
-    "overload": ("typing", "overload"),
-    "_deprecated": ("typing_extensions", "deprecated"),
-    "_t": ("typed_mjcf", "types"),
-    "_Attachable": ("typed_mjcf._base", "Attachable"),
-    "_Element": ("typed_mjcf._base", "Element"),
-    "_ModelRoot": ("typed_mjcf._base", "ModelRoot"),
-    "_S": ("typed_mjcf._grammar", "ElementSpec"),
-    "_List": ("typed_mjcf._tree", "ElementList"),
-}
-_STRINGS = re.compile(r'"""[\s\S]*?"""|"(?:[^"\\\n]|\\.)*"')
-_WORDS = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-
-
-def row_module(class_name: str) -> str:
-    """A row's module name: its class name in snake case (``DefaultGeom`` -> ``default_geom``),
-    a Python keyword with an underscore (``global_``)."""
-    name = re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", class_name).lower()
-    return name + "_" if keyword.iskeyword(name) else name
-
-
-def _used_names(text: str) -> set[str]:
-    """The identifiers of a stub's code (strings and docstrings left out)."""
-    return set(_WORDS.findall(_STRINGS.sub("", text)))
-
-
-def _import_lines(used: set[str], owners: dict[str, str], module: str) -> str:
-    """The imports of the names ``module`` uses: the library's, then the other row modules'."""
-    lines: list[str] = []
-    for group in (("builtins", "collections.abc", "typing"), ("typing_extensions",), None):
-        found: dict[str, list[str]] = {}
-        for local in sorted(used & _LIBRARY.keys()):
-            source, name = _LIBRARY[local]
-            if (source in group) if group is not None else source.startswith("typed_mjcf"):
-                found.setdefault(source, []).append(local)
-        block: list[str] = []
-        for source in sorted(found):
-            plain = [local for local in found[source] if _LIBRARY[local][1] == local]
-            if plain:
-                block.append(f"from {source} import {', '.join(plain)}")
-            for local in found[source]:
-                name = _LIBRARY[local][1]
-                if not name:
-                    block.append(f"import {source} as {local}")
-                elif name != local:
-                    block.append(f"from {source} import {name} as {local}")
-        if group is None:
-            rows: dict[str, list[str]] = {}
-            for name in sorted(used & owners.keys()):
-                if owners[name] != module:
-                    rows.setdefault(owners[name], []).append(name)
-            block += [f"from .{other} import {', '.join(names)}"
-                      for other, names in sorted(rows.items())]
-        if block:
-            lines.append("\n".join(block))
-    return "\n\n".join(lines)
-
-
-def _with_imports(text: str, owners: dict[str, str], module: str) -> str:
-    return text.replace(_PLACEHOLDER, _import_lines(_used_names(text), owners, module))
-
-
-def _row_files(env: jinja2.Environment, context: dict[str, object],
-               classes: list[ClassView], common_names: list[str],
-               exported: list[str]) -> dict[str, str]:
-    """``_rows/``: one module per row, the shared names, and ``elements.pyi`` naming them."""
-    owners = {name: COMMON for name in common_names}
-    for c in classes:
-        owners[c.class_name] = owners[f"{c.class_name}Attributes"] = row_module(c.class_name)
-    if len(set(owners.values())) != len(classes) + 1:
-        raise ValueError("two rows' classes have the same module name")
-    base = {**context, "imports": _PLACEHOLDER}
-    files = {f"{ROWS}/__init__.pyi": '"""One typing module per grammar row: see '
-             '``elements.pyi``."""\n',
-             f"{ROWS}/{COMMON}.pyi": _with_imports(
-                 env.get_template("rows_common.pyi.jinja2").render(base), owners, COMMON)}
-    row = env.get_template("row.pyi.jinja2")
-    for c in classes:
-        module = row_module(c.class_name)
-        files[f"{ROWS}/{module}.pyi"] = _with_imports(row.render({**base, "c": c}), owners,
-                                                      module)
-    modules: dict[str, list[str]] = {}
-    for name, module in owners.items():
-        if name in set(exported):
-            modules.setdefault(module, []).append(name)
-    views = [ModuleView(module, sorted(names)) for module, names in sorted(modules.items())]
-    files["elements.pyi"] = env.get_template("elements.pyi.jinja2").render(
-        {**context, "modules": views})
-    return files
-
-
 def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
            older: dict[str, ir.Schema] | None = None) -> dict[str, str]:
     """The generated package: file name -> text (the bindings from ``schema/bindings.json``
@@ -453,8 +336,6 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
     if body is not None:  # frames are bodies
         namespaces.append(NamespaceView(ATTACHMENT_FRAME, body.class_name))
     class_names = sorted(c.class_name for c in classes)
-    exported = sorted([*class_names, *(a.name for a in [*keyword_sets, *aliases]), "Namespace",
-                       *(f"{c.class_name}Attributes" for c in classes)])
     context: dict[str, object] = {
         "mujoco_version": schema.mujoco_version,
         "generator_version": GENERATOR_VERSION,
@@ -465,7 +346,9 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
         "facts": _facts(schema),
         "fact_classes": ", ".join(language.classes()),
         "aliases": aliases,
-        "exported": exported,
+        "exported": sorted([*class_names, *(a.name for a in [*keyword_sets, *aliases]),
+                            "Namespace",
+                            *(f"{c.class_name}Attributes" for c in classes)]),
         "namespaces": namespaces,
         "namespace_literals": ", ".join(f'"{ns.name}"' for ns in namespaces),
         "tag_literals": ", ".join(f'"{tag}"' for tag in sorted(
@@ -478,9 +361,7 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
         "bindings.py": env.get_template("bindings.py.jinja2").render(binding_context),
         "bindings.pyi": env.get_template("bindings.pyi.jinja2").render(binding_context),
         "elements.py": env.get_template("elements.py.jinja2").render(context),
-        **_row_files(env, context, classes,
-                     [*(a.name for a in [*keyword_sets, *aliases]), "Namespace", "_Tag",
-                      "_Typed"], exported),
+        "elements.pyi": env.get_template("elements.pyi.jinja2").render(context),
         "__init__.py": env.get_template("__init__.py.jinja2").render(context),
         "releases.py": releases.render_table(gates, schema.mujoco_version),
     }
@@ -488,19 +369,17 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
 
 def write(files: dict[str, str], directory: Path = GENERATED_DIR) -> list[str]:
     """Write the rendered files; return the names that changed."""
+    directory.mkdir(parents=True, exist_ok=True)
     changed: list[str] = []
     for name, text in sorted(files.items()):
         path = directory / name
-        path.parent.mkdir(parents=True, exist_ok=True)
         if not path.exists() or path.read_text(encoding="utf-8") != text:
             path.write_text(text, encoding="utf-8")
             changed.append(name)
-    for stale in sorted([*directory.glob("*.py"), *directory.glob("*.pyi"),
-                         *directory.glob(f"{ROWS}/*.pyi")]):
-        name = stale.relative_to(directory).as_posix()
-        if name not in files:
+    for stale in sorted([*directory.glob("*.py"), *directory.glob("*.pyi")]):
+        if stale.name not in files:
             stale.unlink()
-            changed.append(name)
+            changed.append(stale.name)
     py_typed = directory / "py.typed"
     if py_typed.exists():
         py_typed.unlink()  # the package is part of typed_mjcf, which is marked typed

@@ -13,8 +13,8 @@ from tests.typing.any_audit import Audit
 MUJOCO_BOUNDARY = {
     "typed_mjcf.from_spec", "typed_mjcf.io.from_spec",
     "typed_mjcf._base.ModelRoot.compile", "typed_mjcf._base.ModelRoot.to_spec",
-    "typed_mjcf._generated._rows.root_element.RootElement.compile (from ModelRoot)",
-    "typed_mjcf._generated._rows.root_element.RootElement.to_spec (from ModelRoot)",
+    "typed_mjcf._generated.elements.RootElement.compile (from ModelRoot)",
+    "typed_mjcf._generated.elements.RootElement.to_spec (from ModelRoot)",
 }
 
 

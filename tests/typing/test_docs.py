@@ -25,15 +25,7 @@ import typed_mjcf as mjcf
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import DCLASS, Element, element_classes
 
-# The typing surface: one stub module per grammar row (``elements.pyi`` only names them).
-STUBS = sorted((Path(mjcf.__file__).resolve().parent / "_generated" / "_rows").glob("*.pyi"))
-
-
-def stub_classes() -> Iterator[ast.ClassDef]:
-    for stub in STUBS:
-        for node in ast.parse(stub.read_text(encoding="utf-8")).body:
-            if isinstance(node, ast.ClassDef):
-                yield node
+STUB = Path(mjcf.__file__).resolve().parent / "_generated" / "elements.pyi"
 
 
 def clean_and_split(doc: str) -> list[str]:
@@ -68,10 +60,12 @@ def pyright_parameter_doc(doc: str, name: str) -> str | None:
 
 
 def adders() -> Iterator[tuple[str, ast.FunctionDef]]:
-    for node in stub_classes():
-        for item in node.body:
-            if isinstance(item, ast.FunctionDef) and item.name.startswith("add_"):
-                yield node.name, item
+    tree = ast.parse(STUB.read_text(encoding="utf-8"))
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            for item in node.body:
+                if isinstance(item, ast.FunctionDef) and item.name.startswith("add_"):
+                    yield node.name, item
 
 
 ADDERS = list(adders())
@@ -139,8 +133,7 @@ JARGON = re.compile(r"\bsav(e|ed)\b|UNTYPED|compile directive", re.IGNORECASE)
 
 def test_no_note_speaks_of_mujocos_code() -> None:
     """Notes say what an attribute means, not how MuJoCo saves or checks it."""
-    found = sorted({m.group(0) for stub in STUBS
-                    for m in JARGON.finditer(stub.read_text(encoding="utf-8"))})
+    found = sorted({m.group(0) for m in JARGON.finditer(STUB.read_text(encoding="utf-8"))})
     assert found == []
 
 
@@ -154,9 +147,10 @@ def test_help_shows_what_the_editor_shows() -> None:
 
 def test_property_hover_starts_with_the_facts() -> None:
     """A property's docstring: its first line is the attribute's line."""
+    tree = ast.parse(STUB.read_text(encoding="utf-8"))
     checked = 0
-    for node in stub_classes():
-        if node.name not in element_classes():
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef) or node.name not in element_classes():
             continue
         spec = element_classes()[node.name].spec
         for item in node.body:

@@ -1,1 +1,0 @@
-"""One typing module per grammar row: see ``elements.pyi``."""
