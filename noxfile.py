@@ -161,6 +161,7 @@ CORPUS_TESTS = [
     "tests/runtime/test_corpus.py",
     "tests/runtime/test_corpus_asset_routes.py",
     "tests/runtime/test_release_gates.py",
+    "tests/runtime/test_release_facts.py",
 ]
 
 
