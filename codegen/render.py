@@ -365,7 +365,7 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
         "__init__.py": env.get_template("__init__.py.jinja2").render(context),
         "releases.py": releases.render_table(gates, schema.mujoco_version),
         "release_facts.py": release_facts.render_table(
-            release_facts.having(release_facts.load(), gates.releases)),
+            release_facts.checked(release_facts.load(), schema.mujoco_version)),
     }
 
 

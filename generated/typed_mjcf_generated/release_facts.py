@@ -4,5 +4,5 @@
 
 from typing import Final
 
-# fact -> the releases that have it, oldest first
-LANGUAGE: Final[dict[str, tuple[str, ...]]] = {'asset_cache_checks_contents': ('4.0.0',), 'underflowing_numbers': ('4.0.0',)}
+# fact -> the first release having it (the releases from it on have it)
+SINCE: Final[dict[str, str]] = {'asset_cache_checks_contents': '4.0.0', 'underflowing_numbers': '4.0.0'}

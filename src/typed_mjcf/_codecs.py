@@ -587,7 +587,8 @@ class ArrayCodec(Codec):
                         array = np.array(items, self.dtype)
                     except OverflowError:
                         raise Rejected(f"{self.expected} that fit in 32 bits") from None
-                    self._check_underflow(None, array)
+                    if _UNDERFLOW[0] is not None:
+                        self._check_underflow(None, array)
                     return array
         try:
             array = self.from_text(cast(str, value)) if kind is str else self._to_array(value)
@@ -596,14 +597,14 @@ class ArrayCodec(Codec):
                 raise
             raise Rejected(self.expected, rejected.error) from None
         self._check_length(array.shape[0])
-        if kind is not str:
+        if _UNDERFLOW[0] is not None and kind is not str:
             self._check_underflow(None, array)
         return array
 
     def _check_underflow(self, parts: list[str] | None, array: Array) -> None:
-        """Refuse a number that underflows when the release in use does (few are tiny:
+        """Refuse a number that underflows, the release in use refusing them (few are tiny:
         only those are looked at)."""
-        if _UNDERFLOW[0] is None or self.is_int:
+        if self.is_int:
             return
         values = array.astype(np.float64)
         tiny = np.flatnonzero(np.abs(values) < _TINY[self.single]).tolist()
@@ -687,9 +688,11 @@ class ArrayCodec(Codec):
                     if not -FLOAT32_MAX <= value <= FLOAT32_MAX:
                         check_float32(value)
             singles = _doubles_to_float32(doubles, parts)
-            self._check_underflow(parts, singles)
+            if _UNDERFLOW[0] is not None:
+                self._check_underflow(parts, singles)
             return singles
-        self._check_underflow(parts, doubles)
+        if _UNDERFLOW[0] is not None:
+            self._check_underflow(parts, doubles)
         return doubles
 
     def _to_array(self, value: object) -> Array:

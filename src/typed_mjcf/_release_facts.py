@@ -1,7 +1,7 @@
 """Facts about MJCF as a whole that differ between the MuJoCo releases covered, applied for
 the release in use (``typed_mjcf._releases.RELEASE``) once, at import.
 
-The generated table (from ``schema/release_facts.toml``) says which releases have each fact;
+The generated table (from ``schema/release_facts.toml``) says from which release on each fact holds;
 here each fact the runtime knows is turned into what the runtime does without it. Nothing
 asks for a release number: a release lacking a fact gets the older behaviour.
 """
@@ -11,8 +11,8 @@ from __future__ import annotations
 from typing import Final
 
 from typed_mjcf._codecs import refuse_underflow
-from typed_mjcf._generated.release_facts import LANGUAGE
-from typed_mjcf._releases import INSTALLED, RELEASE
+from typed_mjcf._generated.release_facts import SINCE
+from typed_mjcf._releases import INSTALLED, RELEASE, version_key
 
 # the facts the runtime applies (tests/runtime/test_release_facts.py: the table has these)
 UNDERFLOWING_NUMBERS: Final = "underflowing_numbers"  # numbers read as subnormals or zero
@@ -25,12 +25,12 @@ _CLEAR_ASSET_CACHE: list[bool] = [False]
 
 
 def has(fact: str, release: str = RELEASE) -> bool:
-    return release in LANGUAGE[fact]
+    return version_key(release) >= version_key(SINCE[fact])
 
 
 def needs(fact: str) -> str:
     """"needs MuJoCo >= X; installed Y" for a fact the release in use lacks."""
-    return f"needs MuJoCo >= {LANGUAGE[fact][0]}; installed {INSTALLED or 'none'}"
+    return f"needs MuJoCo >= {SINCE[fact]}; installed {INSTALLED or 'none'}"
 
 
 def apply(release: str = RELEASE) -> None:

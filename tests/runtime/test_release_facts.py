@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _release_facts
-from typed_mjcf._generated.release_facts import LANGUAGE
+from typed_mjcf import _release_facts, _releases
+from typed_mjcf._generated.release_facts import SINCE
 from typed_mjcf._generated.releases import RELEASES
 from typed_mjcf._release_facts import ASSET_CACHE_CHECKS_CONTENTS, UNDERFLOWING_NUMBERS, has
 
@@ -40,9 +40,11 @@ def release() -> Iterator[None]:
 
 
 def test_the_table_has_the_facts_the_runtime_applies() -> None:
-    assert set(LANGUAGE) == set(_release_facts.KNOWN)
-    for fact, having in LANGUAGE.items():
-        assert having == RELEASES[RELEASES.index(having[0]):], fact  # from `since` on
+    assert set(SINCE) == set(_release_facts.KNOWN)
+    for fact, since in SINCE.items():  # from `since` on, every release has the fact
+        assert [has(fact, r) for r in RELEASES] == [
+            _releases.version_key(r) >= _releases.version_key(since) for r in RELEASES]
+        assert has(fact, RELEASES[-1]), fact  # the newest has every fact
 
 
 def _mujoco_reads(xml: str) -> bool:
@@ -63,7 +65,7 @@ def test_underflowing_numbers_as_the_installed_mujoco_reads_them() -> None:
         mjcf.from_xml_string(xml)
     except mjcf.ParseError as error:
         assert not has(UNDERFLOWING_NUMBERS)
-        assert f"needs MuJoCo >= {LANGUAGE[UNDERFLOWING_NUMBERS][0]}" in str(error)
+        assert f"needs MuJoCo >= {SINCE[UNDERFLOWING_NUMBERS]}" in str(error)
     else:
         assert has(UNDERFLOWING_NUMBERS)
 
@@ -71,7 +73,7 @@ def test_underflowing_numbers_as_the_installed_mujoco_reads_them() -> None:
 @pytest.mark.usefixtures("release")
 def test_a_release_refusing_underflow_refuses_it_on_every_route() -> None:
     _release_facts.apply(_without(UNDERFLOWING_NUMBERS))
-    since = f"needs MuJoCo >= {LANGUAGE[UNDERFLOWING_NUMBERS][0]}"
+    since = f"needs MuJoCo >= {SINCE[UNDERFLOWING_NUMBERS]}"
     for xml in ('<mujoco><worldbody><geom size="1" friction="1 5e-324 1"/></worldbody></mujoco>',
                 '<mujoco><worldbody><geom size="1" friction="1 1e-400 1"/></worldbody></mujoco>',
                 '<mujoco><option timestep="1e-310"/></mujoco>',
