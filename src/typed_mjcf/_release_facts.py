@@ -1,9 +1,9 @@
 """Facts about MJCF as a whole that differ between the MuJoCo releases covered, applied for
 the release in use (``typed_mjcf._releases.RELEASE``) once, at import.
 
-The generated table (from ``schema/release_facts.toml``) says from which release on each fact holds;
-here each fact the runtime knows is turned into what the runtime does without it. Nothing
-asks for a release number: a release lacking a fact gets the older behaviour.
+The generated table (from ``schema/release_facts.toml``) says from which release on each
+fact holds; here each fact the runtime knows is turned into what the runtime does without
+it. Nothing asks for a release number: a release lacking a fact gets the older behaviour.
 """
 
 from __future__ import annotations
