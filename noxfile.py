@@ -169,6 +169,7 @@ CORPUS_TESTS = [
     "tests/runtime/test_corpus_asset_routes.py",
     "tests/runtime/test_release_gates.py",
     "tests/runtime/test_release_types.py",
+    "tests/runtime/test_release_facts.py",
 ]
 
 

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import jinja2
 
-from codegen import bindings, docs, ir, language, releases
+from codegen import bindings, docs, ir, language, release_facts, releases
 from codegen.naming import RESERVED, py_name
 from codegen.typing_names import Alias, Typer
 
@@ -364,6 +364,8 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
         "elements.pyi": env.get_template("elements.pyi.jinja2").render(context),
         "__init__.py": env.get_template("__init__.py.jinja2").render(context),
         "releases.py": releases.render_table(gates, schema.mujoco_version),
+        "release_facts.py": release_facts.render_table(
+            release_facts.checked(release_facts.load(), schema.mujoco_version)),
     }
 
 

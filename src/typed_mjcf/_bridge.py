@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 from typed_mjcf._files import CollectedFiles
 from typed_mjcf._keyframes import LayoutError
 from typed_mjcf._locate import locate
+from typed_mjcf._release_facts import clears_asset_cache
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import collect, vfs_text
@@ -46,6 +47,8 @@ def compile_model(model: ModelBase) -> mujoco.MjModel:
 
     ensure_valid(model)
     xml, collected = _text(model)
+    if clears_asset_cache():  # else a file of an earlier model with the same name is used
+        mujoco.mj_clearCache(mujoco.mj_getCache())
     try:
         return mujoco.MjModel.from_xml_string(xml, collected.files)
     except (ValueError, RuntimeError) as error:  # (RuntimeError: a C++ exception it did not

@@ -48,11 +48,27 @@ FLOAT32_MAX: Final = float(np.finfo(np.float32).max)
 # What a float attribute (dtype "float" in schema/) expects of each number: MuJoCo's reader
 # refuses a finite one beyond it ("number is too large"), where numpy would make it inf.
 FLOAT32_RANGE: Final = f"within the range of a float32 (magnitude at most {FLOAT32_MAX:.8g})"
+# the smallest normal numbers: below them (zero aside) a number is subnormal
+_TINY: Final = {False: float(np.finfo(np.float64).tiny), True: float(np.finfo(np.float32).tiny)}
+# Why a number that underflows is refused, when the MuJoCo release in use refuses them (set
+# once, at import, by typed_mjcf._release_facts: schema/release_facts.toml); None: read.
+_UNDERFLOW: list[str | None] = [None]
 
 # Texts a codec has checked, to accept again without checking: models repeat the same few
 # values ("0 0 1") many times. Bounded, so that reading many distinct values costs no memory.
 _CHECKED_TEXTS: Final = 2048  # per codec
 _CHECKED_LENGTH: Final = 64  # characters; longer texts are checked each time
+
+
+# every codec's set of checked texts: emptied when what is accepted changes (refuse_underflow)
+_CHECKED_SETS: list[set[str]] = []
+
+
+def checked_texts() -> set[str]:
+    """A new, empty set of checked texts for a codec."""
+    checked: set[str] = set()
+    _CHECKED_SETS.append(checked)
+    return checked
 
 
 def remember(checked: set[str], text: str) -> None:
@@ -385,6 +401,44 @@ def _beyond_float32(value: float) -> bool:
     return not (type(value) is float and not math.isfinite(value))
 
 
+def refuse_underflow(note: str | None) -> None:
+    """Refuse numbers that underflow, saying ``note`` (why), or read them (``None``)."""
+    _UNDERFLOW[0] = note
+    for checked in _CHECKED_SETS:  # texts accepted before may be refused now
+        checked.clear()
+
+
+def _mantissa_is_zero(text: str) -> bool:
+    bare = text.strip().lower().lstrip("+-")
+    mantissa = bare[2:].partition("p")[0] if bare.startswith("0x") else bare.partition("e")[0]
+    return re.search(r"[1-9a-f]", mantissa) is None
+
+
+def underflows(text: str | None, value: float, single: bool) -> bool:
+    """Whether ``value`` (read from ``text``, or given in Python: None) underflows its type:
+    subnormal, or zero though the text is not. MuJoCo's strtod/strtof refuse such a text
+    unless it is exact (0x1p-1074): those are refused too, since an export writes the value
+    in decimal (5e-324), which the releases refusing underflow do not read."""
+    if not abs(value) < _TINY[single]:
+        return False
+    return value != 0.0 or (text is not None and not _mantissa_is_zero(text))
+
+
+def check_underflow(what: str, texts: Sequence[str] | None, values: Sequence[float],
+                    single: bool) -> None:
+    """Refuse ``values`` (read from ``texts``, or given in Python) if one underflows and the
+    release in use refuses that; ``what`` is what the codec expects."""
+    note = _UNDERFLOW[0]
+    if note is None:
+        return
+    tiny = _TINY[single]
+    for i, value in enumerate(values):
+        if abs(value) < tiny and underflows(None if texts is None else texts[i], value, single):
+            shown = repr(value) if texts is None else texts[i]
+            kind = "float32" if single else "double"
+            raise Rejected(f"{what} not underflowing a {kind} ({shown} does: {note})")
+
+
 class IntCodec(Codec):
     __slots__ = ()
 
@@ -403,12 +457,16 @@ class RealCodec(Codec):
 
     def __init__(self, single: bool) -> None:
         self.single = single
-        self.checked: set[str] = set()
+        self.checked = checked_texts()
 
     def accept(self, value: object) -> object:
         result = to_float(value)
         if self.single:
             check_float32(result)
+        if _UNDERFLOW[0] is not None:
+            text = value if isinstance(value, str) else None
+            read = float(_text_to_float32(text)) if self.single and text else result
+            check_underflow("a number", None if text is None else [text], [read], self.single)
         return result
 
     def parse(self, text: str) -> object:
@@ -417,6 +475,9 @@ class RealCodec(Codec):
         value = text_to_float(text)
         if self.single:
             check_float32(value)
+        if _UNDERFLOW[0] is not None:
+            read = float(_text_to_float32(text)) if self.single else value
+            check_underflow("a number", [text], [read], self.single)
         remember(self.checked, text)
         return text
 
@@ -522,7 +583,7 @@ class ArrayCodec(Codec):
         # texts: a number never ends inside a word, so giving one back cannot help a match.
         repeat = f"(?:\\s+{number}){{{low},{high}}}+"
         self.pattern = re.compile(f"\\s*{number}{repeat}\\s*" if hi != 0 else r"\s*", re.ASCII)
-        self.checked: set[str] = set()
+        self.checked = checked_texts()
 
     def accept(self, value: object) -> object:
         kind = type(value)
@@ -539,9 +600,12 @@ class ArrayCodec(Codec):
                     if self.single:
                         self._check_single(cast("Sequence[float]", items))
                     try:
-                        return np.array(items, self.dtype)
+                        array = np.array(items, self.dtype)
                     except OverflowError:
                         raise Rejected(f"{self.expected} that fit in 32 bits") from None
+                    if _UNDERFLOW[0] is not None:
+                        self._check_underflow(None, array)
+                    return array
         try:
             array = self.from_text(cast(str, value)) if kind is str else self._to_array(value)
         except Rejected as rejected:
@@ -549,12 +613,27 @@ class ArrayCodec(Codec):
                 raise
             raise Rejected(self.expected, rejected.error) from None
         self._check_length(array.shape[0])
+        if _UNDERFLOW[0] is not None and kind is not str:
+            self._check_underflow(None, array)
         return array
+
+    def _check_underflow(self, parts: list[str] | None, array: Array) -> None:
+        """Refuse a number that underflows, the release in use refusing them (few are tiny:
+        only those are looked at)."""
+        if self.is_int:
+            return
+        values = array.astype(np.float64)
+        tiny = np.flatnonzero(np.abs(values) < _TINY[self.single]).tolist()
+        if tiny:
+            check_underflow(self.expected, None if parts is None else [parts[i] for i in tiny],
+                            [float(values[i]) for i in tiny], self.single)
 
     def parse(self, text: str) -> object:
         if text in self.checked:
             return text
         if self.pattern.fullmatch(text) is not None:
+            if _UNDERFLOW[0] is not None and not self.is_int:
+                self.from_text(text)  # the pattern lets tiny numbers by: convert to check
             remember(self.checked, text)
             return text
         array = self.from_text(text)
@@ -622,7 +701,12 @@ class ArrayCodec(Codec):
         if self.single:
             if not np.isfinite(doubles).all() or np.abs(doubles).max(initial=0.0) > FLOAT32_MAX:
                 self._check_single(cast(list[float], doubles.tolist()))
-            return _doubles_to_float32(doubles, parts)
+            singles = _doubles_to_float32(doubles, parts)
+            if _UNDERFLOW[0] is not None:
+                self._check_underflow(parts, singles)
+            return singles
+        if _UNDERFLOW[0] is not None:
+            self._check_underflow(parts, doubles)
         return doubles
 
     def _to_array(self, value: object) -> Array:

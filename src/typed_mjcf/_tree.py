@@ -54,6 +54,7 @@ from typed_mjcf._doclines import DCLASS_DOC, adder_listing
 from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._language import GrammarFacts
 from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._release_facts import apply as apply_release_facts
 from typed_mjcf._releases import note as release_note
 from typed_mjcf._releases import restrict, value_note
 from typed_mjcf._sourcelines import SourceText, file_start_line
@@ -117,6 +118,7 @@ def finish_grammar(facts: GrammarFacts) -> None:
             child.cls = _CLASSES[child.class_name]
             child.holder = cls.spec
     restrict(_CLASSES)  # the installed MuJoCo's grammar: what it lacks is refused
+    apply_release_facts()  # and its behaviour no grammar row states
     document_adders()
 
 

@@ -45,7 +45,7 @@ def test_the_code_rebuilds_the_model(ident: str, path: Path, tmp_path: Path) -> 
     built = _build(code, tmp_path / module_name(ident))
     actual = built.compile()
     assert model_differences(expected, actual) == []
-    assert file_differences(expected, str(path.parent), actual, built.get_assets()) == []
+    assert file_differences(expected, str(path), actual, built.get_assets()) == []
     too_long = [line for line in code.splitlines() if len(line) > _pycode.WIDTH]
     assert too_long == []
     # what the README promises: `typed-mjcf diff original.xml rebuilt.xml` shows nothing

@@ -14,9 +14,15 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.cli import corpus
-from tests.runtime.model_compare import model_differences
+from tests.runtime.model_compare import clear_asset_cache, model_differences
 from tests.runtime.test_corpus import corpus_files
 from typed_mjcf import _tree
+
+
+@pytest.fixture(autouse=True)
+def _fresh_asset_cache() -> None:
+    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    clear_asset_cache()
 
 
 def _strip_classes(model: mjcf.RootElement) -> int:

@@ -9,7 +9,9 @@ File paths are the one deliberate exception: ``typed_mjcf`` compiles through MuJ
 file system under flat file names, so ``paths``, ``npaths`` and the ``*_pathadr`` offsets
 into it differ from a compile that read the files from disk. They are compared by meaning
 instead (:func:`file_differences`): the same elements have a path, and each path names a file
-with the same contents. ``nbuffer`` includes the ``paths`` array, padded to MuJoCo's 64-byte
+with the same contents. What ``paths`` holds for a file read from disk differs by release:
+the resolved path (model folder, ``meshdir`` or ``texturedir``, file; MuJoCo >= 3.17) or the
+``file`` attribute as written (3.3.7); a relative one is resolved as MuJoCo resolved it. ``nbuffer`` includes the ``paths`` array, padded to MuJoCo's 64-byte
 buffer alignment, so it is compared without that array.
 """
 
@@ -27,6 +29,13 @@ Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
 
 PATH_FIELDS = frozenset({"paths", "npaths", "nbuffer"})
 BUFFER_ALIGNMENT = 64  # MuJoCo aligns every array of mjModel's buffer to 64 bytes
+
+
+def clear_asset_cache() -> None:
+    """Empty MuJoCo's asset cache, so that a test's compiles read their own files whatever
+    the process compiled before: before 4.0.0 it serves a file by its name (another model's
+    cube.stl) and 3.3.7 a mesh processed for another use (schema/release_facts.toml)."""
+    mujoco.mj_clearCache(mujoco.mj_getCache())
 
 
 def _field(obj: object, name: str) -> object:
@@ -153,11 +162,27 @@ def _resolved_paths(model: mujoco.MjModel) -> dict[str, list[str | None]]:
             for name in dir(model) if name.endswith("_pathadr")}
 
 
-def file_differences(expected: mujoco.MjModel, expected_dir: str, actual: mujoco.MjModel,
+# the compiler folder MuJoCo reads each kind's files from (assetdir already folded in)
+_FOLDERS = {"mesh_pathadr": "meshdir", "hfield_pathadr": "meshdir", "skin_pathadr": "meshdir",
+            "tex_pathadr": "texturedir"}
+
+
+def _on_disk(model_path: str, field: str, stored: str) -> str:
+    """The file ``stored`` (a path in ``paths``) names: absolute as most releases store it;
+    relative, as 3.3.7 stores the ``file`` attribute, under the model's folder for its kind."""
+    if os.path.isabs(stored):
+        return stored
+    spec = mujoco.MjSpec.from_file(model_path)  # the folders as MuJoCo read them (includes too)
+    folder = _field(spec, _FOLDERS[field])
+    assert isinstance(folder, str), field
+    return os.path.join(os.path.dirname(model_path), folder, stored)
+
+
+def file_differences(expected: mujoco.MjModel, expected_path: str, actual: mujoco.MjModel,
                      actual_files: Mapping[str, bytes]) -> list[str]:
     """Differences between the files two models were compiled from.
 
-    ``expected`` read its files from disk (relative paths are under ``expected_dir``);
+    ``expected`` read its files from disk (it was compiled from the file ``expected_path``);
     ``actual`` was compiled from the virtual file system ``actual_files``.
     """
     want, got = _resolved_paths(expected), _resolved_paths(actual)
@@ -171,7 +196,7 @@ def file_differences(expected: mujoco.MjModel, expected_dir: str, actual: mujoco
                 if (a is None) != (b is None):
                     problems.append(f"{field}[{i}]: path {a!r} != {b!r}")
                 continue
-            with open(os.path.join(expected_dir, a), "rb") as f:
+            with open(_on_disk(expected_path, field, a), "rb") as f:
                 contents = f.read()
             if actual_files.get(b) != contents:
                 problems.append(f"{field}[{i}]: {b!r} does not hold the contents of {a!r}")

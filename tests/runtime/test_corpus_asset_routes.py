@@ -28,12 +28,18 @@ import pytest
 import typed_mjcf
 from tests.cli.corpus import CORPUS, compiled, corpus_params, mirror
 
-from .model_compare import model_differences
+from .model_compare import clear_asset_cache, model_differences
 from .test_corpus import corpus_files
 
 SHARED_NAMES = ("dm_control/mjcf/test_assets/model_with_assets.xml",
                 "dm_control/mjcf/test_assets/model_with_assetdir.xml",
                 "dm_control/mjcf/test_assets/model_with_separators.xml")
+
+
+@pytest.fixture(autouse=True)
+def _fresh_asset_cache() -> None:
+    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    clear_asset_cache()
 
 
 @pytest.fixture(scope="module")
