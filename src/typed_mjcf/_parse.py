@@ -579,7 +579,10 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
             name = text
             if context.options.escape_separators:
                 name = escape_separators(name)
-            _tree.assign_name_text(element, attribute, name)
+            _tree.assign_text(element, attribute, name)
+        except Rejected as rejected:
+            context.refuse("invalid-value", element.path,
+                           _rejected(element, attribute, name, rejected, node, source, context))
         except MjcfError as error:
             _refuse_name(element, error, node, source, context)
         return later
