@@ -171,10 +171,25 @@ class Codec:
         """What a property returns for a stored value."""
         return stored
 
+    # Whether a text stored as read from a file is written as it was read when the output
+    # keeps source text (``Format.keeps_source_text``): the one place that is decided.
+    # :meth:`write` follows it, and the exporter plans from it (once per row, see
+    # ``_export.write_plan``) to write such texts without the call. A codec that rewrites
+    # what it read (say, to normalise its spelling) sets it false: every route follows.
+    keeps_read_text: bool = True
+
     def write(self, stored: object, fmt: Format) -> str:
-        """The stored value as attribute text. A text stored as read from a file comes back
-        unchanged when ``fmt.keeps_source_text``: the exporter writes such texts without
-        the call (``AttributeSpec.as_is``), and a test holds every codec to it."""
+        """The stored value as attribute text: a text stored as read, as it was read when
+        :attr:`keeps_read_text` and ``fmt.keeps_source_text``; anything else as
+        :meth:`spell` writes it. Codecs override :meth:`spell`, never this (a test checks):
+        the exporter's fast path is this rule."""
+        if type(stored) is str and self.keeps_read_text and fmt.keeps_source_text:
+            return stored
+        return self.spell(stored, fmt)
+
+    def spell(self, stored: object, fmt: Format) -> str:
+        """The stored value as attribute text with ``fmt``'s options (a text as read too,
+        when it is not written as read)."""
         return cast(str, stored)
 
 
@@ -303,7 +318,7 @@ class BoolCodec(Codec):
         _check_spelling(text, "true" if found else "false")
         return found
 
-    def write(self, stored: object, fmt: Format) -> str:
+    def spell(self, stored: object, fmt: Format) -> str:
         return "true" if stored else "false"
 
 
@@ -380,7 +395,7 @@ class IntCodec(Codec):
     def accept(self, value: object) -> object:
         return to_int(value)
 
-    def write(self, stored: object, fmt: Format) -> str:
+    def spell(self, stored: object, fmt: Format) -> str:
         return str(stored)
 
 
@@ -409,10 +424,8 @@ class RealCodec(Codec):
     def read(self, stored: object) -> object:
         return to_float(stored) if type(stored) is str else stored
 
-    def write(self, stored: object, fmt: Format) -> str:
+    def spell(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
-            if fmt.keeps_source_text:
-                return stored
             stored = to_float(stored)
         return fmt.numbers((cast(float, stored),), self.single)
 
@@ -550,10 +563,8 @@ class ArrayCodec(Codec):
             return _frozen(self.from_text(stored))
         return _frozen(cast(Array, stored).view())
 
-    def write(self, stored: object, fmt: Format) -> str:
+    def spell(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
-            if fmt.keeps_source_text:
-                return stored
             stored = self.from_text(stored)
         array = cast(Array, stored)
         if array.shape[0] <= _PIECE_NUMBERS:
@@ -759,8 +770,8 @@ class FlagsCodec(Codec):
                            f"{', '.join(self.keywords)})")
         return flags
 
-    def write(self, stored: object, fmt: Format) -> str:
-        if type(stored) is str:
+    def spell(self, stored: object, fmt: Format) -> str:
+        if type(stored) is str:  # a keyword alone
             return stored
         return " ".join(cast(tuple[str, ...], stored))
 

@@ -140,8 +140,9 @@ def test_the_float_spelling_moves_every_route(
 
 
 def test_every_codec_writes_a_text_it_kept_as_it_is() -> None:
-    """The exporter writes texts stored as read without calling their codec (the
-    ``AttributeSpec.as_is`` fast path): that is what every codec writes for them."""
+    """Every codec of the grammar writes a text it kept as read as it is when the output
+    keeps source text (``Codec.keeps_read_text``, which the exporter's write plan follows:
+    test_value_routes.py flips it)."""
     checked = 0
     for cls in element_classes().values():
         for attribute in cls.spec.attributes.values():
