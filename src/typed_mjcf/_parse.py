@@ -502,7 +502,9 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
     items = attributes_of(node) if context.long_tags else node.items()
-    rest = _tree.assign_texts(element, items, not context.options.escape_separators)
+    options = context.options
+    rest = _tree.assign_texts(element, items, not options.escape_separators,
+                              options.resolve_references)
     if rest is not None:
         _read_rest(element, rest, node, source, context)
 
@@ -667,6 +669,7 @@ class _Builder:
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, assign_texts, read_rest = _tree.new_child, _tree.assign_texts, _read_rest
         names = not context.options.escape_separators  # the tree claims names as read
+        link = context.options.resolve_references  # (and links references)
         long_tags = context.long_tags  # (read again after an include)
         merged = self.merged
         self.count(node, source, 1)  # the root
@@ -730,7 +733,7 @@ class _Builder:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()
             if items:  # values and names by the tree, the rest here
-                rest = assign_texts(child, items, names)
+                rest = assign_texts(child, items, names, link)
                 if rest is not None:
                     read_rest(child, rest, child_node, source, context)
             child_top = child

@@ -415,29 +415,38 @@ class Element(_Layout):
         references (those whose namespace another attribute names last)."""
         by_key = self.spec.by_key
         store = _store
-        named: list[tuple[AttributeSpec, object]] | None = None
+        identifier: AttributeSpec | None = None
+        name: object = None
+        references: list[tuple[AttributeSpec, object]] | None = None
         for key, value in kwargs.items():
             attribute = by_key.get(key)
             if attribute is None:
                 raise self._unknown_attribute(key)
             if value is None or (type(value) is str and not value):
                 continue
-            if not attribute.direct:  # converted once the values they depend on are stored
-                if named is None:
-                    named = []
-                named.append((attribute, value))
-                continue
-            try:
-                stored = attribute.codec.accept(value)
-            except Rejected as rejected:
-                raise self._reject(attribute, value, rejected) from None
-            store(self, attribute, stored)
-        if named is not None:
-            if len(named) > 1:
-                named.sort(key=_naming_order)
-            converted = [(attribute, self._convert(attribute, value))
-                         for attribute, value in named]
-            for attribute, stored in converted:
+            if attribute.direct:
+                try:
+                    stored = attribute.codec.accept(value)
+                except Rejected as rejected:
+                    raise self._reject(attribute, value, rejected) from None
+                store(self, attribute, stored)
+            elif attribute.kind == "id":
+                identifier, name = attribute, value
+            else:  # converted once the values naming their namespace are stored
+                if references is None:
+                    references = []
+                references.append((attribute, value))
+        if identifier is not None:
+            name = self._convert(identifier, name)
+        if references is not None:
+            if len(references) > 1:  # those whose namespace another attribute names last
+                references.sort(key=_namespace_given)
+            references = [(attribute, self._convert(attribute, value))
+                          for attribute, value in references]
+        if identifier is not None:
+            store(self, identifier, name)
+        if references is not None:
+            for attribute, stored in references:
                 store(self, attribute, stored)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
@@ -494,10 +503,13 @@ class Element(_Layout):
                              f"(<{self.spec.tag}> has at most one)")
         if self._attached is not None:
             _check_frame_child(self, child_spec)
-        child = _create(element_class(child_spec.class_name), self)
+        child = _create(child_spec.cls, self)
         if kwargs:
             child._init_attributes(kwargs)
-        _place(self, child, child_spec, position)
+        if position is None and not child_spec.single:
+            _append(self, child)
+        else:
+            _place(self, child, child_spec, position)
         return child
 
     def _single(self, tag: str) -> Element | None:
@@ -1137,10 +1149,10 @@ def _store(element: Element, attribute: AttributeSpec, stored: object,
     is stored: building, assigning and parsing all call it (a direct attribute has nothing
     that comes with it: that is what ``direct`` means)."""
     if attribute.direct:
-        if attribute.lo == 0 and _is_empty_array(stored):
-            element._unset(attribute)
-        else:
+        if attribute.lo or not _is_empty_array(stored):
             element._values[attribute.name] = stored
+        else:
+            element._unset(attribute)
         return
     values = element._values
     if attribute.kind == "id":
@@ -1156,12 +1168,9 @@ def _store(element: Element, attribute: AttributeSpec, stored: object,
         _wait(element, attribute, stored)
 
 
-def _naming_order(pair: tuple[AttributeSpec, object]) -> tuple[bool, bool]:
-    """The order a new element's names and references are stored in: its name first (the
-    one that can be refused, taken, before anything waits), references whose namespace
-    another attribute names last."""
-    attribute = pair[0]
-    return attribute.kind != "id", attribute.namespace_from is not None
+def _namespace_given(pair: tuple[AttributeSpec, object]) -> bool:
+    """Whether another attribute names the namespace of this reference (a sort key)."""
+    return pair[0].namespace_from is not None
 
 
 # ---------------------------------------------------------------------------- names
@@ -1642,31 +1651,35 @@ def assign(element: Element, attribute: AttributeSpec, value: object) -> None:
     element._assign(attribute, value)
 
 
-def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True
+def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True,
+                 link: bool = True
                  ) -> list[tuple[str, AttributeSpec | None, str, Exception | None]] | None:
-    """Set the attributes ``items`` (name, text) read from a file that are stored as their
-    codec reads them, and (if ``names``) the element's name: most of a parse. Return the
-    others, in order, for the caller: each with its attribute (``None``: the row lacks it)
-    and the refusal (a :class:`Rejected` or a library error), or ``None`` for one not set
-    here (a reference, an empty text, a name when not ``names``)."""
+    """Set the attributes ``items`` (name, text) read from a file: most of a parse. Values,
+    and if ``names`` (names taken as written) the element's name and its references of a
+    fixed namespace (as :func:`assign_text` with ``link``). Return the others, in order,
+    for the caller: each with its attribute (``None``: the row lacks it) and the refusal (a
+    :class:`Rejected` or a library error), or ``None`` for one not set here (an empty text,
+    a reference whose namespace another attribute names, names when not ``names``)."""
     by_name = element.spec.by_name
     store = _store
     rest: list[tuple[str, AttributeSpec | None, str, Exception | None]] | None = None
-    refused: Exception | None
+    refused: Exception | None = None
     for key, text in items:
         attribute = by_name.get(key)
-        if attribute is not None and text and (
-                attribute.direct or (names and attribute.kind == "id")):
+        if attribute is not None and text:
             try:
-                store(element, attribute, attribute.codec.parse(text))
-                continue
+                if attribute.direct or (names and attribute.kind == "id"):
+                    store(element, attribute, attribute.codec.parse(text))
+                    continue
+                if names and attribute.kind == "ref":
+                    assign_text(element, attribute, text, link)
+                    continue
             except (Rejected, MjcfError) as error:
                 refused = error
-        else:
-            refused = None
         if rest is None:
             rest = []
         rest.append((key, attribute, text, refused))
+        refused = None
     return rest
 
 
