@@ -172,24 +172,16 @@ class Codec:
         return stored
 
     # Whether a text stored as read from a file is written as it was read when the output
-    # keeps source text (``Format.keeps_source_text``): the one place that is decided.
-    # :meth:`write` follows it, and the exporter plans from it (once per row, see
-    # ``_export.write_plan``) to write such texts without the call. A codec that rewrites
-    # what it read (say, to normalise its spelling) sets it false: every route follows.
+    # keeps source text (``Format.keeps_source_text``): the one place that is decided. Every
+    # codec's :meth:`write` follows it (a test holds each to it), and the exporter plans from
+    # it (once per row, see ``_export.write_plan``) to write such texts without the call. A
+    # codec that rewrites what it read (say, to normalise its spelling) sets it false, and
+    # every route follows.
     keeps_read_text: bool = True
 
     def write(self, stored: object, fmt: Format) -> str:
-        """The stored value as attribute text: a text stored as read, as it was read when
-        :attr:`keeps_read_text` and ``fmt.keeps_source_text``; anything else as
-        :meth:`spell` writes it. Codecs override :meth:`spell`, never this (a test checks):
-        the exporter's fast path is this rule."""
-        if type(stored) is str and self.keeps_read_text and fmt.keeps_source_text:
-            return stored
-        return self.spell(stored, fmt)
-
-    def spell(self, stored: object, fmt: Format) -> str:
-        """The stored value as attribute text with ``fmt``'s options (a text as read too,
-        when it is not written as read)."""
+        """The stored value as attribute text; a text stored as read, as it was read when
+        ``fmt.keeps_source_text`` and :attr:`keeps_read_text`."""
         return cast(str, stored)
 
 
@@ -318,7 +310,7 @@ class BoolCodec(Codec):
         _check_spelling(text, "true" if found else "false")
         return found
 
-    def spell(self, stored: object, fmt: Format) -> str:
+    def write(self, stored: object, fmt: Format) -> str:
         return "true" if stored else "false"
 
 
@@ -395,7 +387,7 @@ class IntCodec(Codec):
     def accept(self, value: object) -> object:
         return to_int(value)
 
-    def spell(self, stored: object, fmt: Format) -> str:
+    def write(self, stored: object, fmt: Format) -> str:
         return str(stored)
 
 
@@ -424,8 +416,10 @@ class RealCodec(Codec):
     def read(self, stored: object) -> object:
         return to_float(stored) if type(stored) is str else stored
 
-    def spell(self, stored: object, fmt: Format) -> str:
+    def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
+            if fmt.keeps_source_text and self.keeps_read_text:
+                return stored
             stored = to_float(stored)
         return fmt.numbers((cast(float, stored),), self.single)
 
@@ -563,8 +557,10 @@ class ArrayCodec(Codec):
             return _frozen(self.from_text(stored))
         return _frozen(cast(Array, stored).view())
 
-    def spell(self, stored: object, fmt: Format) -> str:
+    def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
+            if fmt.keeps_source_text and self.keeps_read_text:
+                return stored
             stored = self.from_text(stored)
         array = cast(Array, stored)
         if array.shape[0] <= _PIECE_NUMBERS:
@@ -770,7 +766,7 @@ class FlagsCodec(Codec):
                            f"{', '.join(self.keywords)})")
         return flags
 
-    def spell(self, stored: object, fmt: Format) -> str:
+    def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:  # a keyword alone
             return stored
         return " ".join(cast(tuple[str, ...], stored))

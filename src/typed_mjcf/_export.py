@@ -221,7 +221,7 @@ class Writer:
         fmt, targets = self.fmt, self.targets
         for name, attribute, as_is in plan[1]:
             value = stored[name]
-            if as_is and type(value) is str:  # Codec.write's first case, planned once
+            if as_is and type(value) is str:  # as its codec writes it (planned once)
                 append(value)
             elif attribute.codec_only:
                 append(attribute.codec.write(value, fmt))
@@ -260,7 +260,7 @@ class Writer:
                     parts.append(f' {name}="{attribute.codec.write(value, fmt)}"')
                 continue
             if verbatim and as_is and type(value) is str and attribute.kind == "id":
-                parts.append(f' {name}="{escape(value)}"')  # (Codec.write's first case)
+                parts.append(f' {name}="{escape(value)}"')  # (as its codec writes it)
                 continue
             written = self.value(element, attribute, value)
             if written is not None:

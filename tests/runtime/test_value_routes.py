@@ -312,7 +312,7 @@ def test_a_name_codec_that_rewrites_names_is_followed_by_every_route(
     fast writer, the escaped one and for an attached model's scope."""
     for codec in (_codecs.IdentifierCodec, _codecs.ReferenceCodec):
         monkeypatch.setattr(codec, "keeps_read_text", False)
-        monkeypatch.setattr(codec, "spell", _shouted)
+        monkeypatch.setattr(codec, "write", _shouted)
     _no_plans(monkeypatch)
     for route, text in _export_routes(tmp_path):
         if route == "get_attribute_xml_string":
@@ -323,13 +323,17 @@ def test_a_name_codec_that_rewrites_names_is_followed_by_every_route(
         assert all(name == name.upper() for name in names), (route, names)
 
 
-def test_no_codec_overrides_the_writing_rule() -> None:
-    """``Codec.write`` is the rule the exporter's plan follows: codecs change ``spell``."""
-    pending: list[type[_codecs.Codec]] = [_codecs.Codec]
-    seen = 0
-    while pending:
-        cls = pending.pop()
-        seen += 1
-        assert cls.write is _codecs.Codec.write, cls
-        pending.extend(cls.__subclasses__())
-    assert seen >= 10
+def test_a_number_codec_follows_its_declaration() -> None:
+    """What the exporter's plan reads (``keeps_read_text``) is what ``write`` does: flipped,
+    the number codecs rewrite a text they kept as read."""
+    real = _codecs.make_codec("real", dtype="double", is_array=False, lo=1, hi=1,
+                              keywords=(), pattern=None)
+    array = _codecs.make_codec("real", dtype="double", is_array=True, lo=3, hi=3,
+                               keywords=(), pattern=None)
+    verbatim = _codecs.Format()
+    for codec, text, canonical in ((real, "0.50", "0.5"), (array, "0 0 1.50", "0 0 1.5")):
+        kept = codec.parse(text)
+        assert kept == text and codec.write(kept, verbatim) is kept
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(type(codec), "keeps_read_text", False)
+            assert codec.write(kept, verbatim) == canonical
