@@ -351,8 +351,8 @@ class Element(_Layout):
             stored = attribute.codec.accept(value)
         except Rejected as rejected:
             raise self._reject(attribute, value, rejected) from None
-        if attribute.is_reference:
-            return _resolve(self, attribute, cast(str, stored))
+        if attribute.is_reference and isinstance(stored, str):
+            return _resolve(self, attribute, stored)
         return stored
 
     def _unset(self, attribute: AttributeSpec) -> None:
@@ -441,8 +441,8 @@ class Element(_Layout):
         if references is not None:
             if len(references) > 1:  # those whose namespace another attribute names last
                 references.sort(key=_namespace_given)
-            references = [(attribute, self._convert(attribute, value))
-                          for attribute, value in references]
+            for i, (attribute, value) in enumerate(references):
+                references[i] = attribute, self._convert(attribute, value)
         if identifier is not None:
             store(self, identifier, name)
         if references is not None:
@@ -1056,10 +1056,10 @@ def _child_scope(parent: Element) -> NameScope:
 def _append(parent: Element, child: Element) -> None:
     """Put ``child`` last among ``parent``'s children (the one place that does)."""
     children = parent._children
-    if type(children) is tuple:
+    if type(children) is list:  # (narrowed by the test: no typing.cast, a call per child)
+        children.append(child)
+    else:  # () until the first child
         _set_children(parent, [child])
-    else:
-        cast(list[Element], children).append(child)
 
 
 def _mutable_children(parent: Element) -> list[Element]:
@@ -1155,14 +1155,14 @@ def _store(element: Element, attribute: AttributeSpec, stored: object,
             element._unset(attribute)
         return
     values = element._values
-    if attribute.kind == "id":
+    if attribute.kind == "id":  # (a name is a str: isinstance, not typing.cast, a call)
         old = values.get(attribute.name)
-        if old != stored:
-            _claim(element, attribute, cast(str, stored))
+        if old != stored and isinstance(stored, str):
+            _claim(element, attribute, stored)
             if isinstance(old, str):
-                element._scope.release(cast(str, attribute.namespace), old, element)
-    elif attribute.scope:
-        _rename_model(element, cast(str, stored))
+                element._scope.release(attribute.namespace or "", old, element)
+    elif attribute.scope and isinstance(stored, str):
+        _rename_model(element, stored)
     values[attribute.name] = stored
     if link and type(stored) is str and attribute.is_reference:
         _wait(element, attribute, stored)
