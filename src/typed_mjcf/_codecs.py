@@ -182,7 +182,7 @@ class Codec:
     def write(self, stored: object, fmt: Format) -> str:
         """The stored value as attribute text; a text stored as read, as it was read when
         ``fmt.keeps_source_text`` and :attr:`keeps_read_text`."""
-        return cast(str, stored)
+        return stored if type(stored) is str else str(stored)  # (typing.cast is a call)
 
 
 # What XML 1.0 can hold (its Char production): a string with anything else (NUL, most control
