@@ -577,10 +577,10 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
             source, context.line(node, source)))
         return later
     if attribute.kind == "id":
+        name = text
+        if context.options.escape_separators:
+            name = escape_separators(name)
         try:
-            name = text
-            if context.options.escape_separators:
-                name = escape_separators(name)
             _tree.assign_text(element, attribute, name)
         except Rejected as rejected:
             context.refuse("invalid-value", element.path,
