@@ -156,6 +156,8 @@ class Writer:
             if name is None:
                 raise ExportError(f"{element.path}: {attribute.py_name} refers to "
                                   f"{target.path}, which has no name and is not written here")
+        else:  # the target's name, as a reference's codec writes a name
+            name = attribute.codec.write(name, self.fmt)
         try:
             return self.prefix(scope) + name + _frame_child_suffix(target)
         except ExportError:
@@ -201,9 +203,11 @@ class Writer:
 
     def attribute_text(self, element: Element, stored: Mapping[str, object]) -> str:
         """`` name="value"`` for each of ``element``'s ``stored`` values (this loop is most
-        of an export's time). In verbatim output, texts stored as read are written as they
-        are (as their codecs write them then: see :meth:`Codec.write`), into the template of the element's set of attributes, and escaped only if the
-        result shows something to escape (one check per element rather than per value)."""
+        of an export's time). In verbatim output, a text stored as read is written as it is
+        where its codec says so (the plan's flag, from ``Codec.keeps_read_text``: what
+        ``Codec.write`` does for it), into the template of the element's set of attributes,
+        and escaped only if the result shows something to escape (one check per element
+        rather than per value)."""
         spec = element.spec
         key = tuple(stored)
         plan = spec.plans.get(key)
@@ -211,13 +215,13 @@ class Writer:
             plan = write_plan(spec, key)
         if _tree.scope_of(element) is not self.verbatim_scope or (
                 self.given_names and id(element) in self.given_names):
-            return self.escaped_attribute_text(element, stored, plan[0])
+            return self.escaped_attribute_text(element, stored, plan)
         texts: list[str] = []
         append = texts.append
         fmt, targets = self.fmt, self.targets
         for name, attribute, as_is in plan[1]:
             value = stored[name]
-            if as_is and type(value) is str:  # = attribute.codec.write(value, fmt) here
+            if as_is and type(value) is str:  # as its codec writes it (planned once)
                 append(value)
             elif attribute.codec_only:
                 append(attribute.codec.write(value, fmt))
@@ -226,29 +230,28 @@ class Writer:
             else:
                 text = self.value(element, attribute, value)
                 if text is None:  # not written (a link to a removed element)
-                    return self.escaped_attribute_text(element, stored, plan[0])
+                    return self.escaped_attribute_text(element, stored, plan)
                 append(text)
         out = plan[2] % tuple(texts)
         if out.count('"') != 2 * len(texts) or MARKUP.search(out) is not None:
-            return self.escaped_attribute_text(element, stored, plan[0])
+            return self.escaped_attribute_text(element, stored, plan)
         return out
 
     def escaped_attribute_text(self, element: Element, stored: Mapping[str, object],
-                               names: tuple[str, ...]) -> str:
-        """:meth:`attribute_text` value by value (``names``: ``stored``'s in grammar order),
-        each text escaped: for output that is not verbatim, and values that need escaping."""
-        by_name = element.spec.by_name
+                               plan: WritePlan) -> str:
+        """:meth:`attribute_text` value by value (``plan``: the write plan of ``stored``'s
+        names), each text escaped: for output that is not verbatim, and values that need
+        escaping."""
         verbatim = self.verbatim and _tree.scope_of(element) is self.top_scope
         parts: list[str] = []
         if self.given_names and id(element) in self.given_names:
             parts.append(f' {self.given_name(element)}')
         skip = self.skip
         fmt = self.fmt
-        for name in names:
+        for name, attribute, as_is in plan[1]:
             if skip and name in skip:
                 continue
             value = stored[name]
-            attribute = by_name[name]
             if attribute.codec_only:
                 if type(value) is str:  # text (or numbers as read: they may hold tabs)
                     text = attribute.codec.write(value, fmt)
@@ -256,8 +259,8 @@ class Writer:
                 else:  # numbers set in Python: nothing to escape
                     parts.append(f' {name}="{attribute.codec.write(value, fmt)}"')
                 continue
-            if verbatim and type(value) is str and attribute.kind == "id":
-                parts.append(f' {name}="{escape(value)}"')
+            if verbatim and as_is and type(value) is str and attribute.kind == "id":
+                parts.append(f' {name}="{escape(value)}"')  # (as its codec writes it)
                 continue
             written = self.value(element, attribute, value)
             if written is not None:
@@ -288,7 +291,7 @@ class Writer:
             prefix = self.prefix(scope)
             return " ".join(prefix + name for name in text.split())
         if kind == "id" or attribute.is_reference:
-            text = cast(str, value)
+            text = attribute.codec.write(value, self.fmt)
             scope = _tree.scope_of(element)
             if scope is self.top_scope:
                 return text
@@ -596,7 +599,11 @@ def write_plan(spec: ElementSpec, key: tuple[str, ...]) -> WritePlan:
     by_name = spec.by_name
     # the grammar's own strings (values are stored under them): looked up by identity
     names = tuple(sorted((by_name[name].name for name in key), key=spec.order.__getitem__))
-    plan = (names, tuple((name, by_name[name], by_name[name].as_is) for name in names),
+    # whether a text stored as read is written as it is: the attribute's (texts written
+    # unchanged by the exporter: not files, nor names of attached models) and its codec's
+    plan = (names, tuple((name, by_name[name],
+                          by_name[name].as_is and by_name[name].codec.keeps_read_text)
+                         for name in names),
             "".join(f' {name}="%s"' for name in names))
     if len(spec.plans) < _PLANS_PER_ROW:
         spec.plans[key] = plan

@@ -136,8 +136,9 @@ class AttributeSpec:
         self.direct = not self.is_reference and kind != "id" and not scope
         self.codec_only = self.direct and kind != "file"
         self.name_list = None  # set by the language's facts (see mark_name_list)
-        # a text stored for it is written as it is (verbatim output, names of the model
-        # written): what its codec writes for such a text then (see Codec.write)
+        # a text stored for it is written unchanged by the exporter (verbatim output, names
+        # of the model written), if its codec writes read texts as read (the write plan
+        # asks: Codec.keeps_read_text)
         self.as_is = self.codec_only or kind == "id" or self.is_reference
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern,

@@ -507,7 +507,9 @@ def _set_attributes(element: Element, node: XmlNode, source: str | None,
                     context: _Context) -> None:
     """Read ``node``'s attributes into ``element``."""
     items = attributes_of(node) if context.long_tags else node.items()
-    rest = _tree.assign_texts(element, items, not context.options.escape_separators)
+    options = context.options
+    rest = _tree.assign_texts(element, items, not options.escape_separators,
+                              options.resolve_references)
     if rest is not None:
         _read_rest(element, rest, node, source, context)
 
@@ -580,11 +582,14 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
             source, context.line(node, source)))
         return later
     if attribute.kind == "id":
+        name = text
+        if context.options.escape_separators:
+            name = escape_separators(name)
         try:
-            name = text
-            if context.options.escape_separators:
-                name = escape_separators(name)
-            _tree.assign_name_text(element, attribute, name)
+            _tree.assign_text(element, attribute, name)
+        except Rejected as rejected:
+            context.refuse("invalid-value", element.path,
+                           _rejected(element, attribute, name, rejected, node, source, context))
         except MjcfError as error:
             _refuse_name(element, error, node, source, context)
         return later
@@ -669,6 +674,7 @@ class _Builder:
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, assign_texts, read_rest = _tree.new_child, _tree.assign_texts, _read_rest
         names = not context.options.escape_separators  # the tree claims names as read
+        link = context.options.resolve_references  # (and links references)
         long_tags = context.long_tags  # (read again after an include)
         merged = self.merged
         self.count(node, source, 1)  # the root
@@ -732,7 +738,7 @@ class _Builder:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()
             if items:  # values and names by the tree, the rest here
-                rest = assign_texts(child, items, names)
+                rest = assign_texts(child, items, names, link)
                 if rest is not None:
                     read_rest(child, rest, child_node, source, context)
             child_top = child

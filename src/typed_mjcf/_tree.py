@@ -348,11 +348,7 @@ class Element(_Layout):
         if value is None or (type(value) is str and not value):
             self._unset(attribute)
             return
-        stored = self._convert(attribute, value)
-        if attribute.lo == 0 and _is_empty_array(stored):
-            self._unset(attribute)  # as MuJoCo reads an empty list: absent
-            return
-        self._store(attribute, stored)
+        _store(self, attribute, self._convert(attribute, value))
 
     def _convert(self, attribute: AttributeSpec, value: object) -> object:
         if attribute.is_reference and isinstance(value, Element):
@@ -361,35 +357,9 @@ class Element(_Layout):
             stored = attribute.codec.accept(value)
         except Rejected as rejected:
             raise self._reject(attribute, value, rejected) from None
-        if attribute.is_reference and not _COMPAT[0]:  # dm_control: a name stays a name
-            return _resolve(self, attribute, cast(str, stored))
+        if attribute.is_reference and isinstance(stored, str) and not _COMPAT[0]:
+            return _resolve(self, attribute, stored)  # dm_control: a name stays a name
         return stored
-
-    def _store(self, attribute: AttributeSpec, stored: object) -> None:
-        """Keep ``stored`` (what the codec gave) as the attribute's value, with what comes with
-        it: names claimed, links waited for, the model renamed. A direct attribute has nothing
-        that comes with it (that is what ``direct`` means), nor has a link to an element: it
-        is only put in the dict, which the loops of building (``_init_attributes``) and
-        parsing (``assign_texts``, ``assign_text``'s links) do themselves, a call per value
-        costing 3-4% of a build or parse (``tests/runtime/test_tree.py`` checks that building,
-        assigning and parsing store every direct value alike)."""
-        values = self._values
-        if attribute.direct:
-            values[attribute.name] = stored
-            return
-        if attribute.kind == "id":
-            old = values.get(attribute.name)
-            if old != stored:
-                _claim(self, attribute, cast(str, stored))
-                if isinstance(old, str):
-                    self._scope.release(cast(str, attribute.namespace), old, self)
-        elif attribute.scope:
-            _rename_model(self, cast(str, stored))
-        values[attribute.name] = stored
-        if type(stored) is str and attribute.is_reference:
-            _wait(self, attribute, stored)
-        if _COMPAT[0] and attribute.kind == "file":
-            _name_after_file(self)
 
     def _unset(self, attribute: AttributeSpec) -> None:
         old = self._values.pop(attribute.name, None)
@@ -445,12 +415,15 @@ class Element(_Layout):
         return attribute
 
     def _init_attributes(self, kwargs: Mapping[str, object]) -> None:
-        """Set the attributes of a new element (not yet in its parent): names are claimed
-        last, so a refused value leaves the model untouched."""
+        """Set the attributes of a new element (not yet in its parent), each stored by
+        :func:`_store`: the values first, then, once every value is converted (so that a
+        refused one leaves the model untouched), the name (which may be taken) and the
+        references (those whose namespace another attribute names last)."""
         by_key = self.spec.by_key
-        values = self._values
-        others: list[tuple[AttributeSpec, object]] | None = None
-        identifier: tuple[AttributeSpec, object] | None = None
+        store = _store
+        identifier: AttributeSpec | None = None
+        name: object = None
+        references: list[tuple[AttributeSpec, object]] | None = None
         for key, value in kwargs.items():
             attribute = by_key.get(key)
             if attribute is None:
@@ -462,43 +435,29 @@ class Element(_Layout):
                     stored = attribute.codec.accept(value)
                 except Rejected as rejected:
                     raise self._reject(attribute, value, rejected) from None
-                if attribute.lo != 0 or not _is_empty_array(stored):
-                    values[attribute.name] = stored  # _store's direct case
+                store(self, attribute, stored)
             elif attribute.kind == "id":
-                identifier = (attribute, value)
-            else:
-                if others is None:
-                    others = []
-                others.append((attribute, value))
-        if others is not None:
-            self._init_named(others)
+                identifier, name = attribute, value
+            else:  # converted once the values naming their namespace are stored
+                if references is None:
+                    references = []
+                references.append((attribute, value))
         if identifier is not None:
-            attribute, value = identifier
-            name = self._convert(attribute, value)
-            assert isinstance(name, str)
-            _claim(self, attribute, name)
-            values[attribute.name] = name
+            name = self._convert(identifier, name)
+        if references is not None:
+            if len(references) > 1:  # those whose namespace another attribute names last
+                references.sort(key=_namespace_given)
+            for i, (attribute, value) in enumerate(references):
+                references[i] = attribute, self._convert(attribute, value)
+        if identifier is not None:
+            store(self, identifier, name)
+        if references is not None:
+            for attribute, stored in references:
+                store(self, attribute, stored)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
-        if _COMPAT[0] and identifier is None:
-            _name_after_file(self)
-
-    def _init_named(self, pairs: list[tuple[AttributeSpec, object]]) -> None:
-        """References and the model's name, for :meth:`_init_attributes` (references after
-        the attributes naming their namespace)."""
-        values = self._values
-        waits: list[AttributeSpec] = []
-        if len(pairs) > 1:
-            pairs.sort(key=lambda pair: pair[0].namespace_from is not None)
-        for attribute, value in pairs:
-            stored = self._convert(attribute, value)
-            values[attribute.name] = stored
-            if attribute.scope:
-                _rename_model(self, cast(str, stored))
-            elif type(stored) is str:
-                waits.append(attribute)
-        for attribute in waits:
-            _wait(self, attribute, cast(str, values[attribute.name]))
+        if _COMPAT[0]:
+            _name_after_file(self)  # (when not named)
 
     # ------------------------------------------------------------------ children
 
@@ -550,10 +509,13 @@ class Element(_Layout):
                              f"(<{self.spec.tag}> has at most one)")
         if self._attached is not None:
             _check_frame_child(self, child_spec)
-        child = _create(element_class(child_spec.class_name), self)
+        child = _create(child_spec.cls, self)
         if kwargs:
             child._init_attributes(kwargs)
-        _place(self, child, child_spec, position)
+        if position is None and not child_spec.single:
+            _append(self, child)
+        else:
+            _place(self, child, child_spec, position)
         return child
 
     def _single(self, tag: str) -> Element | None:
@@ -1100,10 +1062,10 @@ def _child_scope(parent: Element) -> NameScope:
 def _append(parent: Element, child: Element) -> None:
     """Put ``child`` last among ``parent``'s children (the one place that does)."""
     children = parent._children
-    if type(children) is tuple:
+    if type(children) is list:  # (narrowed by the test: no typing.cast, a call per child)
+        children.append(child)
+    else:  # () until the first child
         _set_children(parent, [child])
-    else:
-        cast(list[Element], children).append(child)
 
 
 def _mutable_children(parent: Element) -> list[Element]:
@@ -1179,6 +1141,42 @@ def _detach_model(model: ModelBase) -> None:
     parent = model._scope.parent
     if parent is not None:
         parent.detach(model._scope)
+
+
+# ---------------------------------------------------------------------------- storing
+
+
+def _store(element: Element, attribute: AttributeSpec, stored: object,
+           link: bool = True) -> None:
+    """Keep ``stored`` (what the codec gave, or the element a reference links to) as the
+    attribute's value, with what comes with it: the name claimed (and the old one released),
+    the model renamed, a name that names no element yet waited for (unless not ``link``).
+    An empty list of numbers is stored as absent, as MuJoCo reads it. The one place a value
+    is stored: building, assigning and parsing all call it (a direct attribute has nothing
+    that comes with it: that is what ``direct`` means)."""
+    if attribute.direct:
+        if attribute.lo or not _is_empty_array(stored):
+            element._values[attribute.name] = stored
+        else:
+            element._unset(attribute)
+        return
+    values = element._values
+    if attribute.kind == "id":  # (a name is a str: isinstance, not typing.cast, a call)
+        old = values.get(attribute.name)
+        if old != stored and isinstance(stored, str):
+            _claim(element, attribute, stored)
+            if isinstance(old, str):
+                element._scope.release(attribute.namespace or "", old, element)
+    elif attribute.scope and isinstance(stored, str):
+        _rename_model(element, stored)
+    values[attribute.name] = stored
+    if link and type(stored) is str and attribute.is_reference:
+        _wait(element, attribute, stored)
+
+
+def _namespace_given(pair: tuple[AttributeSpec, object]) -> bool:
+    """Whether another attribute names the namespace of this reference (a sort key)."""
+    return pair[0].namespace_from is not None
 
 
 # ---------------------------------------------------------------------------- names
@@ -1664,46 +1662,35 @@ def assign(element: Element, attribute: AttributeSpec, value: object) -> None:
     element._assign(attribute, value)
 
 
-def assign_name_text(element: Element, attribute: AttributeSpec, text: str) -> None:
-    """Set an element's name from a file (names read from files may hold '/')."""
-    values = element._values
-    if attribute.name in values or not text:
-        assign_text(element, attribute, text)  # a repeated section renames: the general path
-        return
-    _claim(element, attribute, text)
-    values[attribute.name] = text
-
-
-def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True
+def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True,
+                 link: bool = True
                  ) -> list[tuple[str, AttributeSpec | None, str, Exception | None]] | None:
-    """Set the attributes ``items`` (name, text) read from a file that are stored as their
-    codec reads them, and (if ``names``) the element's name: most of a parse. Return the
-    others, in order, for the caller: each with its attribute (``None``: the row lacks it)
-    and the refusal (a :class:`Rejected` or a library error), or ``None`` for one not set
-    here (a reference, an empty text, a name when not ``names``)."""
+    """Set the attributes ``items`` (name, text) read from a file: most of a parse. Values,
+    and if ``names`` (names taken as written) the element's name and its references of a
+    fixed namespace (as :func:`assign_text` with ``link``). Return the others, in order,
+    for the caller: each with its attribute (``None``: the row lacks it) and the refusal (a
+    :class:`Rejected` or a library error), or ``None`` for one not set here (an empty text,
+    a reference whose namespace another attribute names, names when not ``names``)."""
     by_name = element.spec.by_name
-    values = element._values
+    store = _store
     rest: list[tuple[str, AttributeSpec | None, str, Exception | None]] | None = None
-    refused: Exception | None
+    refused: Exception | None = None
     for key, text in items:
         attribute = by_name.get(key)
-        if attribute is not None and attribute.direct and text:
+        if attribute is not None and text:
             try:
-                values[attribute.name] = attribute.codec.parse(text)  # _store's direct case
-                continue
-            except Rejected as rejected:
-                refused = rejected
-        elif names and attribute is not None and text and attribute.kind == "id":
-            try:
-                assign_name_text(element, attribute, text)
-                continue
-            except MjcfError as error:
+                if attribute.direct or (names and attribute.kind == "id"):
+                    store(element, attribute, attribute.codec.parse(text))
+                    continue
+                if names and attribute.kind == "ref":
+                    assign_text(element, attribute, text, link)
+                    continue
+            except (Rejected, MjcfError) as error:
                 refused = error
-        else:
-            refused = None
         if rest is None:
             rest = []
         rest.append((key, attribute, text, refused))
+        refused = None
     return rest
 
 
@@ -1719,16 +1706,13 @@ def assign_text(element: Element, attribute: AttributeSpec, text: str,
     if link and namespace is not None and attribute.kind == "ref":
         table = element._scope.tables.get(namespace)
         found = None if table is None else table.get(text)
-        if isinstance(found, Element):  # names an element already: linked at once
-            element._values[attribute.name] = found  # _store's effect for a link (a call:
-            return  # +3% of parsing a model with references)
-    stored = attribute.codec.parse(text)
-    if attribute.is_reference:
-        if not link:
-            element._values[attribute.name] = text
+        if isinstance(found, Element):  # names an element already (a name in a table
+            _store(element, attribute, found)  # is one the codec takes): linked at once
             return
+    stored = attribute.codec.parse(text)
+    if link and attribute.is_reference:
         stored = _resolve(element, attribute, text)
-    element._store(attribute, stored)
+    _store(element, attribute, stored, link)
 
 
 def attach_at(frame: Element, model: ModelBase) -> None:
@@ -1900,7 +1884,7 @@ def _name_after_file(element: Element) -> None:
         stem = stem.rsplit(".", 1)[0]
     if stem and element._root is not None and element._scope.lookup(
             cast(str, id_attribute.namespace), stem) is None:
-        element._store(id_attribute, stem)
+        _store(element, id_attribute, stem)
 
 
 def name_after_files(model: ModelBase) -> None:

@@ -140,8 +140,9 @@ def test_the_float_spelling_moves_every_route(
 
 
 def test_every_codec_writes_a_text_it_kept_as_it_is() -> None:
-    """The exporter writes texts stored as read without calling their codec (the
-    ``AttributeSpec.as_is`` fast path): that is what every codec writes for them."""
+    """Every codec of the grammar writes a text it kept as read as its ``keeps_read_text``
+    says (as it is, when the output keeps source text): the exporter's write plan follows
+    that declaration without calling ``write`` (test_value_routes.py flips it)."""
     checked = 0
     for cls in element_classes().values():
         for attribute in cls.spec.attributes.values():
@@ -153,7 +154,8 @@ def test_every_codec_writes_a_text_it_kept_as_it_is() -> None:
                     stored = codec.parse(text)
                 except _codecs.Rejected:
                     continue
-                if type(stored) is str:  # a text kept as read
-                    assert codec.write(stored, _codecs.Format()) is stored, attribute
+                if type(stored) is str:  # a text kept as read: written as the codec says
+                    kept = codec.write(stored, _codecs.Format()) is stored
+                    assert kept == codec.keeps_read_text, attribute
                     checked += 1
     assert checked > 1000  # (the grammar has thousands)
