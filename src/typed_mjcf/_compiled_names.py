@@ -16,11 +16,13 @@ looked up by its prefixes, in time proportional to its length.
 
 from __future__ import annotations
 
+import itertools
+import math
 import re
 import string
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Final
+from typing import Final, cast
 
 from typed_mjcf import _tree
 from typed_mjcf._files import element_file_stem
@@ -56,10 +58,15 @@ Chain = tuple[tuple[str, int], ...]
 class Family:
     """The names one element gives rise to in the compiled model."""
 
-    __slots__ = ("bounds", "head", "origin", "pattern")
+    __slots__ = ("bounds", "claims", "head", "origin", "pattern", "pieces")
 
-    def __init__(self, origin: Element, pieces: Sequence[Piece]) -> None:
+    def __init__(self, origin: Element, pieces: Sequence[Piece], claims: bool = False) -> None:
         self.origin = origin  # the element the compiled objects come from
+        self.pieces = tuple(pieces)
+        # whether MuJoCo refuses another object of the namespace with one of these names
+        # ("repeated name"): a replicate's copies and a mesh named after its file do; the
+        # bodies a <flexcomp> makes do not (MuJoCo 4.0.0 compiles a body named like one)
+        self.claims = claims
         literal = next((i for i, piece in enumerate(pieces) if not isinstance(piece, str)),
                        len(pieces))
         self.head = "".join(str(piece) for piece in pieces[:literal])
@@ -81,6 +88,26 @@ class Family:
     def exact(self) -> bool:
         """Whether the family is one name (its head)."""
         return self.pattern is None
+
+    def names(self, limit: int) -> list[str] | None:
+        """Every name of the family, or ``None`` if it has more than ``limit`` or any text
+        may stand in it."""
+        ranges: list[range] = []
+        for piece in self.pieces:
+            if isinstance(piece, _Anything) or (isinstance(piece, _Number)
+                                                and piece.bound is None):
+                return None
+            if isinstance(piece, _Number):
+                ranges.append(range(cast(int, piece.bound)))
+        if math.prod(len(r) for r in ranges) > limit:
+            return None
+        out: list[str] = []
+        for numbers in itertools.product(*ranges):
+            values = iter(numbers)
+            out.append("".join(piece if isinstance(piece, str) else
+                               str(next(values)).zfill(cast(_Number, piece).width or 0)
+                               for piece in self.pieces))
+        return out
 
     def matches_tail(self, tail: str) -> bool:
         """Whether ``head + tail`` is a name of the family."""
@@ -179,12 +206,14 @@ class CompiledNames:
         self.facts = grammar_facts()
         self.families: dict[_Key, dict[str, list[Family]]] = {}
         self.chains: dict[int, Chain] = {}  # elements copied by replicates, by id
+        self.scopes: dict[int, NameScope] = {}  # the scopes of ``families``' keys
         for element, chain in _walk(model):
             self._collect(element, chain)
 
     # ---------------------------------------------------------------- collecting
 
     def _add(self, scope: NameScope, namespace: str | None, family: Family) -> None:
+        self.scopes[id(scope)] = scope
         by_head = self.families.setdefault((id(scope), namespace), {})
         by_head.setdefault(family.head, []).append(family)
 
@@ -212,7 +241,8 @@ class CompiledNames:
             self._collect_unnamed(element, scope, namespace)
             return
         if chain:
-            self._add(scope, namespace, Family(element, replicated([name], chain, facts)))
+            self._add(scope, namespace,
+                      Family(element, replicated([name], chain, facts), claims=True))
         bodies = _flexcomp_bodies(element, name, facts)
         if bodies is not None and facts.flexcomp is not None:
             self._add(scope, facts.flexcomp.namespace,
@@ -224,7 +254,7 @@ class CompiledNames:
         if file_attribute is not None:
             stem = element_file_stem(element, file_attribute)
             if stem:
-                self._add(scope, namespace, Family(element, [stem]))
+                self._add(scope, namespace, Family(element, [stem], claims=True))
         elif namespace in facts.named_from_contents:
             # named by the file it reads, which typed-mjcf does not open: any name may be it
             self._add(scope, namespace, Family(element, [_ANYTHING]))
@@ -286,6 +316,28 @@ class CompiledNames:
             if attached is not None and attached is not scope:
                 return self.origin(attached, namespace, rest)
         return None
+
+    def repeated(self, limit: int = 10_000) -> Iterator[tuple[Element, str, Element]]:
+        """Names MuJoCo's compiler would give twice in one namespace: (the element making
+        the name, the name, the element that has it already: named so, or making it too).
+        A family with more than ``limit`` names is not enumerated."""
+        for (scope_id, namespace), by_head in self.families.items():
+            if namespace is None:
+                continue
+            scope = self.scopes[scope_id]
+            seen: dict[str, Element] = {}
+            for families in by_head.values():
+                for family in families:
+                    names = family.names(limit) if family.claims else None
+                    for name in names or ():
+                        other = seen.setdefault(name, family.origin)
+                        if other is not family.origin:
+                            yield family.origin, name, other
+                            continue
+                        named = scope.lookup(namespace, name)
+                        if (isinstance(named, Element) and named is not family.origin
+                                and id(named) not in self.chains):
+                            yield family.origin, name, named
 
     def exact_names(self, scope: NameScope, namespace: str) -> Iterable[str]:
         """The single names given in ``scope`` (files' stems), for suggestions."""

@@ -33,7 +33,7 @@ Severity = Literal["error", "warning"]
 Rule = Literal[
     "exclusive", "together", "requires", "oneof", "required-attribute", "required-child",
     "range", "unresolved-reference", "default-class", "world-body", "replicate-joint", "self-attach",
-    "replicate-names", "unused-default", "child-needs",
+    "replicate-names", "unused-default", "child-needs", "repeated-name",
 ]
 
 RULES: Final[dict[Rule, str]] = {
@@ -54,6 +54,8 @@ RULES: Final[dict[Rule, str]] = {
     "unused-default": "a default class is used by some class= or childclass= (warning)",
     "child-needs": "a child MuJoCo crashes on without some attributes has them "
                    "(schema/facts.toml's child_needs)",
+    "repeated-name": "no name MuJoCo's compiler gives (a <replicate>'s copies, a mesh named "
+                     "after its file) is another object's name",
 }
 
 # Suggestions ("did you mean") compare a name with every name of its namespace: only the first
@@ -125,6 +127,7 @@ class _Plan:
     references: tuple[AttributeSpec, ...]
     name_lists: tuple[AttributeSpec, ...]  # texts listing names, each checked as a reference
     bounded: tuple[AttributeSpec, ...]  # numbers with bounds
+    named_after_file: bool  # unnamed, MuJoCo names the element after its file
 
 
 @functools.cache
@@ -163,6 +166,7 @@ def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
         references=spec.references,
         name_lists=tuple(a for a in spec.attributes.values() if a.name_list is not None),
         bounded=tuple(a for a in spec.attributes.values() if a.bounds),
+        named_after_file=not projection and spec.namespace in grammar_facts().named_after_file,
     )
 
 
@@ -190,6 +194,7 @@ class _Pass:
     plans: dict[tuple[int, bool], _Plan] = field(default_factory=dict[tuple[int, bool], _Plan])
     pending: list[_Pending] = field(default_factory=list[_Pending])
     replicates: int = 0
+    named_after_files: bool = False  # some element is (compiled names to check)
     objectless_sensors: list[tuple[int, Element]] = field(
         default_factory=list[tuple[int, Element]])
     classes: dict[str, tuple[int, Element]] = field(default_factory=dict[str, tuple[int, Element]])
@@ -257,7 +262,10 @@ def validate(model: ModelBase) -> list[Finding]:
         for child in reversed(_tree.children(element)):
             if _is_written(element, child):
                 stack.append((child, element, owner))
-    _resolve_pending(state)
+    if state.pending or state.replicates or state.named_after_files:
+        compiled = CompiledNames(model)  # a walk of its own: only when names may be made
+        _resolve_pending(state, compiled)
+        _check_repeated_names(state, compiled)
     _check_replicated_sensors(state)
     _check_unused_classes(state)
     return state.findings()
@@ -312,6 +320,8 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
           and _tree.element_name(element) is not None
           and not any(a.name in attrs for a in plan.references)):
         state.objectless_sensors.append((order, element))
+    if plan.named_after_file and _tree.element_name(element) is None:
+        state.named_after_files = True
 
 
 def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> None:
@@ -487,13 +497,12 @@ def element_in_model(model: ModelBase, target: Element) -> bool:
     return _tree.scope_of(target).is_within(_tree.scope_of(model))
 
 
-def _resolve_pending(state: _Pass) -> None:
+def _resolve_pending(state: _Pass, compiled: CompiledNames) -> None:
     """Resolve the references the namespaces did not: names of objects MuJoCo's compiler
     makes (replicate copies, flexcomp bodies, meshes named after their files, what an
     <attach prefix> brings), here or in an attached model."""
     if not state.pending:
         return
-    compiled = CompiledNames(state.model)
     hints = _MAX_HINTS
     for ref in state.pending:
         if compiled.origin(_tree.scope_of(ref.element), ref.namespace, ref.name) is not None:
@@ -518,6 +527,32 @@ def _unresolved_message(compiled: CompiledNames, ref: _Pending, *, hint: bool) -
                 f"class={name!r}>){suggestion}")
     scoped = " (no attached model provides the scoped name)" if "/" in name else ""
     return f"{ref.attribute}={name!r} names no {namespace} in the model{scoped}{suggestion}"
+
+
+def _check_repeated_names(state: _Pass, compiled: CompiledNames) -> None:
+    """Names the compiler would give twice ("repeated name" in MuJoCo), reported at the
+    element making the second."""
+    repeated = list({(id(maker), id(other)): (maker, name, other)  # each pair once
+                     for maker, name, other in reversed(list(compiled.repeated()))}.values())
+    repeated.reverse()
+    orders = _document_order(state.model) if repeated else {}
+    for maker, name, other in repeated:
+        state.add(orders.get(id(maker), 0), maker, "repeated-name",
+                  f"MuJoCo's compiler names an object made from this element {name!r}, "
+                  + (f"the name of {other.path}" if _tree.element_name(other) == name
+                     else f"a name {other.path} makes too")
+                  + f" (MuJoCo: repeated name {name!r})")
+
+
+def _document_order(model: ModelBase) -> dict[int, int]:
+    """Each element's place in :func:`validate`'s walk, by id."""
+    orders: dict[int, int] = {}
+    stack: list[Element] = [model]
+    while stack:
+        element = stack.pop()
+        orders[id(element)] = len(orders) + 1
+        stack.extend(reversed(_tree.children(element)))
+    return orders
 
 
 def _check_replicated_sensors(state: _Pass) -> None:

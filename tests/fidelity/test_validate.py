@@ -4,6 +4,7 @@ valid models have no findings; names MuJoCo defines itself are not reported."""
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 
 import mujoco
 import pytest
@@ -370,6 +371,62 @@ def test_named_objectless_sensor_with_two_replicates() -> None:
     assert mujoco_error(model) is not None
     model.worldbody.replicate[1].remove()
     assert validate(model) == [] and mujoco_error(model) is None
+
+
+def compile_error(model: mjcf.RootElement) -> str | None:
+    """What MuJoCo says compiling the model (some repeated names are found only then)."""
+    try:
+        mujoco.MjModel.from_xml_string(model.to_xml_string())
+    except ValueError as error:
+        return str(error)
+    return None
+
+
+def test_a_replicate_copy_named_like_another_body() -> None:
+    # found by test_properties: copies of body1 in a replicate of 2 are body10 and body11
+    model = mjcf.RootElement()
+    model.worldbody.add_replicate(count=2, offset=(1, 0, 0)).add_body(name="body1").add_geom(
+        size=(0.1,))
+    model.worldbody.add_body(name="body10").add_geom(size=(0.1,))
+    assert_finding(only(model), "worldbody/replicate[0]/body[body1]", "repeated-name",
+                   "'body10'", "the name of worldbody/body[body10]")
+    assert "repeated name 'body10'" in (compile_error(model) or "")
+    model.worldbody.body["body10"].name = "body2"
+    assert validate(model) == [] and compile_error(model) is None
+
+
+def test_two_replicates_making_one_name() -> None:
+    model = mjcf.RootElement()
+    model.worldbody.add_replicate(count=2, offset=(1, 0, 0)).add_site(name="s1")  # s10 s11
+    model.worldbody.add_replicate(count=12, offset=(0, 1, 0)).add_site(name="s")  # s00-s11
+    finding = only(model)
+    assert finding.rule == "repeated-name" and "'s10'" in finding.message, finding
+    assert "repeated name 's10'" in (compile_error(model) or "")
+    model.worldbody.replicate[1].count = 10  # s0-s9
+    assert validate(model) == [] and compile_error(model) is None
+
+
+def test_a_mesh_named_after_its_file_and_a_mesh_named_so(tmp_path: Path) -> None:
+    (tmp_path / "foo.obj").write_text(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n")
+    model = mjcf.RootElement()
+    model.compiler.meshdir = str(tmp_path)
+    model.asset.add_mesh(file="foo.obj")
+    model.asset.add_mesh(name="foo", file="foo.obj")
+    assert_finding(only(model), "asset/mesh[0]", "repeated-name", "'foo'",
+                   "the name of asset/mesh[foo]")
+    assert "repeated name 'foo'" in (mujoco_error(model) or "")
+    model.asset.mesh[1].name = "bar"
+    assert validate(model) == [] and mujoco_error(model) is None
+
+
+def test_a_body_named_like_a_flexcomp_body_is_no_repeated_name() -> None:
+    # MuJoCo 4.0.0 compiles it: the bodies a <flexcomp> makes claim no names
+    model = mjcf.from_xml_string(
+        '<mujoco><worldbody><body name="flag_0"><geom size=".1"/></body>'
+        '<flexcomp name="flag" type="grid" count="3 3 1" spacing=".1 .1 .1" radius=".01" '
+        'dim="2"/></worldbody></mujoco>')
+    assert validate(model) == [] and compile_error(model) is None
 
 
 # ----------------------------------------------------------------------------- reporting
