@@ -51,7 +51,7 @@ FLOAT32_RANGE: Final = f"within the range of a float32 (magnitude at most {FLOAT
 # the smallest normal numbers: below them (zero aside) a number is subnormal
 _TINY: Final = {False: float(np.finfo(np.float64).tiny), True: float(np.finfo(np.float32).tiny)}
 # Why a number that underflows is refused, when the MuJoCo release in use refuses them (set
-# once, at import, by typed_mjcf._release_facts: schema/release_facts.toml); None: read.
+# once, at import, by typed_mjcf._release_facts: schema/releases/behaviour.toml); None: read.
 _UNDERFLOW: list[str | None] = [None]
 
 # Texts a codec has checked, to accept again without checking: models repeat the same few

@@ -1,7 +1,7 @@
 """Facts about MJCF as a whole that differ between the MuJoCo releases covered, applied for
 the release in use (``typed_mjcf._releases.RELEASE``) once, at import.
 
-The generated table (from ``schema/release_facts.toml``) says from which release on each
+The generated table (from ``schema/releases/behaviour.toml``) says from which release on each
 fact holds; here each fact the runtime knows is turned into what the runtime does without
 it. Nothing asks for a release number: a release lacking a fact gets the older behaviour.
 """

@@ -1,4 +1,4 @@
-"""schema/release_facts.toml read strictly (codegen/release_facts.py): a mistake names the
+"""schema/releases/behaviour.toml read strictly (codegen/release_facts.py): a mistake names the
 file, the fact and what was expected."""
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from codegen.errors import FactsError
 
 
 def _load(tmp_path: Path, text: str) -> dict[str, str]:
-    path = tmp_path / "release_facts.toml"
+    path = tmp_path / "behaviour.toml"
     path.write_text(text, encoding="utf-8")
     return release_facts.load(path)
 
@@ -31,7 +31,7 @@ def test_the_committed_facts_load_and_some_covered_release_has_each() -> None:
 ])
 def test_a_malformed_entry_is_refused_naming_it(tmp_path: Path, text: str,
                                                 expected: str) -> None:
-    with pytest.raises(FactsError, match=rf"release_facts.toml \[underflowing_numbers\]: .*"
+    with pytest.raises(FactsError, match=rf"behaviour.toml \[underflowing_numbers\]: .*"
                                          rf"{expected}"):
         _load(tmp_path, text)
 

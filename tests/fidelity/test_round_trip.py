@@ -21,7 +21,7 @@ from typed_mjcf._validate import validate
 from ..runtime.model_compare import model_differences
 
 # The smallest positive double the installed MuJoCo reads: a subnormal from 4.0.0 on; the
-# older releases refuse numbers that underflow (schema/release_facts.toml; their refusal is
+# older releases refuse numbers that underflow (schema/releases/behaviour.toml; their refusal is
 # tests/runtime/test_release_facts.py's), and read the smallest normal number.
 TINY = 5e-324 if has(UNDERFLOWING_NUMBERS) else 2.2250738585072014e-308
 

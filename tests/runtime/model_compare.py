@@ -34,7 +34,7 @@ BUFFER_ALIGNMENT = 64  # MuJoCo aligns every array of mjModel's buffer to 64 byt
 def clear_asset_cache() -> None:
     """Empty MuJoCo's asset cache, so that a test's compiles read their own files whatever
     the process compiled before: before 4.0.0 it serves a file by its name (another model's
-    cube.stl) and 3.3.7 a mesh processed for another use (schema/release_facts.toml)."""
+    cube.stl) and 3.3.7 a mesh processed for another use (schema/releases/behaviour.toml)."""
     mujoco.mj_clearCache(mujoco.mj_getCache())
 
 

@@ -1,4 +1,4 @@
-"""Facts about MJCF as a whole that differ between releases (schema/release_facts.toml, the
+"""Facts about MJCF as a whole that differ between releases (schema/releases/behaviour.toml, the
 generated table, ``typed_mjcf._release_facts``): each checked against the installed MuJoCo
 itself, and the behaviour of a release lacking it checked on any MuJoCo by applying that
 release's facts (``apply(release)``), then the installed one's again."""
