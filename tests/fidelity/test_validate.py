@@ -37,9 +37,14 @@ def assert_finding(finding: Finding, path: str, rule: str, *words: str) -> None:
         assert word in finding.message, finding.message
 
 
-def mujoco_error(model: mjcf.RootElement) -> str | None:
+def mujoco_error(model: mjcf.RootElement, *, compile: bool = False) -> str | None:
+    """What MuJoCo says reading the model (``compile``: compiling it too, where some repeated
+    names are found)."""
     try:
-        mujoco.MjSpec.from_string(model.to_xml_string())
+        if compile:
+            mujoco.MjModel.from_xml_string(model.to_xml_string())
+        else:
+            mujoco.MjSpec.from_string(model.to_xml_string())
     except ValueError as error:
         return str(error)
     return None
@@ -142,14 +147,6 @@ def test_together() -> None:
     assert mujoco_error(model) is not None
 
 
-def _compile_error(model: mjcf.RootElement) -> str | None:
-    try:
-        mujoco.MjModel.from_xml_string(model.to_xml_string())
-    except ValueError as error:
-        return str(error)
-    return None
-
-
 def test_requires(monkeypatch: pytest.MonkeyPatch) -> None:
     """The "requires" kind (the grammar format's, and facts.toml's [[constraint]]) on a rule
     MuJoCo 4.0.0 has: a camera's focal/principal require sensorsize. No row of the 4.0.0
@@ -162,10 +159,10 @@ def test_requires(monkeypatch: pytest.MonkeyPatch) -> None:
     model = mjcf.RootElement()
     model.worldbody.add_camera(name="c", focal=(1, 1))
     assert_finding(only(model), "worldbody/camera[c]", "requires", "focal", "sensorsize")
-    assert "require sensorsize" in (_compile_error(model) or "")
+    assert "require sensorsize" in (mujoco_error(model, compile=True) or "")
     model.worldbody.camera[0].sensorsize = (1, 1)
     assert validate(model) == []
-    assert _compile_error(model) is None
+    assert mujoco_error(model, compile=True) is None
 
 
 def test_oneof() -> None:
@@ -373,15 +370,6 @@ def test_named_objectless_sensor_with_two_replicates() -> None:
     assert validate(model) == [] and mujoco_error(model) is None
 
 
-def compile_error(model: mjcf.RootElement) -> str | None:
-    """What MuJoCo says compiling the model (some repeated names are found only then)."""
-    try:
-        mujoco.MjModel.from_xml_string(model.to_xml_string())
-    except ValueError as error:
-        return str(error)
-    return None
-
-
 def test_a_replicate_copy_named_like_another_body() -> None:
     # found by test_properties: copies of body1 in a replicate of 2 are body10 and body11
     model = mjcf.RootElement()
@@ -390,9 +378,9 @@ def test_a_replicate_copy_named_like_another_body() -> None:
     model.worldbody.add_body(name="body10").add_geom(size=(0.1,))
     assert_finding(only(model), "worldbody/replicate[0]/body[body1]", "repeated-name",
                    "'body10'", "the name of worldbody/body[body10]")
-    assert "repeated name 'body10'" in (compile_error(model) or "")
+    assert "repeated name 'body10'" in (mujoco_error(model, compile=True) or "")
     model.worldbody.body["body10"].name = "body2"
-    assert validate(model) == [] and compile_error(model) is None
+    assert validate(model) == [] and mujoco_error(model, compile=True) is None
 
 
 def test_two_replicates_making_one_name() -> None:
@@ -401,9 +389,9 @@ def test_two_replicates_making_one_name() -> None:
     model.worldbody.add_replicate(count=12, offset=(0, 1, 0)).add_site(name="s")  # s00-s11
     finding = only(model)
     assert finding.rule == "repeated-name" and "'s10'" in finding.message, finding
-    assert "repeated name 's10'" in (compile_error(model) or "")
+    assert "repeated name 's10'" in (mujoco_error(model, compile=True) or "")
     model.worldbody.replicate[1].count = 10  # s0-s9
-    assert validate(model) == [] and compile_error(model) is None
+    assert validate(model) == [] and mujoco_error(model, compile=True) is None
 
 
 def test_a_mesh_named_after_its_file_and_a_mesh_named_so(tmp_path: Path) -> None:
@@ -426,7 +414,7 @@ def test_a_body_named_like_a_flexcomp_body_is_no_repeated_name() -> None:
         '<mujoco><worldbody><body name="flag_0"><geom size=".1"/></body>'
         '<flexcomp name="flag" type="grid" count="3 3 1" spacing=".1 .1 .1" radius=".01" '
         'dim="2"/></worldbody></mujoco>')
-    assert validate(model) == [] and compile_error(model) is None
+    assert validate(model) == [] and mujoco_error(model, compile=True) is None
 
 
 # ----------------------------------------------------------------------------- reporting
