@@ -396,7 +396,7 @@ def text_to_float(text: str) -> float:
 def check_float32(value: float) -> None:
     """Refuse a finite number too large for a float32 (MuJoCo: "number is too large"); an
     infinity reaches here only spelled as one (:func:`text_to_float`), and is kept."""
-    if math.isfinite(value) and abs(value) > FLOAT32_MAX:
+    if _beyond_float32(value):
         raise Rejected(f"a number {FLOAT32_RANGE}")
 
 
@@ -471,9 +471,7 @@ class RealCodec(Codec):
         if self.single:
             check_float32(result)
         if _UNDERFLOW[0] is not None:
-            text = value if isinstance(value, str) else None
-            read = float(_text_to_float32(text)) if self.single and text else result
-            check_underflow("a number", None if text is None else [text], [read], self.single)
+            self._check_underflow(value if isinstance(value, str) else None, result)
         return result
 
     def parse(self, text: str) -> object:
@@ -483,13 +481,18 @@ class RealCodec(Codec):
         if self.single:
             check_float32(value)
         if _UNDERFLOW[0] is not None:
-            read = float(_text_to_float32(text)) if self.single else value
-            check_underflow("a number", [text], [read], self.single)
+            self._check_underflow(text, value)
         remember(self.checked, text)
         return text
 
     def read(self, stored: object) -> object:
         return to_float(stored) if type(stored) is str else stored
+
+    def _check_underflow(self, text: str | None, value: float) -> None:
+        """Refuse ``value`` (read from ``text``, or given in Python) if it underflows, the
+        release in use refusing that (a float attribute's text read as a float32 does)."""
+        read = float(_text_to_float32(text)) if self.single and text else value
+        check_underflow("a number", None if text is None else [text], [read], self.single)
 
     def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:

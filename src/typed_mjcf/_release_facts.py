@@ -12,7 +12,7 @@ from typing import Final
 
 from typed_mjcf._codecs import refuse_underflow
 from typed_mjcf._generated.release_facts import SINCE
-from typed_mjcf._releases import INSTALLED, RELEASE, version_key
+from typed_mjcf._releases import RELEASE, needs_at_least, version_key
 
 # the facts the runtime applies (tests/runtime/test_release_facts.py: the table has these)
 UNDERFLOWING_NUMBERS: Final = "underflowing_numbers"  # numbers read as subnormals or zero
@@ -30,7 +30,7 @@ def has(fact: str, release: str = RELEASE) -> bool:
 
 def needs(fact: str) -> str:
     """"needs MuJoCo >= X; installed Y" for a fact the release in use lacks."""
-    return f"needs MuJoCo >= {SINCE[fact]}; installed {INSTALLED or 'none'}"
+    return needs_at_least(SINCE[fact])
 
 
 def apply(release: str = RELEASE) -> None:

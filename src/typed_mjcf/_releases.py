@@ -89,12 +89,16 @@ def covered(installed: str | None = INSTALLED) -> bool:
     return version_key(RELEASES[0]) <= key and key[:2] <= version_key(RELEASES[-1])[:2]
 
 
+def needs_at_least(first: str) -> str:
+    """"needs MuJoCo >= first; installed Y": what the release in use lacks came in ``first``."""
+    return f"needs MuJoCo >= {first}; installed {INSTALLED or 'none'}"
+
+
 def _needs(having: tuple[str, ...]) -> str:
     """``having`` (the releases with a name) against the one in use, in words."""
-    shown = INSTALLED or "none"
     if having and having == RELEASES[RELEASES.index(having[0]):]:
-        return f"needs MuJoCo >= {having[0]}; installed {shown}"
-    return f"is in MuJoCo {', '.join(having)} only; installed {shown}"
+        return needs_at_least(having[0])
+    return f"is in MuJoCo {', '.join(having)} only; installed {INSTALLED or 'none'}"
 
 
 # what RELEASE lacks, filled by restrict(): row -> name (XML or Python) -> the releases having it

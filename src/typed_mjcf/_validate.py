@@ -545,14 +545,8 @@ def _check_repeated_names(state: _Pass, compiled: CompiledNames) -> None:
 
 
 def _document_order(model: ModelBase) -> dict[int, int]:
-    """Each element's place in :func:`validate`'s walk, by id."""
-    orders: dict[int, int] = {}
-    stack: list[Element] = [model]
-    while stack:
-        element = stack.pop()
-        orders[id(element)] = len(orders) + 1
-        stack.extend(reversed(_tree.children(element)))
-    return orders
+    """Each element's place in :func:`validate`'s walk (document order), by id."""
+    return {id(element): at for at, element in enumerate(model.iter_elements(), 1)}
 
 
 def _check_replicated_sensors(state: _Pass) -> None:
