@@ -95,14 +95,14 @@ GROUPS = {
     "typing/test_mujoco_stubs.py": "typing/test_typecheck.py",
 }
 FIRST = (
-    "dm_control/test_composer.py",
-    "bench/test_bench_smoke.py",
-    "typing/test_typecheck.py",
+    "typing/test_typecheck.py",  # with test_mujoco_stubs.py (GROUPS): ~65 s CPU, 2 processes
     "typing/test_mujoco_stubs.py",
+    "dm_control/test_composer.py",  # 5 units (SPREAD) of 11 to 26 s CPU
     "safety/test_resources.py",
+    "cli/test_to_python_types.py",
+    "bench/test_bench_smoke.py",
     "dm_control/test_builders.py",
     "cli/test_fmt.py",
-    "cli/test_to_python_types.py",
     "typing/test_any_audit.py",
     "runtime/test_corpus.py",
     "runtime/test_corpus_asset_routes.py",

@@ -124,26 +124,35 @@ def _outcome(result: object) -> str:
 SHADOW_MAP = 64  # texels a side; the models ask for 4096
 
 
-def _smaller_shadow_maps() -> None:
-    """Render camera observations with a smaller shadow map than the models ask for, and
-    without multisampling.
+def _cheaper_renders() -> None:
+    """Render camera observations without shadows, reflections or multisampling (and with a
+    small shadow map, which the context still allocates).
 
     Nothing reads the pixels (the test checks each observation's shape, dtype and spec), and
-    in software rendering (no GPU: Mesa's llvmpipe) a 4096 x 4096 shadow map is most of an
-    84 x 84 image's cost, multisampling (``offsamples``, 4 by default) much of the rest: a
-    64-texel map and no multisampling more than halve the CPU time of the steps with a
-    camera (cmu_humanoid_run_walls: 8.8 -> 6.3 s CPU in all, of which about 4 s is import
-    and set-up; the same observations). The images are still rendered every step, with
-    shadows, through typed-mjcf's ``Physics.render``."""
+    in software rendering (no GPU: Mesa's llvmpipe) the shadow pass, the reflection pass and
+    multisampling (``offsamples``, 4 by default) are most of an image's cost: measured per
+    frame (CPU, 20 frames after a reset), manipulation.stack_3_bricks_vision's 84 x 84 image
+    60 ms with shadows and reflections (already with the 64-texel map and no multisampling),
+    20 ms without; cmu_humanoid_maze_forage's 64 x 64 one 11 -> 3 ms. Every observation is
+    still rendered at every step, through typed-mjcf's ``Physics.render`` and the renderer it
+    keeps per image size; only the scene flags of that renderer are changed, once, when it
+    is made (``render_flag_overrides`` of a call still apply on top)."""
+    import mujoco
+
     from typed_mjcf.physics import Physics
 
     make = Physics._renderer  # a renderer is made per image size, when first used
 
     def renderer(self: Physics, height: int, width: int) -> Any:
+        known = (height, width) in self._renderers
         quality = self.model.vis.quality
         quality.shadowsize = min(quality.shadowsize, SHADOW_MAP)
         quality.offsamples = 0
-        return make(self, height, width)
+        made = make(self, height, width)
+        if not known:
+            for flag in (mujoco.mjtRndFlag.mjRND_SHADOW, mujoco.mjtRndFlag.mjRND_REFLECTION):
+                made.scene.flags[flag] = 0
+        return made
 
     Physics._renderer = renderer  # type: ignore[method-assign]
 
@@ -161,7 +170,7 @@ def main(argv: list[str]) -> None:
         import typed_mjcf
 
         typed_mjcf.install_as_dm_control_mjcf()
-        _smaller_shadow_maps()
+        _cheaper_renders()
     results: dict[str, Any] = {}
     for name, make in environments().items():
         if names and name not in names:

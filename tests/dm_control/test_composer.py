@@ -7,7 +7,8 @@ observation spec, whose names are the observables the task declares enabled.
 The environments run in subprocesses (``composer_envs.py``): the redirection of
 ``dm_control.mjcf`` is process-wide. The "features" tasks and the locomotion examples are one
 run; those that render a camera image at every step (the "vision" tasks, the locomotion
-examples with an egocentric camera) four more, marked slow (about 2 minutes each).
+examples with an egocentric camera) four more, marked slow (12 to 26 s of CPU each, rendered
+without shadows and reflections: ``composer_envs._cheaper_renders``).
 Environments that cannot run are listed in ``FAILING`` with the reason (strict).
 """
 
@@ -110,7 +111,7 @@ def check(names: tuple[str, ...], folder: Path) -> None:
 
 
 # the environments whose observations include a camera image, rendered (in software on CI)
-# at every step: 20 to 40 s each
+# at every step (with no shadows or reflections, composer_envs._cheaper_renders)
 RENDERING = VISION + tuple(name for name in LOCOMOTION if not name.endswith("go_to_target"))
 
 
