@@ -104,6 +104,7 @@ FIRST = (
     "dm_control/test_builders.py",
     "cli/test_fmt.py",
     "typing/test_any_audit.py",
+    "codegen/test_language.py",  # the generator twice on a copy of the repository: ~20 s CPU
     "runtime/test_corpus.py",
     "runtime/test_corpus_asset_routes.py",
     "test_readme.py",
@@ -112,6 +113,7 @@ FIRST = (
     "fidelity/test_properties.py",
     "cli/test_diff.py",
     "codegen/test_drift.py",
+    "codegen/test_facts_errors.py",
     "typing/test_ide.py",
 )
 
