@@ -32,6 +32,7 @@ class AttributeSpec:
         "alone",
         "anchor",
         "as_is",
+        "bare",
         "bounds",
         "codec",
         "codec_only",
@@ -83,6 +84,9 @@ class AttributeSpec:
     is_reference: bool  # names another element (a fixed or an attribute-given namespace)
     direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
     codec_only: bool  # direct, and written by its codec alone (not a file, nor names)
+    bare: bool  # direct, and never empty (not a list that may hold no numbers): storing it
+    # is the dict write alone (``_tree._store``'s first case; the loops of add() and parsing
+    # test this flag, so what storing does is still decided there)
     name_list: str | None  # a text listing names of this namespace (a <flex>'s bodies)
     as_is: bool
 
@@ -135,6 +139,7 @@ class AttributeSpec:
         self.is_reference = kind == "ref" or namespace_from is not None
         self.direct = not self.is_reference and kind != "id" and not scope
         self.codec_only = self.direct and kind != "file"
+        self.bare = self.direct and not (self.is_array and self.lo == 0)
         self.name_list = None  # set by the language's facts (see mark_name_list)
         # a text stored for it is written unchanged by the exporter (verbatim output, names
         # of the model written), if its codec writes read texts as read (the write plan

@@ -348,7 +348,7 @@ class Element(_Layout):
         if value is None or (type(value) is str and not value):
             self._unset(attribute)
             return
-        _store(self, attribute, self._convert(attribute, value))
+        _store(self, attribute, self._convert(attribute, value), True)
 
     def _convert(self, attribute: AttributeSpec, value: object) -> object:
         if attribute.is_reference and isinstance(value, Element):
@@ -415,11 +415,12 @@ class Element(_Layout):
         return attribute
 
     def _init_attributes(self, kwargs: Mapping[str, object]) -> None:
-        """Set the attributes of a new element (not yet in its parent), each stored by
-        :func:`_store`: the values first, then, once every value is converted (so that a
-        refused one leaves the model untouched), the name (which may be taken) and the
+        """Set the attributes of a new element (not yet in its parent), each stored as
+        :func:`_store` says: the values first, then, once every value is converted (so that
+        a refused one leaves the model untouched), the name (which may be taken) and the
         references (those whose namespace another attribute names last)."""
         by_key = self.spec.by_key
+        values = self._values
         store = _store
         identifier: AttributeSpec | None = None
         name: object = None
@@ -435,7 +436,10 @@ class Element(_Layout):
                     stored = attribute.codec.accept(value)
                 except Rejected as rejected:
                     raise self._reject(attribute, value, rejected) from None
-                store(self, attribute, stored)
+                if attribute.bare:  # storing it is this write (_store's first case)
+                    values[attribute.name] = stored
+                else:
+                    store(self, attribute, stored, True)
             elif attribute.kind == "id":
                 identifier, name = attribute, value
             else:  # converted once the values naming their namespace are stored
@@ -450,10 +454,10 @@ class Element(_Layout):
             for i, (attribute, value) in enumerate(references):
                 references[i] = attribute, self._convert(attribute, value)
         if identifier is not None:
-            store(self, identifier, name)
+            _store_name(self, identifier, name)
         if references is not None:
             for attribute, stored in references:
-                store(self, attribute, stored)
+                store(self, attribute, stored, True)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
         if _COMPAT[0]:
@@ -1146,32 +1150,57 @@ def _detach_model(model: ModelBase) -> None:
 # ---------------------------------------------------------------------------- storing
 
 
-def _store(element: Element, attribute: AttributeSpec, stored: object,
-           link: bool = True) -> None:
+def _store(element: Element, attribute: AttributeSpec, stored: object, link: bool) -> None:
     """Keep ``stored`` (what the codec gave, or the element a reference links to) as the
-    attribute's value, with what comes with it: the name claimed (and the old one released),
-    the model renamed, a name that names no element yet waited for (unless not ``link``).
-    An empty list of numbers is stored as absent, as MuJoCo reads it. The one place a value
-    is stored: building, assigning and parsing all call it (a direct attribute has nothing
-    that comes with it: that is what ``direct`` means)."""
-    if attribute.direct:
-        if attribute.lo or not _is_empty_array(stored):
-            element._values[attribute.name] = stored
-        else:
-            element._unset(attribute)
-        return
+    attribute's value, with what comes with it: the name claimed and the old one released
+    (:func:`_store_name`), the model renamed, a name that names no element yet waited for
+    (if ``link``). An empty list of numbers is stored as absent, as MuJoCo reads it.
+
+    The one place a value is stored: every route calls it, or, where a loop already knows
+    the case, the case's own code (a call per value costs about 3% of a build, counted by
+    ``python -m tests.bench.instructions``): a ``bare`` attribute's storing is the dict
+    write alone (``AttributeSpec.bare``: direct, and never empty), which the loops of
+    ``add()`` and parsing write themselves, and they store a name by :func:`_store_name`."""
     values = element._values
-    if attribute.kind == "id":  # (a name is a str: isinstance, not typing.cast, a call)
-        old = values.get(attribute.name)
-        if old != stored and isinstance(stored, str):
-            _claim(element, attribute, stored)
-            if isinstance(old, str):
-                element._scope.release(attribute.namespace or "", old, element)
-    elif attribute.scope and isinstance(stored, str):
-        _rename_model(element, stored)
-    values[attribute.name] = stored
-    if link and type(stored) is str and attribute.is_reference:
-        _wait(element, attribute, stored)
+    if attribute.bare:  # nothing comes with it, and it is never empty
+        values[attribute.name] = stored
+    elif attribute.kind == "id":
+        _store_name(element, attribute, stored)
+    elif attribute.is_reference:
+        values[attribute.name] = stored
+        if link and type(stored) is str:  # a name (not an element)
+            _wait(element, attribute, stored)
+    elif attribute.direct:  # a list of numbers that may hold none
+        if _is_empty_array(stored):
+            element._unset(attribute)
+        else:
+            values[attribute.name] = stored
+    else:  # the model's name: its scope's name too
+        if isinstance(stored, str):
+            _rename_model(element, stored)
+        values[attribute.name] = stored
+
+
+def _store_name(element: Element, attribute: AttributeSpec, name: object) -> None:
+    """:func:`_store`'s case for the element's name (``attribute`` is its id): claimed in
+    the element's scope (a refusal names the assignment and changes nothing), the old one
+    released, what waited for it linked."""
+    values = element._values
+    old = values.get(attribute.name)
+    if isinstance(name, str) and (old is None or old != name):  # (narrowed: no cast, a call)
+        scope = element._scope
+        namespace = attribute.namespace or ""  # ids have one
+        table = scope.tables.get(namespace)
+        if (table is not None and name not in table and not scope.waiting
+                and SEPARATOR not in name and name not in _RESERVED_NAMES
+                and element._root is not None):
+            # a new name nothing waits for (most names): scope.claim's effect, without its
+            table[name] = element  # checks, which cannot fail here
+        else:
+            _claim(element, attribute, namespace, name)
+        if old is not None and isinstance(old, str):  # (most names are the first)
+            scope.release(namespace, old, element)
+    values[attribute.name] = name
 
 
 def _namespace_given(pair: tuple[AttributeSpec, object]) -> bool:
@@ -1182,17 +1211,12 @@ def _namespace_given(pair: tuple[AttributeSpec, object]) -> bool:
 # ---------------------------------------------------------------------------- names
 
 
-def _claim(element: Element, attribute: AttributeSpec, name: str) -> None:
-    """Give ``element`` its name in its scope (a refusal names the assignment)."""
-    if element._root is None:
+def _claim(element: Element, attribute: AttributeSpec, namespace: str, name: str) -> None:
+    """Give ``element`` its name in its scope, checked (a refusal names the assignment):
+    :func:`_store_name`'s case for a name that may be refused or that something waits for."""
+    if element._root is None:  # not in a model (yet): no scope to claim in
         return
     scope = element._scope
-    namespace = attribute.namespace or ""  # ids have one
-    table = scope.tables.get(namespace)
-    if (table is not None and name not in table and not scope.waiting
-            and SEPARATOR not in name and name not in _RESERVED_NAMES):
-        table[name] = element  # a new name nothing waits for (most names): scope.claim's
-        return  # effect, without its checks, which cannot fail here
     if name in _RESERVED_NAMES:
         facts = grammar_facts()
         if element.spec.tag == facts.body:
@@ -1495,8 +1519,7 @@ def _same_values(a: Element, b: Element) -> bool:
 
 
 def _is_empty_array(stored: object) -> bool:
-    return type(stored) is np.ndarray and not cast(np.ndarray[tuple[int], np.dtype[np.generic]],
-                                                   stored).size
+    return type(stored) is np.ndarray and not stored.size  # (narrowed: no typing.cast, a call)
 
 
 def same_value(a: object, b: object) -> bool:
@@ -1672,15 +1695,22 @@ def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool
     :class:`Rejected` or a library error), or ``None`` for one not set here (an empty text,
     a reference whose namespace another attribute names, names when not ``names``)."""
     by_name = element.spec.by_name
-    store = _store
+    values = element._values
+    store, store_name = _store, _store_name
     rest: list[tuple[str, AttributeSpec | None, str, Exception | None]] | None = None
     refused: Exception | None = None
     for key, text in items:
         attribute = by_name.get(key)
         if attribute is not None and text:
             try:
-                if attribute.direct or (names and attribute.kind == "id"):
-                    store(element, attribute, attribute.codec.parse(text))
+                if attribute.bare:  # storing it is this write (_store's first case)
+                    values[attribute.name] = attribute.codec.parse(text)
+                    continue
+                if names and attribute.kind == "id":
+                    store_name(element, attribute, attribute.codec.parse(text))
+                    continue
+                if attribute.direct:
+                    store(element, attribute, attribute.codec.parse(text), True)
                     continue
                 if names and attribute.kind == "ref":
                     assign_text(element, attribute, text, link)
@@ -1707,7 +1737,7 @@ def assign_text(element: Element, attribute: AttributeSpec, text: str,
         table = element._scope.tables.get(namespace)
         found = None if table is None else table.get(text)
         if isinstance(found, Element):  # names an element already (a name in a table
-            _store(element, attribute, found)  # is one the codec takes): linked at once
+            _store(element, attribute, found, True)  # is one the codec takes): linked at once
             return
     stored = attribute.codec.parse(text)
     if link and attribute.is_reference:
@@ -1884,7 +1914,7 @@ def _name_after_file(element: Element) -> None:
         stem = stem.rsplit(".", 1)[0]
     if stem and element._root is not None and element._scope.lookup(
             cast(str, id_attribute.namespace), stem) is None:
-        _store(element, id_attribute, stem)
+        _store(element, id_attribute, stem, True)
 
 
 def name_after_files(model: ModelBase) -> None:

@@ -255,8 +255,8 @@ def _sample_text(attribute: _grammar.AttributeSpec) -> str | None:
 @pytest.mark.parametrize("tag", ["body", "geom", "joint", "site", "camera", "light"])
 def test_building_assigning_and_parsing_store_a_value_alike(tag: str) -> None:
     """Building (``_init_attributes``), assigning and parsing (``assign_texts``) store every
-    direct value of these rows alike (each through ``_tree._store``; test_value_routes.py
-    compares whole models built by each route)."""
+    direct value of these rows alike (through ``_tree._store``, or as its ``bare`` case in
+    the loops; test_value_routes.py compares whole models built by each route)."""
     world = mjcf.RootElement().worldbody.add_body()
     checked = 0
     for attribute in world.spec.children[tag].cls.spec.attributes.values():

@@ -1,10 +1,12 @@
 """Storing a value and writing one are each decided in one place.
 
 Storing: every route that sets an attribute (``add()``'s keywords, assignment,
-``set_attributes()``, parsing, a name given from a file's stem) keeps the value through
-``_tree._store``; the first tests build the same model by each route and compare what the
-tree holds: the values, the links, the references held as names (and waiting for their
-element), the name tables, empty arrays left out, the model's name.
+``set_attributes()``, parsing, a name given from a file's stem) keeps the value as
+``_tree._store`` says (the loops of building and parsing write its ``bare`` case, and call
+its case for names, ``_store_name``, themselves); the first tests build the same model by
+each route and compare what the tree holds: the values, the links, the references held as
+names (and waiting for their element), the name tables, empty arrays left out, the model's
+name. Every list of numbers of every row is then given an empty list on every route.
 
 Writing: a text kept as read is written as read where its codec says so
 (``Codec.keeps_read_text``, followed by ``Codec.write`` and by the exporter's write plan);
@@ -224,6 +226,87 @@ def test_a_refused_value_on_any_route_leaves_the_model_as_it_was() -> None:
         with pytest.raises(MjcfError):
             refuse()
         assert _state(model) == before, refuse
+
+
+def _array_attributes() -> Iterator[tuple[type[Element], AttributeSpec]]:
+    """Every list of numbers of every row (as the installed MuJoCo types it)."""
+    for cls in element_classes().values():
+        for attribute in cls.spec.attributes.values():
+            if attribute.direct and attribute.is_array and attribute.kind in ("int", "real"):
+                yield cls, attribute
+
+
+def _routes_of_an_empty_list(cls: type[Element], attribute: AttributeSpec
+                             ) -> Iterator[tuple[str, Callable[[], Element]]]:
+    """Each route giving ``attribute`` an empty list, on a new element of ``cls`` (one
+    holding a value first, for the routes that change a value), as a function returning it."""
+    root = mjcf.RootElement()
+    some = [1] * max(attribute.lo, 1)
+
+    def new(value: object = None) -> Element:
+        element = _tree._create(cls, root)  # (not among its parent's children: no row
+        if value is not None:  # needs a path from the root)
+            element._init_attributes({attribute.py_name: value})
+        return element
+
+    def built() -> Element:
+        element = new()
+        element._init_attributes({attribute.py_name: []})
+        return element
+
+    def assigned() -> Element:
+        element = new(some)
+        setattr(element, attribute.py_name, [])
+        return element
+
+    def set_together() -> Element:
+        element = new(some)
+        element.set_attributes(**{attribute.py_name: []})
+        return element
+
+    def parsed() -> Element:
+        element = new()
+        rest = _tree.assign_texts(element, [(attribute.name, " ")])  # (a file's empty list)
+        if rest is not None and rest[0][3] is not None:
+            raise rest[0][3]
+        return element
+
+    def parsed_again() -> Element:
+        element = new(some)
+        _tree.assign_text(element, attribute, " ")
+        return element
+
+    yield from [("built", built), ("assigned", assigned), ("set_attributes", set_together),
+                ("parsed", parsed), ("parsed over a value", parsed_again)]
+
+
+def test_an_empty_list_of_numbers_is_absent_on_every_route_or_refused() -> None:
+    """``_store``'s rule for every list of numbers of every row, on every route (the loops
+    of ``add()`` and parsing write a ``bare`` attribute without calling ``_store``: so the
+    flag holds only where an empty list cannot be given): a list that may hold no numbers
+    stored empty is absent, as MuJoCo reads it; every other refuses it."""
+    may_be_empty = refused = 0
+    for cls, attribute in _array_attributes():
+        for route, give in _routes_of_an_empty_list(cls, attribute):
+            if attribute.lo > 0:
+                with pytest.raises((MjcfError, _codecs.Rejected)):
+                    give()
+                refused += 1
+            else:
+                assert attribute.name not in _tree.values(give()), (cls, attribute, route)
+                may_be_empty += 1
+    assert may_be_empty >= 5 * 100 and refused >= 5 * 400  # (118 and 453 lists today)
+
+
+def test_only_lists_that_may_hold_no_numbers_are_direct_and_not_bare() -> None:
+    """``bare``: direct, and never empty; the rest of the direct attributes are the lists
+    of numbers the test above stores empty."""
+    for cls in element_classes().values():
+        for attribute in cls.spec.attributes.values():
+            empty_may_come = attribute.is_array and attribute.lo == 0
+            assert attribute.bare == (attribute.direct and not empty_may_come), attribute
+            if empty_may_come:
+                assert attribute.kind in ("int", "real"), attribute
 
 
 # ---------------------------------------------------------------------------- writing
