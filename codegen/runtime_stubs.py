@@ -266,7 +266,7 @@ class Stubber:
         elif isinstance(node, ast.ClassDef):
             yield self.cls(node)
         elif isinstance(node, ast.AnnAssign):
-            yield self.annotated(node)
+            yield self.annotated(node, in_class)
         elif isinstance(node, ast.Assign):
             flat = [e for t in node.targets
                     for e in (t.elts if isinstance(t, ast.Tuple) else [t])]
@@ -339,7 +339,7 @@ class Stubber:
         return Entry("class", "\n".join(lines), refs, (node.name,), members=members,
                      keep_private=protocol)
 
-    def annotated(self, node: ast.AnnAssign) -> Entry:
+    def annotated(self, node: ast.AnnAssign, in_class: bool) -> Entry:
         source = self.source
         if not isinstance(node.target, ast.Name):
             raise source.error(node, "an annotated assignment to something other than a name")
@@ -354,8 +354,10 @@ class Stubber:
             text = reindent(source.node_text(node), node.col_offset)
         else:
             text = f"{node.target.id}: {reindent(annotation, node.annotation.col_offset)} = ..."
+        # a class's annotated names stay, private or not: a dataclass's (or NamedTuple's)
+        # fields make its __init__
         return Entry("assign", text, names_in([node.annotation, value if keep else None]),
-                     (node.target.id,))
+                     () if in_class else (node.target.id,))
 
 
 @dataclass

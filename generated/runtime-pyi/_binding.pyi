@@ -102,6 +102,12 @@ def rows(model: mujoco.MjModel, size: str, ids: npt.NDArray[np.intp]) -> (
 class BoundArray(np.ndarray[tuple[int, ...], np.dtype[np.generic]]):
     """An array of a binding: writing into it writes into MuJoCo's array (a copy writes its
     rows back), clears the flags the write invalidates, and marks the physics stale."""
+    _physics: Bound
+    _backing: npt.NDArray[np.generic]
+    _rows: npt.NDArray[np.intp] | None
+    _struct: str
+    _field: str
+    _clear: tuple[tuple[npt.NDArray[np.generic], npt.NDArray[np.intp] | int], ...]
     @classmethod
     def of(cls, physics: Bound, struct: str, name: str, index: npt.NDArray[np.intp] | int,
            clear: tuple[tuple[npt.NDArray[np.generic], npt.NDArray[np.intp] | int], ...],
@@ -123,6 +129,12 @@ class Binding:
     named indexers have them). The properties each kind has are in its class
     (``JointBinding``, ``GeomBinding``, ...).
     """
+    _physics: Bound
+    _kind: str
+    _ids: npt.NDArray[np.intp]
+    _single: bool
+    _label: str
+    _indices: dict[str, npt.NDArray[np.intp] | int]
     def __new__(cls, physics: Bound, namespace: str, named_index: str | Sequence[str]) -> Self:
         """dm_control's constructor: a binding by scoped names (``physics.bind`` binds
         elements)."""

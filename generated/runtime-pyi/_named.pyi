@@ -40,6 +40,9 @@ class Axes(NamedTuple):
 class FieldIndexer(Generic[S]):
     """An array of MuJoCo's indexed by names as well as numbers (``__array__``, ``shape``,
     ``dtype`` as the array's; ``indexer[...]`` reads, ``indexer[...] = v`` writes)."""
+    _array: Array[S]
+    _axes: tuple[Axis, ...]
+    _name: str
     def __init__(self, name: str, array: Array[S], axes: tuple[Axis, ...]) -> None: ...
     @property
     def axes(self) -> Axes:

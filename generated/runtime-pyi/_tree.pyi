@@ -74,6 +74,13 @@ def grammar_facts() -> GrammarFacts: ...
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
+    _values: dict[str, object]
+    _children: list[Element] | tuple[()]
+    _parent: Element | None
+    _root: ModelBase | None
+    _scope: NameScope
+    _singles: dict[str, Element] | None
+    _attached: ModelBase | None
 
 class SiblingNumbers:
     """Each child's place among its parent's children of its tag, counted once per parent:
@@ -158,6 +165,11 @@ class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
     elements were read."""
+    _access: Confinement
+    _base_dir: str | None
+    _frame: Element | None
+    _files: dict[str, bytes]
+    _sources: SourceMap | None
     def __init__(self, model: str | None = None, *, model_dir: str | None = None,
                  assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None: ...
     def __deepcopy__(self, memo: dict[int, object]) -> Self:

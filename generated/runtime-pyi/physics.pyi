@@ -36,6 +36,7 @@ from typed_mjcf._binding import (
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
+from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import InvalidValueError, MjcfError, RenderError
 from typed_mjcf.types import Array, ArrayValues
 from typed_mjcf._base import ModelRoot
@@ -82,7 +83,16 @@ class Named(NamedTuple):
 class Physics(Bind):
     """A MuJoCo simulation of a model, with its elements bound to MuJoCo's arrays."""
     legacy_step: bool = True
+    _data: Data
+    _named: Named
+    _dirty: bool
+    _source: ModelBase | None
+    _unnamed: Mapping[int, tuple[Element, tuple[int, ...]]]
+    _text: tuple[str, Mapping[str, bytes]] | None
+    _text_ids: dict[int, Mapping[int, tuple[Element, tuple[int, ...]]] | None]
     _bindings: dict[object, Binding]
+    _renderers: dict[tuple[int, int], mujoco.Renderer]
+    _warnings_cause_exception: bool
     def __init__(self, data: mujoco.MjData) -> None:
         """A physics of ``data`` (its model is ``data.model``). The named constructors are
         the usual way: :meth:`from_mjcf_model`, :meth:`from_xml_string`, ..."""

@@ -143,6 +143,24 @@ def test_unused_private_names_and_imports_go(tmp_path: Path) -> None:
     assert "from collections.abc import Mapping" in a
 
 
+def test_private_fields_stay(tmp_path: Path) -> None:
+    (stub,) = stubs(tmp_path, {"m.py": '''\
+        from dataclasses import dataclass, field
+
+        @dataclass
+        class Record:
+            name: str
+            _seen: int = 0
+            _cache: dict[str, int] = field(default_factory=lambda: {}, init=False)
+
+            def _unused(self) -> None: ...
+        ''',
+    }).values()
+    assert "    _seen: int = 0\n" in stub  # a parameter of __init__
+    assert "_cache: dict[str, int] = field(default_factory=lambda: {}, init=False)" in stub
+    assert "_unused" not in stub
+
+
 def test_names_the_generated_modules_import_stay(tmp_path: Path) -> None:
     files = stubs(tmp_path, {"a.py": "class _Base: ...\nclass _Other: ...\n"},
                   generated="from typed_mjcf.a import _Base as _B\n")
