@@ -7,11 +7,14 @@ from the source's own text so that nothing is re-typed (type aliases, defaults a
 annotations are the source's characters):
 
 - every function and method keeps its decorators, signature and docstring; its body is
-  ``...``;
-- classes keep their decorators, bases, docstring and members (annotated fields keep their
-  value where it decides the type or a dataclass's ``__init__``: a literal, a name, a
-  ``field(...)`` call; otherwise ``...``); unannotated assignments (aliases, type variables,
-  constants) are kept whole, so a checker infers what it infers from the implementation;
+  ``...``, except a method's that assigns public attributes on ``self`` that its class does
+  not declare (checkers infer them from it, in a stub as in a module); an overloaded
+  function's implementation goes, its docstring to the overloads that have none;
+- classes keep their decorators, bases, docstring and members (annotated fields, private
+  too, keep their value where it decides the type or a dataclass's ``__init__``: a literal, a
+  name, a ``field(...)`` call; otherwise ``...``; ``__slots__`` goes); unannotated
+  assignments (aliases, type variables, constants) are kept whole, so a checker infers what
+  it infers from the implementation;
 - ``if TYPE_CHECKING:`` blocks are read the way a checker reads them (the block inlined, an
   ``if not TYPE_CHECKING:`` block dropped); other statements with only run-time effects
   (calls, ``raise``) are dropped, and a statement this module does not know is an error;
