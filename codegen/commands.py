@@ -6,7 +6,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from codegen import bindings, ir, mujoco_stubs, pins, releases, render, wheel
+from codegen import bindings, ir, mujoco_stubs, pins, releases, render, runtime_stubs, wheel
 from codegen.facts import load_facts
 from codegen.pipeline import refresh, sync_schema
 
@@ -36,6 +36,7 @@ def generate(grammar: Path | None, allow_untyped: bool) -> int:
     print(f"schema/mjcf.json: MuJoCo {schema.mujoco_version}, {len(schema.elements)} rows, "
           f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    write_runtime_stubs()
     return stubs()
 
 
@@ -73,7 +74,15 @@ def stubs() -> int:
 def render_only() -> int:
     changed = render.write(render.render(ir.load()))
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    write_runtime_stubs()
     return 0
+
+
+def write_runtime_stubs() -> None:
+    """generated/runtime-pyi/: the runtime modules' stubs, from src/ (not from schema/)."""
+    changed = runtime_stubs.write(runtime_stubs.render())
+    print("generated/runtime-pyi/: "
+          + (", ".join(changed) + " rewritten" if changed else "unchanged"))
 
 
 def check() -> int:
@@ -96,6 +105,12 @@ def check() -> int:
         print(f"generated/ is out of date: {', '.join(stale)}; run `nox -s generate`")
         return 1
     print("generated/ matches schema/")
+    stale_runtime = runtime_stubs.stale(runtime_stubs.render())
+    if stale_runtime:
+        print(f"generated/runtime-pyi/ is out of date with src/: {', '.join(stale_runtime)}; "
+              "run `python -m codegen render`")
+        return 1
+    print("generated/runtime-pyi/ matches src/")
     if bindings.dumps(bindings.read_wheel()) != bindings.BINDINGS_PATH.read_text(encoding="utf-8"):
         print("schema/bindings.json is out of date with the installed mujoco; run "
               "`nox -s generate`")

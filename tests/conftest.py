@@ -27,6 +27,7 @@ SLOW = {
     "typing/test_typecheck.py": "mypy and pyright over tests/typing",
     "typing/test_mujoco_stubs.py": "mypy and pyright over the mujoco stub cases",
     "typing/test_ide.py": "pyright's language server",
+    "typing/test_runtime_stubs.py": "stubtest, mypy and pyright twice, pyright's language server",
     "typing/test_positive.py": "mypy and pyright",
     "typing/test_any_audit.py": "pyright over the package",
     "cli/test_to_python.py": "to-python over the corpus",

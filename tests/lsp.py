@@ -25,10 +25,12 @@ JSON = dict[str, object]
 
 class LanguageServer:
     """``pyright-langserver --stdio`` in ``root`` (its configuration applies to documents
-    under it); each request waits at most ``timeout`` seconds."""
+    under it); each request waits at most ``timeout`` seconds. The environment whose packages
+    it reads is ``python``'s (this interpreter's by default)."""
 
-    def __init__(self, root: Path, timeout: float = 60.0) -> None:
+    def __init__(self, root: Path, timeout: float = 60.0, python: str | None = None) -> None:
         self.timeout = timeout
+        self.python = python or sys.executable
         self._process = subprocess.Popen(
             [sys.executable, "-c", "from pyright.langserver import entrypoint; entrypoint()",
              "--stdio"],
@@ -95,7 +97,7 @@ class LanguageServer:
         if request["method"] == "workspace/configuration":
             params = cast(JSON, request["params"])
             items = cast(list[JSON], params["items"])
-            return [{"pythonPath": sys.executable} if item.get("section") == "python"
+            return [{"pythonPath": self.python} if item.get("section") == "python"
                     else {} for item in items]
         return None  # client/registerCapability, window/workDoneProgress/create, ...
 

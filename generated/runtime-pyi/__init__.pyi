@@ -1,0 +1,110 @@
+# Generated from src/typed_mjcf/__init__.py by codegen/runtime_stubs.py (python -m codegen render); do not edit.
+"""typed-mjcf: a statically typed, code-generated builder for MuJoCo's MJCF models.
+
+    import typed_mjcf as mjcf
+
+    model = mjcf.RootElement(model="arm")
+    arm = model.worldbody.add_body(name="upper_arm", pos=(0, 0, 1))
+    arm.add_geom(type="capsule", size=(0.04, 0.2))
+    print(model.to_xml_string())
+"""
+__version__ = "0.1.0"
+from typing import Final as _Final
+from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._generated import elements as _elements
+from typed_mjcf._generated.elements import *
+from typed_mjcf._names import NameScope
+from typed_mjcf._notebook import set_notebook_display
+from typed_mjcf._png import encode_png
+from typed_mjcf._preview import VIEWS, FreeView
+from typed_mjcf._traversal import (
+    commit_defaults,
+    get_attachment_frame,
+    get_frame_freejoint,
+    get_frame_joints,
+    get_freejoint,
+)
+from typed_mjcf._tree import ElementList
+from typed_mjcf._validate import Finding, ValidationError
+from typed_mjcf.assets import Asset
+from typed_mjcf.errors import (
+    ChildError,
+    CompileError,
+    DuplicateIdentifierError,
+    ExportError,
+    FileAccessError,
+    FileReadError,
+    IgnoredAttributeWarning,
+    IllegalChildError,
+    InvalidReferenceError,
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    ParseError,
+    RenderError,
+    UnknownAttributeError,
+)
+from typed_mjcf.io import (
+    FileAccess,
+    ParseLimits,
+    export_with_assets,
+    export_with_assets_as_zip,
+    from_file,
+    from_path,
+    from_spec,
+    from_xml_string,
+    from_zip,
+)
+from typed_mjcf import physics as physics
+from typed_mjcf.physics import Physics, PhysicsError
+PREFIX_SEPARATOR: _Final[str] = "/"
+__all__ = [
+    "PREFIX_SEPARATOR",
+    "VIEWS",
+    "Asset",
+    "ChildError",
+    "CompileError",
+    "DuplicateIdentifierError",
+    "Element",
+    "ElementList",
+    "ExportError",
+    "FileAccess",
+    "FileAccessError",
+    "FileReadError",
+    "Finding",
+    "FreeView",
+    "IgnoredAttributeWarning",
+    "IllegalChildError",
+    "InvalidReferenceError",
+    "InvalidTypeError",
+    "InvalidValueError",
+    "MjcfError",
+    "ModelRoot",
+    "NameScope",
+    "ParseError",
+    "ParseLimits",
+    "Physics",
+    "PhysicsError",
+    "RenderError",
+    "UnknownAttributeError",
+    "ValidationError",
+    "commit_defaults",
+    "encode_png",
+    "export_with_assets",
+    "export_with_assets_as_zip",
+    "from_file",
+    "from_path",
+    "from_spec",
+    "from_xml_string",
+    "from_zip",
+    "get_attachment_frame",
+    "get_frame_freejoint",
+    "get_frame_joints",
+    "get_freejoint",
+    "set_notebook_display",
+]
+__all__ += _elements.__all__
+from typed_mjcf._dmcompat import install as install_as_dm_control_mjcf
+__all__ += ["install_as_dm_control_mjcf"]
+
+def __getattr__(name: str) -> object: ...

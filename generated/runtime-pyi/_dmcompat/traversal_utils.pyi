@@ -1,0 +1,12 @@
+# Generated from src/typed_mjcf/_dmcompat/traversal_utils.py by codegen/runtime_stubs.py (python -m codegen render); do not edit.
+"""``dm_control.mjcf.traversal_utils``."""
+from __future__ import annotations
+from typed_mjcf._traversal import (
+    commit_defaults,
+    get_attachment_frame,
+    get_frame_freejoint,
+    get_frame_joints,
+    get_freejoint,
+)
+__all__ = ["commit_defaults", "get_attachment_frame", "get_frame_freejoint",
+           "get_frame_joints", "get_freejoint"]
