@@ -44,6 +44,7 @@ class AttributeSpec:
     is_reference: bool
     direct: bool
     codec_only: bool
+    bare: bool
     name_list: str | None
     as_is: bool
     def __init__(
