@@ -788,8 +788,8 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
     model: _Attr[_builtins.str | None, _builtins.str | None]
     """``model``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco-model
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco-model
+    """
 
     @property
     def compiler(self) -> Compiler:
@@ -1307,56 +1307,56 @@ class Accelerometer(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2397,186 +2397,185 @@ class ActuatorPlugin(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-user
+    """
 
     plugin: _Attr[_builtins.str | None, _builtins.str | None]
     """``plugin``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-plugin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-plugin
+    """
 
     instance: _Attr[_builtins.str | Instance | None, _builtins.str | Instance | None]
     """``instance``: reference to namespace ``instance``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-instance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-instance
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcelimited
+    """
 
     actlimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actlimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actlimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actlimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcerange
+    """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actrange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-jointinparent
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-site
+    """
 
     actdim: _Attr[_builtins.int | None, _t.Integer | None]
     """``actdim``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actdim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actdim
+    """
 
     dyntype: _Attr[Dyn | None, Dyn | None]
     """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dyntype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dyntype
+    """
 
     dynprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``dynprm``: double[1..10] (1 to 10 values); default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dynprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-dynprm
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-tendon
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-cranksite
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-slidersite
+    """
 
     actearly: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``actearly``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actearly
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actearly
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def config(self) -> _List[Config]:
@@ -2679,56 +2678,56 @@ class Actuatorfrc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-user
+    """
 
     actuator: _Attr[_builtins.str | AnyActuator | None, _builtins.str | AnyActuator | None]
     """``actuator``: reference to namespace ``actuator``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-actuator
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-actuator
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2762,56 +2761,56 @@ class Actuatorpos(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-user
+    """
 
     actuator: _Attr[_builtins.str | AnyActuator | None, _builtins.str | AnyActuator | None]
     """``actuator``: reference to namespace ``actuator``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-actuator
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-actuator
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2845,56 +2844,56 @@ class Actuatorvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-user
+    """
 
     actuator: _Attr[_builtins.str | AnyActuator | None, _builtins.str | AnyActuator | None]
     """``actuator``: reference to namespace ``actuator``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-actuator
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-actuator
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -2928,78 +2927,77 @@ class Adhesion(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
+    """
 
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-body
+    """
 
     gain: _Attr[_builtins.float | None, _t.Real | None]
     """``gain``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3340,26 +3338,26 @@ class Attach(_Typed):
     model: _Attr[_builtins.str | Model | None, _builtins.str | Model | None]
     """``model``: reference to namespace ``model``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-model
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-model
+    """
 
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-body
+    """
 
     frame: _Attr[_builtins.str | Frame | None, _builtins.str | Frame | None]
     """``frame``: reference to namespace ``frame``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-frame
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-frame
+    """
 
     prefix: _Attr[_builtins.str | None, _builtins.str | None]
     """``prefix``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-prefix
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-attach-prefix
+    """
 
     @overload
     def resolve(self, name: Literal["model"]) -> _builtins.str | Model | None:
@@ -3387,56 +3385,56 @@ class Ballangvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3470,56 +3468,56 @@ class Ballquat(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -3553,86 +3551,86 @@ class Body(_Typed, _Attachable):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-name
+    """
 
     childclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``childclass``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-childclass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-childclass
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-euler
+    """
 
     mocap: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``mocap``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-mocap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-mocap
+    """
 
     gravcomp: _Attr[_builtins.float | None, _t.Real | None]
     """``gravcomp``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-gravcomp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-gravcomp
+    """
 
     sleep: _Attr[BodySleep | None, BodySleep | None]
     """``sleep``: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
+    """
 
     simple: _Attr[FalseAuto | None, FalseAuto | None]
     """``simple``: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-simple
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-simple
+    """
 
     fuse: _Attr[FalseAuto | None, FalseAuto | None]
     """``fuse``: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-fuse
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-fuse
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-user
+    """
 
     @property
     def body(self) -> _List[Body]:
@@ -4360,32 +4358,32 @@ class Bone(_Typed):
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-body
+    """
 
     bindpos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``bindpos``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindpos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindpos
+    """
 
     bindquat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``bindquat``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindquat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-bindquat
+    """
 
     vertid: _Attr[_t.Int32Array | None, IntegersAny | None]
     """``vertid``: int[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertid
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertid
+    """
 
     vertweight: _Attr[_t.Float32Array | None, RealsAny | None]
     """``vertweight``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertweight
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#skin-bone-vertweight
+    """
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None:
@@ -4413,132 +4411,131 @@ class Camera(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``camera``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-class
+    """
 
     projection: _Attr[Projection | None, Projection | None]
     """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
+    """
 
     fovy: _Attr[_builtins.float | None, _t.Real | None]
     """``fovy``: double; default "45".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
+    """
 
     ipd: _Attr[_builtins.float | None, _t.Real | None]
     """``ipd``: double; default "0.068".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
+    """
 
     resolution: _Attr[_t.Int32Array | None, Integers2 | None]
     """``resolution``: int[2]; default "1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
+    """
 
     output: _Attr[tuple[Camout, ...] | None, Camout | Collection[Camout] | None]
     """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
+    """
 
     mode: _Attr[Camlight | None, Camlight | None]
     """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
+    """
 
     target: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``target``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-target
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-target
+    """
 
     focal: _Attr[_t.Float32Array | None, Reals2 | None]
     """``focal``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
+    """
 
     focalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
     """``focalpixel``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
+    """
 
     principal: _Attr[_t.Float32Array | None, Reals2 | None]
     """``principal``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
+    """
 
     principalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
     """``principalpixel``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
+    """
 
     sensorsize: _Attr[_t.Float32Array | None, Reals2 | None]
     """``sensorsize``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -4587,62 +4584,62 @@ class Camprojection(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-site
+    """
 
     camera: _Attr[_builtins.str | Camera | None, _builtins.str | Camera | None]
     """``camera``: reference to namespace ``camera``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-camera
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-camera
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -4679,50 +4676,50 @@ class Clock(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-user
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -4753,146 +4750,146 @@ class Compiler(_Typed):
     autolimits: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``autolimits``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-autolimits
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-autolimits
+    """
 
     boundmass: _Attr[_builtins.float | None, _t.Real | None]
     """``boundmass``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundmass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundmass
+    """
 
     boundinertia: _Attr[_builtins.float | None, _t.Real | None]
     """``boundinertia``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundinertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundinertia
+    """
 
     settotalmass: _Attr[_builtins.float | None, _t.Real | None]
     """``settotalmass``: double; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-settotalmass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-settotalmass
+    """
 
     balanceinertia: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``balanceinertia``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-balanceinertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-balanceinertia
+    """
 
     strippath: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``strippath``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-strippath
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-strippath
+    """
 
     coordinate: _Attr[Coordinate | None, Coordinate | None]
     """``coordinate``: one of: local, global; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-coordinate
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-coordinate
+    """
 
     angle: _Attr[Angle | None, Angle | None]
     """``angle``: one of: radian, degree; default "degree".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-angle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-angle
+    """
 
     fitaabb: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``fitaabb``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fitaabb
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fitaabb
+    """
 
     eulerseq: _Attr[_builtins.str | None, _builtins.str | None]
     """``eulerseq``: chars[3]; no default (unset when absent); must match ``[xyzXYZ]{3}``.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-eulerseq
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-eulerseq
+    """
 
     meshdir: _Attr[_builtins.str | None, _builtins.str | None]
     """``meshdir``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-meshdir
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-meshdir
+    """
 
     texturedir: _Attr[_builtins.str | None, _builtins.str | None]
     """``texturedir``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-texturedir
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-texturedir
+    """
 
     discardvisual: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``discardvisual``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-discardvisual
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-discardvisual
+    """
 
     usethread: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``usethread``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-usethread
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-usethread
+    """
 
     fusestatic: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``fusestatic``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fusestatic
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-fusestatic
+    """
 
     inertiafromgeom: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``inertiafromgeom``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiafromgeom
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiafromgeom
+    """
 
     inertiagrouprange: _Attr[_t.Int32Array | None, Integers2 | None]
     """``inertiagrouprange``: int[2]; default "0 5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiagrouprange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-inertiagrouprange
+    """
 
     saveinertial: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``saveinertial``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-saveinertial
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-saveinertial
+    """
 
     savecompiled: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``savecompiled``: bool; default "true"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecompiled
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecompiled
+    """
 
     savecanonical: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``savecanonical``: bool; default "true"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecanonical
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-savecanonical
+    """
 
     assetdir: _Attr[_builtins.str | None, _builtins.str | None]
     """``assetdir``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-assetdir
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-assetdir
+    """
 
     alignfree: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``alignfree``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-alignfree
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-alignfree
+    """
 
     conflict: _Attr[Conflict | None, Conflict | None]
     """``conflict``: one of: warning, merge, error; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
+    """
 
     passthrough: _Attr[Passthrough | None, Passthrough | None]
     """``passthrough``: one of: none, textures; default "none"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-passthrough
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-passthrough
+    """
 
     @property
     def lengthrange(self) -> Lengthrange:
@@ -5001,14 +4998,14 @@ class Config(_Typed):
     key: _Attr[_builtins.str | None, _builtins.str | None]
     """``key``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-key
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-key
+    """
 
     value: _Attr[_builtins.str | None, _builtins.str | None]
     """``value``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#instance-config-value
+    """
 
     def resolve(self, name: Literal["key", "value"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -5026,66 +5023,65 @@ class Connect(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``equality``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-class
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-solimp
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-body2
+    """
 
     anchor: _Attr[_t.Float64Array | None, Reals3 | None]
     """``anchor``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-anchor
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-anchor
+    """
 
     site1: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site1``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site1
+    """
 
     site2: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site2``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-connect-site2
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5320,168 +5316,167 @@ class Cylinder(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-refsite
+    """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
     """``timeconst``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
+    """
 
     area: _Attr[_builtins.float | None, _t.Real | None]
     """``area``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
+    """
 
     diameter: _Attr[_builtins.float | None, _t.Real | None]
     """``diameter``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
+    """
 
     bias: _Attr[_t.Float64Array | None, Reals3 | None]
     """``bias``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5530,144 +5525,143 @@ class Damper(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-refsite
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5716,192 +5710,191 @@ class Dcmotor(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-refsite
+    """
 
     motorconst: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
+    """
 
     resistance: _Attr[_builtins.float | None, _t.Real | None]
     """``resistance``: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
+    """
 
     nominal: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
+    """
 
     saturation: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
+    """
 
     inductance: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
+    """
 
     cogging: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
+    """
 
     controller: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
+    """
 
     thermal: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
+    """
 
     lugre: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
+    """
 
     input: _Attr[tuple[DcmotorInput, ...] | DcmotorInputAlone | None, DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None]
     """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -5953,12 +5946,11 @@ class Default(_Typed):
     class_: _Attr[_builtins.str | None, _builtins.str | None]
     """``class``: name declared in namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-class
+    """
 
     dclass: _Attr[_builtins.str | None, _builtins.str | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def default(self) -> _List[Default]:
@@ -7274,56 +7266,56 @@ class DefaultAdhesion(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-user
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
+    """
 
     gain: _Attr[_builtins.float | None, _t.Real | None]
     """``gain``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -7354,110 +7346,110 @@ class DefaultCamera(_Typed):
     projection: _Attr[Projection | None, Projection | None]
     """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
+    """
 
     fovy: _Attr[_builtins.float | None, _t.Real | None]
     """``fovy``: double; default "45".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-fovy
+    """
 
     ipd: _Attr[_builtins.float | None, _t.Real | None]
     """``ipd``: double; default "0.068".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-ipd
+    """
 
     resolution: _Attr[_t.Int32Array | None, Integers2 | None]
     """``resolution``: int[2]; default "1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-resolution
+    """
 
     output: _Attr[tuple[Camout, ...] | None, Camout | Collection[Camout] | None]
     """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-euler
+    """
 
     mode: _Attr[Camlight | None, Camlight | None]
     """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-mode
+    """
 
     focal: _Attr[_t.Float32Array | None, Reals2 | None]
     """``focal``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
+    """
 
     focalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
     """``focalpixel``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
+    """
 
     principal: _Attr[_t.Float32Array | None, Reals2 | None]
     """``principal``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
+    """
 
     principalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
     """``principalpixel``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
+    """
 
     sensorsize: _Attr[_t.Float32Array | None, Reals2 | None]
     """``sensorsize``: float[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-sensorsize
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-user
+    """
 
     @overload
     def resolve(self, name: Literal["projection"]) -> Projection | None:
@@ -7497,104 +7489,104 @@ class DefaultCylinder(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-cranklength
+    """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
     """``timeconst``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
+    """
 
     area: _Attr[_builtins.float | None, _t.Real | None]
     """``area``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
+    """
 
     diameter: _Attr[_builtins.float | None, _t.Real | None]
     """``diameter``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
+    """
 
     bias: _Attr[_t.Float64Array | None, Reals3 | None]
     """``bias``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -7628,80 +7620,80 @@ class DefaultDamper(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); each value >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-user
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-cranklength
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -7735,128 +7727,128 @@ class DefaultDcmotor(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrllimited
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cranklength
+    """
 
     motorconst: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``motorconst``: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-motorconst
+    """
 
     resistance: _Attr[_builtins.float | None, _t.Real | None]
     """``resistance``: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-resistance
+    """
 
     nominal: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``nominal``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nominal
+    """
 
     saturation: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
+    """
 
     inductance: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
+    """
 
     cogging: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
+    """
 
     controller: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
+    """
 
     thermal: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
+    """
 
     lugre: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
+    """
 
     input: _Attr[tuple[DcmotorInput, ...] | DcmotorInputAlone | None, DcmotorInput | Collection[DcmotorInput] | DcmotorInputAlone | None]
     """``input``: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-input
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -7893,20 +7885,20 @@ class DefaultEquality(_Typed):
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solimp
+    """
 
     @overload
     def resolve(self, name: Literal["active"]) -> _builtins.bool | None:
@@ -7928,164 +7920,164 @@ class DefaultGeneral(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
+    """
 
     actlimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actlimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
+    """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
+    """
 
     actdim: _Attr[_builtins.int | None, _t.Integer | None]
     """``actdim``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
+    """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
     """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
+    """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
+    """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
+    """
 
     dyntype: _Attr[Dyn | None, Dyn | None]
     """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
+    """
 
     gaintype: _Attr[Gain | None, Gain | None]
     """``gaintype``: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
+    """
 
     biastype: _Attr[Bias | None, Bias | None]
     """``biastype``: one of: none, affine, muscle, dcmotor, so3, user; default "none".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
+    """
 
     dynprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``dynprm``: double[1..10] (1 to 10 values); default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
+    """
 
     gainprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``gainprm``: double[1..10] (1 to 10 values); default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
+    """
 
     biasprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
+    """
 
     actearly: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``actearly``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8137,206 +8129,206 @@ class DefaultGeom(_Typed):
     type: _Attr[GeomType | None, GeomType | None]
     """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
+    """
 
     contype: _Attr[_builtins.int | None, _t.Integer | None]
     """``contype``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
+    """
 
     conaffinity: _Attr[_builtins.int | None, _t.Integer | None]
     """``conaffinity``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
+    """
 
     condim: _Attr[_builtins.int | None, _t.Integer | None]
     """``condim``: int; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
+    """
 
     priority: _Attr[_builtins.int | None, _t.Integer | None]
     """``priority``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
+    """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``size``: double[1..3] (1 to 3 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
+    """
 
     friction: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
+    """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
     """``mass``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
+    """
 
     density: _Attr[_builtins.float | None, _t.Real | None]
     """``density``: double; default "1000".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
+    """
 
     shellinertia: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``shellinertia``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
+    """
 
     solmix: _Attr[_builtins.float | None, _t.Real | None]
     """``solmix``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
+    """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
     """``gap``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
+    """
 
     surfacevel: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
+    """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
     """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
+    """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
     """``fromto``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
+    """
 
     hfield: _Attr[_builtins.str | Hfield | None, _builtins.str | Hfield | None]
     """``hfield``: reference to namespace ``hfield``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
+    """
 
     mesh: _Attr[_builtins.str | Mesh | None, _builtins.str | Mesh | None]
     """``mesh``: reference to namespace ``mesh``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
+    """
 
     fitscale: _Attr[_builtins.float | None, _t.Real | None]
     """``fitscale``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
+    """
 
     fluidshape: _Attr[Fluidshape | None, Fluidshape | None]
     """``fluidshape``: one of: none, ellipsoid; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
+    """
 
     fluidcoef: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``fluidcoef``: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
+    """
 
     castshadow: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``castshadow``: bool; default "true"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
+    """
 
     @overload
     def resolve(self, name: Literal["type"]) -> GeomType:
@@ -8394,116 +8386,116 @@ class DefaultIntvelocity(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
+    """
 
     actlimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actlimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
+    """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -8537,140 +8529,140 @@ class DefaultJoint(_Typed):
     type: _Attr[JointType | None, JointType | None]
     """``type``: one of: free, ball, slide, hinge; default "hinge".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
+    """
 
     axis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``axis``: double[3]; default "0 0 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
+    """
 
     springdamper: _Attr[_t.Float64Array | None, Reals2 | None]
     """``springdamper``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
+    """
 
     limited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``limited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
+    """
 
     actuatorfrclimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actuatorfrclimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
+    """
 
     solreflimit: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
+    """
 
     solimplimit: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
+    """
 
     solimpfriction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
+    """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
+    """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actuatorfrcrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
+    """
 
     actuatorgravcomp: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``actuatorgravcomp``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
+    """
 
     ref: _Attr[_builtins.float | None, _t.Real | None]
     """``ref``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
+    """
 
     springref: _Attr[_builtins.float | None, _t.Real | None]
     """``springref``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
+    """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
     """``frictionloss``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
+    """
 
     springyield: _Attr[_builtins.float | None, _t.Real | None]
     """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
+    """
 
     @overload
     def resolve(self, name: Literal["type"]) -> JointType:
@@ -8710,104 +8702,104 @@ class DefaultLight(_Typed):
     directional: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``directional``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
+    """
 
     type: _Attr[LightType | None, LightType | None]
     """``type``: one of: spot, directional, point, image; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
+    """
 
     castshadow: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``castshadow``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
+    """
 
     dir: _Attr[_t.Float64Array | None, Reals3 | None]
     """``dir``: double[3]; default "0 0 -1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
+    """
 
     bulbradius: _Attr[_builtins.float | None, _t.Real | None]
     """``bulbradius``: float; default "0.02".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
+    """
 
     intensity: _Attr[_builtins.float | None, _t.Real | None]
     """``intensity``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
+    """
 
     range: _Attr[_builtins.float | None, _t.Real | None]
     """``range``: float; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
+    """
 
     attenuation: _Attr[_t.Float32Array | None, Reals3 | None]
     """``attenuation``: float[3]; default "1 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: float; default "45".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
+    """
 
     softness: _Attr[_builtins.float | None, _t.Real | None]
     """``softness``: float; default "0.2"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
+    """
 
     exponent: _Attr[_builtins.float | None, _t.Real | None]
     """``exponent``: float; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
+    """
 
     ambient: _Attr[_t.Float32Array | None, Reals3 | None]
     """``ambient``: float[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
+    """
 
     diffuse: _Attr[_t.Float32Array | None, Reals3 | None]
     """``diffuse``: float[3]; default "0.7 0.7 0.7".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
+    """
 
     specular: _Attr[_t.Float32Array | None, Reals3 | None]
     """``specular``: float[3]; default "0.3 0.3 0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
+    """
 
     mode: _Attr[Camlight | None, Camlight | None]
     """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
+    """
 
     @overload
     def resolve(self, name: Literal["directional"]) -> _builtins.bool | None:
@@ -8850,62 +8842,62 @@ class DefaultMaterial(_Typed):
     texture: _Attr[_builtins.str | Texture | None, _builtins.str | Texture | None]
     """``texture``: reference to namespace ``texture``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
+    """
 
     texrepeat: _Attr[_t.Float32Array | None, Reals2 | None]
     """``texrepeat``: float[2]; default "1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
+    """
 
     texuniform: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``texuniform``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
+    """
 
     emission: _Attr[_builtins.float | None, _t.Real | None]
     """``emission``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
+    """
 
     specular: _Attr[_builtins.float | None, _t.Real | None]
     """``specular``: float; default "0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
+    """
 
     shininess: _Attr[_builtins.float | None, _t.Real | None]
     """``shininess``: float; default "0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
+    """
 
     reflectance: _Attr[_builtins.float | None, _t.Real | None]
     """``reflectance``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
+    """
 
     metallic: _Attr[_builtins.float | None, _t.Real | None]
     """``metallic``: float; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
+    """
 
     roughness: _Attr[_builtins.float | None, _t.Real | None]
     """``roughness``: float; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "1 1 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
+    """
 
     @property
     def layer(self) -> _List[Layer]:
@@ -8978,20 +8970,20 @@ class DefaultMesh(_Typed):
     scale: _Attr[_t.Float64Array | None, Reals3 | None]
     """``scale``: double[3]; default "1 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
+    """
 
     maxhullvert: _Attr[_builtins.int | None, _t.Integer | None]
     """``maxhullvert``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
+    """
 
     inertia: _Attr[MeshInertia | None, MeshInertia | None]
     """``inertia``: one of: convex, legacy, exact, shell; default "legacy".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
+    """
 
     @overload
     def resolve(self, name: Literal["scale"]) -> _t.Float64Array:
@@ -9016,80 +9008,80 @@ class DefaultMotor(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9123,134 +9115,134 @@ class DefaultMuscle(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
+    """
 
     timeconst: _Attr[_t.Float64Array | None, Reals2 | None]
     """``timeconst``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
+    """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
     """``force``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
+    """
 
     scale: _Attr[_builtins.float | None, _t.Real | None]
     """``scale``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
+    """
 
     lmin: _Attr[_builtins.float | None, _t.Real | None]
     """``lmin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
+    """
 
     lmax: _Attr[_builtins.float | None, _t.Real | None]
     """``lmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
+    """
 
     vmax: _Attr[_builtins.float | None, _t.Real | None]
     """``vmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
+    """
 
     fpmax: _Attr[_builtins.float | None, _t.Real | None]
     """``fpmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
+    """
 
     fvmax: _Attr[_builtins.float | None, _t.Real | None]
     """``fvmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9284,74 +9276,74 @@ class DefaultOrientation(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
+    """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
     """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9385,50 +9377,50 @@ class DefaultPair(_Typed):
     condim: _Attr[_builtins.int | None, _t.Integer | None]
     """``condim``: int; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
+    """
 
     friction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
+    """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
     """``gap``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
+    """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
     """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
+    """
 
     @overload
     def resolve(self, name: Literal["condim"]) -> _builtins.int:
@@ -9456,146 +9448,146 @@ class DefaultPid(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
+    """
 
     posrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
+    """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
+    """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
+    """
 
     ki: _Attr[_builtins.float | None, _t.Real | None]
     """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
+    """
 
     imax: _Attr[_builtins.float | None, _t.Real | None]
     """``imax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
+    """
 
     slewmax: _Attr[_builtins.float | None, _t.Real | None]
     """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
+    """
 
     input: _Attr[tuple[PidInput, ...] | PidInputAlone | None, PidInput | Collection[PidInput] | PidInputAlone | None]
     """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9632,110 +9624,110 @@ class DefaultPosition(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
+    """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
     """``timeconst``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -9769,86 +9761,86 @@ class DefaultSite(_Typed):
     type: _Attr[SiteType | None, SiteType | None]
     """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
+    """
 
     mesh: _Attr[_builtins.str | Mesh | None, _builtins.str | Mesh | None]
     """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
+    """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``size``: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
+    """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
     """``fromto``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
+    """
 
     @overload
     def resolve(self, name: Literal["type"]) -> SiteType:
@@ -9885,122 +9877,122 @@ class DefaultTendon(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-group
+    """
 
     limited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``limited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-limited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-limited
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-range
+    """
 
     solreflimit: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreflimit``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreflimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreflimit
+    """
 
     solimplimit: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimplimit``: double[1..5] (1 to 5 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimplimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimplimit
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreffriction
+    """
 
     solimpfriction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimpfriction``: double[1..5] (1 to 5 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimpfriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimpfriction
+    """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
     """``frictionloss``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-frictionloss
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-frictionloss
+    """
 
     springlength: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``springlength``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springlength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springlength
+    """
 
     width: _Attr[_builtins.float | None, _t.Real | None]
     """``width``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-width
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-width
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-material
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-margin
+    """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-stiffness
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-damping
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-rgba
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-user
+    """
 
     actuatorfrclimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actuatorfrclimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrclimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrclimited
+    """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actuatorfrcrange``: double[2]; no default (unset when absent); in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
+    """
 
     springyield: _Attr[_builtins.float | None, _t.Real | None]
     """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springyield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springyield
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
+    """
 
     @overload
     def resolve(self, name: Literal["group"]) -> _builtins.int | None:
@@ -10037,98 +10029,98 @@ class DefaultTexture(_Typed):
     type: _Attr[TextureType | None, TextureType | None]
     """``type``: one of: 2d, cube, skybox; default "cube"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
+    """
 
     colorspace: _Attr[Colorspace | None, Colorspace | None]
     """``colorspace``: one of: auto, linear, sRGB; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
+    """
 
     gridsize: _Attr[_t.Int32Array | None, Integers2 | None]
     """``gridsize``: int[2]; default "1 1"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
+    """
 
     gridlayout: _Attr[_builtins.str | None, _builtins.str | None]
     """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent); in MuJoCo >= 3.17.0. Length must equal the gridsize product.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
+    """
 
     builtin: _Attr[Builtin | None, Builtin | None]
     """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
+    """
 
     rgb1: _Attr[_t.Float64Array | None, Reals3 | None]
     """``rgb1``: double[3]; default "0.8 0.8 0.8"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
+    """
 
     rgb2: _Attr[_t.Float64Array | None, Reals3 | None]
     """``rgb2``: double[3]; default "0.5 0.5 0.5"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
+    """
 
     mark: _Attr[Mark | None, Mark | None]
     """``mark``: one of: none, edge, cross, random; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
+    """
 
     markrgb: _Attr[_t.Float64Array | None, Reals3 | None]
     """``markrgb``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
+    """
 
     random: _Attr[_builtins.float | None, _t.Real | None]
     """``random``: double; default "0.01"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
+    """
 
     width: _Attr[_builtins.int | None, _t.Integer | None]
     """``width``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
+    """
 
     height: _Attr[_builtins.int | None, _t.Integer | None]
     """``height``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
+    """
 
     hflip: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``hflip``: bool; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
+    """
 
     vflip: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``vflip``: bool; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
+    """
 
     nchannel: _Attr[_builtins.int | None, _t.Integer | None]
     """``nchannel``: int; default "3"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
+    """
 
     embed: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``embed``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
+    """
 
     @overload
     def resolve(self, name: Literal["type"]) -> TextureType:
@@ -10183,86 +10175,86 @@ class DefaultVelocity(_Typed):
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
+    """
 
     @overload
     def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
@@ -10413,74 +10405,74 @@ class Distance(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-user
+    """
 
     geom1: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom1``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom1
+    """
 
     geom2: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom2``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-geom2
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-body2
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -10517,50 +10509,50 @@ class EKinetic(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-user
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -10591,50 +10583,50 @@ class EPotential(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-user
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -10665,56 +10657,56 @@ class Elasticity(_Typed):
     young: _Attr[_builtins.float | None, _t.Real | None]
     """``young``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-young
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-young
+    """
 
     poisson: _Attr[_builtins.float | None, _t.Real | None]
     """``poisson``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-poisson
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-poisson
+    """
 
     damping: _Attr[_builtins.float | None, _t.Real | None]
     """``damping``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-damping
+    """
 
     thickness: _Attr[_builtins.float | None, _t.Real | None]
     """``thickness``: double; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-thickness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-thickness
+    """
 
     elastic2d: _Attr[Elastic2d | None, Elastic2d | None]
     """``elastic2d``: one of: none, bend, stretch, both; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-elastic2d
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-elastic2d
+    """
 
     shear: _Attr[_builtins.float | None, _t.Real | None]
     """``shear``: double; default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-shear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-shear
+    """
 
     yield_: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``yield``: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-yield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-yield
+    """
 
     section: _Attr[Section | None, Section | None]
     """``section``: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-section
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-section
+    """
 
     sectionsize: _Attr[_t.Float64Array | None, Reals2 | None]
     """``sectionsize``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-sectionsize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-sectionsize
+    """
 
     @overload
     def resolve(self, name: Literal["young", "poisson", "damping"]) -> _builtins.float | None:
@@ -11006,42 +10998,41 @@ class EqualityFlex(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``equality``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-class
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-solimp
+    """
 
     flex: _Attr[_builtins.str | AnyFlex | None, _builtins.str | AnyFlex | None]
     """``flex``: reference to namespace ``flex``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-flex
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flex-flex
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -11072,54 +11063,53 @@ class EqualityJoint(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``equality``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-class
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-solimp
+    """
 
     joint1: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint1``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint1
+    """
 
     joint2: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint2``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-joint2
+    """
 
     polycoef: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-polycoef
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-polycoef
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -11153,54 +11143,53 @@ class EqualityTendon(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``equality``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-class
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-solimp
+    """
 
     tendon1: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon1``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon1
+    """
 
     tendon2: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon2``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-tendon2
+    """
 
     polycoef: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-polycoef
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-polycoef
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -11234,20 +11223,20 @@ class Exclude(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``exclude``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-name
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-exclude-body2
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -11318,8 +11307,8 @@ class ExtensionPlugin(_Typed):
     plugin: _Attr[_builtins.str | None, _builtins.str | None]
     """``plugin``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#extension-plugin-plugin
+    """
 
     @property
     def instance(self) -> _List[Instance]:
@@ -11377,120 +11366,119 @@ class Fixed(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-group
+    """
 
     limited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``limited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-limited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-limited
+    """
 
     actuatorfrclimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actuatorfrclimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrclimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrclimited
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-range
+    """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actuatorfrcrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrcrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrcrange
+    """
 
     solreflimit: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreflimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreflimit
+    """
 
     solimplimit: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimplimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimplimit
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solreffriction
+    """
 
     solimpfriction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimpfriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-solimpfriction
+    """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
     """``frictionloss``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-frictionloss
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-frictionloss
+    """
 
     springlength: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``springlength``: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springlength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springlength
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-margin
+    """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-stiffness
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-armature
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-user
+    """
 
     springyield: _Attr[_builtins.float | None, _t.Real | None]
     """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springyield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-springyield
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def joint(self) -> _List[FixedJoint]:
@@ -11572,14 +11560,14 @@ class FixedJoint(_Typed):
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-joint
+    """
 
     coef: _Attr[_builtins.float | None, _t.Real | None]
     """``coef``: double; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#fixed-joint-coef
+    """
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None:
@@ -11601,170 +11589,170 @@ class Flag(_Typed):
     constraint: _Attr[Enable | None, Enable | None]
     """``constraint``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-constraint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-constraint
+    """
 
     equality: _Attr[Enable | None, Enable | None]
     """``equality``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-equality
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-equality
+    """
 
     frictionloss: _Attr[Enable | None, Enable | None]
     """``frictionloss``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-frictionloss
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-frictionloss
+    """
 
     limit: _Attr[Enable | None, Enable | None]
     """``limit``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-limit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-limit
+    """
 
     contact: _Attr[Enable | None, Enable | None]
     """``contact``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-contact
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-contact
+    """
 
     spring: _Attr[Enable | None, Enable | None]
     """``spring``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-spring
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-spring
+    """
 
     damper: _Attr[Enable | None, Enable | None]
     """``damper``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-damper
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-damper
+    """
 
     gravity: _Attr[Enable | None, Enable | None]
     """``gravity``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-gravity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-gravity
+    """
 
     clampctrl: _Attr[Enable | None, Enable | None]
     """``clampctrl``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-clampctrl
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-clampctrl
+    """
 
     warmstart: _Attr[Enable | None, Enable | None]
     """``warmstart``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-warmstart
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-warmstart
+    """
 
     filterparent: _Attr[Enable | None, Enable | None]
     """``filterparent``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-filterparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-filterparent
+    """
 
     actuation: _Attr[Enable | None, Enable | None]
     """``actuation``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-actuation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-actuation
+    """
 
     refsafe: _Attr[Enable | None, Enable | None]
     """``refsafe``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-refsafe
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-refsafe
+    """
 
     sensor: _Attr[Enable | None, Enable | None]
     """``sensor``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sensor
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sensor
+    """
 
     midphase: _Attr[Enable | None, Enable | None]
     """``midphase``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-midphase
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-midphase
+    """
 
     eulerdamp: _Attr[Enable | None, Enable | None]
     """``eulerdamp``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-eulerdamp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-eulerdamp
+    """
 
     autoreset: _Attr[Enable | None, Enable | None]
     """``autoreset``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-autoreset
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-autoreset
+    """
 
     nativeccd: _Attr[Enable | None, Enable | None]
     """``nativeccd``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-nativeccd
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-nativeccd
+    """
 
     island: _Attr[Enable | None, Enable | None]
     """``island``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-island
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-island
+    """
 
     multiccd: _Attr[Enable | None, Enable | None]
     """``multiccd``: one of: disable, enable; default "enable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-multiccd
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-multiccd
+    """
 
     override: _Attr[Enable | None, Enable | None]
     """``override``: one of: disable, enable; default "disable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-override
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-override
+    """
 
     energy: _Attr[Enable | None, Enable | None]
     """``energy``: one of: disable, enable; default "disable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-energy
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-energy
+    """
 
     fwdinv: _Attr[Enable | None, Enable | None]
     """``fwdinv``: one of: disable, enable; default "disable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-fwdinv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-fwdinv
+    """
 
     invdiscrete: _Attr[Enable | None, Enable | None]
     """``invdiscrete``: one of: disable, enable; default "disable".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-invdiscrete
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-invdiscrete
+    """
 
     sleep: _Attr[Enable | None, Enable | None]
     """``sleep``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sleep
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-sleep
+    """
 
     diagexact: _Attr[Enable | None, Enable | None]
     """``diagexact``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-diagexact
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-diagexact
+    """
 
     ipc: _Attr[Enable | None, Enable | None]
     """``ipc``: one of: disable, enable; default "disable"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-ipc
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-ipc
+    """
 
     speculative: _Attr[Enable | None, Enable | None]
     """``speculative``: one of: disable, enable; default "disable"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-speculative
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-flag-speculative
+    """
 
     def resolve(self, name: Literal["constraint", "equality", "frictionloss", "limit", "contact", "spring", "damper", "gravity", "clampctrl", "warmstart", "filterparent", "actuation", "refsafe", "sensor", "midphase", "eulerdamp", "autoreset", "nativeccd", "island", "multiccd", "override", "energy", "fwdinv", "invdiscrete", "sleep", "diagexact", "ipc", "speculative"]) -> Enable:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -11782,98 +11770,98 @@ class Flex(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``flex``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-name
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-group
+    """
 
     dim: _Attr[_builtins.int | None, _t.Integer | None]
     """``dim``: int; default "2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dim
+    """
 
     radius: _Attr[_builtins.float | None, _t.Real | None]
     """``radius``: double; default "0.005".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-radius
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-radius
+    """
 
     material: _Attr[_builtins.str | None, _builtins.str | None]
     """``material``: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-material
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-rgba
+    """
 
     flatskin: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``flatskin``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-flatskin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-flatskin
+    """
 
     body: _Attr[_builtins.str | None, _builtins.str | None]
     """``body``: string; required. Space-separated body names.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-body
+    """
 
     vertex: _Attr[_t.Float64Array | None, RealsAny | None]
     """``vertex``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-vertex
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-vertex
+    """
 
     element: _Attr[_t.Int32Array | None, IntegersAny | None]
     """``element``: int[] (any length); required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-element
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-element
+    """
 
     texcoord: _Attr[_t.Float32Array | None, RealsAny | None]
     """``texcoord``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-texcoord
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-texcoord
+    """
 
     elemtexcoord: _Attr[_t.Int32Array | None, IntegersAny | None]
     """``elemtexcoord``: int[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-elemtexcoord
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-elemtexcoord
+    """
 
     node: _Attr[_builtins.str | None, _builtins.str | None]
     """``node``: string; no default (unset when absent). Space-separated body names.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-node
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-node
+    """
 
     nodecoord: _Attr[_t.Float64Array | None, RealsAny | None]
     """``nodecoord``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-nodecoord
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-nodecoord
+    """
 
     cellcount: _Attr[_t.Int32Array | None, Integers3 | None]
     """``cellcount``: int[3]; default "1 1 1"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-cellcount
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-cellcount
+    """
 
     dof: _Attr[FDof | None, FDof | None]
     """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dof
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-dof
+    """
 
     @property
     def contact(self) -> FlexcompContact:
@@ -12054,14 +12042,14 @@ class FlexEdge(_Typed):
     stiffness: _Attr[_builtins.float | None, _t.Real | None]
     """``stiffness``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-stiffness
+    """
 
     damping: _Attr[_builtins.float | None, _t.Real | None]
     """``damping``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-damping
+    """
 
     def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -12079,170 +12067,170 @@ class Flexcomp(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``flex``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-name
+    """
 
     type: _Attr[Fcomp | None, Fcomp | None]
     """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-group
+    """
 
     dim: _Attr[_builtins.int | None, _t.Integer | None]
     """``dim``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
+    """
 
     dof: _Attr[FDof | None, FDof | None]
     """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dof
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dof
+    """
 
     count: _Attr[_t.Int32Array | None, Integers3 | None]
     """``count``: int[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-count
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-count
+    """
 
     cellcount: _Attr[_t.Int32Array | None, Integers3 | None]
     """``cellcount``: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-cellcount
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-cellcount
+    """
 
     spacing: _Attr[_t.Float64Array | None, Reals3 | None]
     """``spacing``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
+    """
 
     radius: _Attr[_builtins.float | None, _t.Real | None]
     """``radius``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
+    """
 
     rigid: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``rigid``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rigid
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rigid
+    """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
     """``mass``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mass
+    """
 
     inertiabox: _Attr[_builtins.float | None, _t.Real | None]
     """``inertiabox``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-inertiabox
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-inertiabox
+    """
 
     scale: _Attr[_t.Float64Array | None, Reals3 | None]
     """``scale``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-scale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-scale
+    """
 
     file: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``file``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-file
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-file
+    """
 
     point: _Attr[_t.Float64Array | None, RealsAny | None]
     """``point``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-point
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-point
+    """
 
     element: _Attr[_t.Float64Array | None, RealsAny | None]
     """``element``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-element
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-element
+    """
 
     texcoord: _Attr[_t.Float64Array | None, RealsAny | None]
     """``texcoord``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-texcoord
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-texcoord
+    """
 
     material: _Attr[_builtins.str | None, _builtins.str | None]
     """``material``: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-material
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
+    """
 
     flatskin: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``flatskin``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-flatskin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-flatskin
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
+    """
 
     origin: _Attr[_t.Float64Array | None, Reals3 | None]
     """``origin``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-origin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-origin
+    """
 
     mesh: _Attr[_builtins.str | Mesh | None, _builtins.str | Mesh | None]
     """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mesh
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mesh
+    """
 
     @property
     def edge(self) -> FlexcompEdge:
@@ -12481,80 +12469,80 @@ class FlexcompContact(_Typed):
     contype: _Attr[_builtins.int | None, _t.Integer | None]
     """``contype``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-contype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-contype
+    """
 
     conaffinity: _Attr[_builtins.int | None, _t.Integer | None]
     """``conaffinity``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-conaffinity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-conaffinity
+    """
 
     condim: _Attr[_builtins.int | None, _t.Integer | None]
     """``condim``: int; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-condim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-condim
+    """
 
     priority: _Attr[_builtins.int | None, _t.Integer | None]
     """``priority``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-priority
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-priority
+    """
 
     friction: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-friction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-friction
+    """
 
     solmix: _Attr[_builtins.float | None, _t.Real | None]
     """``solmix``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solmix
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solmix
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-solimp
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-margin
+    """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
     """``gap``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-gap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-gap
+    """
 
     selfcollide: _Attr[Flexself | None, Flexself | None]
     """``selfcollide``: one of: none, narrow, bvh, sap, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-selfcollide
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-selfcollide
+    """
 
     activelayers: _Attr[_builtins.int | None, _t.Integer | None]
     """``activelayers``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-activelayers
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-activelayers
+    """
 
     passive: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``passive``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-passive
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-passive
+    """
 
     @overload
     def resolve(self, name: Literal["contype", "conaffinity", "condim", "activelayers"]) -> _builtins.int:
@@ -12591,32 +12579,32 @@ class FlexcompEdge(_Typed):
     equality: _Attr[Flexeq | None, Flexeq | _builtins.bool | None]
     """``equality``: one of: false, true, strain; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-solimp
+    """
 
     stiffness: _Attr[_builtins.float | None, _t.Real | None]
     """``stiffness``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-stiffness
+    """
 
     damping: _Attr[_builtins.float | None, _t.Real | None]
     """``damping``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-damping
+    """
 
     @overload
     def resolve(self, name: Literal["equality"]) -> Flexeq | None:
@@ -12641,48 +12629,47 @@ class Flexstrain(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``equality``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-class
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-solimp
+    """
 
     flex: _Attr[_builtins.str | AnyFlex | None, _builtins.str | AnyFlex | None]
     """``flex``: reference to namespace ``flex``; required; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-flex
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-flex
+    """
 
     cell: _Attr[_t.Float64Array | None, Reals3 | None]
     """``cell``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-cell
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-flexstrain-cell
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12716,56 +12703,56 @@ class Force(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -12799,76 +12786,75 @@ class Frame(_Typed, _Attachable):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``frame``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-name
+    """
 
     childclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``childclass``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-childclass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-childclass
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-euler
+    """
 
     scale: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``scale``: double[1..3] (1 to 3 values); default "1"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scale
+    """
 
     scaling: _Attr[Scaling | None, Scaling | None]
     """``scaling``: one of: similar, geometry; default "similar"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scaling
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-scaling
+    """
 
     massscale: _Attr[_builtins.float | None, _t.Real | None]
     """``massscale``: double; default "0"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-massscale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#frame-massscale
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the children that name none (childclass takes precedence).
-        """
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def body(self) -> _List[Body]:
@@ -13590,62 +13576,62 @@ class Frameangacc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-objname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13682,74 +13668,74 @@ class Frameangvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13786,62 +13772,62 @@ class Framelinacc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-objname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13878,74 +13864,74 @@ class Framelinvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -13982,74 +13968,74 @@ class Framepos(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14086,74 +14072,74 @@ class Framequat(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14190,74 +14176,74 @@ class Framexaxis(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14294,74 +14280,74 @@ class Frameyaxis(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14398,74 +14384,74 @@ class Framezaxis(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-user
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-objname
+    """
 
     reftype: _Attr[Frameobj | None, Frameobj | None]
     """``reftype``: one of: body, xbody, geom, site, camera; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-reftype
+    """
 
     refname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-refname
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14502,20 +14488,20 @@ class Freejoint(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-name
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-group
+    """
 
     align: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``align``: one of: false, true, auto; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-align
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-align
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14540,74 +14526,74 @@ class Fromto(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-user
+    """
 
     geom1: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom1``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom1
+    """
 
     geom2: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom2``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-geom2
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-body2
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14644,234 +14630,233 @@ class General(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcelimited
+    """
 
     actlimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actlimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actlimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
+    """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-refsite
+    """
 
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-body
+    """
 
     actdim: _Attr[_builtins.int | None, _t.Integer | None]
     """``actdim``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actdim
+    """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
     """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
+    """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
+    """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-inheritrange
+    """
 
     dyntype: _Attr[Dyn | None, Dyn | None]
     """``dyntype``: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dyntype
+    """
 
     gaintype: _Attr[Gain | None, Gain | None]
     """``gaintype``: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gaintype
+    """
 
     biastype: _Attr[Bias | None, Bias | None]
     """``biastype``: one of: none, affine, muscle, dcmotor, so3, user; default "none".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biastype
+    """
 
     dynprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``dynprm``: double[1..10] (1 to 10 values); default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-dynprm
+    """
 
     gainprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``gainprm``: double[1..10] (1 to 10 values); default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-gainprm
+    """
 
     biasprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
     """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
+    """
 
     actearly: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``actearly``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -14941,222 +14926,221 @@ class Geom(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-class
+    """
 
     type: _Attr[GeomType | None, GeomType | None]
     """``type``: one of: plane, hfield, sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-type
+    """
 
     contype: _Attr[_builtins.int | None, _t.Integer | None]
     """``contype``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-contype
+    """
 
     conaffinity: _Attr[_builtins.int | None, _t.Integer | None]
     """``conaffinity``: int; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-conaffinity
+    """
 
     condim: _Attr[_builtins.int | None, _t.Integer | None]
     """``condim``: int; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-condim
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
+    """
 
     priority: _Attr[_builtins.int | None, _t.Integer | None]
     """``priority``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
+    """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``size``: double[1..3] (1 to 3 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-material
+    """
 
     friction: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``friction``: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-friction
+    """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
     """``mass``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
+    """
 
     density: _Attr[_builtins.float | None, _t.Real | None]
     """``density``: double; default "1000".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-density
+    """
 
     shellinertia: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``shellinertia``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
+    """
 
     solmix: _Attr[_builtins.float | None, _t.Real | None]
     """``solmix``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solmix
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-solimp
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
+    """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
     """``gap``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
+    """
 
     surfacevel: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
+    """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
     """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
+    """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
     """``fromto``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-euler
+    """
 
     hfield: _Attr[_builtins.str | Hfield | None, _builtins.str | Hfield | None]
     """``hfield``: reference to namespace ``hfield``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-hfield
+    """
 
     mesh: _Attr[_builtins.str | Mesh | None, _builtins.str | Mesh | None]
     """``mesh``: reference to namespace ``mesh``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mesh
+    """
 
     fitscale: _Attr[_builtins.float | None, _t.Real | None]
     """``fitscale``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fitscale
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-rgba
+    """
 
     fluidshape: _Attr[Fluidshape | None, Fluidshape | None]
     """``fluidshape``: one of: none, ellipsoid; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
+    """
 
     fluidcoef: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``fluidcoef``: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidcoef
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-user
+    """
 
     castshadow: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``castshadow``: bool; default "true"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-castshadow
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def plugin(self) -> _List[Plugin]:
@@ -15262,80 +15246,80 @@ class Global(_Typed):
     cameraid: _Attr[_builtins.int | None, _t.Integer | None]
     """``cameraid``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-cameraid
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-cameraid
+    """
 
     orthographic: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``orthographic``: bool; default "false".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-orthographic
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-orthographic
+    """
 
     fovy: _Attr[_builtins.float | None, _t.Real | None]
     """``fovy``: float; default "45".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-fovy
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-fovy
+    """
 
     ipd: _Attr[_builtins.float | None, _t.Real | None]
     """``ipd``: float; default "0.068".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ipd
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ipd
+    """
 
     azimuth: _Attr[_builtins.float | None, _t.Real | None]
     """``azimuth``: float; default "90".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-azimuth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-azimuth
+    """
 
     elevation: _Attr[_builtins.float | None, _t.Real | None]
     """``elevation``: float; default "-45".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-elevation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-elevation
+    """
 
     linewidth: _Attr[_builtins.float | None, _t.Real | None]
     """``linewidth``: float; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-linewidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-linewidth
+    """
 
     glow: _Attr[_builtins.float | None, _t.Real | None]
     """``glow``: float; default "0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-glow
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-glow
+    """
 
     offwidth: _Attr[_builtins.int | None, _t.Integer | None]
     """``offwidth``: int; default "640".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offwidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offwidth
+    """
 
     offheight: _Attr[_builtins.int | None, _t.Integer | None]
     """``offheight``: int; default "480".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offheight
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-offheight
+    """
 
     realtime: _Attr[_builtins.float | None, _t.Real | None]
     """``realtime``: float; default "1"; > 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-realtime
+    """
 
     ellipsoidinertia: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``ellipsoidinertia``: bool; default "false".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ellipsoidinertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-ellipsoidinertia
+    """
 
     bvactive: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``bvactive``: bool; default "false".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-bvactive
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-global-bvactive
+    """
 
     @overload
     def resolve(self, name: Literal["cameraid", "offwidth", "offheight"]) -> _builtins.int:
@@ -15360,56 +15344,56 @@ class Gyro(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -15443,26 +15427,26 @@ class Headlight(_Typed):
     ambient: _Attr[_t.Float32Array | None, Reals3 | None]
     """``ambient``: float[3]; default "0.1 0.1 0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-ambient
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-ambient
+    """
 
     diffuse: _Attr[_t.Float32Array | None, Reals3 | None]
     """``diffuse``: float[3]; default "0.4 0.4 0.4".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-diffuse
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-diffuse
+    """
 
     specular: _Attr[_t.Float32Array | None, Reals3 | None]
     """``specular``: float[3]; default "0.5 0.5 0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-specular
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-specular
+    """
 
     active: _Attr[HeadlightActive | None, HeadlightActive | _builtins.bool | None]
     """``active``: one of: false, true, auto; default "auto"; in MuJoCo 3.3.7, 3.17.0: int, default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-headlight-active
+    """
 
     @overload
     def resolve(self, name: Literal["ambient", "diffuse", "specular"]) -> _t.Float32Array:
@@ -15484,44 +15468,44 @@ class Hfield(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``hfield``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-name
+    """
 
     content_type: _Attr[_builtins.str | None, _builtins.str | None]
     """``content_type``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-content_type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-content_type
+    """
 
     file: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``file``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-file
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-file
+    """
 
     nrow: _Attr[_builtins.int | None, _t.Integer | None]
     """``nrow``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-nrow
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-nrow
+    """
 
     ncol: _Attr[_builtins.int | None, _t.Integer | None]
     """``ncol``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-ncol
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-ncol
+    """
 
     size: _Attr[_t.Float64Array | None, Reals4 | None]
     """``size``: double[4]; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-size
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-size
+    """
 
     elevation: _Attr[_t.Float64Array | None, RealsAny | None]
     """``elevation``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-elevation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-hfield-elevation
+    """
 
     @overload
     def resolve(self, name: Literal["name", "content_type"]) -> _builtins.str | None:
@@ -15549,56 +15533,56 @@ class Inertial(_Typed):
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-quat
+    """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
     """``mass``: double; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-mass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-mass
+    """
 
     diaginertia: _Attr[_t.Float64Array | None, Reals3 | None]
     """``diaginertia``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-diaginertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-diaginertia
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-euler
+    """
 
     fullinertia: _Attr[_t.Float64Array | None, Reals6 | None]
     """``fullinertia``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-fullinertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-fullinertia
+    """
 
     @overload
     def resolve(self, name: Literal["pos", "diaginertia", "axisangle", "xyaxes", "zaxis", "euler", "fullinertia"]) -> _t.Float64Array | None:
@@ -15623,74 +15607,74 @@ class Insidesite(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-site
+    """
 
     objtype: _Attr[Frameobj | None, Frameobj | None]
     """``objtype``: one of: body, xbody, geom, site, camera; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objtype
+    """
 
     objname: _Attr[FrameobjTarget | None, FrameobjTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-objname
+    """
 
     enclosed: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``enclosed``: bool; default "false"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-enclosed
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-enclosed
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -15733,8 +15717,8 @@ class Instance(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``instance``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#plugin-instance-name
+    """
 
     @property
     def config(self) -> _List[Config]:
@@ -15794,180 +15778,179 @@ class Intvelocity(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcelimited
+    """
 
     actlimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actlimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actlimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
+    """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-inheritrange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-refsite
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-dampratio
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16016,156 +15999,155 @@ class Joint(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-class
+    """
 
     type: _Attr[JointType | None, JointType | None]
     """``type``: one of: free, ball, slide, hinge; default "hinge".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-type
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
+    """
 
     axis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``axis``: double[3]; default "0 0 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-axis
+    """
 
     springdamper: _Attr[_t.Float64Array | None, Reals2 | None]
     """``springdamper``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
+    """
 
     limited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``limited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-limited
+    """
 
     actuatorfrclimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actuatorfrclimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrclimited
+    """
 
     solreflimit: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreflimit
+    """
 
     solimplimit: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimplimit
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solreffriction
+    """
 
     solimpfriction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-solimpfriction
+    """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
+    """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actuatorfrcrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
+    """
 
     actuatorgravcomp: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``actuatorgravcomp``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
+    """
 
     ref: _Attr[_builtins.float | None, _t.Real | None]
     """``ref``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
+    """
 
     springref: _Attr[_builtins.float | None, _t.Real | None]
     """``springref``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
+    """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
     """``frictionloss``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-user
+    """
 
     springyield: _Attr[_builtins.float | None, _t.Real | None]
     """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springyield
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16211,56 +16193,56 @@ class Jointactuatorfrc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16294,56 +16276,56 @@ class Jointlimitfrc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16377,56 +16359,56 @@ class Jointlimitpos(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16460,56 +16442,56 @@ class Jointlimitvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16543,56 +16525,56 @@ class Jointpos(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16626,56 +16608,56 @@ class Jointvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-user
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-joint
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16709,56 +16691,56 @@ class Key(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``key``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-name
+    """
 
     time: _Attr[_builtins.float | None, _t.Real | None]
     """``time``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-time
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-time
+    """
 
     qpos: _Attr[_t.Float64Array | None, RealsAny | None]
     """``qpos``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qpos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qpos
+    """
 
     qvel: _Attr[_t.Float64Array | None, RealsAny | None]
     """``qvel``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qvel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-qvel
+    """
 
     act: _Attr[_t.Float64Array | None, RealsAny | None]
     """``act``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-act
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-act
+    """
 
     mpos: _Attr[_t.Float64Array | None, RealsAny | None]
     """``mpos``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mpos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mpos
+    """
 
     mquat: _Attr[_t.Float64Array | None, RealsAny | None]
     """``mquat``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mquat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-mquat
+    """
 
     ctrl: _Attr[_t.Float64Array | None, RealsAny | None]
     """``ctrl``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-ctrl
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-ctrl
+    """
 
     plastic: _Attr[_t.Float64Array | None, RealsAny | None]
     """``plastic``: double[] (any length); no default (unset when absent); in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-plastic
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-plastic
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -16848,14 +16830,14 @@ class Layer(_Typed):
     texture: _Attr[_builtins.str | Texture | None, _builtins.str | Texture | None]
     """``texture``: reference to namespace ``texture``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-texture
+    """
 
     role: _Attr[_builtins.str | None, _builtins.str | None]
     """``role``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-role
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#material-layer-role
+    """
 
     @overload
     def resolve(self, name: Literal["texture"]) -> _builtins.str | Texture | None:
@@ -16877,62 +16859,62 @@ class Lengthrange(_Typed):
     mode: _Attr[LrMode | None, LrMode | None]
     """``mode``: one of: none, muscle, muscleuser, all; default "muscle".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-mode
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-mode
+    """
 
     useexisting: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``useexisting``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-useexisting
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-useexisting
+    """
 
     uselimit: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``uselimit``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-uselimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-uselimit
+    """
 
     accel: _Attr[_builtins.float | None, _t.Real | None]
     """``accel``: double; default "20".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-accel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-accel
+    """
 
     maxforce: _Attr[_builtins.float | None, _t.Real | None]
     """``maxforce``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-maxforce
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-maxforce
+    """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
     """``timeconst``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timeconst
+    """
 
     timestep: _Attr[_builtins.float | None, _t.Real | None]
     """``timestep``: double; default "0.01".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timestep
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-timestep
+    """
 
     inttotal: _Attr[_builtins.float | None, _t.Real | None]
     """``inttotal``: double; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-inttotal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-inttotal
+    """
 
     interval: _Attr[_builtins.float | None, _t.Real | None]
     """``interval``: double; default "2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-interval
+    """
 
     tolrange: _Attr[_builtins.float | None, _t.Real | None]
     """``tolrange``: double; default "0.05".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-tolrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-lengthrange-tolrange
+    """
 
     @overload
     def resolve(self, name: Literal["mode"]) -> LrMode:
@@ -16963,132 +16945,131 @@ class Light(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``light``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-class
+    """
 
     directional: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``directional``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
+    """
 
     type: _Attr[LightType | None, LightType | None]
     """``type``: one of: spot, directional, point, image; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
+    """
 
     castshadow: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``castshadow``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-castshadow
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-active
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-pos
+    """
 
     dir: _Attr[_t.Float64Array | None, Reals3 | None]
     """``dir``: double[3]; default "0 0 -1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-dir
+    """
 
     bulbradius: _Attr[_builtins.float | None, _t.Real | None]
     """``bulbradius``: float; default "0.02".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-bulbradius
+    """
 
     intensity: _Attr[_builtins.float | None, _t.Real | None]
     """``intensity``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
+    """
 
     range: _Attr[_builtins.float | None, _t.Real | None]
     """``range``: float; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-range
+    """
 
     attenuation: _Attr[_t.Float32Array | None, Reals3 | None]
     """``attenuation``: float[3]; default "1 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-attenuation
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: float; default "45".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-cutoff
+    """
 
     softness: _Attr[_builtins.float | None, _t.Real | None]
     """``softness``: float; default "0.2"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-softness
+    """
 
     exponent: _Attr[_builtins.float | None, _t.Real | None]
     """``exponent``: float; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-exponent
+    """
 
     ambient: _Attr[_t.Float32Array | None, Reals3 | None]
     """``ambient``: float[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
+    """
 
     diffuse: _Attr[_t.Float32Array | None, Reals3 | None]
     """``diffuse``: float[3]; default "0.7 0.7 0.7".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-diffuse
+    """
 
     specular: _Attr[_t.Float32Array | None, Reals3 | None]
     """``specular``: float[3]; default "0.3 0.3 0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-specular
+    """
 
     mode: _Attr[Camlight | None, Camlight | None]
     """``mode``: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-mode
+    """
 
     target: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``target``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-target
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-target
+    """
 
     texture: _Attr[_builtins.str | Texture | None, _builtins.str | Texture | None]
     """``texture``: reference to namespace ``texture``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-texture
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-texture
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17143,56 +17124,56 @@ class Magnetometer(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17226,80 +17207,80 @@ class Map(_Typed):
     stiffness: _Attr[_builtins.float | None, _t.Real | None]
     """``stiffness``: float; default "100".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffness
+    """
 
     stiffnessrot: _Attr[_builtins.float | None, _t.Real | None]
     """``stiffnessrot``: float; default "500".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffnessrot
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-stiffnessrot
+    """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
     """``force``: float; default "0.005".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-force
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-force
+    """
 
     torque: _Attr[_builtins.float | None, _t.Real | None]
     """``torque``: float; default "0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-torque
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-torque
+    """
 
     alpha: _Attr[_builtins.float | None, _t.Real | None]
     """``alpha``: float; default "0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-alpha
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-alpha
+    """
 
     fogstart: _Attr[_builtins.float | None, _t.Real | None]
     """``fogstart``: float; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogstart
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogstart
+    """
 
     fogend: _Attr[_builtins.float | None, _t.Real | None]
     """``fogend``: float; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogend
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-fogend
+    """
 
     znear: _Attr[_builtins.float | None, _t.Real | None]
     """``znear``: float; default "0.01"; > 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-znear
+    """
 
     zfar: _Attr[_builtins.float | None, _t.Real | None]
     """``zfar``: float; default "50".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-zfar
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-zfar
+    """
 
     haze: _Attr[_builtins.float | None, _t.Real | None]
     """``haze``: float; default "0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-haze
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-haze
+    """
 
     shadowclip: _Attr[_builtins.float | None, _t.Real | None]
     """``shadowclip``: float; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowclip
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowclip
+    """
 
     shadowscale: _Attr[_builtins.float | None, _t.Real | None]
     """``shadowscale``: float; default "0.6".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowscale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-shadowscale
+    """
 
     actuatortendon: _Attr[_builtins.float | None, _t.Real | None]
     """``actuatortendon``: float; default "2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-actuatortendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-map-actuatortendon
+    """
 
     def resolve(self, name: Literal["stiffness", "stiffnessrot", "force", "torque", "alpha", "fogstart", "fogend", "znear", "zfar", "haze", "shadowclip", "shadowscale", "actuatortendon"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -17317,78 +17298,77 @@ class Material(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-class
+    """
 
     texture: _Attr[_builtins.str | Texture | None, _builtins.str | Texture | None]
     """``texture``: reference to namespace ``texture``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texture
+    """
 
     texrepeat: _Attr[_t.Float32Array | None, Reals2 | None]
     """``texrepeat``: float[2]; default "1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texrepeat
+    """
 
     texuniform: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``texuniform``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
+    """
 
     emission: _Attr[_builtins.float | None, _t.Real | None]
     """``emission``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
+    """
 
     specular: _Attr[_builtins.float | None, _t.Real | None]
     """``specular``: float; default "0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-specular
+    """
 
     shininess: _Attr[_builtins.float | None, _t.Real | None]
     """``shininess``: float; default "0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-shininess
+    """
 
     reflectance: _Attr[_builtins.float | None, _t.Real | None]
     """``reflectance``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
+    """
 
     metallic: _Attr[_builtins.float | None, _t.Real | None]
     """``metallic``: float; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-metallic
+    """
 
     roughness: _Attr[_builtins.float | None, _t.Real | None]
     """``roughness``: float; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-roughness
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "1 1 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-rgba
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def layer(self) -> _List[Layer]:
@@ -17467,108 +17447,107 @@ class Mesh(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``mesh``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-class
+    """
 
     content_type: _Attr[_builtins.str | None, _builtins.str | None]
     """``content_type``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-content_type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-content_type
+    """
 
     file: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``file``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-file
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-file
+    """
 
     vertex: _Attr[_t.Float32Array | None, RealsAny | None]
     """``vertex``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-vertex
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-vertex
+    """
 
     normal: _Attr[_t.Float32Array | None, RealsAny | None]
     """``normal``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-normal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-normal
+    """
 
     texcoord: _Attr[_t.Float32Array | None, RealsAny | None]
     """``texcoord``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-texcoord
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-texcoord
+    """
 
     face: _Attr[_t.Int32Array | None, IntegersAny | None]
     """``face``: int[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-face
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-face
+    """
 
     refpos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``refpos``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refpos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refpos
+    """
 
     refquat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``refquat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refquat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refquat
+    """
 
     scale: _Attr[_t.Float64Array | None, Reals3 | None]
     """``scale``: double[3]; default "1 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-scale
+    """
 
     smoothnormal: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``smoothnormal``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-smoothnormal
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-smoothnormal
+    """
 
     maxhullvert: _Attr[_builtins.int | None, _t.Integer | None]
     """``maxhullvert``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-maxhullvert
+    """
 
     inertia: _Attr[MeshInertia | None, MeshInertia | None]
     """``inertia``: one of: convex, legacy, exact, shell; default "legacy".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-inertia
+    """
 
     builtin: _Attr[MeshBuiltin | None, MeshBuiltin | None]
     """``builtin``: one of: none, sphere, hemisphere, cone, supertorus, supersphere, wedge, plate; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-builtin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-builtin
+    """
 
     params: _Attr[_t.Float64Array | None, RealsAny | None]
     """``params``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-params
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-params
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-material
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def plugin(self) -> _List[Plugin]:
@@ -17662,20 +17641,20 @@ class Model(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``model``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-name
+    """
 
     file: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``file``: file; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-file
+    """
 
     content_type: _Attr[_builtins.str | None, _builtins.str | None]
     """``content_type``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-model-content_type
+    """
 
     @overload
     def resolve(self, name: Literal["name", "content_type"]) -> _builtins.str | None:
@@ -17697,144 +17676,143 @@ class Motor(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-refsite
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -17883,192 +17861,191 @@ class Muscle(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-cranksite
+    """
 
     timeconst: _Attr[_t.Float64Array | None, Reals2 | None]
     """``timeconst``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
+    """
 
     tausmooth: _Attr[_builtins.float | None, _t.Real | None]
     """``tausmooth``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
+    """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
     """``force``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
+    """
 
     scale: _Attr[_builtins.float | None, _t.Real | None]
     """``scale``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
+    """
 
     lmin: _Attr[_builtins.float | None, _t.Real | None]
     """``lmin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
+    """
 
     lmax: _Attr[_builtins.float | None, _t.Real | None]
     """``lmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
+    """
 
     vmax: _Attr[_builtins.float | None, _t.Real | None]
     """``vmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
+    """
 
     fpmax: _Attr[_builtins.float | None, _t.Real | None]
     """``fpmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
+    """
 
     fvmax: _Attr[_builtins.float | None, _t.Real | None]
     """``fvmax``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18117,74 +18094,74 @@ class Normal(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-user
+    """
 
     geom1: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom1``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom1
+    """
 
     geom2: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom2``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-geom2
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-body2
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18221,20 +18198,20 @@ class Numeric(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``numeric``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-name
+    """
 
     size: _Attr[_builtins.int | None, _t.Integer | None]
     """``size``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
+    """
 
     data: _Attr[_t.Float64Array | None, RealsAny | None]
     """``data``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-data
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-data
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18259,164 +18236,164 @@ class Option(_Typed):
     timestep: _Attr[_builtins.float | None, _t.Real | None]
     """``timestep``: double; default "0.002".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-timestep
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-timestep
+    """
 
     impratio: _Attr[_builtins.float | None, _t.Real | None]
     """``impratio``: double; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-impratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-impratio
+    """
 
     tolerance: _Attr[_builtins.float | None, _t.Real | None]
     """``tolerance``: double; default "1e-08".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-tolerance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-tolerance
+    """
 
     ls_tolerance: _Attr[_builtins.float | None, _t.Real | None]
     """``ls_tolerance``: double; default "0.01".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_tolerance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_tolerance
+    """
 
     noslip_tolerance: _Attr[_builtins.float | None, _t.Real | None]
     """``noslip_tolerance``: double; default "1e-06".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_tolerance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_tolerance
+    """
 
     ccd_tolerance: _Attr[_builtins.float | None, _t.Real | None]
     """``ccd_tolerance``: double; default "1e-06".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_tolerance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_tolerance
+    """
 
     sleep_tolerance: _Attr[_builtins.float | None, _t.Real | None]
     """``sleep_tolerance``: double; default "0.001"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sleep_tolerance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sleep_tolerance
+    """
 
     gravity: _Attr[_t.Float64Array | None, Reals3 | None]
     """``gravity``: double[3]; default "0 0 -9.81".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-gravity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-gravity
+    """
 
     wind: _Attr[_t.Float64Array | None, Reals3 | None]
     """``wind``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-wind
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-wind
+    """
 
     magnetic: _Attr[_t.Float64Array | None, Reals3 | None]
     """``magnetic``: double[3]; default "0 -0.5 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-magnetic
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-magnetic
+    """
 
     density: _Attr[_builtins.float | None, _t.Real | None]
     """``density``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-density
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-density
+    """
 
     viscosity: _Attr[_builtins.float | None, _t.Real | None]
     """``viscosity``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-viscosity
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-viscosity
+    """
 
     o_margin: _Attr[_builtins.float | None, _t.Real | None]
     """``o_margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_margin
+    """
 
     o_solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``o_solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solref
+    """
 
     o_solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``o_solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_solimp
+    """
 
     o_friction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``o_friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_friction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_friction
+    """
 
     integrator: _Attr[Integrator | None, Integrator | None]
     """``integrator``: one of: Euler, RK4, implicit, implicitfast, discrete; default "Euler".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-integrator
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-integrator
+    """
 
     cone: _Attr[Cone | None, Cone | None]
     """``cone``: one of: pyramidal, elliptic; default "pyramidal".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-cone
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-cone
+    """
 
     jacobian: _Attr[Jacobian | None, Jacobian | None]
     """``jacobian``: one of: dense, sparse, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-jacobian
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-jacobian
+    """
 
     solver: _Attr[Solver | None, Solver | None]
     """``solver``: one of: PGS, CG, Newton; default "Newton".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-solver
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-solver
+    """
 
     iterations: _Attr[_builtins.int | None, _t.Integer | None]
     """``iterations``: int; default "100".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-iterations
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-iterations
+    """
 
     ls_iterations: _Attr[_builtins.int | None, _t.Integer | None]
     """``ls_iterations``: int; default "50".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_iterations
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ls_iterations
+    """
 
     noslip_iterations: _Attr[_builtins.int | None, _t.Integer | None]
     """``noslip_iterations``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_iterations
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_iterations
+    """
 
     ccd_iterations: _Attr[_builtins.int | None, _t.Integer | None]
     """``ccd_iterations``: int; default "35".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_iterations
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-ccd_iterations
+    """
 
     sdf_iterations: _Attr[_builtins.int | None, _t.Integer | None]
     """``sdf_iterations``: int; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_iterations
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_iterations
+    """
 
     sdf_initpoints: _Attr[_builtins.int | None, _t.Integer | None]
     """``sdf_initpoints``: int; default "40".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_initpoints
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-sdf_initpoints
+    """
 
     actuatorgroupdisable: _Attr[_t.Int32Array | None, IntegersAny | None]
     """``actuatorgroupdisable``: int[] (any length); no default (unset when absent); each value >= 0 and <= 30. Bits of disableactuator.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-actuatorgroupdisable
+    """
 
     @property
     def flag(self) -> Flag:
@@ -18558,108 +18535,107 @@ class Orientation(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-user
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-joint
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-refsite
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
+    """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
     """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-input
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18705,78 +18681,77 @@ class Pair(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``pair``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-class
+    """
 
     geom1: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom1``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom1
+    """
 
     geom2: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom2``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-geom2
+    """
 
     condim: _Attr[_builtins.int | None, _t.Integer | None]
     """``condim``: int; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-condim
+    """
 
     friction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``friction``: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-friction
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solref
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solimp
+    """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
     """``gap``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
+    """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
     """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -18813,210 +18788,209 @@ class Pid(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcelimited
+    """
 
     posrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
+    """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
+    """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-inheritrange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-refsite
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-dampratio
+    """
 
     ki: _Attr[_builtins.float | None, _t.Real | None]
     """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
+    """
 
     imax: _Attr[_builtins.float | None, _t.Real | None]
     """``imax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-imax
+    """
 
     slewmax: _Attr[_builtins.float | None, _t.Real | None]
     """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
+    """
 
     input: _Attr[tuple[PidInput, ...] | PidInputAlone | None, PidInput | Collection[PidInput] | PidInputAlone | None]
     """``input``: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-input
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19068,26 +19042,26 @@ class Pin(_Typed):
     id: _Attr[_t.Float64Array | None, RealsAny | None]
     """``id``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-id
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-id
+    """
 
     range: _Attr[_t.Float64Array | None, RealsAny | None]
     """``range``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-range
+    """
 
     grid: _Attr[_t.Float64Array | None, RealsAny | None]
     """``grid``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-grid
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-grid
+    """
 
     gridrange: _Attr[_t.Float64Array | None, RealsAny | None]
     """``gridrange``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-gridrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-pin-gridrange
+    """
 
     def resolve(self, name: Literal["id", "range", "grid", "gridrange"]) -> _t.Float64Array | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -19105,14 +19079,14 @@ class Plugin(_Typed):
     plugin: _Attr[_builtins.str | None, _builtins.str | None]
     """``plugin``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-plugin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-plugin
+    """
 
     instance: _Attr[_builtins.str | Instance | None, _builtins.str | Instance | None]
     """``instance``: reference to namespace ``instance``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-instance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-plugin-instance
+    """
 
     @property
     def config(self) -> _List[Config]:
@@ -19176,174 +19150,173 @@ class Position(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcelimited
+    """
 
     inheritrange: _Attr[_builtins.float | None, _t.Real | None]
     """``inheritrange``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-inheritrange
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-refsite
+    """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
     """``kp``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
+    """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
     """``dampratio``: double; no default (unset when absent); >= 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-dampratio
+    """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
     """``timeconst``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19392,8 +19365,8 @@ class Pulley(_Typed):
     divisor: _Attr[_builtins.float | None, _t.Real | None]
     """``divisor``: double; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-pulley-divisor
+    """
 
     def resolve(self, name: Literal["divisor"]) -> _builtins.float | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -19411,32 +19384,32 @@ class Quality(_Typed):
     shadowsize: _Attr[_builtins.int | None, _t.Integer | None]
     """``shadowsize``: int; default "4096".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-shadowsize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-shadowsize
+    """
 
     offsamples: _Attr[_builtins.int | None, _t.Integer | None]
     """``offsamples``: int; default "4".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-offsamples
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-offsamples
+    """
 
     numslices: _Attr[_builtins.int | None, _t.Integer | None]
     """``numslices``: int; default "28".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numslices
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numslices
+    """
 
     numstacks: _Attr[_builtins.int | None, _t.Integer | None]
     """``numstacks``: int; default "16".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numstacks
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numstacks
+    """
 
     numquads: _Attr[_builtins.int | None, _t.Integer | None]
     """``numquads``: int; default "4".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numquads
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-quality-numquads
+    """
 
     def resolve(self, name: Literal["shadowsize", "offsamples", "numslices", "numstacks", "numquads"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -19454,68 +19427,68 @@ class Rangefinder(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-site
+    """
 
     camera: _Attr[_builtins.str | Camera | None, _builtins.str | Camera | None]
     """``camera``: reference to namespace ``camera``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-camera
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-camera
+    """
 
     data: _Attr[tuple[RayData, ...] | None, RayData | Collection[RayData] | None]
     """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -19555,38 +19528,37 @@ class Replicate(_Typed, _Attachable):
     count: _Attr[_builtins.int | None, _t.Integer | None]
     """``count``: int; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-count
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-count
+    """
 
     offset: _Attr[_t.Float64Array | None, Reals3 | None]
     """``offset``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-offset
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-offset
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-euler
+    """
 
     sep: _Attr[_builtins.str | None, _builtins.str | None]
     """``sep``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-sep
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate-sep
+    """
 
     childclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``childclass``: reference to namespace ``default``; no default (unset when absent).
-        """
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent). Default class for the replicated children that name none (childclass takes precedence).
-        """
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def body(self) -> _List[Body]:
@@ -20200,152 +20172,152 @@ class Rgba(_Typed):
     fog: _Attr[_t.Float32Array | None, Reals4 | None]
     """``fog``: float[4]; default "0 0 0 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-fog
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-fog
+    """
 
     haze: _Attr[_t.Float32Array | None, Reals4 | None]
     """``haze``: float[4]; default "1 1 1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-haze
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-haze
+    """
 
     force: _Attr[_t.Float32Array | None, Reals4 | None]
     """``force``: float[4]; default "1 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-force
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-force
+    """
 
     inertia: _Attr[_t.Float32Array | None, Reals4 | None]
     """``inertia``: float[4]; default "0.8 0.2 0.2 0.6".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-inertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-inertia
+    """
 
     joint: _Attr[_t.Float32Array | None, Reals4 | None]
     """``joint``: float[4]; default "0.2 0.6 0.8 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-joint
+    """
 
     actuator: _Attr[_t.Float32Array | None, Reals4 | None]
     """``actuator``: float[4]; default "0.2 0.25 0.2 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuator
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuator
+    """
 
     actuatornegative: _Attr[_t.Float32Array | None, Reals4 | None]
     """``actuatornegative``: float[4]; default "0.2 0.6 0.9 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatornegative
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatornegative
+    """
 
     actuatorpositive: _Attr[_t.Float32Array | None, Reals4 | None]
     """``actuatorpositive``: float[4]; default "0.9 0.4 0.2 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatorpositive
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-actuatorpositive
+    """
 
     com: _Attr[_t.Float32Array | None, Reals4 | None]
     """``com``: float[4]; default "0.9 0.9 0.9 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-com
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-com
+    """
 
     camera: _Attr[_t.Float32Array | None, Reals4 | None]
     """``camera``: float[4]; default "0.6 0.9 0.6 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-camera
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-camera
+    """
 
     light: _Attr[_t.Float32Array | None, Reals4 | None]
     """``light``: float[4]; default "0.6 0.6 0.9 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-light
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-light
+    """
 
     selectpoint: _Attr[_t.Float32Array | None, Reals4 | None]
     """``selectpoint``: float[4]; default "0.9 0.9 0.1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-selectpoint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-selectpoint
+    """
 
     connect: _Attr[_t.Float32Array | None, Reals4 | None]
     """``connect``: float[4]; default "0.2 0.2 0.8 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-connect
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-connect
+    """
 
     contactpoint: _Attr[_t.Float32Array | None, Reals4 | None]
     """``contactpoint``: float[4]; default "0.9 0.6 0.2 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactpoint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactpoint
+    """
 
     contactforce: _Attr[_t.Float32Array | None, Reals4 | None]
     """``contactforce``: float[4]; default "0.7 0.9 0.9 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactforce
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactforce
+    """
 
     contactfriction: _Attr[_t.Float32Array | None, Reals4 | None]
     """``contactfriction``: float[4]; default "0.9 0.8 0.4 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactfriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactfriction
+    """
 
     contacttorque: _Attr[_t.Float32Array | None, Reals4 | None]
     """``contacttorque``: float[4]; default "0.9 0.7 0.9 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contacttorque
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contacttorque
+    """
 
     contactgap: _Attr[_t.Float32Array | None, Reals4 | None]
     """``contactgap``: float[4]; default "0.5 0.8 0.9 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactgap
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-contactgap
+    """
 
     rangefinder: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rangefinder``: float[4]; default "1 1 0.1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-rangefinder
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-rangefinder
+    """
 
     constraint: _Attr[_t.Float32Array | None, Reals4 | None]
     """``constraint``: float[4]; default "0.9 0 0 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-constraint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-constraint
+    """
 
     slidercrank: _Attr[_t.Float32Array | None, Reals4 | None]
     """``slidercrank``: float[4]; default "0.5 0.3 0.8 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-slidercrank
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-slidercrank
+    """
 
     crankbroken: _Attr[_t.Float32Array | None, Reals4 | None]
     """``crankbroken``: float[4]; default "0.9 0 0 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-crankbroken
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-crankbroken
+    """
 
     frustum: _Attr[_t.Float32Array | None, Reals4 | None]
     """``frustum``: float[4]; default "1 1 0 0.2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-frustum
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-frustum
+    """
 
     bv: _Attr[_t.Float32Array | None, Reals4 | None]
     """``bv``: float[4]; default "0 1 0 0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bv
+    """
 
     bvactive: _Attr[_t.Float32Array | None, Reals4 | None]
     """``bvactive``: float[4]; default "1 0 0 0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bvactive
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-rgba-bvactive
+    """
 
     def resolve(self, name: Literal["fog", "haze", "force", "inertia", "joint", "actuator", "actuatornegative", "actuatorpositive", "com", "camera", "light", "selectpoint", "connect", "contactpoint", "contactforce", "contactfriction", "contacttorque", "contactgap", "rangefinder", "constraint", "slidercrank", "crankbroken", "frustum", "bv", "bvactive"]) -> _t.Float32Array:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -20363,104 +20335,104 @@ class Scale(_Typed):
     forcewidth: _Attr[_builtins.float | None, _t.Real | None]
     """``forcewidth``: float; default "0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-forcewidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-forcewidth
+    """
 
     contactwidth: _Attr[_builtins.float | None, _t.Real | None]
     """``contactwidth``: float; default "0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactwidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactwidth
+    """
 
     contactheight: _Attr[_builtins.float | None, _t.Real | None]
     """``contactheight``: float; default "0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactheight
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-contactheight
+    """
 
     connect: _Attr[_builtins.float | None, _t.Real | None]
     """``connect``: float; default "0.2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-connect
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-connect
+    """
 
     com: _Attr[_builtins.float | None, _t.Real | None]
     """``com``: float; default "0.4".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-com
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-com
+    """
 
     camera: _Attr[_builtins.float | None, _t.Real | None]
     """``camera``: float; default "0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-camera
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-camera
+    """
 
     light: _Attr[_builtins.float | None, _t.Real | None]
     """``light``: float; default "0.3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-light
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-light
+    """
 
     selectpoint: _Attr[_builtins.float | None, _t.Real | None]
     """``selectpoint``: float; default "0.2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-selectpoint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-selectpoint
+    """
 
     jointlength: _Attr[_builtins.float | None, _t.Real | None]
     """``jointlength``: float; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointlength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointlength
+    """
 
     jointwidth: _Attr[_builtins.float | None, _t.Real | None]
     """``jointwidth``: float; default "0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointwidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-jointwidth
+    """
 
     actuatorlength: _Attr[_builtins.float | None, _t.Real | None]
     """``actuatorlength``: float; default "0.7".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorlength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorlength
+    """
 
     actuatorwidth: _Attr[_builtins.float | None, _t.Real | None]
     """``actuatorwidth``: float; default "0.2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorwidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-actuatorwidth
+    """
 
     framelength: _Attr[_builtins.float | None, _t.Real | None]
     """``framelength``: float; default "1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framelength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framelength
+    """
 
     framewidth: _Attr[_builtins.float | None, _t.Real | None]
     """``framewidth``: float; default "0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framewidth
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-framewidth
+    """
 
     constraint: _Attr[_builtins.float | None, _t.Real | None]
     """``constraint``: float; default "0.1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-constraint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-constraint
+    """
 
     slidercrank: _Attr[_builtins.float | None, _t.Real | None]
     """``slidercrank``: float; default "0.2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-slidercrank
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-slidercrank
+    """
 
     frustum: _Attr[_builtins.float | None, _t.Real | None]
     """``frustum``: float; default "10".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-frustum
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#visual-scale-frustum
+    """
 
     def resolve(self, name: Literal["forcewidth", "contactwidth", "contactheight", "connect", "com", "camera", "light", "selectpoint", "jointlength", "jointwidth", "actuatorlength", "actuatorwidth", "framelength", "framewidth", "constraint", "slidercrank", "frustum"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -22455,110 +22427,110 @@ class SensorContact(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-user
+    """
 
     geom1: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom1``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom1
+    """
 
     geom2: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom2``: reference to namespace ``geom``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-geom2
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-body2
+    """
 
     subtree1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``subtree1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree1
+    """
 
     subtree2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``subtree2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-subtree2
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-site
+    """
 
     num: _Attr[_builtins.int | None, _t.Integer | None]
     """``num``: int; no default (unset when absent); > 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
+    """
 
     data: _Attr[tuple[ConData, ...] | None, ConData | Collection[ConData] | None]
     """``data``: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
+    """
 
     reduce: _Attr[Reduce | None, Reduce | None]
     """``reduce``: one of: none, mindist, maxforce, netforce; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22604,56 +22576,56 @@ class SensorPlugin(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-name
+    """
 
     plugin: _Attr[_builtins.str | None, _builtins.str | None]
     """``plugin``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-plugin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-plugin
+    """
 
     instance: _Attr[_builtins.str | Instance | None, _builtins.str | Instance | None]
     """``instance``: reference to namespace ``instance``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-instance
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-instance
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-cutoff
+    """
 
     objtype: _Attr[_builtins.str | None, _builtins.str | None]
     """``objtype``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objtype
+    """
 
     objname: _Attr[AnyTarget | None, AnyTarget | None]
     """``objname``: reference to the element ``objtype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-objname
+    """
 
     reftype: _Attr[_builtins.str | None, _builtins.str | None]
     """``reftype``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-reftype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-reftype
+    """
 
     refname: _Attr[AnyTarget | None, AnyTarget | None]
     """``refname``: reference to the element ``reftype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-refname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-refname
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-user
+    """
 
     @property
     def config(self) -> _List[Config]:
@@ -22726,102 +22698,101 @@ class Site(_Typed, _Attachable):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-class
+    """
 
     type: _Attr[SiteType | None, SiteType | None]
     """``type``: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-type
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
+    """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
     """``pos``: double[3]; default "0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-pos
+    """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
     """``quat``: double[4]; default "1 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-quat
+    """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
     """``axisangle``: double[4]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-axisangle
+    """
 
     xyaxes: _Attr[_t.Float64Array | None, Reals6 | None]
     """``xyaxes``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-xyaxes
+    """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
     """``zaxis``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-zaxis
+    """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
     """``euler``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-euler
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-material
+    """
 
     mesh: _Attr[_builtins.str | Mesh | None, _builtins.str | Mesh | None]
     """``mesh``: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-mesh
+    """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``size``: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-size
+    """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
     """``fromto``: double[6]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-rgba
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-user
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -22864,86 +22835,86 @@ class Size(_Typed):
     memory: _Attr[_builtins.str | None, _builtins.str | None]
     """``memory``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-memory
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-memory
+    """
 
     njmax: _Attr[_builtins.int | None, _t.Integer | None]
     """``njmax``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-njmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-njmax
+    """
 
     nconmax: _Attr[_builtins.int | None, _t.Integer | None]
     """``nconmax``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nconmax
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nconmax
+    """
 
     nstack: _Attr[_builtins.int | None, _t.Integer | None]
     """``nstack``: int; default "-1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nstack
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nstack
+    """
 
     nuserdata: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuserdata``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuserdata
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuserdata
+    """
 
     nkey: _Attr[_builtins.int | None, _t.Integer | None]
     """``nkey``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nkey
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nkey
+    """
 
     nuser_body: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_body``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_body
+    """
 
     nuser_jnt: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_jnt``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_jnt
+    """
 
     nuser_geom: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_geom``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_geom
+    """
 
     nuser_site: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_site``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_site
+    """
 
     nuser_cam: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_cam``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_cam
+    """
 
     nuser_tendon: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_tendon``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_tendon
+    """
 
     nuser_actuator: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_actuator``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_actuator
+    """
 
     nuser_sensor: _Attr[_builtins.int | None, _t.Integer | None]
     """``nuser_sensor``: int; default "-1"; >= -1.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuser_sensor
+    """
 
     @overload
     def resolve(self, name: Literal["memory"]) -> _builtins.str | None:
@@ -22968,56 +22939,56 @@ class Skin(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``skin``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-name
+    """
 
     file: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``file``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-file
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-file
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-material
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-rgba
+    """
 
     inflate: _Attr[_builtins.float | None, _t.Real | None]
     """``inflate``: float; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-inflate
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-inflate
+    """
 
     vertex: _Attr[_t.Float32Array | None, RealsAny | None]
     """``vertex``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-vertex
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-vertex
+    """
 
     texcoord: _Attr[_t.Float32Array | None, RealsAny | None]
     """``texcoord``: float[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-texcoord
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-texcoord
+    """
 
     face: _Attr[_t.Int32Array | None, IntegersAny | None]
     """``face``: int[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-face
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-face
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent); >= 0 and <= 5.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
+    """
 
     @property
     def bone(self) -> _List[Bone]:
@@ -23105,138 +23076,137 @@ class Spatial(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-group
+    """
 
     limited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``limited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-limited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-limited
+    """
 
     actuatorfrclimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``actuatorfrclimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrclimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrclimited
+    """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
     """``range``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-range
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-range
+    """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``actuatorfrcrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrcrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrcrange
+    """
 
     solreflimit: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreflimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreflimit
+    """
 
     solimplimit: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimplimit
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimplimit
+    """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreffriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solreffriction
+    """
 
     solimpfriction: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimpfriction
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-solimpfriction
+    """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
     """``frictionloss``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-frictionloss
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-frictionloss
+    """
 
     springlength: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``springlength``: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springlength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springlength
+    """
 
     width: _Attr[_builtins.float | None, _t.Real | None]
     """``width``: double; default "0.003".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-width
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-width
+    """
 
     material: _Attr[_builtins.str | Material | None, _builtins.str | Material | None]
     """``material``: reference to namespace ``material``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-material
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-material
+    """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
     """``margin``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-margin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-margin
+    """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-stiffness
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-stiffness
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-armature
+    """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
     """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-rgba
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-rgba
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-user
+    """
 
     springyield: _Attr[_builtins.float | None, _t.Real | None]
     """``springyield``: double; default "0"; in MuJoCo >= 4.0.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springyield
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-springyield
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @property
     def site(self) -> _List[SpatialSite]:
@@ -23368,14 +23338,14 @@ class SpatialGeom(_Typed):
     geom: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom``: reference to namespace ``geom``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-geom
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-geom
+    """
 
     sidesite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``sidesite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-sidesite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-geom-sidesite
+    """
 
     @overload
     def resolve(self, name: Literal["geom"]) -> _builtins.str | Geom | None:
@@ -23397,8 +23367,8 @@ class SpatialSite(_Typed):
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#spatial-site-site
+    """
 
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -23416,32 +23386,32 @@ class Statistic(_Typed):
     meaninertia: _Attr[_builtins.float | None, _t.Real | None]
     """``meaninertia``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meaninertia
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meaninertia
+    """
 
     meanmass: _Attr[_builtins.float | None, _t.Real | None]
     """``meanmass``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meanmass
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meanmass
+    """
 
     meansize: _Attr[_builtins.float | None, _t.Real | None]
     """``meansize``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meansize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meansize
+    """
 
     extent: _Attr[_builtins.float | None, _t.Real | None]
     """``extent``: double; no default (unset when absent); > 0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
+    """
 
     center: _Attr[_t.Float64Array | None, Reals3 | None]
     """``center``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-center
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-center
+    """
 
     @overload
     def resolve(self, name: Literal["meaninertia", "meanmass", "meansize", "extent"]) -> _builtins.float | None:
@@ -23463,56 +23433,56 @@ class Subtreeangmom(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-user
+    """
 
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-body
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23546,56 +23516,56 @@ class Subtreecom(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-user
+    """
 
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-body
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23629,56 +23599,56 @@ class Subtreelinvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-user
+    """
 
     body: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body``: reference to namespace ``body``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-body
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-body
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23712,56 +23682,56 @@ class Tactile(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-name
+    """
 
     geom: _Attr[_builtins.str | Geom | None, _builtins.str | Geom | None]
     """``geom``: reference to namespace ``geom``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-geom
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-geom
+    """
 
     mesh: _Attr[_builtins.str | Mesh | None, _builtins.str | Mesh | None]
     """``mesh``: reference to namespace ``mesh``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-mesh
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-mesh
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-user
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -23951,56 +23921,56 @@ class Tendonactuatorfrc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-user
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-tendon
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24034,56 +24004,56 @@ class Tendonlimitfrc(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-user
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-tendon
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24117,56 +24087,56 @@ class Tendonlimitpos(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-user
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-tendon
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24200,56 +24170,56 @@ class Tendonlimitvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-user
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-tendon
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24283,56 +24253,56 @@ class Tendonpos(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-user
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-tendon
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24366,56 +24336,56 @@ class Tendonvel(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-user
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-tendon
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24449,14 +24419,14 @@ class Text(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``text``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-name
+    """
 
     data: _Attr[_builtins.str | None, _builtins.str | None]
     """``data``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-text-data
+    """
 
     def resolve(self, name: Literal["name", "data"]) -> _builtins.str | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
@@ -24474,162 +24444,161 @@ class Texture(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``texture``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-name
+    """
 
     type: _Attr[TextureType | None, TextureType | None]
     """``type``: one of: 2d, cube, skybox; default "cube".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-type
+    """
 
     colorspace: _Attr[Colorspace | None, Colorspace | None]
     """``colorspace``: one of: auto, linear, sRGB; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-colorspace
+    """
 
     content_type: _Attr[_builtins.str | None, _builtins.str | None]
     """``content_type``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-content_type
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-content_type
+    """
 
     file: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``file``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-file
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-file
+    """
 
     gridsize: _Attr[_t.Int32Array | None, Integers2 | None]
     """``gridsize``: int[2]; default "1 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridsize
+    """
 
     gridlayout: _Attr[_builtins.str | None, _builtins.str | None]
     """``gridlayout``: chars[1..12] (1 to 12 values); no default (unset when absent). Length must equal the gridsize product.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-gridlayout
+    """
 
     fileright: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``fileright``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileright
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileright
+    """
 
     fileleft: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``fileleft``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileleft
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileleft
+    """
 
     fileup: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``fileup``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileup
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileup
+    """
 
     filedown: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``filedown``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filedown
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filedown
+    """
 
     filefront: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``filefront``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filefront
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-filefront
+    """
 
     fileback: _Attr[_builtins.str | _t.Asset | None, _t.FileLike | None]
     """``fileback``: file; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileback
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-fileback
+    """
 
     builtin: _Attr[Builtin | None, Builtin | None]
     """``builtin``: one of: none, gradient, checker, flat; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-builtin
+    """
 
     rgb1: _Attr[_t.Float64Array | None, Reals3 | None]
     """``rgb1``: double[3]; default "0.8 0.8 0.8".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb1
+    """
 
     rgb2: _Attr[_t.Float64Array | None, Reals3 | None]
     """``rgb2``: double[3]; default "0.5 0.5 0.5".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-rgb2
+    """
 
     mark: _Attr[Mark | None, Mark | None]
     """``mark``: one of: none, edge, cross, random; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
+    """
 
     markrgb: _Attr[_t.Float64Array | None, Reals3 | None]
     """``markrgb``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
+    """
 
     random: _Attr[_builtins.float | None, _t.Real | None]
     """``random``: double; default "0.01".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-random
+    """
 
     width: _Attr[_builtins.int | None, _t.Integer | None]
     """``width``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-width
+    """
 
     height: _Attr[_builtins.int | None, _t.Integer | None]
     """``height``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-height
+    """
 
     hflip: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``hflip``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-hflip
+    """
 
     vflip: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``vflip``: bool; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-vflip
+    """
 
     nchannel: _Attr[_builtins.int | None, _t.Integer | None]
     """``nchannel``: int; default "3".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-nchannel
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-class
+    """
 
     embed: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``embed``: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-embed
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name", "content_type", "gridlayout"]) -> _builtins.str | None:
@@ -24690,56 +24659,56 @@ class Torque(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24773,56 +24742,56 @@ class Touch(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -24856,8 +24825,8 @@ class Tuple(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``tuple``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-tuple-name
+    """
 
     @property
     def element(self) -> _List[TupleElement]:
@@ -24919,20 +24888,20 @@ class TupleElement(_Typed):
     objtype: _Attr[_builtins.str | None, _builtins.str | None]
     """``objtype``: string; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objtype
+    """
 
     objname: _Attr[AnyTarget | None, AnyTarget | None]
     """``objname``: reference to the element ``objtype`` names; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-objname
+    """
 
     prm: _Attr[_builtins.float | None, _t.Real | None]
     """``prm``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
+    """
 
     @overload
     def resolve(self, name: Literal["objtype"]) -> _builtins.str | None:
@@ -24957,56 +24926,56 @@ class User(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-name
+    """
 
     objtype: _Attr[_builtins.str | None, _builtins.str | None]
     """``objtype``: string; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objtype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objtype
+    """
 
     objname: _Attr[AnyTarget | None, AnyTarget | None]
     """``objname``: reference to the element ``objtype`` names; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objname
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-objname
+    """
 
     datatype: _Attr[Datatype | None, Datatype | None]
     """``datatype``: one of: real, positive, axis, quaternion; default "real".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-datatype
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-datatype
+    """
 
     needstage: _Attr[Stage | None, Stage | None]
     """``needstage``: one of: none, pos, vel, acc; default "acc".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-needstage
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-needstage
+    """
 
     dim: _Attr[_builtins.int | None, _t.Integer | None]
     """``dim``: int; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-dim
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-user
+    """
 
     @overload
     def resolve(self, name: Literal["name", "objtype"]) -> _builtins.str | None:
@@ -25043,56 +25012,56 @@ class Velocimeter(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``sensor``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-name
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
+    """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
+    """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
     """``cutoff``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-cutoff
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-cutoff
+    """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
     """``noise``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-noise
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-noise
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-user
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; required.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-site
+    """
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -25126,150 +25095,149 @@ class Velocity(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``actuator``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-class
+    """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
     """``group``: int; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
+    """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
     """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
+    """
 
     interp: _Attr[Interp | None, Interp | None]
     """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
+    """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
     """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
+    """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``ctrlrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
+    """
 
     user: _Attr[_t.Float64Array | None, RealsAny | None]
     """``user``: double[] (any length); no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-user
+    """
 
     ctrllimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``ctrllimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrllimited
+    """
 
     forcelimited: _Attr[FalseTrueAuto | None, FalseTrueAuto | _builtins.bool | None]
     """``forcelimited``: one of: false, true, auto; default "auto".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcelimited
+    """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``forcerange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
+    """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
     """``lengthrange``: double[2]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-lengthrange
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-lengthrange
+    """
 
     gear: _Attr[_t.Float64Array | None, Reals1To6 | None]
     """``gear``: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-gear
+    """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
     """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
+    """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
     """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
+    """
 
     cranklength: _Attr[_builtins.float | None, _t.Real | None]
     """``cranklength``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranklength
+    """
 
     joint: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``joint``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-joint
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-joint
+    """
 
     jointinparent: _Attr[_builtins.str | AnyJoint | None, _builtins.str | AnyJoint | None]
     """``jointinparent``: reference to namespace ``joint``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-jointinparent
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-jointinparent
+    """
 
     tendon: _Attr[_builtins.str | AnyTendon | None, _builtins.str | AnyTendon | None]
     """``tendon``: reference to namespace ``tendon``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-tendon
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-tendon
+    """
 
     slidersite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``slidersite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-slidersite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-slidersite
+    """
 
     cranksite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``cranksite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranksite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-cranksite
+    """
 
     site: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-site
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-site
+    """
 
     refsite: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``refsite``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-refsite
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-refsite
+    """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
     """``kv``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
@@ -25631,78 +25599,77 @@ class Weld(_Typed):
     name: _Attr[_builtins.str | None, _builtins.str | None]
     """``name``: name declared in namespace ``equality``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-name
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-name
+    """
 
     class_: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
     """``class``: reference to namespace ``default``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-class
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-class
+    """
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
     """``active``: bool; default "true".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-active
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-active
+    """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
     """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solref
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solref
+    """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
     """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solimp
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-solimp
+    """
 
     body1: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body1``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body1
+    """
 
     body2: _Attr[_builtins.str | Body | None, _builtins.str | Body | None]
     """``body2``: reference to namespace ``body``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-body2
+    """
 
     relpose: _Attr[_t.Float64Array | None, Reals7 | None]
     """``relpose``: double[7]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-relpose
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-relpose
+    """
 
     anchor: _Attr[_t.Float64Array | None, Reals3 | None]
     """``anchor``: double[3]; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-anchor
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-anchor
+    """
 
     site1: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site1``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site1
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site1
+    """
 
     site2: _Attr[_builtins.str | Site | None, _builtins.str | Site | None]
     """``site2``: reference to namespace ``site``; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site2
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-site2
+    """
 
     torquescale: _Attr[_builtins.float | None, _t.Real | None]
     """``torquescale``: double; no default (unset when absent).
 
-        https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-torquescale
-        """
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-torquescale
+    """
 
     dclass: _Attr[_builtins.str | Default | None, _builtins.str | Default | None]
-    """dm_control's name for ``class_``.
-        """
+    """dm_control's name for ``class_``."""
 
     @overload
     def resolve(self, name: Literal["name"]) -> _builtins.str | None:
