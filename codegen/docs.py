@@ -2,7 +2,7 @@
 
 ``attribute_doc()`` is the one source: the renderer puts its text in ``elements.py`` (the
 ``doc`` of each attribute, which ``help()`` lists at run time) and in ``elements.pyi`` (the
-properties' docstrings and the ``Args:`` of each ``add_<tag>()``, which editors show).
+attributes' docstrings and the ``Args:`` of each ``add_<tag>()``, which editors show).
 
 The line says, first, what a checker cannot: the MJCF type, the allowed values or the number
 of values, the default (what MuJoCo uses when the attribute is absent), then MuJoCo's note.
@@ -82,12 +82,12 @@ def escape(text: str) -> str:
 
 def property_doc(typer: Typer, el: ir.ElementDef, a: ir.AttributeDef,
                  releases: str | None = None) -> str:
-    """A property's docstring: ``name``: the line, then the link."""
+    """An attribute's docstring in a class body: ``name``: the line, then the link."""
     parts = [f"``{a.name}``: {attribute_doc(typer, a, releases)}"]
     url = attribute_url(el, a)
     if url is not None:
         parts.append(url)
-    return textwrap.indent(escape("\n\n".join(parts)), " " * 8).strip() + "\n        "
+    return textwrap.indent(escape("\n\n".join(parts)), " " * 4).strip() + "\n    "
 
 
 def adder_doc(typer: Typer, el: ir.ElementDef, entries: dict[str, str]) -> str:

@@ -2,8 +2,9 @@
 
 Two files per grammar: ``elements.py``, the run-time tables (one class per row, each with
 its row as keyword-argument specs, defaults omitted), and ``elements.pyi``, the typing surface
-checkers and editors read (properties, ``add_<tag>()`` with one keyword parameter per
-attribute, documented, overloads of ``add``/``insert``/``find``/``resolve``, TypedDicts).
+checkers and editors read (attributes, each one declaration typed by the generic descriptor
+``_Attr[read, assigned]``; ``add_<tag>()`` with one keyword parameter per attribute,
+documented; overloads of ``add``/``insert``/``find``/``resolve``; TypedDicts).
 The templates stay thin: every name, type and docstring is computed here by small typed
 functions, and the templates only lay them out.
 """
@@ -31,11 +32,12 @@ ATTACHMENT_FRAME = "attachment_frame"
 
 @dataclass(frozen=True)
 class PropertyView:
+    """An attribute: ``py_name: _Attr[getter | None, setter | None]``, then its docstring."""
+
     py_name: str
     getter: str
     setter: str
     doc: str
-    setter_doc: str  # its first line: jedi documents a property by its setter, the last def
 
 
 @dataclass(frozen=True)
@@ -222,15 +224,13 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
                notes: releases.Notes | None = None) -> ClassView:
     notes = {} if notes is None else notes  # row -> attribute -> the releases that have it
     mine = notes.get(el.name, {})
-    properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a), doc,
-                               doc.split("\n")[0])
-                  for a in el.attributes
-                  for doc in [docs.property_doc(typer, el, a, mine.get(a.name))]]
+    properties = [PropertyView(a.py_name, typer.getter(a), typer.setter(a),
+                               docs.property_doc(typer, el, a, mine.get(a.name)))
+                  for a in el.attributes]
     params = [ParamView(a.py_name, typer.setter(a)) for a in el.attributes]
     if any(a.name == schema.facts().dclass for a in el.attributes):
         dclass = next(a for a in el.attributes if a.name == schema.facts().dclass)
         properties.append(PropertyView("dclass", typer.getter(dclass), typer.setter(dclass),
-                                       "dm_control's name for ``class_``.\n        ",
                                        "dm_control's name for ``class_``."))
         params.append(ParamView("dclass", typer.setter(dclass)))
     children: list[ChildView] = []

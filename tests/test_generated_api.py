@@ -1,8 +1,8 @@
 """The generated classes cover the installed MuJoCo's grammar, and equal a fresh render.
 
 Coverage is checked two ways: at run time (descriptors and ``add_<tag>`` methods on the
-classes) and statically (typed ``@property`` / ``add_<tag>`` declarations in the generated
-source, which is what mypy, pyright and IDEs read).
+classes) and statically (typed attribute (``pos: _Attr[...]``) / ``add_<tag>`` declarations in
+the generated source, which is what mypy, pyright and IDEs read).
 """
 
 from __future__ import annotations
@@ -35,7 +35,8 @@ def test_generated_equals_a_fresh_render() -> None:
 
 @cache
 def static_members() -> dict[str, set[str]]:
-    """Per generated class: the names declared for type checkers (properties and methods)."""
+    """Per generated class: the names declared for type checkers (attributes, properties and
+    methods)."""
     tree = ast.parse(ELEMENTS_PYI.read_text(encoding="utf-8"))
     members: dict[str, set[str]] = {}
     for node in tree.body:
@@ -44,6 +45,8 @@ def static_members() -> dict[str, set[str]]:
             for statement in ast.walk(node):
                 if isinstance(statement, ast.FunctionDef):
                     names.add(statement.name)
+                elif isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name):
+                    names.add(statement.target.id)
             for base in node.bases:  # what every class inherits (find, find_all)
                 if isinstance(base, ast.Name) and base.id in members:
                     names |= members[base.id]

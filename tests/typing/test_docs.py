@@ -145,24 +145,37 @@ def test_help_shows_what_the_editor_shows() -> None:
         assert runtime == stub, f"{class_name}.{function.name}"
 
 
+def attribute_docs(node: ast.ClassDef) -> Iterator[tuple[str, str | None]]:
+    """Each attribute a class body declares (``pos: _Attr[...]``) and the docstring that
+    follows it (what pyright shows on hover), or None."""
+    for item, after in zip(node.body, [*node.body[1:], None]):
+        if isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name):
+            doc = (after.value.value if isinstance(after, ast.Expr)
+                   and isinstance(after.value, ast.Constant)
+                   and isinstance(after.value.value, str) else None)
+            yield item.target.id, doc
+
+
 def test_property_hover_starts_with_the_facts() -> None:
-    """A property's docstring: its first line is the attribute's line."""
+    """An attribute's docstring: its first line is the attribute's line."""
     tree = ast.parse(STUB.read_text(encoding="utf-8"))
     checked = 0
     for node in tree.body:
         if not isinstance(node, ast.ClassDef) or node.name not in element_classes():
             continue
         spec = element_classes()[node.name].spec
-        for item in node.body:
-            if not (isinstance(item, ast.FunctionDef) and item.name in spec.by_key
-                    and item.name != DCLASS and item.decorator_list
-                    and isinstance(item.decorator_list[0], ast.Name)):
+        declared = dict(attribute_docs(node))
+        names = {a.py_name for a in spec.attributes.values()}
+        assert names <= set(declared), (node.name, names - set(declared))
+        for name, doc in declared.items():
+            if name not in spec.by_key or name == DCLASS:
                 continue
-            attribute = spec.by_key[item.name]
-            first = (ast.get_docstring(item) or "").splitlines()[0]
-            assert first.startswith(f"``{attribute.name}``: "), (node.name, item.name, first)
+            attribute = spec.by_key[name]
+            assert doc is not None, (node.name, name)
+            first = inspect.cleandoc(doc).splitlines()[0]
+            assert first.startswith(f"``{attribute.name}``: "), (node.name, name, first)
             for fact in expected_facts(attribute):
-                assert fact in first, (node.name, item.name, fact, first)
+                assert fact in first, (node.name, name, fact, first)
             checked += 1
     assert checked > 1000
 
