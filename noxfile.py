@@ -44,7 +44,8 @@ def tests(session: nox.Session) -> None:
     No separate ``python -m codegen check`` (17 s of one core before pytest starts): each of
     its comparisons is a test run here beside the others (the installed MuJoCo is the pinned
     one: test_drift; the pins: test_pins; generated/: test_generated_api; bindings.json:
-    test_bindings; mujoco-stubs/: tests/typing/test_mujoco_stubs.py).
+    test_bindings; mujoco-stubs/: tests/typing/test_mujoco_stubs.py; runtime-pyi/:
+    tests/codegen/test_runtime_stubs.py).
     """
     session.install("-e", ".[dev]")
     # Bytecode is written (a PYTHONDONTWRITEBYTECODE of the caller's is dropped for the run):

@@ -99,6 +99,7 @@ FIRST = (
     "typing/test_typecheck.py",  # with test_mujoco_stubs.py (GROUPS): ~65 s CPU, 2 processes
     "typing/test_mujoco_stubs.py",
     "dm_control/test_composer.py",  # 5 units (SPREAD) of 11 to 26 s CPU
+    "typing/test_runtime_stubs.py",  # stubtest, mypy and pyright twice: ~50 s CPU
     "safety/test_resources.py",
     "cli/test_to_python_types.py",
     "bench/test_bench_smoke.py",
