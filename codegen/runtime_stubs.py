@@ -41,6 +41,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal
 
+from codegen import folder
+
 ROOT = Path(__file__).resolve().parent.parent
 SOURCE_DIR = ROOT / "src" / "typed_mjcf"
 STUBS_DIR = ROOT / "generated" / "runtime-pyi"
@@ -444,23 +446,10 @@ def render(source_dir: Path = SOURCE_DIR, generated: Path = GENERATED_DIR) -> di
 
 
 def stale(files: dict[str, str], directory: Path = STUBS_DIR) -> list[str]:
-    """Paths under ``directory`` that differ from ``files``, are missing or are extra."""
-    on_disk: set[str] = ({p.relative_to(directory).as_posix() for p in directory.rglob("*.pyi")}
-                         if directory.is_dir() else set())
-    differ = [name for name, text in files.items()
-              if not (directory / name).is_file()
-              or (directory / name).read_text(encoding="utf-8") != text]
-    return sorted(set(differ) | (on_disk - set(files)))
+    """Stubs under ``directory`` that differ from ``files``, are missing or are extra."""
+    return folder.stale(files, directory, "*.pyi")
 
 
 def write(files: dict[str, str], directory: Path = STUBS_DIR) -> list[str]:
-    """Make ``directory`` hold exactly ``files``; the paths that changed."""
-    changed = stale(files, directory)
-    for name in changed:
-        path = directory / name
-        if name in files:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(files[name], encoding="utf-8", newline="\n")
-        else:
-            path.unlink()
-    return changed
+    """Make ``directory`` hold exactly ``files``; the stubs that changed."""
+    return folder.write(files, directory, "*.pyi")

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from codegen import folder
 from codegen.mujoco_stubs.build import build
 
 STUBS_DIR = Path(__file__).resolve().parents[2] / "generated" / "mujoco-stubs"
@@ -44,21 +45,9 @@ def render() -> dict[str, str]:
 
 def stale(files: dict[str, str]) -> list[str]:
     """Paths under ``STUBS_DIR`` that differ from ``files``, are missing or are extra."""
-    on_disk = {p.relative_to(STUBS_DIR).as_posix() for p in STUBS_DIR.rglob("*") if p.is_file()}
-    differ = [name for name, text in files.items()
-              if not (STUBS_DIR / name).is_file()
-              or (STUBS_DIR / name).read_text(encoding="utf-8") != text]
-    return sorted(set(differ) | (on_disk - set(files)))
+    return folder.stale(files, STUBS_DIR)
 
 
 def write(files: dict[str, str]) -> list[str]:
     """Make ``STUBS_DIR`` hold exactly ``files``; the paths that changed."""
-    changed = stale(files)
-    for name in changed:
-        path = STUBS_DIR / name
-        if name in files:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text(files[name], encoding="utf-8", newline="\n")
-        else:
-            path.unlink()
-    return changed
+    return folder.write(files, STUBS_DIR)
