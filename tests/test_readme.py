@@ -16,7 +16,6 @@ import contextlib
 import io
 import json
 import re
-import subprocess
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -24,7 +23,13 @@ from pathlib import Path
 
 import pytest
 
-from tests.typing.test_typecheck import CHECKERS, Checker, Diagnostic, parse_mypy, parse_pyright
+from tests.typing.test_typecheck import (
+    CHECKERS,
+    MYPY_OUTPUT,
+    Checker,
+    Diagnostic,
+    run_checkers,
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
@@ -94,9 +99,7 @@ def commands(folder: Path, files: list[Path]) -> dict[Checker, list[str]]:
     return {
         "mypy": [sys.executable, "-m", "mypy", "--strict",
                  "--config-file", str(folder / "mypy.ini"),
-                 "--cache-dir", str(folder / ".mypy_cache"),
-                 "--show-absolute-path", "--show-error-codes", "--no-pretty",
-                 "--no-error-summary", "--hide-error-context", "--no-color-output", *paths],
+                 "--cache-dir", str(folder / ".mypy_cache"), *MYPY_OUTPUT, *paths],
         "pyright": [sys.executable, "-m", "pyright", "--outputjson",
                     "--project", str(folder / "pyrightconfig.json"),
                     "--pythonpath", sys.executable, *paths],
@@ -165,16 +168,8 @@ def checked(tmp_path_factory: pytest.TempPathFactory) -> Checked:
     mistakes = folder / "mistakes.py"
     mistakes.write_text(MISTAKES_MODULE, encoding="utf-8")
     origin[mistakes.resolve()] = (mistakes.resolve(), 0)
-    processes = {
-        checker: subprocess.Popen(command, cwd=folder, stdout=subprocess.PIPE,
-                                  stderr=subprocess.PIPE, text=True)
-        for checker, command in commands(folder, list(origin)).items()
-    }  # both at once: they take a few seconds each
-    outputs = {checker: process.communicate() for checker, process in processes.items()}
-    return Checked({"mypy": parse_mypy(processes["mypy"].returncode, *outputs["mypy"]),
-                    "pyright": parse_pyright(processes["pyright"].returncode,
-                                             *outputs["pyright"])}, origin, canary.resolve(),
-                   mistakes.resolve())
+    return Checked(run_checkers(commands(folder, list(origin)), folder), origin,
+                   canary.resolve(), mistakes.resolve())
 
 
 @pytest.mark.parametrize("checker", CHECKERS)

@@ -45,11 +45,11 @@ from tests.lsp import LanguageServer
 from tests.test_readme import BLOCKS, CANARY, CANARY_LINES, EXAMPLES, MISTAKES_MODULE
 from tests.typing.test_typecheck import (
     CHECKERS,
+    MYPY_OUTPUT,
     NEGATIVE_FILES,
     Checker,
     Diagnostic,
-    parse_mypy,
-    parse_pyright,
+    run_checkers,
 )
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -257,21 +257,14 @@ def user_code(tmp_path_factory: pytest.TempPathFactory) -> UserCode:
 def check(code: UserCode, python: str, cache: Path) -> dict[Checker, list[Diagnostic]]:
     """mypy and pyright on ``code`` with ``python``'s packages, side by side."""
     paths = [str(f) for f in code.files]
-    commands: dict[Checker, list[str]] = {
+    return run_checkers({
         "mypy": [sys.executable, "-m", "mypy", "--config-file", str(code.folder / "mypy.ini"),
-                 "--python-executable", python, "--cache-dir", str(cache),
-                 "--show-absolute-path", "--show-error-codes", "--no-pretty",
-                 "--no-error-summary", "--hide-error-context", "--no-color-output", *paths],
+                 "--python-executable", python, "--cache-dir", str(cache), *MYPY_OUTPUT,
+                 *paths],
         "pyright": [sys.executable, "-m", "pyright", "--outputjson",
                     "--project", str(code.folder / "pyrightconfig.json"),
                     "--pythonpath", python, *paths],
-    }
-    processes = {checker: subprocess.Popen(command, cwd=code.folder, stdout=subprocess.PIPE,
-                                           stderr=subprocess.PIPE, text=True)
-                 for checker, command in commands.items()}
-    outputs = {checker: process.communicate() for checker, process in processes.items()}
-    return {"mypy": parse_mypy(processes["mypy"].returncode, *outputs["mypy"]),
-            "pyright": parse_pyright(processes["pyright"].returncode, *outputs["pyright"])}
+    }, code.folder)
 
 
 @pytest.fixture(scope="module")

@@ -113,6 +113,11 @@ def test_marker_syntax(tmp_path: Path) -> None:
 # ----------------------------------------------------------------------------- checkers
 
 
+# what parse_mypy reads: one line per diagnostic, absolute paths, error codes
+MYPY_OUTPUT = ["--show-absolute-path", "--show-error-codes", "--no-pretty",
+               "--no-error-summary", "--hide-error-context", "--no-color-output"]
+
+
 def mypy_command(files: Iterable[Path], cache_dir: Path) -> list[str]:
     """mypy with the repository's configuration, as ``nox -s tests`` runs it."""
     return [
@@ -120,8 +125,7 @@ def mypy_command(files: Iterable[Path], cache_dir: Path) -> list[str]:
         "--config-file", str(ROOT / "pyproject.toml"),
         "--warn-unused-ignores",
         "--cache-dir", str(cache_dir),
-        "--show-absolute-path", "--show-error-codes", "--no-pretty", "--no-error-summary",
-        "--hide-error-context", "--no-color-output",
+        *MYPY_OUTPUT,
         *(str(f) for f in files),
     ]
 
@@ -167,22 +171,27 @@ def parse_pyright(returncode: int, stdout: str, stderr: str) -> list[Diagnostic]
     return diagnostics
 
 
-def run_both(files: list[Path], cache_dir: Path, pyright_files: list[Path] | None = None,
-             ) -> dict[Checker, list[Diagnostic]]:
-    """mypy and pyright side by side (two processes), then their diagnostics; pyright over
-    ``pyright_files`` if given."""
-    processes = {
-        name: subprocess.Popen(command, cwd=ROOT, stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
-        for name, command in (("mypy", mypy_command(files, cache_dir)),
-                              ("pyright", pyright_command(
-                                  files if pyright_files is None else pyright_files)))
-    }
+def run_checkers(commands: Mapping[Checker, list[str]], cwd: Path,
+                 ) -> dict[Checker, list[Diagnostic]]:
+    """The mypy and pyright ``commands`` side by side (two processes: they take seconds
+    each), then their diagnostics."""
+    processes = {name: subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE,
+                                        stderr=subprocess.PIPE, text=True)
+                 for name, command in commands.items()}
     outputs = {name: process.communicate() for name, process in processes.items()}
     return {
         "mypy": parse_mypy(processes["mypy"].returncode, *outputs["mypy"]),
         "pyright": parse_pyright(processes["pyright"].returncode, *outputs["pyright"]),
     }
+
+
+def run_both(files: list[Path], cache_dir: Path, pyright_files: list[Path] | None = None,
+             ) -> dict[Checker, list[Diagnostic]]:
+    """mypy and pyright with the repository's configuration, side by side; pyright over
+    ``pyright_files`` if given."""
+    return run_checkers({"mypy": mypy_command(files, cache_dir),
+                         "pyright": pyright_command(
+                             files if pyright_files is None else pyright_files)}, ROOT)
 
 
 def all_files() -> list[Path]:
