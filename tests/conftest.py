@@ -9,10 +9,14 @@ run). ``nox -s tests`` and plain
 from __future__ import annotations
 
 import os
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+
+from tests.test_readme import UserCode, check_user_code, user_project
+from tests.typing.test_typecheck import Checker, Diagnostic
 
 # MuJoCo picks its OpenGL back end when first imported: EGL renders without a display (on
 # Mesa's software EGL where there is no GPU), so the tests that render (the README's example,
@@ -94,12 +98,15 @@ SPREAD = {
 GROUPS = {
     # tests/typing/conftest.py's typed_code_reports: one mypy and one pyright run
     "typing/test_mujoco_stubs.py": "typing/test_typecheck.py",
+    # user_code_reports (below): one mypy and one pyright run over the user's project
+    "test_readme.py": "typing/test_runtime_stubs.py",
 }
 FIRST = (
     "typing/test_typecheck.py",  # with test_mujoco_stubs.py (GROUPS): ~65 s CPU, 2 processes
     "typing/test_mujoco_stubs.py",
     "dm_control/test_composer.py",  # 5 units (SPREAD) of 11 to 26 s CPU
-    "typing/test_runtime_stubs.py",  # stubtest, mypy and pyright twice: ~50 s CPU
+    "typing/test_runtime_stubs.py",  # with test_readme.py (GROUPS): stubtest, mypy and
+    # pyright over the user's project twice, the language server twice: ~75 s CPU
     "safety/test_resources.py",
     "cli/test_to_python_types.py",
     "bench/test_bench_smoke.py",
@@ -118,6 +125,21 @@ FIRST = (
     "codegen/test_facts_errors.py",
     "typing/test_ide.py",
 )
+
+
+@pytest.fixture(scope="session")
+def user_code(tmp_path_factory: pytest.TempPathFactory) -> UserCode:
+    """A user's project of the README's code, ``examples/`` and the negative cases."""
+    return user_project(tmp_path_factory.mktemp("user_project"))
+
+
+@pytest.fixture(scope="session")
+def user_code_reports(user_code: UserCode, tmp_path_factory: pytest.TempPathFactory,
+                      ) -> dict[Checker, list[Diagnostic]]:
+    """mypy and pyright on ``user_code`` against this environment's ``typed_mjcf`` (the
+    source tree): test_readme.py reads them, test_runtime_stubs.py compares them with the
+    wheel's layout (``GROUPS`` keeps the two modules on one worker)."""
+    return check_user_code(user_code, sys.executable, tmp_path_factory.mktemp("mypy_cache"))
 
 
 def _module(item: pytest.Item) -> str:

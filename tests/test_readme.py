@@ -2,10 +2,12 @@
 
 - every Python block of the README runs and prints what the README says it prints;
 - the README's blocks (each written to a module of its own) and every file in ``examples/``
-  are clean under ``mypy --strict`` and pyright strict, with no configuration but that: one
-  mypy run and one pyright run over all of them, from a folder outside the repository, so
-  that what is checked is what a user's own script would see (the installed ``typed_mjcf``
-  and its ``mujoco`` stubs, none of this repository's settings).
+  are clean under ``mypy --strict`` and pyright strict: one mypy run and one pyright run over
+  a user's project (``UserCode``: those modules, the negative cases, a canary; strict
+  configurations and the ``mujoco`` stubs, none of this repository's settings) in a folder
+  outside the repository, so that what is checked is what a user's own script would see.
+  ``tests/typing/test_runtime_stubs.py`` compares the same run with one against the wheel's
+  layout (``tests/conftest.py`` makes it once per session).
 
 The examples' behaviour when run is tested in ``test_examples.py``.
 """
@@ -14,8 +16,8 @@ from __future__ import annotations
 
 import contextlib
 import io
-import json
 import re
+import shutil
 import sys
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -26,6 +28,7 @@ import pytest
 from tests.typing.test_typecheck import (
     CHECKERS,
     MYPY_OUTPUT,
+    NEGATIVE_FILES,
     Checker,
     Diagnostic,
     run_checkers,
@@ -71,39 +74,6 @@ def test_readme_has_examples() -> None:
 
 
 # ----------------------------------------------------------------------------- type checks
-
-
-@dataclass(frozen=True)
-class Checked:
-    """What the checkers said, and where each checked file's lines come from."""
-
-    diagnostics: Mapping[Checker, list[Diagnostic]]
-    origin: Mapping[Path, tuple[Path, int]]  # checked file -> (file shown, line offset)
-    canary: Path
-    mistakes: Path
-
-    def describe(self, diagnostic: Diagnostic) -> str:
-        shown, offset = self.origin.get(diagnostic.file, (diagnostic.file, 0))
-        name = shown.relative_to(ROOT) if shown.is_relative_to(ROOT) else shown
-        first = diagnostic.message.splitlines()[0]
-        return f"{name}:{diagnostic.line + offset}: [{diagnostic.code}] {first}"
-
-
-def commands(folder: Path, files: list[Path]) -> dict[Checker, list[str]]:
-    """Each checker in its strict mode and otherwise its defaults (the configuration files
-    in ``folder`` say only that), so that the repository's settings play no part."""
-    (folder / "mypy.ini").write_text("[mypy]\n", encoding="utf-8")
-    (folder / "pyrightconfig.json").write_text(json.dumps({"typeCheckingMode": "strict"}),
-                                               encoding="utf-8")
-    paths = [str(f) for f in files]
-    return {
-        "mypy": [sys.executable, "-m", "mypy", "--strict",
-                 "--config-file", str(folder / "mypy.ini"),
-                 "--cache-dir", str(folder / ".mypy_cache"), *MYPY_OUTPUT, *paths],
-        "pyright": [sys.executable, "-m", "pyright", "--outputjson",
-                    "--project", str(folder / "pyrightconfig.json"),
-                    "--pythonpath", sys.executable, *paths],
-    }
 
 
 # The mistakes of the README's table "What the type checker catches", one per line in the
@@ -152,45 +122,97 @@ mujoco.mj_step(mjcf.RootElement().compile())
 CANARY_LINES = [5, 6]
 
 
-@pytest.fixture(scope="module")
-def checked(tmp_path_factory: pytest.TempPathFactory) -> Checked:
-    folder = tmp_path_factory.mktemp("user_code")
+@dataclass(frozen=True)
+class UserCode:
+    """A user's project in ``folder``: the README's blocks, ``examples/``, the negative cases
+    of ``tests/typing/negative/``, the README table's mistakes and the canary, each a module;
+    strict configurations and nothing else (``deprecated`` for mypy, which the README asks
+    for, so that the generic ``add()``'s misspelt keywords are reported); the ``mujoco`` stubs
+    in ``typings/``, as ``typed-mjcf mujoco-stubs`` puts them."""
+
+    folder: Path
+    origin: Mapping[Path, tuple[Path, int]]  # module -> (file shown, line offset)
+    canary: Path
+    mistakes: Path
+
+    @property
+    def files(self) -> list[Path]:
+        return list(self.origin)
+
+    def describe(self, diagnostic: Diagnostic) -> str:
+        shown, offset = self.origin.get(diagnostic.file, (diagnostic.file, 0))
+        name = shown.relative_to(ROOT) if shown.is_relative_to(ROOT) else shown
+        first = diagnostic.message.splitlines()[0]
+        return f"{name}:{diagnostic.line + offset}: [{diagnostic.code}] {first}"
+
+
+def user_project(folder: Path) -> UserCode:
     origin: dict[Path, tuple[Path, int]] = {}
+
+    def module(name: str, text: str, shown: Path | None = None, offset: int = 0) -> Path:
+        path = (folder / name).resolve()
+        path.write_text(text, encoding="utf-8")
+        origin[path] = (shown or path, offset)
+        return path
+
     for number, block in enumerate(BLOCKS):
-        module = folder / f"readme_block{number}.py"
-        module.write_text(block.code, encoding="utf-8")
-        origin[module.resolve()] = (README, block.line - 1)
-    for example in EXAMPLES:
-        origin[example] = (example, 0)
-    canary = folder / "canary.py"
-    canary.write_text(CANARY, encoding="utf-8")
-    origin[canary.resolve()] = (canary.resolve(), 0)
-    mistakes = folder / "mistakes.py"
-    mistakes.write_text(MISTAKES_MODULE, encoding="utf-8")
-    origin[mistakes.resolve()] = (mistakes.resolve(), 0)
-    return Checked(run_checkers(commands(folder, list(origin)), folder), origin,
-                   canary.resolve(), mistakes.resolve())
+        module(f"readme_block{number}.py", block.code, README, block.line - 1)
+    for path in [*EXAMPLES, *NEGATIVE_FILES]:
+        module(path.name, path.read_text(encoding="utf-8"), path)
+    canary, mistakes = module("canary.py", CANARY), module("mistakes.py", MISTAKES_MODULE)
+    shutil.copytree(ROOT / "generated" / "mujoco-stubs", folder / "typings" / "mujoco")
+    (folder / "mypy.ini").write_text("[mypy]\nstrict = True\nenable_error_code = deprecated\n"
+                                     "mypy_path = typings\n", encoding="utf-8")
+    (folder / "pyrightconfig.json").write_text('{"typeCheckingMode": "strict"}\n',
+                                               encoding="utf-8")
+    return UserCode(folder, origin, canary, mistakes)
+
+
+def check_user_code(code: UserCode, python: str, cache: Path
+                    ) -> dict[Checker, list[Diagnostic]]:
+    """mypy and pyright on ``code`` with ``python``'s packages, side by side."""
+    paths = [str(f) for f in code.files]
+    return run_checkers({
+        "mypy": [sys.executable, "-m", "mypy", "--config-file", str(code.folder / "mypy.ini"),
+                 "--python-executable", python, "--cache-dir", str(cache), *MYPY_OUTPUT,
+                 *paths],
+        "pyright": [sys.executable, "-m", "pyright", "--outputjson",
+                    "--project", str(code.folder / "pyrightconfig.json"),
+                    "--pythonpath", python, *paths],
+    }, code.folder)
+
+
+def outside_negative_cases(code: UserCode, diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    negative = {path.resolve() for path in NEGATIVE_FILES}
+    return [d for d in diagnostics if code.origin.get(d.file, (d.file, 0))[0] not in negative]
 
 
 @pytest.mark.parametrize("checker", CHECKERS)
-def test_readme_and_examples_type_check(checker: Checker, checked: Checked) -> None:
+def test_readme_and_examples_type_check(
+        checker: Checker, user_code: UserCode,
+        user_code_reports: Mapping[Checker, list[Diagnostic]]) -> None:
     """No error and no warning (errors inside the library would count too)."""
-    found = [checked.describe(d) for d in sorted(checked.diagnostics[checker])
-             if d.file not in (checked.canary, checked.mistakes)]
+    found = [user_code.describe(d) for d in sorted(
+                 outside_negative_cases(user_code, user_code_reports[checker]))
+             if d.file not in (user_code.canary, user_code.mistakes)]
     assert not found, f"{checker} (strict) on the README's code and examples/:\n" + "\n".join(
         found)
 
 
 @pytest.mark.parametrize("checker", CHECKERS)
-def test_the_type_check_sees_mistakes(checker: Checker, checked: Checked) -> None:
-    lines = sorted({d.line for d in checked.diagnostics[checker] if d.file == checked.canary})
-    assert lines == CANARY_LINES, [checked.describe(d) for d in checked.diagnostics[checker]]
+def test_the_type_check_sees_mistakes(
+        checker: Checker, user_code: UserCode,
+        user_code_reports: Mapping[Checker, list[Diagnostic]]) -> None:
+    said = user_code_reports[checker]
+    lines = sorted({d.line for d in said if d.file == user_code.canary})
+    assert lines == CANARY_LINES, [user_code.describe(d) for d in said]
 
 
-def test_the_readme_table_shows_what_mypy_says(checked: Checked) -> None:
+def test_the_readme_table_shows_what_mypy_says(
+        user_code: UserCode, user_code_reports: Mapping[Checker, list[Diagnostic]]) -> None:
     said: dict[int, str] = {}
-    for diagnostic in checked.diagnostics["mypy"]:
-        if diagnostic.file == checked.mistakes and diagnostic.line not in said:
+    for diagnostic in user_code_reports["mypy"]:
+        if diagnostic.file == user_code.mistakes and diagnostic.line not in said:
             said[diagnostic.line] = f"{diagnostic.message}  [{diagnostic.code}]"
     table = readme_table_messages()
     assert len(table) == len(MISTAKES)

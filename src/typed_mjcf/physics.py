@@ -46,6 +46,7 @@ from typed_mjcf._generated.bindings import *  # the binding classes, one per kin
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
 from typed_mjcf._gl import ensure_gl_backend, gl_error
 from typed_mjcf._ids import compile_for_physics, ids_for_text, kind_of
+from typed_mjcf._model_state import model_state
 from typed_mjcf._named import make_axes, struct_indexers
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import InvalidValueError, MjcfError, RenderError
@@ -194,7 +195,7 @@ def _as_model(model: mujoco.MjModel) -> Model:
 
 def _copy_model(model: mujoco.MjModel) -> Model:
     out = Model.__new__(Model)
-    out.__setstate__(model.__getstate__())
+    out.__setstate__(model_state(model))
     return out
 
 

@@ -4,39 +4,21 @@ mirror of the packages for commands that rewrite files."""
 
 from __future__ import annotations
 
-import functools
 import importlib.util
 import os
 import re
 import shutil
 from pathlib import Path
 
-import mujoco
 import pytest
 
-from tests.runtime.test_corpus import CORPUS, CORPUS_PACKAGES
+from tests.runtime.test_corpus import CORPUS, CORPUS_PACKAGES, compiled
 
 __all__ = ["CORPUS", "compiled", "corpus_params", "mirror", "module_name"]
 
 
 def corpus_params() -> list[object]:
     return [pytest.param(ident, path, id=ident) for ident, path in CORPUS]
-
-
-@functools.cache
-def _compile(path: Path) -> mujoco.MjModel | str:
-    try:
-        return mujoco.MjModel.from_xml_path(str(path))
-    except ValueError as error:
-        return " ".join(str(error).split())
-
-
-def compiled(ident: str, path: Path) -> mujoco.MjModel:
-    """MuJoCo's compile of a corpus file; the test is skipped when MuJoCo refuses it."""
-    found = _compile(path)
-    if isinstance(found, str):
-        pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {found}")
-    return found
 
 
 def module_name(ident: str) -> str:

@@ -76,6 +76,24 @@ def corpus() -> list[tuple[str, Path]]:
 CORPUS = corpus()
 
 
+@functools.cache
+def _mujoco_compile(path: Path) -> mujoco.MjModel | str:
+    try:
+        return mujoco.MjModel.from_xml_path(str(path))
+    except ValueError as error:
+        return _one_line(error)
+
+
+def compiled(ident: str, path: Path) -> mujoco.MjModel:
+    """MuJoCo's own compile of a corpus file, made once per process (the corpus tests of
+    every module compare against it and only read it); the test is skipped when MuJoCo
+    refuses the file."""
+    found = _mujoco_compile(path)
+    if isinstance(found, str):
+        pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {found}")
+    return found
+
+
 @pytest.fixture(autouse=True)
 def _fresh_asset_cache() -> None:
     """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
@@ -154,10 +172,7 @@ def test_corpus_is_found() -> None:
 
 @pytest.mark.parametrize(("ident", "path"), _params())
 def test_compiles_like_mujoco(ident: str, path: Path) -> None:
-    try:
-        expected = mujoco.MjModel.from_xml_path(str(path))
-    except ValueError as error:
-        pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {_one_line(error)}")
+    expected = compiled(ident, path)
     model = typed_mjcf.from_path(path, files=corpus_files(ident, path))
     actual = model.compile()
     assert model_differences(expected, actual) == []
@@ -177,10 +192,7 @@ def test_only_the_listed_models_read_files_outside_their_folder(ident: str, path
     """By default a model reads files only inside its own folder: every corpus model that
     MuJoCo compiles reads all its files so, except those in OUTSIDE_FOLDER (refused without
     the folder they need, read with it)."""
-    try:
-        mujoco.MjModel.from_xml_path(str(path))
-    except ValueError as error:
-        pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {_one_line(error)}")
+    compiled(ident, path)
     model = typed_mjcf.from_path(path)
     if ident not in OUTSIDE_FOLDER:
         model.get_assets()  # a file outside the folder would be refused (FileAccessError)

@@ -13,8 +13,9 @@ one's, and:
 - user code (the README's blocks, ``examples/``, a module of mistakes, the negative cases of
   ``tests/typing/negative/`` with their six kinds of mistake) gets the same diagnostics from
   ``mypy --strict`` and pyright strict against the wheel's layout as against the source tree,
-  with the same configuration (nothing but strict mode, the ``mujoco`` stubs in
-  ``typings/``, as ``typed-mjcf mujoco-stubs`` puts them);
+  with the same configuration (``tests/test_readme.py``'s ``UserCode``: strict mode, the
+  ``mujoco`` stubs in ``typings/``, as ``typed-mjcf mujoco-stubs`` puts them; the run
+  against the source tree is the one test_readme.py reads, made once per session);
 - pyright's language server shows the same hovers and the same public completions on the
   runtime's API either way.
 
@@ -42,14 +43,12 @@ import pytest
 
 from codegen import runtime_stubs
 from tests.lsp import LanguageServer
-from tests.test_readme import BLOCKS, CANARY, CANARY_LINES, EXAMPLES, MISTAKES_MODULE
+from tests.test_readme import CANARY_LINES, UserCode, check_user_code
 from tests.typing.test_typecheck import (
     CHECKERS,
-    MYPY_OUTPUT,
     NEGATIVE_FILES,
     Checker,
     Diagnostic,
-    run_checkers,
 )
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -232,48 +231,16 @@ def write(path: Path, text: str) -> Path:
 # ----------------------------------------------------------------------------- user code
 
 
-@dataclass(frozen=True)
-class UserCode:
-    folder: Path
-    files: list[Path]
-
-
-@pytest.fixture(scope="module")
-def user_code(tmp_path_factory: pytest.TempPathFactory) -> UserCode:
-    """A user's project: the code, ``typings/mujoco``, strict configurations."""
-    folder = tmp_path_factory.mktemp("user_project")
-    files = [write(folder / f"readme_block{n}.py", block.code) for n, block in enumerate(BLOCKS)]
-    files += [write(folder / path.name, path.read_text(encoding="utf-8"))
-              for path in [*EXAMPLES, *NEGATIVE_FILES]]
-    files += [write(folder / "canary.py", CANARY), write(folder / "mistakes.py", MISTAKES_MODULE)]
-    shutil.copytree(ROOT / "generated" / "mujoco-stubs", folder / "typings" / "mujoco")
-    # the negative cases' `deprecated` codes need it (tests/typing/negative/generic_add.py)
-    write(folder / "mypy.ini", "[mypy]\nstrict = True\nenable_error_code = deprecated\n"
-          "mypy_path = typings\n")
-    write(folder / "pyrightconfig.json", '{"typeCheckingMode": "strict"}\n')
-    return UserCode(folder, files)
-
-
-def check(code: UserCode, python: str, cache: Path) -> dict[Checker, list[Diagnostic]]:
-    """mypy and pyright on ``code`` with ``python``'s packages, side by side."""
-    paths = [str(f) for f in code.files]
-    return run_checkers({
-        "mypy": [sys.executable, "-m", "mypy", "--config-file", str(code.folder / "mypy.ini"),
-                 "--python-executable", python, "--cache-dir", str(cache), *MYPY_OUTPUT,
-                 *paths],
-        "pyright": [sys.executable, "-m", "pyright", "--outputjson",
-                    "--project", str(code.folder / "pyrightconfig.json"),
-                    "--pythonpath", python, *paths],
-    }, code.folder)
-
-
 @pytest.fixture(scope="module")
 def reports(installed: Installed, user_code: UserCode,
+            user_code_reports: dict[Checker, list[Diagnostic]],
             tmp_path_factory: pytest.TempPathFactory,
             ) -> Mapping[str, dict[Checker, list[Diagnostic]]]:
-    caches = tmp_path_factory.mktemp("caches")
-    return {"wheel": check(user_code, installed.python, caches / "wheel"),
-            "source": check(user_code, sys.executable, caches / "source")}
+    """The user's project checked against the wheel's layout, and (tests/conftest.py's run,
+    which test_readme.py reads too) against the source tree."""
+    return {"wheel": check_user_code(user_code, installed.python,
+                                     tmp_path_factory.mktemp("mypy_cache")),
+            "source": user_code_reports}
 
 
 @pytest.mark.parametrize("checker", CHECKERS)
@@ -287,8 +254,7 @@ def test_user_code_checks_the_same_against_the_wheel(
         f"{checker}: against the wheel only:\n" + "\n".join(map(str, only_wheel))
         + "\nagainst the source tree only:\n" + "\n".join(map(str, only_source)))
     # what makes the comparison able to fail: the mistakes are seen, in every negative case
-    canary = user_code.folder / "canary.py"
-    assert sorted({d.line for d in wheel if d.file == canary.resolve()}) == CANARY_LINES
+    assert sorted({d.line for d in wheel if d.file == user_code.canary}) == CANARY_LINES
     for path in NEGATIVE_FILES:
         assert any(d.file.name == path.name for d in wheel), f"{checker}: nothing in {path.name}"
 
