@@ -42,7 +42,8 @@ def _template() -> tuple[bytes, int] | None:
     size = mujoco.mj_sizeModel(first)
     state = first.__getstate__()
     template = state[: len(state) - size]
-    if state[len(template):] != _mjb(first, b"") or template.count(size.to_bytes(8, "little")) == 0:
+    if (state[len(template):] != bytes(_mjb(first, b""))
+            or size.to_bytes(8, "little") not in template):
         return None
     other = mujoco.mj_sizeModel(second)
     if bytes(_mjb(second, _header(other, template, size))) != second.__getstate__():

@@ -19,7 +19,7 @@ TEXTURED = """<mujoco><asset>
   <material name="grid" texture="grid"/></asset>
   <worldbody><geom type="plane" size="1 1 1" material="grid"/>
     <body><freejoint/><geom size=".1"/></body></worldbody></mujoco>"""
-SUITE = ("cartpole.xml", "humanoid.xml", "dog.xml")
+SUITE = ("cartpole.xml", "humanoid.xml")
 
 
 def models() -> list[mujoco.MjModel]:
