@@ -47,7 +47,7 @@ SLOW = {
     "dm_control/test_compat.py::test_dm_controls_own_references_read_alike":
         "dm_control's own mjcf, in a subprocess",
     "dm_control/test_composer.py::test_environments_with_cameras_run":
-        "dm_control's environments with cameras: an image rendered at each of 2000 steps",
+        "dm_control's environments with cameras: an image rendered at each of 1040 steps",
     "fidelity/test_corpus_validate.py": "MuJoCo compiles the corpus",
     "fidelity/test_defaults_corpus.py": "MuJoCo compiles the corpus",
     "fidelity/test_round_trip.py": "round trips of the corpus",

@@ -2,7 +2,7 @@
 
 Run as a script in a fresh interpreter (the ``dm_control.mjcf`` redirection is process-wide):
 
-    python tests/dm_control/composer_envs.py typed OUT.json [NAME ...]
+    python tests/dm_control/composer_envs.py typed OUT.json [NAME[=STEPS] ...]
     python tests/dm_control/composer_envs.py dm_control OUT.json [NAME ...]
 
 ``typed`` calls ``install_as_dm_control_mjcf()`` first; ``dm_control`` runs dm_control's own
@@ -11,12 +11,13 @@ dm_control 1.0.49 and mujoco 3.17.0: ``python3.11 -m venv /tmp/dm3 && /tmp/dm3/b
 install dm_control==1.0.49 mujoco==3.17.0``), then compare the two runs' specs:
 
     python tests/dm_control/composer_envs.py compare TYPED.json DM_CONTROL.json
- Each
-environment (the manipulation tasks of ``manipulation.ALL`` and the locomotion examples that
-need no downloaded data) is made with a fixed seed, reset, and stepped ``STEPS`` times with
-seeded uniform actions within ``action_spec()``. Its entry is either a record (the
-observation spec: name -> [shape, dtype]; the observables the task declares enabled; whether
-every observation was finite and matched its spec; the steps run) or the error, as text.
+
+Each environment (the manipulation tasks of ``manipulation.ALL`` and the locomotion examples
+that need no downloaded data) is made with a fixed seed, reset, and stepped ``STEPS`` times
+(or the number given after its name) with seeded uniform actions within ``action_spec()``.
+Its entry is either a record (the observation spec: name -> [shape, dtype]; the observables
+the task declares enabled; whether every observation was finite and matched its spec; the
+steps run) or the error, as text.
 """
 
 from __future__ import annotations
@@ -64,8 +65,8 @@ def _spec(spec: Any) -> list[Any]:
     return [list(spec.shape), np.dtype(spec.dtype).name]
 
 
-def run(make: Callable[[], Any]) -> dict[str, Any]:
-    """Make, reset and step one environment; what it gave."""
+def run(make: Callable[[], Any], count: int = STEPS) -> dict[str, Any]:
+    """Make, reset and step one environment ``count`` steps; what it gave."""
     env = make()
     try:
         spec = env.observation_spec()
@@ -89,7 +90,7 @@ def run(make: Callable[[], Any]) -> dict[str, Any]:
 
         check(env.reset().observation)
         steps = 0
-        for _ in range(STEPS):
+        for _ in range(count):
             shape: tuple[int, ...] = tuple(action_spec.shape)
             low = np.broadcast_to(np.asarray(action_spec.minimum, action_spec.dtype), shape)
             high = np.broadcast_to(np.asarray(action_spec.maximum, action_spec.dtype), shape)
@@ -171,13 +172,15 @@ def main(argv: list[str]) -> None:
 
         typed_mjcf.install_as_dm_control_mjcf()
         _cheaper_renders()
+    wanted = {name: int(steps or STEPS) for name, _, steps in
+              (argument.partition("=") for argument in names)}
     results: dict[str, Any] = {}
     for name, make in environments().items():
-        if names and name not in names:
+        if wanted and name not in wanted:
             continue
         start = time.perf_counter()
         try:
-            results[name] = run(make)
+            results[name] = run(make, wanted.get(name, STEPS))
         except Exception:  # noqa: BLE001 - reported, checked by the test
             results[name] = traceback.format_exc(limit=-8)
         print(f"{name}: {time.perf_counter() - start:.1f} s", file=sys.stderr)  # to report

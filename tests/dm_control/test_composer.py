@@ -2,12 +2,13 @@
 ``install_as_dm_control_mjcf()``, each of ``manipulation.ALL``'s tasks and the locomotion
 examples that need no downloaded data (``composer_envs.py`` lists them) resets and steps 100
 steps with seeded actions within its action spec, every observation finite and matching the
-observation spec, whose names are the observables the task declares enabled.
+observation spec, whose names are the observables the task declares enabled. The "vision"
+tasks, each a "features" task with a camera image added to its observations, step 20 steps.
 
 The environments run in subprocesses (``composer_envs.py``): the redirection of
 ``dm_control.mjcf`` is process-wide. The "features" tasks and the locomotion examples are one
 run; those that render a camera image at every step (the "vision" tasks, the locomotion
-examples with an egocentric camera) four more, marked slow (12 to 26 s of CPU each, rendered
+examples with an egocentric camera) four more, marked slow (rendered
 without shadows and reflections: ``composer_envs._cheaper_renders``).
 Environments that cannot run are listed in ``FAILING`` with the reason (strict).
 """
@@ -18,6 +19,7 @@ import json
 import os
 import subprocess
 import sys
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -74,15 +76,15 @@ def run(names: tuple[str, ...], folder: Path) -> dict[str, Any]:
     return results
 
 
-def failures(results: dict[str, Any]) -> dict[str, str]:
-    """Each environment that did not reset, step 100 steps and observe as its spec says."""
+def failures(results: dict[str, Any], steps: Mapping[str, int]) -> dict[str, str]:
+    """Each environment that did not reset, step its steps and observe as its spec says."""
     found: dict[str, str] = {}
     for name, result in results.items():
         if isinstance(result, str):
             found[name] = result
             continue
         problems: list[str] = []
-        if result["steps"] != 100:
+        if result["steps"] != steps.get(name, STEPS):
             problems.append(f"stepped {result['steps']} steps")
         if not result["finite"]:
             problems.append("an observation was not finite")
@@ -99,16 +101,22 @@ def failures(results: dict[str, Any]) -> dict[str, str]:
     return found
 
 
-def check(names: tuple[str, ...], folder: Path) -> None:
-    results = run(names, folder)
+def check(names: tuple[str, ...], folder: Path, steps: Mapping[str, int] | None = None,
+          ) -> None:
+    """Run ``names``, each ``steps[name]`` steps (100 if not given)."""
+    steps = steps or {}
+    results = run(tuple(f"{name}={steps.get(name, STEPS)}" for name in names), folder)
     assert sorted(results) == sorted(names)
-    found = failures(results)
+    found = failures(results, steps)
     unexpected = {name: why for name, why in found.items() if name not in FAILING}
     now_running = sorted(name for name in names if name in FAILING and name not in found)
     report = "\n\n".join(f"{name}:\n{why}" for name, why in unexpected.items())
     assert not unexpected, report
     assert not now_running, f"listed in FAILING but now run: {now_running}"
 
+
+STEPS = 100
+VISION_STEPS = 20
 
 # the environments whose observations include a camera image, rendered (in software on CI)
 # at every step (with no shadows or reflections, composer_envs._cheaper_renders)
@@ -123,6 +131,10 @@ def test_manipulation_features_tasks_run(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize("quarter", range(4))
 def test_environments_with_cameras_run(quarter: int, tmp_path: Path) -> None:
-    """The 12 "vision" tasks and the 8 locomotion examples with an egocentric camera, in
-    quarters that pytest-xdist can run side by side."""
-    check(RENDERING[quarter::4], tmp_path)
+    """The 8 locomotion examples with an egocentric camera (100 steps each, as in the test
+    above) and the 12 "vision" tasks, in quarters that pytest-xdist can run side by side.
+    A vision task is its "features" task (the same model, task and physics, stepped 100
+    steps by the test above) with a camera image among its observations, so it steps
+    ``VISION_STEPS``, an image at each: the renderer made once and used again. Renderers
+    made anew after a recompile are the locomotion mazes' (several resets in 100 steps)."""
+    check(RENDERING[quarter::4], tmp_path, dict.fromkeys(VISION, VISION_STEPS))
