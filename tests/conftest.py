@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from tests.test_readme import UserCode, check_user_code, user_project
-from tests.typing.test_typecheck import Checker, Diagnostic
+from tests.typing.test_typecheck import Checker, Diagnostic, TypedCodeRun, run_typed_code
 
 # MuJoCo picks its OpenGL back end when first imported: EGL renders without a display (on
 # Mesa's software EGL where there is no GPU), so the tests that render (the README's example,
@@ -96,13 +96,15 @@ SPREAD = {
 }
 # Modules that share a session-scoped fixture run with the module named, on its worker.
 GROUPS = {
-    # tests/typing/conftest.py's typed_code_reports: one mypy and one pyright run
+    # typed_code_run (below): one mypy and one pyright run
     "typing/test_mujoco_stubs.py": "typing/test_typecheck.py",
+    "cli/test_to_python_types.py": "typing/test_typecheck.py",
     # user_code_reports (below): one mypy and one pyright run over the user's project
     "test_readme.py": "typing/test_runtime_stubs.py",
 }
 FIRST = (
-    "typing/test_typecheck.py",  # with test_mujoco_stubs.py (GROUPS): ~65 s CPU, 2 processes
+    "typing/test_typecheck.py",  # with test_mujoco_stubs.py, test_to_python_types.py
+    # (GROUPS): the corpus in Python, then mypy and pyright side by side: ~90 s CPU
     "typing/test_mujoco_stubs.py",
     "dm_control/test_composer.py",  # 5 units (SPREAD) of 11 to 26 s CPU
     "typing/test_runtime_stubs.py",  # with test_readme.py (GROUPS): stubtest, mypy and
@@ -125,6 +127,24 @@ FIRST = (
     "codegen/test_facts_errors.py",
     "typing/test_ide.py",
 )
+
+
+@pytest.fixture(scope="session")
+def typed_code_run(tmp_path_factory: pytest.TempPathFactory) -> TypedCodeRun:
+    """One mypy and one pyright run per session with the repository's configuration: the
+    typed code, the negative cases, and to-python's code of the corpus (``GROUPS`` keeps
+    the modules that read it on one worker)."""
+    from tests.cli.test_to_python_types import corpus_modules  # MuJoCo: not at collection
+
+    modules = corpus_modules(tmp_path_factory.mktemp("to_python"))
+    return TypedCodeRun.split(run_typed_code(tmp_path_factory.mktemp("mypy_cache"), modules),
+                              modules)
+
+
+@pytest.fixture(scope="session")
+def typed_code_reports(typed_code_run: TypedCodeRun) -> dict[Checker, list[Diagnostic]]:
+    """What the checkers said of the typed code and the negative cases."""
+    return typed_code_run.typed_reports
 
 
 @pytest.fixture(scope="session")

@@ -1,7 +1,7 @@
 """``typed-mjcf to-python`` output passes ``mypy --strict`` and pyright's strict mode with no
 ignores, and ruff's formatter and linter leave it as it is: the code for every corpus model
 MuJoCo compiles (the biggest among them), checked in one run of each tool, the type checkers
-with the repository's configuration."""
+with the repository's configuration (the run of the typed code, ``tests/conftest.py``)."""
 
 from __future__ import annotations
 
@@ -14,16 +14,15 @@ import pytest
 import typed_mjcf as mjcf
 from typed_mjcf.cli.to_python import to_python
 
-from ..typing.test_typecheck import Checker, Diagnostic, run_both
+from ..typing.test_typecheck import Checker, Diagnostic, TypedCodeRun
 from .corpus import CORPUS, compiled, module_name
 from .test_to_python import SEPARATORS
 
 MINIMUM_SAMPLE = 20
 
 
-@pytest.fixture(scope="module")
-def modules(tmp_path_factory: pytest.TempPathFactory) -> list[Path]:
-    folder = tmp_path_factory.mktemp("to_python")
+def corpus_modules(folder: Path) -> list[Path]:
+    """``to_python`` of every corpus model MuJoCo compiles, a module each in ``folder``."""
     written: list[Path] = []
     for ident, path in CORPUS:
         if ident == SEPARATORS:
@@ -39,9 +38,13 @@ def modules(tmp_path_factory: pytest.TempPathFactory) -> list[Path]:
 
 
 @pytest.fixture(scope="module")
-def reports(modules: list[Path],
-            tmp_path_factory: pytest.TempPathFactory) -> dict[Checker, list[Diagnostic]]:
-    return run_both(modules, tmp_path_factory.mktemp("mypy_cache"))
+def modules(typed_code_run: TypedCodeRun) -> list[Path]:
+    return typed_code_run.corpus_modules  # tests/conftest.py: checked with the typed code
+
+
+@pytest.fixture(scope="module")
+def reports(typed_code_run: TypedCodeRun) -> dict[Checker, list[Diagnostic]]:
+    return typed_code_run.corpus_reports
 
 
 def test_the_sample_is_big_enough(modules: list[Path]) -> None:

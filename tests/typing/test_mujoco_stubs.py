@@ -42,7 +42,7 @@ STUBS = ROOT / "generated" / "mujoco-stubs"
 
 @pytest.fixture(scope="module")
 def positive(typed_code_reports: Reports) -> Reports:
-    return typed_code_reports  # tests/typing/conftest.py
+    return typed_code_reports  # tests/conftest.py
 
 
 @pytest.fixture(scope="module")

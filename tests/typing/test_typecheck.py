@@ -22,7 +22,7 @@ import json
 import re
 import subprocess
 import sys
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
@@ -200,18 +200,42 @@ def all_files() -> list[Path]:
     return sorted(found | set(NEGATIVE_FILES) | set(MUJOCO_NEGATIVE_FILES))
 
 
-def run_typed_code(cache_dir: Path) -> dict[Checker, list[Diagnostic]]:
-    """Both checkers over the typed code and the negative cases. mypy is given the folders
-    (its configuration's exclude leaves ``negative/`` out of them) and the negative files;
-    pyright the folders, which include them."""
-    return run_both([Path(p) for p in TYPED_PATHS] + NEGATIVE_FILES + MUJOCO_NEGATIVE_FILES,
-                    cache_dir, pyright_files=[Path(p) for p in TYPED_PATHS])
+def run_typed_code(cache_dir: Path, more: Sequence[Path] = ()
+                   ) -> dict[Checker, list[Diagnostic]]:
+    """Both checkers over the typed code and the negative cases (and ``more`` files, checked
+    with the same configuration). mypy is given the folders (its configuration's exclude
+    leaves ``negative/`` out of them) and the negative files; pyright the folders, which
+    include them."""
+    folders = [Path(p) for p in TYPED_PATHS]
+    return run_both([*folders, *NEGATIVE_FILES, *MUJOCO_NEGATIVE_FILES, *more], cache_dir,
+                    pyright_files=[*folders, *more])
+
+
+@dataclass(frozen=True)
+class TypedCodeRun:
+    """The session's run of both checkers (``tests/conftest.py``): what they said of the
+    typed code and the negative cases, and of to-python's code of the corpus checked with
+    them (``tests/cli/test_to_python_types.py``)."""
+
+    typed_reports: dict[Checker, list[Diagnostic]]
+    corpus_modules: list[Path]
+    corpus_reports: dict[Checker, list[Diagnostic]]
+
+    @classmethod
+    def split(cls, reports: Mapping[Checker, list[Diagnostic]], corpus_modules: list[Path],
+              ) -> TypedCodeRun:
+        corpus = {path.resolve() for path in corpus_modules}
+        return cls({name: [d for d in found if d.file not in corpus]
+                    for name, found in reports.items()},
+                   corpus_modules,
+                   {name: [d for d in found if d.file in corpus]
+                    for name, found in reports.items()})
 
 
 @pytest.fixture(scope="module")
 def reports(typed_code_reports: dict[Checker, list[Diagnostic]]
             ) -> dict[Checker, list[Diagnostic]]:
-    return typed_code_reports  # tests/typing/conftest.py: one run per session
+    return typed_code_reports  # tests/conftest.py: one run per session
 
 
 # ----------------------------------------------------------------------------- comparison
