@@ -25,3 +25,7 @@ def resolve(element: Element, name: str, grammar_defaults: bool = True) -> objec
     shorter than it may be (``size="0.1"`` of up to 3) keeps the rest from where it would
     otherwise come, as MuJoCo reads it into the default's values."""
     ...
+
+def resolve_all(element: Element, grammar_defaults: bool = True) -> dict[str, object]:
+    """:func:`resolve` of every attribute of ``element``, by name, its classes found once."""
+    ...

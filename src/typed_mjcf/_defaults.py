@@ -17,7 +17,7 @@ from typing import cast
 import numpy as np
 
 from typed_mjcf import _tree
-from typed_mjcf._codecs import Array, ArrayCodec
+from typed_mjcf._codecs import Array, ArrayCodec, Codec
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.errors import InvalidValueError, UnknownAttributeError, did_you_mean
@@ -109,12 +109,38 @@ def resolve(element: Element, name: str, grammar_defaults: bool = True) -> objec
         known = [a.py_name for a in spec.attributes.values()]
         raise UnknownAttributeError(f"{element.path}: <{spec.tag}> has no attribute {name!r}"
                                     f"{did_you_mean(name, known)}")
+    return _resolved(element, attribute, _classes(element), grammar_defaults)
+
+
+def resolve_all(element: Element, grammar_defaults: bool = True) -> dict[str, object]:
+    """:func:`resolve` of every attribute of ``element``, by name, its classes found once."""
+    classes = _classes(element)
+    return {attribute.name: _resolved(element, attribute, classes, grammar_defaults)
+            for attribute in element.spec.attributes.values()}
+
+
+def _classes(element: Element) -> tuple[Element, ...]:
+    """The default classes whose values ``element`` takes, innermost first: its class and
+    the classes that class is nested in (none for elements no default applies to)."""
+    if element.spec.defaults_tag is None:
+        return ()
+    found: list[Element] = []
+    default = class_of(element)
+    while default is not None:
+        found.append(default)
+        parent = default.parent  # nested classes inherit from the class around them
+        default = parent if parent is not None and parent.spec is default.spec else None
+    return tuple(found)
+
+
+def _resolved(element: Element, attribute: AttributeSpec, classes: tuple[Element, ...],
+              grammar_defaults: bool) -> object:
     own = _tree.read_value(element, attribute)
     length = _filled_length(element, attribute)
     found = own
     if found is not None and (length is None or _size(found) >= length):
         return found
-    for value in _inherited(element, attribute, grammar_defaults):
+    for value in _inherited(element, attribute, classes, grammar_defaults):
         found = value if found is None else _filled(found, value)
         if length is None or _size(found) >= length:
             break
@@ -130,21 +156,25 @@ def _filled_length(element: Element, attribute: AttributeSpec) -> int | None:
     return codec.hi if codec.hi is not None and codec.lo < codec.hi else None
 
 
-def _inherited(element: Element, attribute: AttributeSpec,
+def _inherited(element: Element, attribute: AttributeSpec, classes: tuple[Element, ...],
                grammar_defaults: bool) -> Iterator[object]:
     """What the element would have without its own value: its classes' values, innermost
     first, then (with ``grammar_defaults``) the grammar's default."""
     defaults_tag = element.spec.defaults_tag
     if defaults_tag is not None:
-        default = class_of(element)
-        while default is not None:
+        for default in classes:
             value = _class_value(default, defaults_tag, attribute)
             if value is not None:
                 yield value
-            parent = default.parent  # nested classes inherit from the class around them
-            default = parent if parent is not None and parent.spec is default.spec else None
     if attribute.default is not None and grammar_defaults:
-        yield attribute.codec.read(attribute.codec.parse(attribute.default))
+        yield _grammar_default(attribute.codec, attribute.default)
+
+
+@functools.cache
+def _grammar_default(codec: Codec, text: str) -> object:
+    """A grammar default's value, read once: values are immutable (arrays read-only). The
+    codec, not the attribute, is the key: a release retypes an attribute in place."""
+    return codec.read(codec.parse(text))
 
 
 def _size(value: object) -> int:

@@ -16,7 +16,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from typed_mjcf import _tree
-from typed_mjcf._defaults import resolve
+from typed_mjcf._defaults import resolve_all
 from typed_mjcf._export import iter_written, written_children
 from typed_mjcf._tree import Element
 from typed_mjcf.cli._common import BAD_INPUT, FOUND, OK, BadInput, error, load, shown, where
@@ -297,14 +297,13 @@ def _stored_texts(element: Element) -> dict[str, str | None]:
 
 def _resolved_texts(element: Element) -> dict[str, str | None]:
     """Every attribute as MuJoCo will use it (defaults applied), as canonical text."""
-    texts: dict[str, str | None] = {}
-    for attribute in element.spec.attributes.values():
-        try:
-            value = resolve(element, attribute.name)
-        except MjcfError:  # a class that is not defined: compare what is set
-            value = _tree.read_value(element, attribute)
-        texts[attribute.name] = value_text(attribute, value)
-    return texts
+    spec = element.spec
+    try:
+        values = resolve_all(element)
+    except MjcfError:  # a class that is not defined: compare what is set
+        values = {name: _tree.read_value(element, attribute)
+                  for name, attribute in spec.attributes.items()}
+    return {name: value_text(spec.attributes[name], value) for name, value in values.items()}
 
 
 def _changes(before: dict[str, str | None],
