@@ -27,5 +27,6 @@ def resolve(element: Element, name: str, grammar_defaults: bool = True) -> objec
     ...
 
 def resolve_all(element: Element, grammar_defaults: bool = True) -> dict[str, object]:
-    """:func:`resolve` of every attribute of ``element``, by name, its classes found once."""
+    """:func:`resolve` of every attribute of ``element``, by name, its classes found once
+    (when an attribute first needs them)."""
     ...

@@ -11,7 +11,7 @@ have in common from whichever of their rows sets it last.
 from __future__ import annotations
 
 import functools
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import cast
 
 import numpy as np
@@ -109,12 +109,13 @@ def resolve(element: Element, name: str, grammar_defaults: bool = True) -> objec
         known = [a.py_name for a in spec.attributes.values()]
         raise UnknownAttributeError(f"{element.path}: <{spec.tag}> has no attribute {name!r}"
                                     f"{did_you_mean(name, known)}")
-    return _resolved(element, attribute, _classes(element), grammar_defaults)
+    return _resolved(element, attribute, lambda: _classes(element), grammar_defaults)
 
 
 def resolve_all(element: Element, grammar_defaults: bool = True) -> dict[str, object]:
-    """:func:`resolve` of every attribute of ``element``, by name, its classes found once."""
-    classes = _classes(element)
+    """:func:`resolve` of every attribute of ``element``, by name, its classes found once
+    (when an attribute first needs them)."""
+    classes = functools.cache(lambda: _classes(element))
     return {attribute.name: _resolved(element, attribute, classes, grammar_defaults)
             for attribute in element.spec.attributes.values()}
 
@@ -133,8 +134,10 @@ def _classes(element: Element) -> tuple[Element, ...]:
     return tuple(found)
 
 
-def _resolved(element: Element, attribute: AttributeSpec, classes: tuple[Element, ...],
-              grammar_defaults: bool) -> object:
+def _resolved(element: Element, attribute: AttributeSpec,
+              classes: Callable[[], tuple[Element, ...]], grammar_defaults: bool) -> object:
+    """``classes`` is called only if the element's own value does not say it all: an
+    element's own values are read even when its class is not defined."""
     own = _tree.read_value(element, attribute)
     length = _filled_length(element, attribute)
     found = own
@@ -156,13 +159,14 @@ def _filled_length(element: Element, attribute: AttributeSpec) -> int | None:
     return codec.hi if codec.hi is not None and codec.lo < codec.hi else None
 
 
-def _inherited(element: Element, attribute: AttributeSpec, classes: tuple[Element, ...],
+def _inherited(element: Element, attribute: AttributeSpec,
+               classes: Callable[[], tuple[Element, ...]],
                grammar_defaults: bool) -> Iterator[object]:
     """What the element would have without its own value: its classes' values, innermost
     first, then (with ``grammar_defaults``) the grammar's default."""
     defaults_tag = element.spec.defaults_tag
     if defaults_tag is not None:
-        for default in classes:
+        for default in classes():
             value = _class_value(default, defaults_tag, attribute)
             if value is not None:
                 yield value

@@ -144,3 +144,19 @@ def test_resolve_all_is_resolve_of_each_attribute() -> None:
                         value is alone or value == alone), (ident, element.path, name)
                     checked += 1
     assert checked > 100_000
+
+
+def test_an_own_value_resolves_when_the_class_is_not_defined() -> None:
+    """A class is looked up only for what the element does not set itself: its own values
+    resolve (one by one and all at once) though its class names nothing; the others say
+    which class is missing."""
+    model = mjcf.RootElement()
+    geom = model.worldbody.add_geom(pos=(1, 2, 3), dclass="nosuch")
+    assert geom.resolve("pos").tolist() == [1, 2, 3]
+    with pytest.raises(mjcf.MjcfError, match="default class 'nosuch' is not defined"):
+        geom.resolve("size")
+    with pytest.raises(mjcf.MjcfError, match="default class 'nosuch' is not defined"):
+        resolve_all(geom)
+    model.default.add_default(class_="nosuch").add_geom(size=(0.5,))
+    every = resolve_all(geom)
+    assert every["pos"].tolist() == [1, 2, 3] and every["size"].tolist() == [0.5]
