@@ -6,7 +6,17 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from codegen import bindings, ir, mujoco_stubs, pins, releases, render, runtime_stubs, wheel
+from codegen import (
+    bindings,
+    ir,
+    mujoco_stubs,
+    pins,
+    reference,
+    releases,
+    render,
+    runtime_stubs,
+    wheel,
+)
 from codegen.facts import load_facts
 from codegen.pipeline import refresh, sync_schema
 
@@ -36,6 +46,7 @@ def generate(grammar: Path | None, allow_untyped: bool) -> int:
     print(f"schema/mjcf.json: MuJoCo {schema.mujoco_version}, {len(schema.elements)} rows, "
           f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    write_reference(schema)
     write_runtime_stubs()
     return stubs()
 
@@ -61,6 +72,7 @@ def generate_older(newest: ir.Schema, installed: str) -> int:
           f"{sum(len(e.attributes) for e in schema.elements.values())} attributes")
     changed = render.write(render.render(newest))
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    write_reference(newest)
     return 0
 
 
@@ -72,10 +84,19 @@ def stubs() -> int:
 
 
 def render_only() -> int:
-    changed = render.write(render.render(ir.load()))
+    schema = ir.load()
+    changed = render.write(render.render(schema))
     print("generated/: " + (", ".join(changed) + " rewritten" if changed else "unchanged"))
+    write_reference(schema)
     write_runtime_stubs()
     return 0
+
+
+def write_reference(schema: ir.Schema) -> None:
+    """generated/mjcf-reference/: the MJCF reference pages, from schema/."""
+    changed = reference.write(reference.render(schema))
+    print("generated/mjcf-reference/: "
+          + (f"{len(changed)} pages rewritten" if changed else "unchanged"))
 
 
 def write_runtime_stubs() -> None:
@@ -105,6 +126,12 @@ def check() -> int:
         print(f"generated/ is out of date: {', '.join(stale)}; run `nox -s generate`")
         return 1
     print("generated/ matches schema/")
+    stale_pages = reference.stale(reference.render(schema))
+    if stale_pages:
+        print(f"generated/mjcf-reference/ is out of date: {', '.join(stale_pages[:5])}"
+              f"{' ...' if len(stale_pages) > 5 else ''}; run `python -m codegen render`")
+        return 1
+    print("generated/mjcf-reference/ matches schema/")
     stale_runtime = runtime_stubs.stale(runtime_stubs.render())
     if stale_runtime:
         print(f"generated/runtime-pyi/ is out of date with src/: {', '.join(stale_runtime)}; "
