@@ -1,5 +1,6 @@
 """Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
-``nox -s pictures``, ``nox -s bench_editor``, ``nox -s releases``, ``nox -s install_matrix``.
+``nox -s pictures``, ``nox -s bench_editor``, ``nox -s releases``, ``nox -s install_matrix``,
+``nox -s docs``.
 
 Every session runs on the first Python nox finds that the project supports (3.11 or newer);
 ``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
@@ -56,6 +57,20 @@ def tests(session: nox.Session) -> None:
     session.run("pytest", "-n", "auto", *session.posargs,
                 env={"PYTHONDONTWRITEBYTECODE": None})
     session.run("ruff", "check", ".")
+
+
+@nox.session(python=PYTHON)
+def docs(session: nox.Session) -> None:
+    """Build the documentation site from docs/ into docs/_build/html, strictly: a warning
+    (a broken link, a missing page, an API name that does not resolve) fails the build. Then
+    open it in headless Chromium (tests/docs: the home page, a guide page, an element page,
+    the search; no console message; docs/_build/screenshot.png). The pages' code blocks run
+    and type-check in ``nox -s tests`` (tests/test_readme.py)."""
+    session.install("-e", ".[dev,docs]")
+    session.run("sphinx-build", "-W", "--keep-going", "-n", "-q", "-b", "html", "docs",
+                "docs/_build/html", env={"MUJOCO_GL": "egl"})
+    session.run("pytest", "-p", "no:cacheprovider", "-q", "tests/docs", *session.posargs,
+                env={"TYPED_MJCF_DOCS_SITE": "docs/_build/html"})
 
 
 @nox.session(python=PYTHON)

@@ -178,7 +178,9 @@ def page(schema: ir.Schema, typer: Typer, gates: releases.Gates, older: dict[str
         lines.append("None.")
     lines.append("")
     if way:
-        lines += ["## Adding one", "", "```python", signature(typer, schema, el), "```", ""]
+        # a directive, not a ```python block: a declaration to read, not code that runs
+        lines += ["## Adding one", "", "```{code-block} python", signature(typer, schema, el),
+                  "```", ""]
     lines += ["## Example", "", "```python", example(schema, el, way), "```", ""]
     lines += ["## Attributes", ""]
     if el.attributes:

@@ -43,9 +43,13 @@ def committed(name: str) -> NDArray[np.uint8]:
 
 def test_every_picture_is_committed_shown_and_none_is_left_over() -> None:
     assert {p.name for p in FOLDER.glob("*.png")} == set(PICTURES)
-    readme = (FOLDER.parent.parent / "README.md").read_text(encoding="utf-8")
+    root = FOLDER.parent.parent
+    page = (root / "docs" / "guide" / "previews.md").read_text(encoding="utf-8")
     for name in PICTURES:
-        assert f"](examples/pictures/{name})" in readme, f"the README does not show {name}"
+        assert f"](../../examples/pictures/{name})" in page, \
+            f"docs/guide/previews.md does not show {name}"
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    assert "](examples/pictures/demo.png)" in readme, "the README shows the demo's picture"
 
 
 @pytest.mark.parametrize("name", list(PICTURES))

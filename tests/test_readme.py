@@ -1,7 +1,9 @@
-"""The README's Python examples and the scripts in ``examples/``, as a user meets them.
+"""The documentation's Python examples and the scripts in ``examples/``, as a user meets them.
 
-- every Python block of the README runs and prints what the README says it prints;
-- the README's blocks (each written to a module of its own) and every file in ``examples/``
+- every Python block of the README and of the pages in ``docs/`` runs and prints what the
+  page says it prints (the generated MJCF reference's examples: tests/codegen/test_reference.py);
+- those blocks (each written to a module of its own), the MJCF reference's examples (one
+  module) and every file in ``examples/``
   are clean under ``mypy --strict`` and pyright strict: one mypy run and one pyright run over
   a user's project (``UserCode``: those modules, the negative cases, a canary; strict
   configurations and the ``mujoco`` stubs, none of this repository's settings) in a folder
@@ -36,41 +38,68 @@ from tests.typing.test_typecheck import (
 
 ROOT = Path(__file__).resolve().parent.parent
 README = ROOT / "README.md"
+DOCS = ROOT / "docs"
+# The pages written by hand; docs/reference/ is the generated reference copied by the build.
+PAGES = [README, *sorted(p for p in DOCS.rglob("*.md")
+                         if p.relative_to(DOCS).parts[0] not in ("reference", "_build"))]
+REFERENCE = ROOT / "generated" / "mjcf-reference"
+# The page whose table of mistakes shows what mypy says of each
+MISTAKES_PAGE = DOCS / "guide" / "typing.md"
 EXAMPLES = sorted((ROOT / "examples").glob("*.py"))
 
 
 @dataclass(frozen=True)
 class Block:
-    """A fenced Python block of the README."""
+    """A fenced Python block of a page."""
 
     code: str
-    line: int  # the README's line number of the block's first line of code
+    source: Path
+    line: int  # the page's line number of the block's first line of code
+
+    @property
+    def name(self) -> str:
+        return f"{self.source.relative_to(ROOT).as_posix()}:{self.line}"
 
 
-def readme_blocks() -> list[Block]:
-    text = README.read_text(encoding="utf-8")
-    return [Block(match[1], text.count("\n", 0, match.start(1)) + 1)
+def page_blocks(path: Path) -> list[Block]:
+    text = path.read_text(encoding="utf-8")
+    return [Block(match[1], path, text.count("\n", 0, match.start(1)) + 1)
             for match in re.finditer(r"```python\n(.*?)```", text, re.DOTALL)]
 
 
-BLOCKS = readme_blocks()
+BLOCKS = [block for page in PAGES for block in page_blocks(page)]
 
 
-@pytest.mark.parametrize("block", BLOCKS, ids=[f"line{b.line}" for b in BLOCKS])
-def test_readme_example_runs(block: Block, tmp_path: Path,
-                             monkeypatch: pytest.MonkeyPatch) -> None:
+@pytest.mark.parametrize("block", BLOCKS, ids=[b.name for b in BLOCKS])
+def test_documented_example_runs(block: Block, tmp_path: Path,
+                                 monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(tmp_path)  # what an example writes (an image) lands there
     expected = [line[2:] for line in block.code.splitlines() if line.startswith("# ")]
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
-        exec(compile("\n" * (block.line - 1) + block.code, str(README), "exec"), {})
+        exec(compile("\n" * (block.line - 1) + block.code, str(block.source), "exec"), {})
     for line in expected:
         assert line in out.getvalue()
 
 
-def test_readme_has_examples() -> None:
-    assert len(BLOCKS) >= 3
+def test_the_pages_have_examples() -> None:
+    assert len(page_blocks(README)) >= 3
+    assert {b.source for b in BLOCKS} > {README}
     assert len(EXAMPLES) >= 4
+
+
+def reference_examples() -> str:
+    """The MJCF reference's examples as one module, each a function."""
+    functions: list[str] = ["import typed_mjcf as mjcf\n"]
+    for page in sorted(REFERENCE.glob("*.md")):
+        for block in page_blocks(page):
+            body = [line for line in block.code.splitlines()
+                    if line and line != "import typed_mjcf as mjcf"]
+            made = "element" if any(line.startswith("element = ") for line in body) else "model"
+            functions.append(f"\ndef example_{page.stem}() -> mjcf.Element:\n"
+                             + "".join(f"    {line}\n" for line in body)
+                             + f"    return {made}\n")
+    return "\n".join(functions)
 
 
 # ----------------------------------------------------------------------------- type checks
@@ -99,9 +128,9 @@ MISTAKES_FIRST_LINE = 6
 
 
 def readme_table_messages() -> list[str]:
-    """The typed-mjcf column of the README's table of mistakes, in its order."""
-    text = README.read_text(encoding="utf-8")
-    section = text.split("## What the type checker catches", 1)[1].split("\n#", 1)[0]
+    """The typed-mjcf column of the table of mistakes (``MISTAKES_PAGE``), in its order."""
+    text = MISTAKES_PAGE.read_text(encoding="utf-8")
+    section = text[text.index("| mistake | typed-mjcf |"):].split("\n\n", 1)[0]
     messages: list[str] = []
     for row in section.splitlines():
         cells = [c.strip() for c in re.split(r"(?<!\\)\|", row)[1:-1]]
@@ -156,7 +185,8 @@ def user_project(folder: Path) -> UserCode:
         return path
 
     for number, block in enumerate(BLOCKS):
-        module(f"readme_block{number}.py", block.code, README, block.line - 1)
+        module(f"doc_block{number}.py", block.code, block.source, block.line - 1)
+    module("reference_examples.py", reference_examples(), REFERENCE / "index.md")
     for path in [*EXAMPLES, *NEGATIVE_FILES]:
         module(path.name, path.read_text(encoding="utf-8"), path)
     canary, mistakes = module("canary.py", CANARY), module("mistakes.py", MISTAKES_MODULE)
@@ -195,7 +225,7 @@ def test_readme_and_examples_type_check(
     found = [user_code.describe(d) for d in sorted(
                  outside_negative_cases(user_code, user_code_reports[checker]))
              if d.file not in (user_code.canary, user_code.mistakes)]
-    assert not found, f"{checker} (strict) on the README's code and examples/:\n" + "\n".join(
+    assert not found, f"{checker} (strict) on the docs' code and examples/:\n" + "\n".join(
         found)
 
 

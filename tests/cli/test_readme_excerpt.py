@@ -1,4 +1,4 @@
-"""The README's ``to-python`` excerpt is real: what the command writes for dm_control's
+"""The ``to-python`` excerpt of docs/guide/cli.md is real: what the command writes for dm_control's
 ``suite/cartpole.xml``, line for line (``...`` stands for lines left out)."""
 
 from __future__ import annotations
@@ -11,13 +11,12 @@ from typed_mjcf.cli.to_python import to_python
 
 from .corpus import CORPUS
 
-README = Path(__file__).resolve().parents[2] / "README.md"
+PAGE = Path(__file__).resolve().parents[2] / "docs" / "guide" / "cli.md"
 
 
 def _excerpt() -> list[list[str]]:
     """The excerpt's runs of lines (split where ``...`` leaves lines out)."""
-    text = README.read_text(encoding="utf-8")
-    section = text[text.index("## Command line"):]
+    section = PAGE.read_text(encoding="utf-8")
     block = re.search(r"```console\n\$ typed-mjcf to-python cartpole.xml.*?\n\$ sed[^\n]*\n"
                       r"(.*?)```", section, re.DOTALL)
     assert block is not None
