@@ -146,10 +146,55 @@ def removed_attributes(schema: ir.Schema, older: dict[str, ir.Schema],
     return found
 
 
+def _children(schema: ir.Schema, gates: releases.Gates, el: ir.ElementDef) -> list[str]:
+    lines = ["## Children", ""]
+    if not el.children:
+        return [*lines, "None.", ""]
+    lines += ["| child | how many | in Python |", "|---|---|---|"]
+    for c in el.children:
+        child = schema.elements[c.element]
+        python = (f"`.{child_py_name(child.tag)}` (created on first use)" if c.single
+                  else f"`.add_{child.tag}()`, `.{child_py_name(child.tag)}[i]`")
+        rels = gates.children.get(el.name, {}).get(child.tag)
+        since = f" ({releases.availability(rels, gates.releases)})" if rels else ""
+        lines.append(f"| {_link(child)} | {_CARD[c.card]}{since} | {python} |")
+    return [*lines, ""]
+
+
+def _attributes(schema: ir.Schema, typer: Typer, gates: releases.Gates,
+                older: dict[str, ir.Schema], el: ir.ElementDef) -> list[str]:
+    lines = ["## Attributes", ""]
+    if not el.attributes:
+        lines.append("None.")
+    else:
+        lines += ["| attribute | Python type | default | MuJoCo | about |", "|---|---|---|---|---|"]
+    for a in el.attributes:
+        rels = gates.attribute_releases(el.name, a.name)
+        releases_text = releases.availability(rels, gates.releases) if rels else "all"
+        note = docs.note(a) or ""
+        about = "; ".join([typer.describe(a), *(a.bounds or [])]) + (f". {note}" if note else ".")
+        name = f"`{a.name}`" + (f" (`{a.py_name}`)" if a.py_name != a.name else "")
+        lines.append(f"| {name} | `{_cell(readable(typer.setter(a)))}` | {_default(a)} | "
+                     f"{releases_text} | {_cell(about)} |")
+    removed = removed_attributes(schema, older, el.name)
+    if removed:
+        lines += ["", ("Attributes older MuJoCo releases have here and "
+                  f"{schema.mujoco_version} does not (not typed; read and written as they are "
+                  "under those releases):"), ""]
+        lines += [f"- `{name}`: MuJoCo {', '.join(versions)}"
+                  for name, versions in sorted(removed.items())]
+    if el.constraints:
+        lines += ["", "Presence constraints (`validate()` checks them):", ""]
+        for constraint in el.constraints:
+            bundles = " | ".join(" + ".join(f"`{n}`" for n in b) for b in constraint.bundles)
+            lines.append(f"- {constraint.kind}: {bundles}")
+    return [*lines, ""]
+
+
 def page(schema: ir.Schema, typer: Typer, gates: releases.Gates, older: dict[str, ir.Schema],
          el: ir.ElementDef, way: list[Step]) -> str:
-    """The Markdown page of one row."""
-    covered = gates.releases
+    """The Markdown page of one row: what it is and where, an example, its attributes, its
+    children, the adder's signature."""
     lines = [f"# `<{el.tag}>`: {el.class_name}", ""]
     if el.projection_of is not None:
         lines += [(f"The defaults of {_link(schema.elements[el.projection_of])} elements, in a "
@@ -164,51 +209,14 @@ def page(schema: ir.Schema, typer: Typer, gates: releases.Gates, older: dict[str
     where = "`" + "/".join([schema.elements[schema.root].tag,
                             *(s.row.tag for s in way)]) + "`"
     lines += [f"**Reached as:** {where}", ""]
-    lines += ["## Children", ""]
-    if el.children:
-        lines += ["| child | how many | in Python |", "|---|---|---|"]
-        for c in el.children:
-            child = schema.elements[c.element]
-            python = (f"`.{child_py_name(child.tag)}` (created on first use)" if c.single
-                      else f"`.add_{child.tag}()`, `.{child_py_name(child.tag)}[i]`")
-            rels = gates.children.get(el.name, {}).get(child.tag)
-            since = f" ({releases.availability(rels, covered)})" if rels else ""
-            lines.append(f"| {_link(child)} | {_CARD[c.card]}{since} | {python} |")
-    else:
-        lines.append("None.")
-    lines.append("")
+    lines += ["## Example", "", "```python", example(schema, el, way), "```", ""]
+    lines += _attributes(schema, typer, gates, older, el)
+    lines += _children(schema, gates, el)
     if way:
         # a directive, not a ```python block: a declaration to read, not code that runs
         lines += ["## Adding one", "", "```{code-block} python", signature(typer, schema, el),
                   "```", ""]
-    lines += ["## Example", "", "```python", example(schema, el, way), "```", ""]
-    lines += ["## Attributes", ""]
-    if el.attributes:
-        lines += ["| attribute | Python type | default | MuJoCo | about |", "|---|---|---|---|---|"]
-        for a in el.attributes:
-            rels = gates.attribute_releases(el.name, a.name)
-            releases_text = releases.availability(rels, covered) if rels else "all"
-            note = docs.note(a) or ""
-            facts = [typer.describe(a), *(a.bounds or [])]
-            about = "; ".join(facts) + (f". {note}" if note else ".")
-            name = f"`{a.name}`" + (f" (`{a.py_name}`)" if a.py_name != a.name else "")
-            lines.append(f"| {name} | `{_cell(readable(typer.setter(a)))}` | {_default(a)} | "
-                         f"{releases_text} | {_cell(about)} |")
-    else:
-        lines.append("None.")
-    removed = removed_attributes(schema, older, el.name)
-    if removed:
-        lines += ["", ("Attributes older MuJoCo releases have here and "
-                  f"{schema.mujoco_version} does not (not typed; read and written as they are "
-                  "under those releases):"), ""]
-        lines += [f"- `{name}`: MuJoCo {', '.join(versions)}"
-                  for name, versions in sorted(removed.items())]
-    if el.constraints:
-        lines += ["", "## Constraints", ""]
-        for constraint in el.constraints:
-            bundles = " | ".join(" + ".join(f"`{n}`" for n in b) for b in constraint.bundles)
-            lines.append(f"- {constraint.kind}: {bundles}")
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines).rstrip("\n") + "\n"
 
 
 def index(schema: ir.Schema, ordered: list[ir.ElementDef]) -> str:
