@@ -44,13 +44,16 @@ def render_png(model: ModelBase, path: str | os.PathLike[str], width: object = 6
 def write_png(path: str | os.PathLike[str], picture: Image) -> None: ...
 
 def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
-                labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None
-                ) -> tuple[Image, int]:
+                labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None,
+                lighting: bool = False) -> tuple[Image, int]:
     """Two models side by side from the same camera, and a third panel showing the first
-    with the pixels where the two pictures differ painted magenta; also how many differ.
+    with the pixels where the two models differ painted magenta; also how many differ.
 
     Both are framed together (the default view of their union) and rendered with the same
-    visual scale, so a pixel differs only where the models differ.
+    visual scale, so a pixel differs only where the models differ. Which pixels differ is
+    found on pictures drawn without shadows, reflections, fog and haze (unless
+    ``lighting``): a changed size or position then lights the geometry that changed, not the
+    floor where its shadow and reflection moved.
     """
     ...
 

@@ -105,19 +105,23 @@ def write_png(path: str | os.PathLike[str], picture: Image) -> None:
 
 
 def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
-                labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None
-                ) -> tuple[Image, int]:
+                labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None,
+                lighting: bool = False) -> tuple[Image, int]:
     """Two models side by side from the same camera, and a third panel showing the first
-    with the pixels where the two pictures differ painted magenta; also how many differ.
+    with the pixels where the two models differ painted magenta; also how many differ.
 
     Both are framed together (the default view of their union) and rendered with the same
-    visual scale, so a pixel differs only where the models differ.
+    visual scale, so a pixel differs only where the models differ. Which pixels differ is
+    found on pictures drawn without shadows, reflections, fog and haze (unless
+    ``lighting``): a changed size or position then lights the geometry that changed, not the
+    floor where its shadow and reflection moved.
     """
     width, height = _check_size(width, height)
     ensure_gl_backend()
     compiled = [compile_model(a), compile_model(b)]
     center, extent = _union(*(_bounds(m) for m in compiled))
     pictures: list[Image] = []
+    compared: list[Image] = []
     for model, m in zip((a, b), compiled, strict=True):
         m.stat.center[:] = center  # lights, shadows and clipping scale with these
         m.stat.extent = extent
@@ -127,7 +131,11 @@ def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
                 azimuth=float(compiled[0].vis.global_.azimuth),
                 elevation=float(compiled[0].vis.global_.elevation))
             pictures.append(offscreen.shoot(data, _camera(model, m, view), width, height))
-    changed = np.any(pictures[0] != pictures[1], axis=2)
+            if not lighting:
+                offscreen.plain()
+                compared.append(offscreen.shoot(data, _camera(model, m, view), width, height))
+    compared = compared or pictures
+    changed = np.any(compared[0] != compared[1], axis=2)
     grey = (pictures[0].mean(axis=2, keepdims=True) * 0.5 + 40).astype(np.uint8)
     difference = np.repeat(grey, 3, axis=2)
     difference[changed] = _CHANGED
@@ -388,6 +396,10 @@ def _union(first: tuple[NDArray[np.float64], float],
 # ---------------------------------------------------------------------------- rendering
 
 
+_LIGHTING_EFFECTS: Final = ("mjRND_SHADOW", "mjRND_REFLECTION", "mjRND_FOG", "mjRND_HAZE",
+                             "mjRND_SKYBOX")
+
+
 class _Offscreen:
     """MuJoCo's offscreen renderer for one compiled model: the calls ``mujoco.Renderer``
     makes, on a context of the chosen back end. The model's offscreen buffer is enlarged (on
@@ -418,6 +430,14 @@ class _Offscreen:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def plain(self) -> None:
+        """Draw from now on without the effects of lighting that reach beyond an object
+        (shadows, reflections, fog, haze, the skybox)."""
+        import mujoco
+
+        for flag in _LIGHTING_EFFECTS:
+            self.scene.flags[int(getattr(mujoco.mjtRndFlag, flag))] = False
 
     def shoot(self, data: mujoco.MjData, camera: mujoco.MjvCamera, width: int,
               height: int) -> Image:

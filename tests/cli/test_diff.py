@@ -148,7 +148,24 @@ def test_an_unnamed_element_inserted_among_others_is_one_addition(tmp_path: Path
 def test_removing_an_element_reports_it_once_with_what_was_inside(tmp_path: Path) -> None:
     edited = A.replace('<body name="hand"><geom size="0.05"/></body>', "")
     assert _diff(tmp_path, edited) == [
-        "- worldbody/body[arm]/body[hand]: <body name=\"hand\"> (1 element inside)  [a.xml:11]"]
+        '- worldbody/body[arm]/body[hand]: <body name="hand">  [a.xml:11]',
+        '-   worldbody/body[arm]/body[hand]/geom[0]: <geom size="0.05"/>']
+
+
+def test_an_added_element_shows_what_is_inside_then_how_many_more(tmp_path: Path) -> None:
+    fixed = "<fixed name='t'><joint joint='j1' coef='1'/></fixed>"
+    found = _diff(tmp_path, A.replace("</mujoco>", f"<tendon>{fixed}</tendon></mujoco>"))
+    assert found == [
+        "+ tendon: <tendon>  [b.xml:16]",
+        '+   tendon/fixed[t]: <fixed name="t">',
+        '+     tendon/fixed[t]/joint[0]: <joint joint="j1" coef="1"/>']
+    sites = "".join(f'<site name="s{i}"/>' for i in range(25))
+    found = _diff(tmp_path, A.replace('<body name="leg"/>', f'<body name="leg2">{sites}</body>'))
+    added = [line for line in found if line.startswith("+")]
+    assert added[0] == '+ worldbody/body[leg2]: <body name="leg2">  [b.xml:13]'
+    assert added[1:21] == [f'+   worldbody/body[leg2]/site[s{i}]: <site name="s{i}"/>'
+                           for i in range(20)]
+    assert added[21:] == ["+   ... and 5 more elements inside worldbody/body[leg2]"]
 
 
 def test_resolved_values_show_what_a_default_class_changes(tmp_path: Path) -> None:

@@ -9,6 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import typed_mjcf as mjcf
 from tests.render.scenes import box_scene, decode_png, red
 from typed_mjcf.cli import main
 
@@ -121,7 +122,7 @@ def test_diff_render_halves_differ_exactly_where_the_models_differ(
         near_box[:, :-1] |= near_box[:, 1:].copy()
     assert not changed[~near_box].any()
     magenta = np.all(marked == (255, 0, 255), axis=2)
-    assert np.array_equal(magenta, changed)
+    assert magenta[box_a].all() and not magenta[~near_box].any()
 
 
 def test_diff_render_of_a_moved_part_marks_both_places(capsys: pytest.CaptureFixture[str]
@@ -139,6 +140,44 @@ def test_diff_render_of_a_moved_part_marks_both_places(capsys: pytest.CaptureFix
     assert changed[red(a)].all() and changed[red(b)].all()
     columns = np.nonzero(changed)[1]
     assert columns.min() < 100 < columns.max()  # on both sides of the middle
+
+
+def _near(mask: np.ndarray, pixels: int) -> np.ndarray:
+    grown = mask.copy()
+    for _ in range(pixels):
+        grown[1:] |= grown[:-1].copy()
+        grown[:-1] |= grown[1:].copy()
+        grown[:, 1:] |= grown[:, :-1].copy()
+        grown[:, :-1] |= grown[:, 1:].copy()
+    return grown
+
+
+def test_diff_render_marks_the_geometry_not_its_shadow_or_reflection(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """A red ball grows over a reflective floor under a light that casts shadows: its shadow
+    and reflection on the floor change too (the pictures differ there), but only the ball's
+    own pixels are marked."""
+    def scene(radius: float) -> str:
+        model = mjcf.RootElement(model="ball")
+        model.worldbody.add_light(pos=(0.6, 0.3, 2), dir=(-0.3, -0.15, -1), castshadow=True)
+        model.asset.add_material(name="mirror", reflectance=0.6, rgba=(0.5, 0.5, 0.5, 1))
+        model.worldbody.add_geom(type="plane", size=(2, 2, 0.1), material="mirror")
+        ball = model.worldbody.add_body(name="ball", pos=(0, 0, 0.6))
+        ball.add_geom(name="ball", type="sphere", size=(radius,), rgba=(1, 0, 0, 1))
+        return model.to_xml_string()
+
+    Path("small.xml").write_text(scene(0.2), encoding="utf-8")
+    Path("big.xml").write_text(scene(0.23), encoding="utf-8")
+    assert main(["diff", "small.xml", "big.xml", "--render", "diff.png",
+                 "--render-size", "240x180"]) == 1
+    capsys.readouterr()
+    a, b, marked = _panels("diff.png", 240, 180)
+    magenta = np.all(marked == (255, 0, 255), axis=2)
+    ball = _near(red(a) | red(b), 2)
+    shown_differ = np.any(a != b, axis=2)
+    assert shown_differ[~ball].sum() > 50  # the floor's shadow and reflection did change
+    assert magenta.sum() > 50  # the ball's rim is marked
+    assert not magenta[~_near(ball, 1)].any()  # and nothing of the floor
 
 
 def test_diff_render_of_equal_models_marks_nothing(capsys: pytest.CaptureFixture[str]) -> None:

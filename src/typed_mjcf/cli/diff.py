@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import itertools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
@@ -45,6 +46,7 @@ side by side (same camera, framing both) and a third panel marking the pixels th
 exit status: 0 the models are the same, 1 they differ, 2 a file cannot be read as MJCF."""
 
 _TAG_WIDTH = 160  # characters of an added or removed element's start tag shown
+_SHOWN_INSIDE = 20  # elements listed inside an added or removed one (then how many more)
 
 
 def arguments(parser: argparse.ArgumentParser) -> None:
@@ -102,14 +104,13 @@ def diff_models(a: Element, b: Element, resolved: bool = False) -> list[str]:
         parent = x.parent
         if parent is not None and parent not in pairs:
             continue  # inside a removed element: that one is reported
-        lines.append(_Line((anchor, 1, position), f"- {x.path}: {_start_tag(x)}  [{where(x)}]"))
+        lines += [_Line((anchor, 1, order_a[e]), text) for e, text in _subtree("-", x)]
     for y, position in order_b.items():
         counterpart = back.get(y)
         if counterpart is None:
             parent = y.parent
             if parent is None or parent in back:
-                lines.append(_Line((position, 0, 0), f"+ {y.path}: {_start_tag(y)}  "
-                                                     f"[{where(y)}]"))
+                lines += [_Line((order_b[e], 0, 0), text) for e, text in _subtree("+", y)]
             continue
         x = counterpart
         found: list[str] = []
@@ -317,13 +318,35 @@ def _shown_value(text: str | None) -> str:
     return "(unset)" if text is None else f'"{text}"'
 
 
+def _subtree(sign: str, top: Element) -> list[tuple[Element, str]]:
+    """The lines of an added or removed element: its own, then what is inside it, indented
+    by depth (the first ``_SHOWN_INSIDE`` elements, then how many more)."""
+    lines = [(top, f"{sign} {top.path}: {_start_tag(top)}  [{where(top)}]")]
+    inside = iter(iter_written(top))
+    next(inside)  # top itself
+    depth = {top: 0}
+    more = 0
+    for element in inside:
+        parent = element.parent
+        depth[element] = depth[parent] + 1 if parent is not None and parent in depth else 1
+        if len(lines) > _SHOWN_INSIDE:
+            more += 1
+            continue
+        indent = "  " * depth[element]
+        lines.append((element, f"{sign} {indent}{element.path}: {_start_tag(element)}"))
+    if more:
+        last = lines[-1][0]
+        lines.append((last, f"{sign}   ... and {more} more element"
+                            f"{'s' if more > 1 else ''} inside {top.path}"))
+    return lines
+
+
 def _start_tag(element: Element) -> str:
-    """``<tag a="..." ...>`` with canonical values (shortened), and how much is inside."""
+    """``<tag a="..." ...>`` with canonical values (shortened); ``/>`` when empty."""
     attributes = "".join(f' {name}="{text}"' for name, text in _stored_texts(element).items()
                          if text is not None)
     tag = f"<{element.spec.tag}{attributes}"
     if len(tag) > _TAG_WIDTH:
         tag = tag[: _TAG_WIDTH - 3] + "..."
-    inside = sum(1 for _ in iter_written(element)) - 1
-    return tag + ("/>" if not inside else f"> ({inside} element{'s' if inside > 1 else ''} "
-                                          "inside)")
+    empty = next(itertools.islice(iter_written(element), 1, None), None) is None
+    return tag + ("/>" if empty else ">")
