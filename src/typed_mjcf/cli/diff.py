@@ -336,8 +336,8 @@ def _subtree(sign: str, top: Element) -> list[tuple[Element, str]]:
         lines.append((element, f"{sign} {indent}{element.path}: {_start_tag(element)}"))
     if more:
         last = lines[-1][0]
-        lines.append((last, f"{sign}   ... and {more} more element"
-                            f"{'s' if more > 1 else ''} inside {top.path}"))
+        plural = "s" if more > 1 else ""
+        lines.append((last, f"{sign}   ... and {more} more element{plural} inside {top.path}"))
     return lines
 
 
