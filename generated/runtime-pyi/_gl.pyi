@@ -9,6 +9,7 @@ from the chosen back end's module itself (:func:`gl_context`), whichever was imp
 and sets ``MUJOCO_GL`` for code that imports ``mujoco`` later.
 """
 from __future__ import annotations
+from collections.abc import Sequence
 from typing import Final, Protocol, cast
 from typed_mjcf.errors import RenderError
 
@@ -32,7 +33,8 @@ def gl_context(width: int, height: int) -> GLContext:
     several times faster in a context that has rendered before (measured with Mesa)."""
     ...
 
-def gl_error(error: BaseException) -> RenderError:
+def gl_error(error: BaseException, warned: Sequence[str] = ()) -> RenderError:
     """What a failure to make an OpenGL context (outside :func:`gl_context`) says, as one
-    error naming the back end and what to do."""
+    error naming the back end and what to do (with what the back end ``warned`` first, such
+    as GLFW's "The DISPLAY environment variable is missing")."""
     ...

@@ -17,6 +17,7 @@ import os
 import platform
 import sys
 import threading
+from collections.abc import Sequence
 from typing import Final, Protocol, cast
 
 from typed_mjcf.errors import RenderError
@@ -169,10 +170,13 @@ def _one_line(error: BaseException) -> str:
     return text if len(text) <= 200 else text[:197] + "..."
 
 
-def gl_error(error: BaseException) -> RenderError:
+def gl_error(error: BaseException, warned: Sequence[str] = ()) -> RenderError:
     """What a failure to make an OpenGL context (outside :func:`gl_context`) says, as one
-    error naming the back end and what to do."""
+    error naming the back end and what to do (with what the back end ``warned`` first, such
+    as GLFW's "The DISPLAY environment variable is missing")."""
     backend = os.environ.get("MUJOCO_GL", "").strip().lower() or "glfw (MuJoCo's default)"
+    if warned:
+        error = RuntimeError(f"{'; '.join(dict.fromkeys(warned))}; {_one_line(error)}")
     taken = _mujocos_back_end()
     if taken is not None and taken != backend:
         # mujoco.Renderer makes the context MuJoCo chose when it was imported: too late now

@@ -586,10 +586,17 @@ class Physics(Bind):
             raise InvalidValueError(
                 f"render: {width}x{height} is larger than the model's offscreen buffer "
                 f"({offwidth}x{offheight}); set <visual><global offwidth=... offheight=.../>")
-        try:
-            renderer = mujoco.Renderer(self.model, height, width)
-        except Exception as error:  # noqa: BLE001  # OpenGL fails in many ways: one error
-            raise gl_error(error) from None
+        # GLFW reports why it failed as warnings before the error (no display): they belong
+        # in the one error, not printed ahead of it; on success they are passed on as they came
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                renderer = mujoco.Renderer(self.model, height, width)
+            except Exception as error:  # noqa: BLE001  # OpenGL fails in many ways: one error
+                raise gl_error(error, [str(w.message) for w in caught]) from None
+        for warning in caught:
+            warnings.warn_explicit(warning.message, warning.category, warning.filename,
+                                   warning.lineno)
         self._renderers[(height, width)] = renderer
         return renderer
 
