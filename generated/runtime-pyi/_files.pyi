@@ -43,7 +43,8 @@ class CollectedFiles:
     def name_of(self, element: Element, attribute: AttributeSpec) -> str:
         """The flat name of the file ``element``'s ``attribute`` holds."""
         ...
-ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]], bytes]
+ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]],
+                           bytes | None]
 
 def compiler_folders(model: ModelBase) -> dict[str, str]:
     """Values of the root's folder attributes (meshdir, texturedir, assetdir, strippath),
@@ -113,6 +114,10 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
                   models: tuple[str, ...] = ()) -> CollectedFiles:
     """Name (see :func:`name_files`) and read every file the model uses; ``models`` are
     the MJCF files being read (to refuse one that uses itself)."""
+    ...
+
+def is_model_asset(element: Element, attribute: AttributeSpec) -> bool:
+    """Whether the attribute holds a model MuJoCo reads (an ``<asset><model file>``)."""
     ...
 
 def file_stem(file: str) -> str:

@@ -77,8 +77,9 @@ class CollectedFiles:
 
 # An MJCF file the model uses, rewritten to find its files among those collected: (the model
 # that uses it, path, contents, files collected so far, the MJCF files being read) ->
-# contents (as they were when the file is not MJCF).
-ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]], bytes]
+# contents (None when the file is not MJCF the library reads).
+ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]],
+                           bytes | None]
 
 
 def compiler_folders(model: ModelBase) -> dict[str, str]:
@@ -299,16 +300,40 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
         folders = compiler_folders(owner)
         contents, path = _read(element, attribute, value, owner, folders,
                                _tree.memory_files(owner), collected)
-        if is_model_file_name(name):
+        model_asset = is_model_asset(element, attribute)
+        if model_asset or is_model_file_name(name):
             if path in models:
                 raise InvalidValueError(
                     f"{element.path}: {attribute.py_name}: {path} uses itself "
                     f"(through {' -> '.join(models)})")
-            contents = model_file(owner, path, contents, collected, (*models, path))
+            rewritten = model_file(owner, path, contents, collected, (*models, path))
+            if rewritten is None and model_asset:
+                _unread_model(owner, element, attribute, value, path)
+            contents = contents if rewritten is None else rewritten
         if scoped:
             contents = scope_bone_names(contents, scoped, element.path)
         collected.files[name] = contents
     return collected
+
+
+def is_model_asset(element: Element, attribute: AttributeSpec) -> bool:
+    """Whether the attribute holds a model MuJoCo reads (an ``<asset><model file>``)."""
+    return (attribute.kind == "file"
+            and element.spec.namespace in grammar_facts().named_from_contents)
+
+
+def _unread_model(owner: ModelBase, element: Element, attribute: AttributeSpec, value: str,
+                  path: str) -> None:
+    """A model file the library cannot read is refused unless ``owner`` reads anywhere:
+    passed on unread, MuJoCo would read every file it names, wherever it is."""
+    access = _tree.file_access(owner)
+    if access.roots is None:
+        return
+    source, line = _tree.source_of(element) or (None, None)
+    raise FileAccessError(
+        f"{element.path}: {attribute.py_name}={value!r}: {path} is not MJCF typed-mjcf can "
+        f"read (well-formed XML whose root is <{owner.spec.tag}>), so the files it names "
+        f"cannot be kept to {access.where}; {access.hint}", source, line)
 
 
 def _contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,

@@ -79,6 +79,10 @@ def test_a_file_outside_the_folder_is_refused_wherever_it_is_read(
     assert not (layout / "out").exists() or not os.listdir(layout / "out")
     # allowed explicitly, the same file is read
     allowed = mjcf.from_path(path, files=mjcf.FileAccess(roots=[layout]))
+    if tag == "model":  # not MJCF: MuJoCo would read what it names anywhere (test below)
+        with pytest.raises(mjcf.FileAccessError, match="secret.stl is not MJCF"):
+            allowed.get_assets()
+        allowed = mjcf.from_path(path, files=mjcf.FileAccess(anywhere=True))
     assert SECRET in allowed.get_assets().values()
 
 
@@ -208,6 +212,34 @@ def test_a_model_asset_reads_as_its_owner_may(layout: Path) -> None:
                                "</asset></mujoco>")
     with pytest.raises(mjcf.FileAccessError, match=r"file='../secret.xml'.*outside"):
         mjcf.from_path(path).get_assets()
+
+
+@pytest.mark.parametrize(("name", "text"), [
+    # MuJoCo's XML reader takes a "<" in an attribute value; libxml2 does not
+    ("sub.xml", ("<mujoco model='a<b'><include file='{outside}/secret.xml'/><asset>"
+                "<mesh file='{outside}/secret.stl'/></asset></mujoco>")),
+    # MuJoCo reads a URDF model asset (and its meshes, anywhere); it is no MJCF
+    ("r.urdf", ("<robot name='r'><link name='l'><collision><geometry>"
+               "<mesh filename='{outside}/secret.stl'/></geometry></collision></link></robot>")),
+])
+def test_a_model_asset_the_library_cannot_read_is_refused(layout: Path, name: str,
+                                                          text: str) -> None:
+    """Passed on unread, MuJoCo would read every file it names, anywhere."""
+    (layout / "model" / name).write_text(text.format(outside=layout))
+    path = write_model(layout, f"<mujoco><asset><model name='sub' file='{name}'/></asset>"
+                               f"<worldbody><attach model='sub' prefix='s'/></worldbody>"
+                               f"</mujoco>")
+    model = mjcf.from_path(path)
+    expected = (rf"main.xml:1: asset/model\[sub\]: file='{name}': .*{name} is not MJCF "
+                rf"typed-mjcf can read \(well-formed XML whose root is <mujoco>\), so the "
+                rf"files it names cannot be kept to the model's folder {layout / 'model'}; pass")
+    for read in (model.get_assets, model.compile, lambda: mjcf.Physics.from_mjcf_model(model),
+                 lambda: mjcf.export_with_assets(model, layout / "out")):
+        with pytest.raises(mjcf.FileAccessError, match=expected):
+            read()
+    no_secret_anywhere(layout / "model")
+    trusted = mjcf.from_path(path, files=mjcf.FileAccess(anywhere=True))
+    assert trusted.get_assets() == {name: (layout / "model" / name).read_bytes()}
 
 
 def test_text_without_a_folder_is_confined_to_the_current_folder(
