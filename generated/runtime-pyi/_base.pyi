@@ -91,6 +91,14 @@ class Element(_tree.Element):
         (``<option>``, ``<contact>``, ...) is removed only with ``affect_attachments=True``,
         which removes it in every attached model too."""
         ...
+    def paste(self, element: _tree.E, position: int | None = None) -> _tree.E:
+        """Add a deep copy of ``element`` (from this model or another) as a child; return it.
+
+        References inside the copied subtree point into the copy; references to elements
+        outside it are kept by name, to resolve in this model. Names must be free here. The
+        copy keeps the files its original may read (see ``include_copy``).
+        """
+        ...
     def to_xml_string(self, prefix_root: NameScope | None = None, self_only: bool = False,
                       pretty_print: bool = True, debug_context: object = None, *,
                       precision: int | None = None, zero_threshold: float = 0.0,

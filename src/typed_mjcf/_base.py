@@ -19,7 +19,7 @@ from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._compose import attach, attached_children, detach, include_copy
 from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._defaults import resolve
-from typed_mjcf._files import file_stem
+from typed_mjcf._files import copied_files, file_stem, rebase_files
 from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import repr_mimebundle, repr_png
 from typed_mjcf._preview import FreeView, render, render_png
@@ -230,6 +230,21 @@ class Element(_tree.Element):
         else:
             check_removable(self)
         _tree.remove_subtree(self)
+
+    def paste(self, element: _tree.E, position: int | None = None) -> _tree.E:
+        """Add a deep copy of ``element`` (from this model or another) as a child; return it.
+
+        References inside the copied subtree point into the copy; references to elements
+        outside it are kept by name, to resolve in this model. Names must be free here. The
+        copy keeps the files its original may read (see ``include_copy``).
+        """
+        source, target = _tree.model_of(element), _tree.model_of(self)
+        files = ({} if source is None or target is None else
+                 copied_files(element, source, target))  # refused before anything changes
+        clone = super().paste(element, position)
+        if target is not None:
+            rebase_files(clone, element, files, target)
+        return clone
 
     # ------------------------------------------------------------------ export
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 import copy
 import os
 import zipfile
+from collections.abc import Callable
 from pathlib import Path
 
 import mujoco
@@ -305,6 +306,37 @@ def test_a_copy_keeps_the_confinement(layout: Path) -> None:
                                                "</asset></mujoco>"))
     with pytest.raises(mjcf.FileAccessError):
         copy.deepcopy(model).get_assets()
+
+
+def test_include_copy_and_paste_keep_the_confinement(layout: Path) -> None:
+    """A copy reads its files as its original may: refused at once, nothing copied."""
+    model = mjcf.from_path(write_model(layout, f"<mujoco><asset><mesh name='p' "
+                                               f"file='{layout / 'secret.stl'}'/></asset></mujoco>"))
+    expected = rf"asset/mesh\[p\]: file='.*secret.stl': {layout / 'secret.stl'} is outside"
+    with pytest.raises(mjcf.FileAccessError, match=expected):
+        model.get_assets()
+    copies: list[Callable[[mjcf.RootElement], object]] = [
+        lambda root: root.include_copy(model), lambda root: root.asset.paste(model.asset.mesh[0])]
+    for copy_into in copies:
+        root = mjcf.RootElement()
+        with pytest.raises(mjcf.FileAccessError, match=expected):
+            copy_into(root)
+        assert root.find_all("mesh") == []
+    # a file inside goes along with the copy (an absolute path too), as its original read it
+    (layout / "model" / "box.stl").write_bytes(box_stl())
+    inside = mjcf.from_path(write_model(layout, f"<mujoco><asset><mesh name='b' "
+                                                f"file='{layout / 'model' / 'box.stl'}'/>"
+                                                f"</asset></mujoco>", "inside.xml"))
+    root = mjcf.RootElement()
+    root.asset.paste(inside.asset.mesh[0])
+    assert root.get_assets() == {"box.stl": box_stl()}
+    # a model asset's own files would be read as the copy's new model may: attach it instead
+    (layout / "model" / "sub.xml").write_text("<mujoco/>")
+    owner = mjcf.from_path(write_model(layout, "<mujoco><asset><model name='s' file='sub.xml'/>"
+                                               "</asset></mujoco>", "owner.xml"))
+    with pytest.raises(mjcf.FileAccessError, match=r"file='sub.xml': a copy of a model asset "
+                                                   r".*; attach the model instead"):
+        mjcf.RootElement().include_copy(owner)
 
 
 def test_file_access_is_checked() -> None:
