@@ -235,12 +235,15 @@ class Element(_tree.Element):
         """Add a deep copy of ``element`` (from this model or another) as a child; return it.
 
         References inside the copied subtree point into the copy; references to elements
-        outside it are kept by name, to resolve in this model. Names must be free here. The
-        copy keeps the files its original may read (see ``include_copy``).
+        outside it are kept by name, to resolve in this model. Names must be free here. From a
+        model kept to some folders, the copy takes its files along, read (or refused) now under
+        that model's rules, as ``include_copy`` does.
         """
-        source, target = _tree.model_of(element), _tree.model_of(self)
-        files = ({} if source is None or target is None else
-                 copied_files(element, source, target))  # refused before anything changes
+        # a detached element (a deepcopy, a removed one) keeps its model's scope: its rules
+        source = _tree.model_of(element) or _tree.scope_model(_tree.scope_of(element))
+        target = _tree.model_of(self)
+        confined = _tree.file_access(source).roots is not None  # else: paths kept, as ever
+        files = {} if target is None or not confined else copied_files(element, source, target)
         clone = super().paste(element, position)
         if target is not None:
             rebase_files(clone, element, files, target)
@@ -366,7 +369,9 @@ class ModelRoot(Element, _tree.ModelBase):
         """Merge a copy of ``other``'s contents into this model (dm_control's
         ``include_copy``): its sections' children are copied in (references among them point
         at the copies), and its global settings are adopted where this model leaves them
-        unset; a setting both give differently is an error unless ``override_attributes``."""
+        unset; a setting both give differently is an error unless ``override_attributes``.
+        The copies keep naming their files, which this model is given in memory; from a model
+        kept to some folders, every one is read (or refused) now, under that model's rules."""
         include_copy(self, other, override_attributes)
 
     def iter_exported(self) -> Iterator[Element]:

@@ -312,14 +312,16 @@ def test_include_copy_and_paste_keep_the_confinement(layout: Path) -> None:
     """A copy reads its files as its original may: refused at once, nothing copied."""
     model = mjcf.from_path(write_model(layout, f"<mujoco><asset><mesh name='p' "
                                                f"file='{layout / 'secret.stl'}'/></asset></mujoco>"))
-    expected = rf"asset/mesh\[p\]: file='.*secret.stl': {layout / 'secret.stl'} is outside"
-    with pytest.raises(mjcf.FileAccessError, match=expected):
+    outside = rf"file='.*secret.stl': {layout / 'secret.stl'} is outside"
+    with pytest.raises(mjcf.FileAccessError, match=rf"asset/mesh\[p\]: {outside}"):
         model.get_assets()
-    copies: list[Callable[[mjcf.RootElement], object]] = [
-        lambda root: root.include_copy(model), lambda root: root.asset.paste(model.asset.mesh[0])]
-    for copy_into in copies:
+    copies: list[tuple[Callable[[mjcf.RootElement], object], str]] = [
+        (lambda root: root.include_copy(model), r"asset/mesh\[p\]"),
+        (lambda root: root.asset.paste(model.asset.mesh[0]), r"asset/mesh\[p\]"),
+        (lambda root: root.asset.paste(copy.deepcopy(model.asset.mesh[0])), "<mesh>")]  # detached
+    for copy_into, where in copies:
         root = mjcf.RootElement()
-        with pytest.raises(mjcf.FileAccessError, match=expected):
+        with pytest.raises(mjcf.FileAccessError, match=rf"{where}: {outside}"):
             copy_into(root)
         assert root.find_all("mesh") == []
     # a file inside goes along with the copy (an absolute path too), as its original read it
