@@ -57,6 +57,8 @@ SLOW = {
                                       "older release",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
     "safety/test_fuzz.py": "thousands of mutated models",
+    "safety/test_file_races.py::test_a_writer_swapping_links_in_a_loop_reads_nothing_outside":
+        "reads for 4 seconds while a thread swaps links",
     "render/test_gl.py::test_physics_render_after_mujoco_chose_glfw_says_to_set_mujoco_gl_first":
         "MuJoCo's renderer in a subprocess",
     "safety/test_crashes.py::test_plugins_mujoco_answers_are_not_refused_for_crashing":

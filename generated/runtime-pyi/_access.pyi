@@ -8,8 +8,14 @@ widens (or narrows) that with a :class:`FileAccess`. A model from a zip archive 
 the archive's files. A model built in Python reads the files its author names.
 
 Reading never blocks or runs away: only regular files are read (not a FIFO, a device such as
-``/dev/zero``, a folder), through a descriptor opened without following a last-moment link,
-and never more than the bytes the limit leaves.
+``/dev/zero``, a folder), and never more than the bytes the limit leaves.
+
+The file opened is the file checked (:func:`open_confined`, the one way a model's file is
+opened): the path is resolved and checked, then opened folder by folder from the allowed
+folder's descriptor (``os.open`` with ``dir_fd``) without following any link, so a link swapped
+into the path meanwhile is met, not followed; the path is then resolved and checked again.
+Where ``os.open`` takes no ``dir_fd`` (Windows), the resolved path is opened without following
+its last component only.
 """
 from __future__ import annotations
 import os
@@ -59,8 +65,9 @@ class Confinement:
     where: str
     max_bytes: int = DEFAULT_ACCESS.max_bytes
     hint: str = _HINT
-    def refusal(self, path: str) -> str | None:
-        """Why ``path`` may not be read (``None``: it may)."""
+    def resolve(self, path: str) -> tuple[str, str] | str | None:
+        """``path`` resolved and the allowed folder holding it, or why it may not be read
+        (``None``: anywhere)."""
         ...
 ANYWHERE: Final = Confinement(None, "anywhere")
 
@@ -79,11 +86,25 @@ def read_file(path: str, confinement: Confinement, limit: int) -> bytes:
     """The bytes of the regular file at ``path``, if ``confinement`` allows it and it holds
     at most ``limit`` bytes. Raises :class:`Refused` (not allowed, too large) or ``OSError``."""
     ...
+_NOFOLLOW: Final = getattr(os, "O_NOFOLLOW", 0)
+WALKS: Final = (os.open in os.supports_dir_fd and bool(_NOFOLLOW)
+                and hasattr(os, "O_DIRECTORY"))
+
+def open_confined(path: str, confinement: Confinement) -> BinaryIO:
+    """The regular file at ``path`` opened for reading, if ``confinement`` allows it:
+    ``Refused`` if not, ``OSError`` if it cannot be read. The file opened is the one checked
+    (see the module docstring); a path whose links keep changing is an ``OSError``."""
+    ...
+
+def _walk(root: str, relative: str) -> int | None:
+    """``relative`` opened under the folder ``root`` one name at a time, following no link:
+    a descriptor, or ``None`` when a symbolic link is met (the path changed)."""
+    ...
 
 def open_regular(path: str) -> BinaryIO:
     """``path`` opened for reading if it is a regular file (``OSError`` otherwise): opening
-    does not block (a FIFO), and a link put in place after ``path`` was resolved is not
-    followed."""
+    does not block (a FIFO), and a link put in place of its last component after ``path``
+    was resolved is not followed (for files read anywhere; see :func:`open_confined`)."""
     ...
 
 def too_large(size: int, limit: int) -> str: ...

@@ -91,6 +91,15 @@ class Element(_tree.Element):
         (``<option>``, ``<contact>``, ...) is removed only with ``affect_attachments=True``,
         which removes it in every attached model too."""
         ...
+    def paste(self, element: _tree.E, position: int | None = None) -> _tree.E:
+        """Add a deep copy of ``element`` (from this model or another) as a child; return it.
+
+        References inside the copied subtree point into the copy; references to elements
+        outside it are kept by name, to resolve in this model. Names must be free here. From a
+        model kept to some folders, the copy takes its files along, read (or refused) now under
+        that model's rules, as ``include_copy`` does.
+        """
+        ...
     def to_xml_string(self, prefix_root: NameScope | None = None, self_only: bool = False,
                       pretty_print: bool = True, debug_context: object = None, *,
                       precision: int | None = None, zero_threshold: float = 0.0,
@@ -177,7 +186,9 @@ class ModelRoot(Element, _tree.ModelBase):
         """Merge a copy of ``other``'s contents into this model (dm_control's
         ``include_copy``): its sections' children are copied in (references among them point
         at the copies), and its global settings are adopted where this model leaves them
-        unset; a setting both give differently is an error unless ``override_attributes``."""
+        unset; a setting both give differently is an error unless ``override_attributes``.
+        The copies keep naming their files, which this model is given in memory; from a model
+        kept to some folders, every one is read (or refused) now, under that model's rules."""
         ...
     def iter_exported(self) -> Iterator[Element]:
         """Every element of the composed model, in the order the exported XML has them:

@@ -43,7 +43,8 @@ class CollectedFiles:
     def name_of(self, element: Element, attribute: AttributeSpec) -> str:
         """The flat name of the file ``element``'s ``attribute`` holds."""
         ...
-ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]], bytes]
+ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]],
+                           bytes | None]
 
 def compiler_folders(model: ModelBase) -> dict[str, str]:
     """Values of the root's folder attributes (meshdir, texturedir, assetdir, strippath),
@@ -56,13 +57,27 @@ def resolve_path(model: ModelBase, attribute: AttributeSpec, file: str,
     (absolute, or relative to the model's directory)."""
     ...
 
-def rebase_files(copy: Element, source: ModelBase, target: ModelBase) -> None:
-    """A copy of ``source``'s elements, now in ``target`` (``include_copy``), keeps naming
-    the files it named there. As dm_control's copy holds the file itself, ``target`` is given
-    the file's contents in memory under the name the copy keeps; where it holds other
+def copied_files(original: Element, source: ModelBase,
+                 target: ModelBase) -> dict[tuple[int, str], bytes]:
+    """The contents of the files that a copy of ``original`` (an element of ``source``, or
+    ``source`` itself) into ``target`` takes along (``include_copy``, ``paste``), by (id of
+    the element, attribute), read as ``source`` may read them; nothing is copied yet.
+
+    A copy keeps its original's confinement: from a model that may read only some folders,
+    every file the copy names is read now, under that model's rules (refused, or missing:
+    the error ``get_assets()`` would give), and a ``<model>`` asset, whose own files would be
+    read as ``target`` may, is refused. From a model that reads anywhere, a relative file
+    that can be read is taken along and any other stays as it was (an error, if any, comes
+    when the model is written)."""
+    ...
+
+def rebase_files(copy: Element, original: Element, files: dict[tuple[int, str], bytes],
+                 target: ModelBase) -> None:
+    """A copy of ``original`` (now in ``target``) keeps naming the files it named (``files``:
+    see :func:`copied_files`). As dm_control's copy holds the file itself, ``target`` is
+    given the file's contents in memory under the name the copy keeps; where it holds other
     contents by that name, under that name with a ``-2`` (``-3``...) suffix, which the copy
-    then names. A file ``source`` cannot read stays as it was (the error comes when the model
-    is written)."""
+    then names."""
     ...
 
 def absolute_file(model: ModelBase, attribute: AttributeSpec, file: str) -> str:
@@ -113,6 +128,10 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
                   models: tuple[str, ...] = ()) -> CollectedFiles:
     """Name (see :func:`name_files`) and read every file the model uses; ``models`` are
     the MJCF files being read (to refuse one that uses itself)."""
+    ...
+
+def is_model_asset(element: Element, attribute: AttributeSpec) -> bool:
+    """Whether the attribute holds a model MuJoCo reads (an ``<asset><model file>``)."""
     ...
 
 def file_stem(file: str) -> str:

@@ -28,9 +28,10 @@ from typed_mjcf._access import (
     DEFAULT_ACCESS,
     Confinement,
     FileAccess,
+    Refused,
     check_count,
     confine,
-    open_regular,
+    open_confined,
 )
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import (

@@ -6,7 +6,7 @@ from collections.abc import Callable
 from typing import Final
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._export import FileNamer, Writer
-from typed_mjcf._files import CollectedFiles, collect_files, is_model_file_name
+from typed_mjcf._files import CollectedFiles, collect_files
 from typed_mjcf._names import NameScope
 from typed_mjcf._tree import Element, ModelBase
 NO_ATTRIBUTES: Final[frozenset[str]] = ...
@@ -38,9 +38,10 @@ def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT, pretty_print: bool 
     ...
 
 def rewrite_model_file(owner: ModelBase, path: str, contents: bytes, collected: CollectedFiles,
-                       models: tuple[str, ...]) -> bytes:
+                       models: tuple[str, ...]) -> bytes | None:
     """An MJCF file the model uses (an ``<asset><model>``), rewritten to find its own files
     among ``collected``: MuJoCo resolves them against its own folder and ``<compiler>``, and
     in a virtual file system they get flat names like the main model's. It reads files as
-    ``owner`` may (the same folders, the same files in memory)."""
+    ``owner`` may (the same folders, the same files in memory). ``None`` when it is not MJCF
+    the library reads (see :func:`~typed_mjcf._files.collect_files`)."""
     ...

@@ -8,7 +8,7 @@ only those in its own folder). Every failure is a :class:`~typed_mjcf.ParseError
 from __future__ import annotations
 import os
 from collections.abc import Mapping
-from typing import IO, TYPE_CHECKING, Final, cast
+from typing import IO, TYPE_CHECKING, cast
 from typed_mjcf._access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
 from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 from typed_mjcf._tree import ModelBase, name_after_files

@@ -7,8 +7,14 @@ widens (or narrows) that with a :class:`FileAccess`. A model from a zip archive 
 the archive's files. A model built in Python reads the files its author names.
 
 Reading never blocks or runs away: only regular files are read (not a FIFO, a device such as
-``/dev/zero``, a folder), through a descriptor opened without following a last-moment link,
-and never more than the bytes the limit leaves.
+``/dev/zero``, a folder), and never more than the bytes the limit leaves.
+
+The file opened is the file checked (:func:`open_confined`, the one way a model's file is
+opened): the path is resolved and checked, then opened folder by folder from the allowed
+folder's descriptor (``os.open`` with ``dir_fd``) without following any link, so a link swapped
+into the path meanwhile is met, not followed; the path is then resolved and checked again.
+Where ``os.open`` takes no ``dir_fd`` (Windows), the resolved path is opened without following
+its last component only.
 """
 
 from __future__ import annotations
@@ -93,8 +99,9 @@ class Confinement:
     max_bytes: int = DEFAULT_ACCESS.max_bytes
     hint: str = _HINT
 
-    def refusal(self, path: str) -> str | None:
-        """Why ``path`` may not be read (``None``: it may)."""
+    def resolve(self, path: str) -> tuple[str, str] | str | None:
+        """``path`` resolved and the allowed folder holding it, or why it may not be read
+        (``None``: anywhere)."""
         if self.roots is None:
             return None
         real = _real(path)
@@ -102,8 +109,9 @@ class Confinement:
             return f"not among {self.where}; {self.hint}"
         if real is None:
             return f"{path!r} is not a path a file can have (a NUL character?)"
-        if any(_inside(real, root) for root in self.roots):
-            return None
+        for root in self.roots:
+            if _inside(real, root):
+                return real, root
         shown = path if real == path else f"{path} (really {real})"
         return f"{shown} is outside {self.where}; {self.hint}"
 
@@ -144,10 +152,7 @@ class Refused(Exception):
 def read_file(path: str, confinement: Confinement, limit: int) -> bytes:
     """The bytes of the regular file at ``path``, if ``confinement`` allows it and it holds
     at most ``limit`` bytes. Raises :class:`Refused` (not allowed, too large) or ``OSError``."""
-    reason = confinement.refusal(path)
-    if reason is not None:
-        raise Refused(reason)
-    with open_regular(path) as file:
+    with open_confined(path, confinement) as file:
         size = os.fstat(file.fileno()).st_size
         if size > limit:
             raise Refused(too_large(size, limit))
@@ -157,21 +162,88 @@ def read_file(path: str, confinement: Confinement, limit: int) -> bytes:
     return data
 
 
+_NOFOLLOW: Final = getattr(os, "O_NOFOLLOW", 0)
+_CLOEXEC: Final = getattr(os, "O_CLOEXEC", 0)
+_FILE_FLAGS: Final = (os.O_RDONLY | _NOFOLLOW | getattr(os, "O_NONBLOCK", 0) | _CLOEXEC
+                      | getattr(os, "O_BINARY", 0))  # a FIFO must not block the open
+_FOLDER_FLAGS: Final = os.O_RDONLY | getattr(os, "O_DIRECTORY", 0) | _NOFOLLOW | _CLOEXEC
+# Whether a path can be opened folder by folder without following links (POSIX; not Windows)
+WALKS: Final = (os.open in os.supports_dir_fd and bool(_NOFOLLOW)
+                and hasattr(os, "O_DIRECTORY"))
+_RESOLUTIONS: Final = 8  # how often a path that changes while it is opened is resolved again
+
+
+def open_confined(path: str, confinement: Confinement) -> BinaryIO:
+    """The regular file at ``path`` opened for reading, if ``confinement`` allows it:
+    ``Refused`` if not, ``OSError`` if it cannot be read. The file opened is the one checked
+    (see the module docstring); a path whose links keep changing is an ``OSError``."""
+    last: str | None = None
+    for _ in range(_RESOLUTIONS):
+        found = confinement.resolve(path)
+        if isinstance(found, str):
+            raise Refused(found)
+        if found is None or not WALKS:
+            return open_regular(path)
+        real, root = found
+        if real == last:  # resolved alike, yet a link is in the way: it leads in a loop
+            raise OSError(errno.ELOOP, "a symbolic link that leads in a loop")
+        fd = _walk(root, os.path.relpath(real, root))
+        if fd is not None:
+            return _regular(fd)
+        last = real  # a link was met where the path had none: resolve and check again
+    raise OSError(errno.ELOOP, "its folders or links kept changing while it was opened")
+
+
+def _walk(root: str, relative: str) -> int | None:
+    """``relative`` opened under the folder ``root`` one name at a time, following no link:
+    a descriptor, or ``None`` when a symbolic link is met (the path changed)."""
+    parts = [part for part in relative.split(os.sep) if part not in ("", os.curdir)]
+    if not parts:  # the allowed folder itself
+        raise OSError(errno.EISDIR, "it is a folder")
+    folder = os.open(root, _FOLDER_FLAGS)
+    try:
+        for index, part in enumerate(parts):
+            last = index == len(parts) - 1
+            try:
+                fd = os.open(part, _FILE_FLAGS if last else _FOLDER_FLAGS, dir_fd=folder)
+            except OSError as error:
+                if error.errno in (errno.ELOOP, errno.ENOTDIR, errno.EMLINK) and _is_link(
+                        part, folder):
+                    return None
+                raise
+            os.close(folder)
+            folder = fd
+        return folder
+    except BaseException:
+        os.close(folder)
+        raise
+
+
+def _is_link(name: str, folder: int) -> bool:
+    try:
+        return stat.S_ISLNK(os.stat(name, dir_fd=folder, follow_symlinks=False).st_mode)
+    except OSError:
+        return False
+
+
 def open_regular(path: str) -> BinaryIO:
     """``path`` opened for reading if it is a regular file (``OSError`` otherwise): opening
-    does not block (a FIFO), and a link put in place after ``path`` was resolved is not
-    followed."""
+    does not block (a FIFO), and a link put in place of its last component after ``path``
+    was resolved is not followed (for files read anywhere; see :func:`open_confined`)."""
     real = _real(path)
     if real is None:
         raise OSError(errno.EINVAL, "not a valid path")
-    flags = (os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0)
-             | getattr(os, "O_CLOEXEC", 0) | getattr(os, "O_BINARY", 0))
     try:
-        fd = os.open(real, flags)
+        fd = os.open(real, _FILE_FLAGS)
     except OSError as error:
         if error.errno == errno.ELOOP:
             raise OSError(errno.ELOOP, "a symbolic link that leads in a loop") from None
         raise
+    return _regular(fd)
+
+
+def _regular(fd: int) -> BinaryIO:
+    """The open file ``fd`` if it is a regular file (closed, ``OSError`` otherwise)."""
     try:
         mode = os.fstat(fd).st_mode
         if not stat.S_ISREG(mode):  # a FIFO or /dev/zero would never end

@@ -19,7 +19,7 @@ from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._compose import attach, attached_children, detach, include_copy
 from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._defaults import resolve
-from typed_mjcf._files import file_stem
+from typed_mjcf._files import copied_files, file_stem, rebase_files
 from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import repr_mimebundle, repr_png
 from typed_mjcf._preview import FreeView, render, render_png
@@ -231,6 +231,24 @@ class Element(_tree.Element):
             check_removable(self)
         _tree.remove_subtree(self)
 
+    def paste(self, element: _tree.E, position: int | None = None) -> _tree.E:
+        """Add a deep copy of ``element`` (from this model or another) as a child; return it.
+
+        References inside the copied subtree point into the copy; references to elements
+        outside it are kept by name, to resolve in this model. Names must be free here. From a
+        model kept to some folders, the copy takes its files along, read (or refused) now under
+        that model's rules, as ``include_copy`` does.
+        """
+        # a detached element (a deepcopy, a removed one) keeps its model's scope: its rules
+        source = _tree.model_of(element) or _tree.scope_model(_tree.scope_of(element))
+        target = _tree.model_of(self)
+        confined = _tree.file_access(source).roots is not None  # else: paths kept, as ever
+        files = {} if target is None or not confined else copied_files(element, source, target)
+        clone = super().paste(element, position)
+        if target is not None:
+            rebase_files(clone, element, files, target)
+        return clone
+
     # ------------------------------------------------------------------ export
 
     def to_xml_string(self, prefix_root: NameScope | None = None, self_only: bool = False,
@@ -351,7 +369,9 @@ class ModelRoot(Element, _tree.ModelBase):
         """Merge a copy of ``other``'s contents into this model (dm_control's
         ``include_copy``): its sections' children are copied in (references among them point
         at the copies), and its global settings are adopted where this model leaves them
-        unset; a setting both give differently is an error unless ``override_attributes``."""
+        unset; a setting both give differently is an error unless ``override_attributes``.
+        The copies keep naming their files, which this model is given in memory; from a model
+        kept to some folders, every one is read (or refused) now, under that model's rules."""
         include_copy(self, other, override_attributes)
 
     def iter_exported(self) -> Iterator[Element]:

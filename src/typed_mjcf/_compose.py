@@ -13,7 +13,7 @@ from collections.abc import Mapping
 
 from typed_mjcf import _tree
 from typed_mjcf._export import folder_attributes
-from typed_mjcf._files import rebase_files
+from typed_mjcf._files import copied_files, rebase_files
 from typed_mjcf._merge import combine, rule_of
 from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._tree import Element, ModelBase, grammar_facts, same_value
@@ -202,13 +202,14 @@ def include_copy(model: ModelBase, other: ModelBase, override_attributes: bool) 
     ``override_attributes``; a global setting both give differently is an error."""
     if other is model:
         raise ChildError("cannot include a copy of a model into itself")
+    files = copied_files(other, other, model)  # read (or refused) before anything changes
     _merge_into(model, other, override_attributes,
-                (_tree.scope_of(other).name or UNNAMED_MODEL, other, model))
+                (_tree.scope_of(other).name or UNNAMED_MODEL, files, model))
 
 
 def _merge_into(target: Element, source: Element, override: bool,
-                models: tuple[str, ModelBase, ModelBase]) -> None:
-    name, source_model, target_model = models  # the source's name, the source, the target
+                models: tuple[str, dict[tuple[int, str], bytes], ModelBase]) -> None:
+    name, files, target_model = models  # the source's name, its files, the target
     stored = _tree.values(target)
     problems: list[str] = []
     for attribute_name in _tree.values(source):
@@ -235,6 +236,6 @@ def _merge_into(target: Element, source: Element, override: bool,
             existing = next((c for c in _tree.children(target) if c.spec.tag == child.spec.tag
                              and _tree.element_name(c) == child_name), None)
         if existing is None:
-            rebase_files(target.paste(child), source_model, target_model)
+            rebase_files(_tree.Element.paste(target, child), child, files, target_model)
         else:
             _merge_into(existing, child, override, models)

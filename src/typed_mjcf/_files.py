@@ -77,8 +77,9 @@ class CollectedFiles:
 
 # An MJCF file the model uses, rewritten to find its files among those collected: (the model
 # that uses it, path, contents, files collected so far, the MJCF files being read) ->
-# contents (as they were when the file is not MJCF).
-ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]], bytes]
+# contents (None when the file is not MJCF the library reads).
+ModelFileWriter = Callable[[ModelBase, str, bytes, CollectedFiles, tuple[str, ...]],
+                           bytes | None]
 
 
 def compiler_folders(model: ModelBase) -> dict[str, str]:
@@ -110,26 +111,63 @@ def resolve_path(model: ModelBase, attribute: AttributeSpec, file: str,
     return os.path.normpath(os.path.join(base, folder, file))
 
 
-def rebase_files(copy: Element, source: ModelBase, target: ModelBase) -> None:
-    """A copy of ``source``'s elements, now in ``target`` (``include_copy``), keeps naming
-    the files it named there. As dm_control's copy holds the file itself, ``target`` is given
-    the file's contents in memory under the name the copy keeps; where it holds other
-    contents by that name, under that name with a ``-2`` (``-3``...) suffix, which the copy
-    then names. A file ``source`` cannot read stays as it was (the error comes when the model
-    is written)."""
+def copied_files(original: Element, source: ModelBase,
+                 target: ModelBase) -> dict[tuple[int, str], bytes]:
+    """The contents of the files that a copy of ``original`` (an element of ``source``, or
+    ``source`` itself) into ``target`` takes along (``include_copy``, ``paste``), by (id of
+    the element, attribute), read as ``source`` may read them; nothing is copied yet.
+
+    A copy keeps its original's confinement: from a model that may read only some folders,
+    every file the copy names is read now, under that model's rules (refused, or missing:
+    the error ``get_assets()`` would give), and a ``<model>`` asset, whose own files would be
+    read as ``target`` may, is refused. From a model that reads anywhere, a relative file
+    that can be read is taken along and any other stays as it was (an error, if any, comes
+    when the model is written)."""
     if source is target:
-        return
+        return {}
+    confined = _tree.file_access(source).roots is not None
     folders = compiler_folders(source)
-    given, taken = _tree.memory_files(source), _tree.memory_files(target)
+    given = _tree.memory_files(source)
     collected = CollectedFiles()
-    for element in copy.iter_elements():
-        for name, value in list(_tree.values(element).items()):
+    found: dict[tuple[int, str], bytes] = {}
+    for element in original.iter_elements():
+        for name, value in _tree.values(element).items():
             attribute = element.spec.by_name[name]
-            if attribute.kind != "file" or not isinstance(value, str) or os.path.isabs(value):
+            if attribute.kind != "file" or not isinstance(value, str):
+                continue
+            if confined and is_model_asset(element, attribute):
+                raise FileAccessError(
+                    f"{element.path}: {attribute.py_name}={value!r}: a copy of a model asset "
+                    f"of a model that may read only {_tree.file_access(source).where} would "
+                    f"read the files that model names as this model may; attach the model "
+                    f"instead (an attached model keeps its own rules)",
+                    *(_tree.source_of(element) or (None, None)))
+            if not confined and os.path.isabs(value):
                 continue
             try:
                 contents = _read(element, attribute, value, source, folders, given, collected)[0]
             except MjcfError:
+                if confined:
+                    raise
+                continue
+            found[(id(element), name)] = contents
+    return found
+
+
+def rebase_files(copy: Element, original: Element, files: dict[tuple[int, str], bytes],
+                 target: ModelBase) -> None:
+    """A copy of ``original`` (now in ``target``) keeps naming the files it named (``files``:
+    see :func:`copied_files`). As dm_control's copy holds the file itself, ``target`` is
+    given the file's contents in memory under the name the copy keeps; where it holds other
+    contents by that name, under that name with a ``-2`` (``-3``...) suffix, which the copy
+    then names."""
+    if not files:
+        return
+    taken = _tree.memory_files(target)
+    for element, mine in zip(original.iter_elements(), copy.iter_elements(), strict=True):
+        for name, value in list(_tree.values(mine).items()):
+            contents = files.get((id(element), name))
+            if contents is None or not isinstance(value, str):
                 continue
             key, stem, extension, n = value, *os.path.splitext(value), 1
             while taken.get(key, contents) != contents:  # another file by that name here
@@ -137,7 +175,7 @@ def rebase_files(copy: Element, source: ModelBase, target: ModelBase) -> None:
                 key = f"{stem}-{n}{extension}"
             taken[key] = contents
             if key != value:
-                _tree.assign(element, attribute, key)
+                _tree.assign(mine, mine.spec.by_name[name], key)
 
 
 def absolute_file(model: ModelBase, attribute: AttributeSpec, file: str) -> str:
@@ -299,16 +337,40 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
         folders = compiler_folders(owner)
         contents, path = _read(element, attribute, value, owner, folders,
                                _tree.memory_files(owner), collected)
-        if is_model_file_name(name):
+        model_asset = is_model_asset(element, attribute)
+        if model_asset or is_model_file_name(name):
             if path in models:
                 raise InvalidValueError(
                     f"{element.path}: {attribute.py_name}: {path} uses itself "
                     f"(through {' -> '.join(models)})")
-            contents = model_file(owner, path, contents, collected, (*models, path))
+            rewritten = model_file(owner, path, contents, collected, (*models, path))
+            if rewritten is None and model_asset:
+                _unread_model(owner, element, attribute, value, path)
+            contents = contents if rewritten is None else rewritten
         if scoped:
             contents = scope_bone_names(contents, scoped, element.path)
         collected.files[name] = contents
     return collected
+
+
+def is_model_asset(element: Element, attribute: AttributeSpec) -> bool:
+    """Whether the attribute holds a model MuJoCo reads (an ``<asset><model file>``)."""
+    return (attribute.kind == "file"
+            and element.spec.namespace in grammar_facts().named_from_contents)
+
+
+def _unread_model(owner: ModelBase, element: Element, attribute: AttributeSpec, value: str,
+                  path: str) -> None:
+    """A model file the library cannot read is refused unless ``owner`` reads anywhere:
+    passed on unread, MuJoCo would read every file it names, wherever it is."""
+    access = _tree.file_access(owner)
+    if access.roots is None:
+        return
+    source, line = _tree.source_of(element) or (None, None)
+    raise FileAccessError(
+        f"{element.path}: {attribute.py_name}={value!r}: {path} is not MJCF typed-mjcf can "
+        f"read (well-formed XML whose root is <{owner.spec.tag}>), so the files it names "
+        f"cannot be kept to {access.where}; {access.hint}", source, line)
 
 
 def _contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,

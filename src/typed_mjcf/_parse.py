@@ -38,9 +38,10 @@ from typed_mjcf._access import (
     DEFAULT_ACCESS,
     Confinement,
     FileAccess,
+    Refused,
     check_count,
     confine,
-    open_regular,
+    open_confined,
 )
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._compat import dm_control_behaviour
@@ -381,13 +382,13 @@ def _read_file(path: str, context: _Context, what: str, where: str | None,
                line: int | None, confinement: Confinement = ANYWHERE) -> bytes:
     """A file's bytes, refusing what ``confinement`` does not allow, what is not a regular
     file and what passes ``max_bytes``."""
-    reason = confinement.refusal(path)
-    if reason is not None:
-        raise context.error(f"cannot read {what}: {reason}", where, line, FileAccessError)
     try:
         remaining = max(context.limits.max_bytes - context.bytes_read, 0)
-        with open_regular(path) as f:
+        with open_confined(path, confinement) as f:
             return read_bounded(f.read, remaining, os.fstat(f.fileno()).st_size)
+    except Refused as refused:
+        raise context.error(f"cannot read {what}: {refused}", where, line,
+                            FileAccessError) from None
     except OSError as error:
         reason = error.strerror or str(error)
         raise context.error(f"cannot read {what}: {reason}", where, line,

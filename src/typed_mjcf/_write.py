@@ -11,7 +11,7 @@ from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._export import FileNamer, Writer
-from typed_mjcf._files import CollectedFiles, collect_files, is_model_file_name
+from typed_mjcf._files import CollectedFiles, collect_files
 from typed_mjcf._gc import collector_paused
 from typed_mjcf._keyframes import combine_keyframes, compile_layout, has_keyframes
 from typed_mjcf._names import NameScope
@@ -97,13 +97,14 @@ def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT, pretty_print: bool 
 
 
 def rewrite_model_file(owner: ModelBase, path: str, contents: bytes, collected: CollectedFiles,
-                       models: tuple[str, ...]) -> bytes:
+                       models: tuple[str, ...]) -> bytes | None:
     """An MJCF file the model uses (an ``<asset><model>``), rewritten to find its own files
     among ``collected``: MuJoCo resolves them against its own folder and ``<compiler>``, and
     in a virtual file system they get flat names like the main model's. It reads files as
-    ``owner`` may (the same folders, the same files in memory)."""
-    if not is_model_file_name(path) or not is_model_text(contents):
-        return contents
+    ``owner`` may (the same folders, the same files in memory). ``None`` when it is not MJCF
+    the library reads (see :func:`~typed_mjcf._files.collect_files`)."""
+    if not is_model_text(contents):
+        return None
     memory = _tree.memory_files(owner)
     submodel = parse_text(contents, base_dir=os.path.dirname(path), source=path,
                           options=ParseOptions(memory), access=_tree.file_access(owner))

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Mapping
-from typing import IO, TYPE_CHECKING, Final, cast
+from typing import IO, TYPE_CHECKING, cast
 
 from typed_mjcf._access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
 from typed_mjcf._assets_io import export_with_assets as export
@@ -159,9 +159,6 @@ def from_zip(path: str | os.PathLike[str] | IO[bytes], model_file: str = "model.
     return _typed(model)
 
 
-_DM_CONTROL_ACCESS: Final = FileAccess(anywhere=True)
-
-
 def _read_all(file: IO[str] | IO[bytes], limit: int) -> str | bytes:
     """The file's contents, read in chunks until its end or until more than ``limit``
     characters are read (the parser then refuses the text as too long)."""
@@ -186,10 +183,8 @@ def _read_all(file: IO[str] | IO[bytes], limit: int) -> str | bytes:
 
 
 def _access(files: object) -> FileAccess:
-    if files is None:
-        # dm_control reads any path a model names (its arenas point compiler.texturedir at
-        # their own asset folders, outside the folder of the file they load)
-        return _DM_CONTROL_ACCESS if dm_control_behaviour() else DEFAULT_ACCESS
+    if files is None:  # dm_control's "anywhere" is its facade's (_dmcompat.parser), not ours
+        return DEFAULT_ACCESS
     if not isinstance(files, FileAccess):
         raise InvalidTypeError(f"files must be a typed_mjcf.FileAccess, got {type(files).__name__}")
     return files

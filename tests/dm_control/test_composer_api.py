@@ -4,6 +4,8 @@ and the loaders, each found by running its environments (``test_composer.py``)."
 from __future__ import annotations
 
 import importlib
+import zipfile
+from collections.abc import Callable
 from pathlib import Path
 from typing import cast
 
@@ -106,24 +108,36 @@ def test_render_takes_render_flag_overrides() -> None:
 
 def test_files_outside_the_models_folder_are_read_under_the_switch(tmp_path: Path) -> None:
     """dm_control's arenas load their XML, then point ``compiler.texturedir`` at another
-    folder of theirs: dm_control reads any path a model names."""
+    folder of theirs: dm_control reads any path a model names. Only its loaders do: the
+    typed API's keep a model to its folder, switch or not (a zip to its archive)."""
     folder, textures = tmp_path / "model", tmp_path / "textures"
     folder.mkdir()
     textures.mkdir()
     (folder / "arena.xml").write_text("<mujoco><worldbody/></mujoco>", encoding="utf-8")
     (textures / "grass.png").write_bytes(b"not read as an image here")
+    with zipfile.ZipFile(tmp_path / "arena.zip", "w") as archive:
+        archive.writestr("arena.xml", "<mujoco><asset><texture name='t' type='2d' "
+                                      f"file='{textures / 'grass.png'}'/></asset></mujoco>")
 
-    def load() -> mjcf.RootElement:
-        root = mjcf.from_path(folder / "arena.xml")
+    def load(from_path: Callable[[Path], mjcf.RootElement]) -> mjcf.RootElement:
+        root = from_path(folder / "arena.xml")
         root.compiler.texturedir = str(textures)
         root.asset.add_texture(name="grass", type="2d", file="grass.png")
         return root
 
     with installed():
-        assets = load().get_assets()
-    assert list(assets.values()) == [b"not read as an image here"]
+        dm_control_mjcf = importlib.import_module("dm_control.mjcf")
+        for loader in (dm_control_mjcf.from_path, dm_control_mjcf.parser.from_path):
+            assets = load(loader).get_assets()
+            assert list(assets.values()) == [b"not read as an image here"]
+        assert list(dm_control_mjcf.from_zip(tmp_path / "arena.zip").get_assets().values()) == [
+            b"not read as an image here"]
+        with pytest.raises(FileAccessError, match="outside the model's folder"):
+            load(mjcf.from_path).get_assets()
+        with pytest.raises(FileAccessError, match="not among the files of the archive"):
+            mjcf.from_zip(tmp_path / "arena.zip").get_assets()
     with pytest.raises(FileAccessError, match="outside the model's folder"):
-        load().get_assets()
+        load(mjcf.from_path).get_assets()
 
 
 def test_renderers_are_made_again_after_contexts_is_read() -> None:

@@ -7,6 +7,7 @@ from __future__ import annotations
 import copy
 import os
 import zipfile
+from collections.abc import Callable
 from pathlib import Path
 
 import mujoco
@@ -79,6 +80,10 @@ def test_a_file_outside_the_folder_is_refused_wherever_it_is_read(
     assert not (layout / "out").exists() or not os.listdir(layout / "out")
     # allowed explicitly, the same file is read
     allowed = mjcf.from_path(path, files=mjcf.FileAccess(roots=[layout]))
+    if tag == "model":  # not MJCF: MuJoCo would read what it names anywhere (test below)
+        with pytest.raises(mjcf.FileAccessError, match="secret.stl is not MJCF"):
+            allowed.get_assets()
+        allowed = mjcf.from_path(path, files=mjcf.FileAccess(anywhere=True))
     assert SECRET in allowed.get_assets().values()
 
 
@@ -210,6 +215,34 @@ def test_a_model_asset_reads_as_its_owner_may(layout: Path) -> None:
         mjcf.from_path(path).get_assets()
 
 
+@pytest.mark.parametrize(("name", "text"), [
+    # MuJoCo's XML reader takes a "<" in an attribute value; libxml2 does not
+    ("sub.xml", ("<mujoco model='a<b'><include file='{outside}/secret.xml'/><asset>"
+                "<mesh file='{outside}/secret.stl'/></asset></mujoco>")),
+    # MuJoCo reads a URDF model asset (and its meshes, anywhere); it is no MJCF
+    ("r.urdf", ("<robot name='r'><link name='l'><collision><geometry>"
+               "<mesh filename='{outside}/secret.stl'/></geometry></collision></link></robot>")),
+])
+def test_a_model_asset_the_library_cannot_read_is_refused(layout: Path, name: str,
+                                                          text: str) -> None:
+    """Passed on unread, MuJoCo would read every file it names, anywhere."""
+    (layout / "model" / name).write_text(text.format(outside=layout))
+    path = write_model(layout, f"<mujoco><asset><model name='sub' file='{name}'/></asset>"
+                               f"<worldbody><attach model='sub' prefix='s'/></worldbody>"
+                               f"</mujoco>")
+    model = mjcf.from_path(path)
+    expected = (rf"main.xml:1: asset/model\[sub\]: file='{name}': .*{name} is not MJCF "
+                rf"typed-mjcf can read \(well-formed XML whose root is <mujoco>\), so the "
+                rf"files it names cannot be kept to the model's folder {layout / 'model'}; pass")
+    for read in (model.get_assets, model.compile, lambda: mjcf.Physics.from_mjcf_model(model),
+                 lambda: mjcf.export_with_assets(model, layout / "out")):
+        with pytest.raises(mjcf.FileAccessError, match=expected):
+            read()
+    no_secret_anywhere(layout / "model")
+    trusted = mjcf.from_path(path, files=mjcf.FileAccess(anywhere=True))
+    assert trusted.get_assets() == {name: (layout / "model" / name).read_bytes()}
+
+
 def test_text_without_a_folder_is_confined_to_the_current_folder(
         layout: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(layout / "model")
@@ -273,6 +306,39 @@ def test_a_copy_keeps_the_confinement(layout: Path) -> None:
                                                "</asset></mujoco>"))
     with pytest.raises(mjcf.FileAccessError):
         copy.deepcopy(model).get_assets()
+
+
+def test_include_copy_and_paste_keep_the_confinement(layout: Path) -> None:
+    """A copy reads its files as its original may: refused at once, nothing copied."""
+    model = mjcf.from_path(write_model(layout, f"<mujoco><asset><mesh name='p' "
+                                               f"file='{layout / 'secret.stl'}'/></asset></mujoco>"))
+    outside = rf"file='.*secret.stl': {layout / 'secret.stl'} is outside"
+    with pytest.raises(mjcf.FileAccessError, match=rf"asset/mesh\[p\]: {outside}"):
+        model.get_assets()
+    copies: list[tuple[Callable[[mjcf.RootElement], object], str]] = [
+        (lambda root: root.include_copy(model), r"asset/mesh\[p\]"),
+        (lambda root: root.asset.paste(model.asset.mesh[0]), r"asset/mesh\[p\]"),
+        (lambda root: root.asset.paste(copy.deepcopy(model.asset.mesh[0])), "<mesh>")]  # detached
+    for copy_into, where in copies:
+        root = mjcf.RootElement()
+        with pytest.raises(mjcf.FileAccessError, match=rf"{where}: {outside}"):
+            copy_into(root)
+        assert root.find_all("mesh") == []
+    # a file inside goes along with the copy (an absolute path too), as its original read it
+    (layout / "model" / "box.stl").write_bytes(box_stl())
+    inside = mjcf.from_path(write_model(layout, f"<mujoco><asset><mesh name='b' "
+                                                f"file='{layout / 'model' / 'box.stl'}'/>"
+                                                f"</asset></mujoco>", "inside.xml"))
+    root = mjcf.RootElement()
+    root.asset.paste(inside.asset.mesh[0])
+    assert root.get_assets() == {"box.stl": box_stl()}
+    # a model asset's own files would be read as the copy's new model may: attach it instead
+    (layout / "model" / "sub.xml").write_text("<mujoco/>")
+    owner = mjcf.from_path(write_model(layout, "<mujoco><asset><model name='s' file='sub.xml'/>"
+                                               "</asset></mujoco>", "owner.xml"))
+    with pytest.raises(mjcf.FileAccessError, match=r"file='sub.xml': a copy of a model asset "
+                                                   r".*; attach the model instead"):
+        mjcf.RootElement().include_copy(owner)
 
 
 def test_file_access_is_checked() -> None:

@@ -20,6 +20,7 @@ from typed_mjcf._dmcompat import (
     skin,
     traversal_utils,
 )
+from typed_mjcf._dmcompat.parser import from_file, from_path, from_xml_string, from_zip
 from typed_mjcf._traversal import (
     commit_defaults,
     get_attachment_frame,
@@ -28,14 +29,7 @@ from typed_mjcf._traversal import (
     get_freejoint,
 )
 from typed_mjcf.assets import Asset
-from typed_mjcf.io import (
-    export_with_assets,
-    export_with_assets_as_zip,
-    from_file,
-    from_path,
-    from_xml_string,
-    from_zip,
-)
+from typed_mjcf.io import export_with_assets, export_with_assets_as_zip
 PREFIX_SEPARATOR = constants.PREFIX_SEPARATOR
 RootElement = _elements.RootElement
 __all__ = [
