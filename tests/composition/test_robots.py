@@ -268,3 +268,18 @@ def test_a_file_name_two_different_files_have_is_given_once(tmp_path: Path) -> N
     assert [f for f in files if "screw" in f] == [
         "screw.stl", str(parts.hand_path.parent / "meshes" / "hardware" / "screw.stl")]
     assert [k for k in assets if "screw" in k] == ["screw.stl"]
+
+
+@pytest.mark.parametrize("part", ["arm_path", "hand_path", "base_path"])
+def test_each_robot_file_is_the_model_mujoco_compiles(tmp_path: Path, part: str) -> None:
+    """The differential property of the corpus tests (test_corpus.py, test_corpus_validate.py,
+    test_corpus_asset_routes.py) on the robot-shaped files: loaded, validate() finds no
+    error, compile() and the text written beside the source are MuJoCo's own model."""
+    path: Path = getattr(Parts(tmp_path), part)
+    expected = mujoco.MjModel.from_xml_path(str(path))
+    model = mjcf.from_path(path)
+    assert [f for f in model.validate() if f.severity == "error"] == []
+    assert model_differences(expected, model.compile()) == []
+    beside = path.with_name("typed-mjcf-written.xml")
+    beside.write_text(model.to_xml_string(), encoding="utf-8")
+    assert model_differences(expected, mujoco.MjModel.from_xml_path(str(beside))) == []
