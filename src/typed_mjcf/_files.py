@@ -305,7 +305,10 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
         if len(paths) < 2 or len({collected.digest(p, read) for p, read in paths.items()}) < 2:
             continue  # one file, or one contents in several folders: one name
         for path in paths:
-            relative = os.path.relpath(path, base).replace(os.sep, "/")
+            try:
+                relative = os.path.relpath(path, base).replace(os.sep, "/")
+            except ValueError:  # another drive (Windows)
+                relative = "../"
             if relative.startswith("../"):
                 relative = _telling_suffix(path, list(paths))
             apart[path] = relative
