@@ -1,6 +1,7 @@
 """What the text of ``to_xml_string()`` names for each file, and how ``get_assets()`` keys it
 (README, "File names"): files as the source names them, keys by base name, which is how
-MuJoCo's in-memory loader finds a file. Both routes load the model ``compile()`` gives:
+MuJoCo's in-memory loader finds a file (two different files of one base name: by their path,
+which MjSpec's assets hold apart). The routes load the model ``compile()`` gives:
 ``MjModel.from_xml_string(text, get_assets())``, and the text saved beside its source."""
 
 from __future__ import annotations
@@ -166,7 +167,11 @@ def test_attached_models_from_other_folders(tmp_path: Path) -> None:
     assert sorted(assets) == ["cube.stl", "tip.obj"]
 
 
-@pytest.mark.parametrize("name", ['a"b.stl', ".dot.stl", "a|b.stl", "a:b.stl", "a&b'<c>.stl"])
+TAB = {"\t": "&#9;"}  # (a tab written as such is read as a space)
+
+
+@pytest.mark.parametrize("name", ['a"b.stl', ".dot.stl", " lead.stl", "a\tb.stl", "a|b.stl",
+                                  "a:b.stl", "a&b'<c>.stl"])
 def test_a_file_name_file_systems_differ_on_is_written_as_the_source_names_it(
         tmp_path: Path, name: str) -> None:
     """A name with characters Windows refuses (or a leading dot) is the source's name on
@@ -175,8 +180,9 @@ def test_a_file_name_file_systems_differ_on_is_written_as_the_source_names_it(
     (tmp_path / name).write_bytes(box_stl(0.1))
     source = tmp_path / "model.xml"
     source.write_text(
-        f'<mujoco><asset><mesh file={quoteattr(name)}/></asset><worldbody>'
-        f'<geom type="mesh" mesh={quoteattr(name.removesuffix(".stl"))}/></worldbody></mujoco>',
+        f'<mujoco><asset><mesh file={quoteattr(name, TAB)}/></asset><worldbody>'
+        f'<geom type="mesh" mesh={quoteattr(name.removesuffix(".stl"), TAB)}/></worldbody>'
+        f'</mujoco>',
         encoding="utf-8")
     expected = mujoco.MjModel.from_xml_path(str(source))
     model = mjcf.from_path(source)
