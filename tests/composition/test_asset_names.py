@@ -99,6 +99,9 @@ def test_two_different_files_of_one_name(tmp_path: Path) -> None:
     assert model_differences(compiled, mujoco.MjModel.from_xml_path(str(beside))) == []
     spec = mujoco.MjSpec.from_string(text, assets=assets)
     assert model_differences(compiled, spec.compile()) == []
+    physics = mjcf.Physics.from_xml_string(text, assets)  # dm_control's pair, through MjSpec
+    assert np.array_equal(physics.model.geom_rbound, compiled.geom_rbound)
+    assert physics.bind(model.find_all("geom")[1]).size is not None  # unnamed, found
     with pytest.raises(ExportError, match=(
             "'assets/torso/base_link.stl' and 'assets/gripper/base_link.stl' are different "
             "files with one base name")):
