@@ -4,9 +4,11 @@
 Every route that compiles text typed-mjcf wrote (``compile()``, ``Physics``, the keyframe
 layout, pictures, the ids of unnamed elements) goes through :func:`compile_from_memory`, so
 each release fact about compiling is applied once, here. The files go to ``MjSpec.assets``,
-keyed by the path the text names: unlike ``MjModel.from_xml_string(xml, assets)``, which
-refuses two keys with one base name, it keeps ``torso/base_link.stl`` and
-``gripper/base_link.stl`` apart (measured with MuJoCo 3.17.0 and 4.0.0).
+keyed by the path the text names, where two share a base name: unlike
+``MjModel.from_xml_string(xml, assets)``, which refuses two keys with one base name, it keeps
+``assets/torso/base_link.stl`` and ``assets/gripper/base_link.stl`` apart (measured with
+MuJoCo 3.3.7, 3.17.0 and 4.0.0). Other files go through the dict, which finds a file by its
+base name whatever folder the text names (MuJoCo 3.3.7's ``MjSpec`` needs the exact path).
 """
 from __future__ import annotations
 from collections.abc import Callable, Mapping
