@@ -192,6 +192,7 @@ CORPUS_TESTS = [
     "tests/runtime/test_release_gates.py",
     "tests/runtime/test_release_types.py",
     "tests/runtime/test_release_facts.py",
+    "tests/runtime/test_compile_routes.py",
 ]
 
 

@@ -13,8 +13,15 @@ def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str
     after the model) last, after every file it uses."""
     ...
 
-def get_assets(model: ModelBase) -> dict[str, bytes]:
-    """The files the model uses, by the names its VFS export gives them."""
+def get_assets(model: ModelBase, *, flat: bool = False) -> dict[str, bytes]:
+    """The files the model uses, by the names its VFS export gives them: each file's own
+    name, except where two different files share a base name (``torso/base_link.stl`` and
+    ``gripper/base_link.stl``): those keep their folders (the path below the model's folder,
+    ``assets/torso/base_link.stl`` under ``meshdir="assets"``), as ``mujoco.MjSpec``'s
+    ``assets`` holds them apart. MuJoCo's dict route, ``MjModel.from_xml_string(xml,
+    assets)``, finds files by base name alone and cannot hold both: ``flat=True`` asks for
+    that form, base names only, and raises :class:`ExportError` naming both files where
+    the model has such a pair."""
     ...
 
 def export_with_assets(model: ModelBase, directory: str, model_filename: str | None = None,
@@ -28,6 +35,11 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
     is written to a temporary file in ``directory`` and renamed over its name, so a reader
     never sees half a file; the model's XML is written last.
     """
+    ...
+
+def is_plain_path(name: str) -> bool:
+    """Whether ``name`` is plain file names joined by ``/`` (a file the model keeps apart
+    from another of its base name keeps its folders)."""
     ...
 
 def write_files(directory: str, outputs: list[tuple[str, bytes]], overwrite: bool,

@@ -194,8 +194,14 @@ class ModelRoot(Element, _tree.ModelBase):
         """Every element of the composed model, in the order the exported XML has them:
         attached models' bodies inside their frames, their other sections after ours."""
         ...
-    def get_assets(self) -> dict[str, bytes]:
-        """The files the model uses, by the names its VFS export gives them."""
+    def get_assets(self, *, flat: bool = False) -> dict[str, bytes]:
+        """The files the model uses, by the names its VFS export gives them: each file's own
+        name, except where two different files share a base name (``torso/base_link.stl``
+        and ``gripper/base_link.stl``): those keep their folders (``assets/torso/base_link.stl``
+        under ``meshdir="assets"``), which ``mujoco.MjSpec.from_string(xml, assets=...)``
+        holds apart. MuJoCo's dict route, ``MjModel.from_xml_string(xml, assets)``, finds
+        files by base name alone and cannot hold both: ``flat=True`` gives that form and
+        raises :class:`~typed_mjcf.errors.ExportError` naming both files of such a pair."""
         ...
     def validate(self) -> list[Finding]:
         """What MuJoCo's grammar forbids beyond single values: presence constraints, required

@@ -126,10 +126,10 @@ class Writer:
         element, which ``validate()`` reports)."""
         ...
     def file_text(self, element: Element, attribute: AttributeSpec, value: object) -> str:
-        """A file path as the MJCF text writes it: as written (an attached model's as an absolute
-        path, which its parent's folders cannot change), unless it needs the flat name
-        ``get_assets()`` gives it (in-memory contents, or a file whose name another file has
-        too): then ``from_xml_string(text, model.get_assets())`` loads each file right."""
+        """A file path as the MJCF text writes it: as the source names it, so the text loads
+        beside its source (an attached model's as an absolute path, which its parent's
+        folders cannot change); in-memory contents (and an attached model's skin, whose bones
+        are renamed) by the name ``get_assets()`` gives them."""
         ...
     def flat_file_names(self) -> dict[tuple[int, str], str]:
         """The flat names of the files (named once per export, when the first is written)."""

@@ -1,16 +1,17 @@
 # Generated from src/typed_mjcf/_files.py by codegen/runtime_stubs.py (python -m codegen render); do not edit.
-"""The files a model uses: where they are, and a flat, safe, unique name for each.
+"""The files a model uses: where they are, and a unique name for each.
 
-Every file attribute (a path, or an in-memory :class:`~typed_mjcf.Asset`) gets one flat,
-readable name: the file's own name, or the element's name for in-memory contents, with a
-numeric suffix only when two files with different contents would collide. Names collide as
-MuJoCo's in-memory loader sees them: it finds a file by its base name alone, whatever folder
-the text names, and ignores case (``MjModel.from_xml_string(xml, assets)`` refuses two keys
-``a/cube.stl`` and ``b/Cube.stl``; measured with MuJoCo 4.0.0). Two files with one base name
-and the same contents (a mesh copied into two folders) share one name, so the text can keep
-naming both as its source does. Names are made safe to write into a folder: no path
-separators, no leading dots, no characters or device names Windows refuses (see
-:func:`safe_file_name`).
+Every file attribute (a path, or an in-memory :class:`~typed_mjcf.Asset`) gets one readable
+name: the file's own name as its source names it (MuJoCo names an unnamed mesh after it), or
+the element's name for in-memory contents, with a numeric suffix only when two in-memory
+contents would collide. Names collide as MuJoCo's in-memory loader from a dict sees them: it
+finds a file by its base name alone and ignores case (``MjModel.from_xml_string(xml,
+assets)`` refuses two keys ``a/cube.stl`` and ``b/Cube.stl``; measured with MuJoCo 4.0.0).
+Two files with one base name and the same contents (a mesh copied into two folders) share
+one name; with other contents, each keeps its folders (:func:`_kept_apart`), which
+``MjSpec``'s assets hold apart (:mod:`typed_mjcf._compile`). In-memory contents get names
+safe to write into a folder (see :func:`safe_file_name`); a file's own name is checked where
+a folder is written (:mod:`typed_mjcf._assets_io`).
 
 An MJCF file the model uses (an ``<asset><model file=...>``) is itself rewritten to find its
 own files under their flat names: :func:`collect_files` takes the function that does it.
@@ -33,6 +34,8 @@ class CollectedFiles:
     directory_attributes: frozenset[str] = ...
     readers: dict[str, Callable[[], bytes]] = field(default_factory=lambda: {})
     digests: dict[object, str | None] = field(default_factory=lambda: {})
+    apart: dict[str, str] = field(default_factory=lambda: {})
+    apart_found: bool = False
     def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
         """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
         ...

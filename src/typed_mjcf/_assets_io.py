@@ -14,7 +14,13 @@ import tempfile
 import time
 
 from typed_mjcf import _tree
-from typed_mjcf._files import is_plain_file_name, safe_file_name, split_name, unique_name
+from typed_mjcf._files import (
+    CollectedFiles,
+    is_plain_file_name,
+    safe_file_name,
+    split_name,
+    unique_name,
+)
 from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._write import collect, vfs_text
@@ -34,9 +40,29 @@ def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str
     return {**collected.files, name: data}
 
 
-def get_assets(model: ModelBase) -> dict[str, bytes]:
-    """The files the model uses, by the names its VFS export gives them."""
-    return collect(model).files
+def get_assets(model: ModelBase, *, flat: bool = False) -> dict[str, bytes]:
+    """The files the model uses, by the names its VFS export gives them: each file's own
+    name, except where two different files share a base name (``torso/base_link.stl`` and
+    ``gripper/base_link.stl``): those keep their folders (the path below the model's folder,
+    ``assets/torso/base_link.stl`` under ``meshdir="assets"``), as ``mujoco.MjSpec``'s
+    ``assets`` holds them apart. MuJoCo's dict route, ``MjModel.from_xml_string(xml,
+    assets)``, finds files by base name alone and cannot hold both: ``flat=True`` asks for
+    that form, base names only, and raises :class:`ExportError` naming both files where
+    the model has such a pair."""
+    files = collect(model).files
+    if not flat:
+        return files
+    by_base: dict[str, str] = {}
+    for name in files:
+        base = name.rsplit("/", 1)[-1]
+        other = by_base.setdefault(base.casefold(), name)
+        if other != name:
+            raise ExportError(
+                f"get_assets(flat=True): {other!r} and {name!r} are different files with one "
+                f"base name, which MuJoCo's MjModel.from_xml_string(xml, assets) cannot hold "
+                f"apart (it finds files by base name); use get_assets() with "
+                f"mujoco.MjSpec.from_string(xml, assets=...), or compile()")
+    return {name.rsplit("/", 1)[-1]: data for name, data in files.items()}
 
 
 def export_with_assets(model: ModelBase, directory: str, model_filename: str | None = None,
@@ -67,10 +93,48 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
                               f"uses ({collected.folded[name.casefold()]!r}); choose another")
     outputs = [*collected.files.items(), (name, xml.encode("utf-8"))]
     for file_name, _ in outputs:
-        if not is_plain_file_name(file_name):  # pragma: no cover - names are made safe
-            raise ExportError(f"refusing to write {file_name!r}: not a plain file name")
+        if not is_plain_path(file_name):
+            raise ExportError(_unwritable(file_name, collected))
     write_files(directory, outputs, overwrite, "export_with_assets")
     return os.path.join(directory, name)
+
+
+def is_plain_path(name: str) -> bool:
+    """Whether ``name`` is plain file names joined by ``/`` (a file the model keeps apart
+    from another of its base name keeps its folders)."""
+    return all(is_plain_file_name(part) for part in name.split("/"))
+
+
+def _unwritable(name: str, collected: CollectedFiles) -> str:
+    """Why ``name`` is not written: the source names a file so (the text names it as the
+    source does, so it cannot be written under another name)."""
+    for _, element, attribute, value, used, _ in collected.uses:
+        if used == name:
+            return (f"{element.path}: {attribute.py_name}={value!r}: cannot export a file "
+                    f"named {name!r}: expected a name file systems take everywhere (no "
+                    f"characters Windows refuses, no leading dot or space); the text names "
+                    f"the file as its source does, so rename the file and the attribute")
+    return f"refusing to write {name!r}: not a plain file name"  # pragma: no cover
+
+
+def _make_folders(directory: str, outputs: list[tuple[str, bytes]]) -> None:
+    """The folders of the outputs kept apart by theirs, inside ``directory``: never
+    through a link or over a file."""
+    for file_name, _ in outputs:
+        parts = file_name.split("/")[:-1]
+        for count in range(1, len(parts) + 1):
+            path = os.path.join(directory, *parts[:count])
+            try:
+                mode = os.lstat(path).st_mode
+            except FileNotFoundError:
+                try:
+                    os.mkdir(path)
+                except OSError as error:
+                    raise ExportError(f"cannot create the folder {path}: "
+                                      f"{error.strerror or error}") from error
+                continue
+            if not stat.S_ISDIR(mode):
+                raise ExportError(f"cannot write into {path}: not a folder (or a link)")
 
 
 def write_files(directory: str, outputs: list[tuple[str, bytes]], overwrite: bool,
@@ -87,6 +151,7 @@ def write_files(directory: str, outputs: list[tuple[str, bytes]], overwrite: boo
         raise ExportError(f"cannot create the folder {directory}: "
                           f"{error.strerror or error}") from error
     remove_stale_temporaries(directory)
+    _make_folders(directory, outputs)
     pending = _changed_files(directory, outputs, overwrite, what)
     temporaries: list[str] = []
     done: list[tuple[str, str | None, bool]] = []  # (path, its old file kept as, existed)

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Final, cast
 from lxml import etree
 
 from typed_mjcf import _tree
+from typed_mjcf._assets_io import get_assets
 from typed_mjcf._bridge import compile_model, to_spec
 from typed_mjcf._codecs import Format
 from typed_mjcf._compat import dm_control_behaviour
@@ -26,7 +27,7 @@ from typed_mjcf._preview import FreeView, render, render_png
 from typed_mjcf._traversal import commit_defaults
 from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
-from typed_mjcf._write import attribute_text, collect, element_text
+from typed_mjcf._write import attribute_text, element_text
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import InvalidTypeError, InvalidValueError, did_you_mean
 
@@ -379,9 +380,15 @@ class ModelRoot(Element, _tree.ModelBase):
         attached models' bodies inside their frames, their other sections after ours."""
         return (cast(Element, e) for e in _tree.iter_composed(self, True))
 
-    def get_assets(self) -> dict[str, bytes]:
-        """The files the model uses, by the names its VFS export gives them."""
-        return collect(self).files
+    def get_assets(self, *, flat: bool = False) -> dict[str, bytes]:
+        """The files the model uses, by the names its VFS export gives them: each file's own
+        name, except where two different files share a base name (``torso/base_link.stl``
+        and ``gripper/base_link.stl``): those keep their folders (``assets/torso/base_link.stl``
+        under ``meshdir="assets"``), which ``mujoco.MjSpec.from_string(xml, assets=...)``
+        holds apart. MuJoCo's dict route, ``MjModel.from_xml_string(xml, assets)``, finds
+        files by base name alone and cannot hold both: ``flat=True`` gives that form and
+        raises :class:`~typed_mjcf.errors.ExportError` naming both files of such a pair."""
+        return get_assets(self, flat=flat)
 
     def validate(self) -> list[Finding]:
         """What MuJoCo's grammar forbids beyond single values: presence constraints, required

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from typed_mjcf._compile import compile_from_memory, spec_from_memory
 from typed_mjcf._files import CollectedFiles
 from typed_mjcf._keyframes import LayoutError
 from typed_mjcf._locate import locate
-from typed_mjcf._release_facts import clears_asset_cache
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import collect, vfs_text
@@ -43,25 +43,19 @@ def _text(model: ModelBase) -> tuple[str, CollectedFiles]:
 
 def compile_model(model: ModelBase) -> mujoco.MjModel:
     """Validate, then compile with MuJoCo (files passed through a virtual file system)."""
-    import mujoco
-
     ensure_valid(model)
     xml, collected = _text(model)
-    if clears_asset_cache():  # else a file of an earlier model with the same name is used
-        mujoco.mj_clearCache(mujoco.mj_getCache())
     try:
-        return mujoco.MjModel.from_xml_string(xml, collected.files)
+        return compile_from_memory(xml, collected.files)
     except (ValueError, RuntimeError) as error:  # (RuntimeError: a C++ exception it did not
         raise _mujoco_error(model, str(error), collected) from None  # expect)
 
 
 def to_spec(model: ModelBase) -> mujoco.MjSpec:
     """The model as a ``mujoco.MjSpec``."""
-    import mujoco
-
     xml, collected = _text(model)
     try:
-        return mujoco.MjSpec.from_string(xml, assets=collected.files)
+        return spec_from_memory(xml, collected.files)
     except (ValueError, RuntimeError) as error:
         raise _mujoco_error(model, str(error), collected) from None
 

@@ -17,7 +17,6 @@ from.
 from __future__ import annotations
 
 import functools
-import os
 from collections import deque
 from collections.abc import Callable, Iterator, Mapping
 from typing import Final, cast
@@ -304,23 +303,18 @@ class Writer:
         return attribute.codec.write(value, self.fmt)
 
     def file_text(self, element: Element, attribute: AttributeSpec, value: object) -> str:
-        """A file path as the MJCF text writes it: as written (an attached model's as an absolute
-        path, which its parent's folders cannot change), unless it needs the flat name
-        ``get_assets()`` gives it (in-memory contents, or a file whose name another file has
-        too): then ``from_xml_string(text, model.get_assets())`` loads each file right."""
-        flat = self.flat_file_names().get((id(element), attribute.name))
+        """A file path as the MJCF text writes it: as the source names it, so the text loads
+        beside its source (an attached model's as an absolute path, which its parent's
+        folders cannot change); in-memory contents (and an attached model's skin, whose bones
+        are renamed) by the name ``get_assets()`` gives them."""
         if isinstance(value, Asset):
-            assert flat is not None
-            return flat
+            return self.flat_file_names()[(id(element), attribute.name)]
         text = cast(str, value)
         scope = _tree.scope_of(element)
         if scope is not self.top_scope:
-            if flat is not None and is_skin_file(element, attribute):
-                return flat  # its bones are renamed: only get_assets() has that file
+            if is_skin_file(element, attribute):
+                return self.flat_file_names()[(id(element), attribute.name)]
             text = absolute_file(_tree.scope_model(scope), attribute, text)
-        if flat is not None and flat.casefold() != os.path.basename(
-                text.replace("\\", "/")).casefold():  # (MuJoCo matches case-insensitively)
-            return flat
         return text
 
     def flat_file_names(self) -> dict[tuple[int, str], str]:

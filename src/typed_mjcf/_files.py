@@ -1,15 +1,16 @@
-"""The files a model uses: where they are, and a flat, safe, unique name for each.
+"""The files a model uses: where they are, and a unique name for each.
 
-Every file attribute (a path, or an in-memory :class:`~typed_mjcf.Asset`) gets one flat,
-readable name: the file's own name, or the element's name for in-memory contents, with a
-numeric suffix only when two files with different contents would collide. Names collide as
-MuJoCo's in-memory loader sees them: it finds a file by its base name alone, whatever folder
-the text names, and ignores case (``MjModel.from_xml_string(xml, assets)`` refuses two keys
-``a/cube.stl`` and ``b/Cube.stl``; measured with MuJoCo 4.0.0). Two files with one base name
-and the same contents (a mesh copied into two folders) share one name, so the text can keep
-naming both as its source does. Names are made safe to write into a folder: no path
-separators, no leading dots, no characters or device names Windows refuses (see
-:func:`safe_file_name`).
+Every file attribute (a path, or an in-memory :class:`~typed_mjcf.Asset`) gets one readable
+name: the file's own name as its source names it (MuJoCo names an unnamed mesh after it), or
+the element's name for in-memory contents, with a numeric suffix only when two in-memory
+contents would collide. Names collide as MuJoCo's in-memory loader from a dict sees them: it
+finds a file by its base name alone and ignores case (``MjModel.from_xml_string(xml,
+assets)`` refuses two keys ``a/cube.stl`` and ``b/Cube.stl``; measured with MuJoCo 4.0.0).
+Two files with one base name and the same contents (a mesh copied into two folders) share
+one name; with other contents, each keeps its folders (:func:`_kept_apart`), which
+``MjSpec``'s assets hold apart (:mod:`typed_mjcf._compile`). In-memory contents get names
+safe to write into a folder (see :func:`safe_file_name`); a file's own name is checked where
+a folder is written (:mod:`typed_mjcf._assets_io`).
 
 An MJCF file the model uses (an ``<asset><model file=...>``) is itself rewritten to find its
 own files under their flat names: :func:`collect_files` takes the function that does it.
@@ -50,6 +51,10 @@ class CollectedFiles:
     # contents may be shared: not MJCF files, nor skins whose bones are renamed)
     readers: dict[str, Callable[[], bytes]] = field(default_factory=lambda: {})
     digests: dict[object, str | None] = field(default_factory=lambda: {})  # key -> SHA-256
+    # the files kept apart by a folder in their name (different files of one base name):
+    # path -> name, and whether the base names were looked at yet
+    apart: dict[str, str] = field(default_factory=lambda: {})
+    apart_found: bool = False
 
     def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
         """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
@@ -262,6 +267,9 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     without reading any: files are told apart by their path, in-memory ones by contents
     (and an attached model's skin files by its scope too: their bones are renamed)."""
     collected = CollectedFiles() if collected is None else collected
+    if not collected.apart_found:
+        collected.apart_found = True
+        collected.apart.update(_kept_apart(model, collected))
     folders = compiler_folders(model)
     directories: set[str] = set()
     for element in model.iter_elements():
@@ -288,7 +296,9 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
             else:
                 assert isinstance(value, str)
                 path = resolve_path(model, attribute, value, folders)
-                name, key = safe_file_name(*split_name(os.path.basename(path))), path
+                # the source's own name (MuJoCo names an unnamed mesh after it), or its
+                # folders too where another file has its base name
+                name, key = collected.apart.get(path, os.path.basename(path)), path
                 # an MJCF file is rewritten for its own folder: its contents are not shared
                 read = None if is_model_file_name(path) else functools.partial(
                     _contents, element, attribute, value, model, folders, collected)
@@ -302,6 +312,56 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     for attached in _tree.attached_models(model):  # each resolves files in its own folders
         name_files(attached, collected, f"{prefix}{_tree.scope_of(attached).name}/")
     return collected
+
+
+def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
+    """A name with folders for each file whose base name a file with other contents has too
+    (MuJoCo's loader from a dict finds files by base name alone, and renaming one with a
+    suffix renames the mesh MuJoCo names after it): its path below the model's folder
+    (what MuJoCo makes of the source's text), else its last folders as far as they tell it
+    from the others."""
+    if dm_control_behaviour():
+        return {}
+    by_base: dict[str, dict[str, Callable[[], bytes]]] = {}
+    models = [model]
+    while models:
+        owner = models.pop()
+        models.extend(_tree.attached_models(owner))
+        folders = compiler_folders(owner)
+        for element in owner.iter_elements():
+            for name, value in _tree.values(element).items():
+                attribute = element.spec.by_name[name]
+                if attribute.kind != "file" or not isinstance(value, str):
+                    continue
+                path = resolve_path(owner, attribute, value, folders)
+                by_base.setdefault(os.path.basename(path).casefold(), {})[path] = (
+                    functools.partial(_contents, element, attribute, value, owner, folders,
+                                      collected))
+    base = _tree.base_dir(model) or os.getcwd()
+    apart: dict[str, str] = {}
+    for paths in by_base.values():
+        if len(paths) < 2 or len({collected.digest(p, read) for p, read in paths.items()}) < 2:
+            continue  # one file, or one contents in several folders: one name
+        for path in paths:
+            try:
+                relative = os.path.relpath(path, base).replace(os.sep, "/")
+            except ValueError:  # another drive (Windows)
+                relative = "../"
+            if relative.startswith("../"):
+                relative = _telling_suffix(path, list(paths))
+            apart[path] = relative
+    return apart
+
+
+def _telling_suffix(path: str, paths: list[str]) -> str:
+    """The last folders of ``path`` and its name, as many as tell it from ``paths``."""
+    parts = path.replace(os.sep, "/").split("/")
+    others = [p.replace(os.sep, "/").casefold() for p in paths if p != path]
+    for count in range(2, len(parts) + 1):
+        tail = "/".join(parts[-count:])
+        if not any(o.endswith("/" + tail.casefold()) or o == tail.casefold() for o in others):
+            return tail
+    return "/".join(parts).lstrip("/")
 
 
 def _hashed_name(model: ModelBase, element: Element, attribute: AttributeSpec, value: object,

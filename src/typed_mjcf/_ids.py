@@ -20,8 +20,9 @@ from typing import TYPE_CHECKING, Final
 from typed_mjcf import _tree
 from typed_mjcf._binding import binding_tables
 from typed_mjcf._bridge import compile_model
+from typed_mjcf._compile import compile_from_memory
 from typed_mjcf._export import Writer
-from typed_mjcf._files import element_file_stem, is_model_file_name
+from typed_mjcf._files import element_file_stem
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import element_text, vfs_text
@@ -113,12 +114,12 @@ def _namer(model: ModelBase, marks: list[Element], written: dict[int, tuple[Elem
 
 def _compile_marked(text: str, files: Mapping[str, bytes], marks: list[Element],
                     ) -> tuple[mujoco.MjModel, dict[int, tuple[Element, list[object]]]]:
-    import mujoco
+    found: dict[int, tuple[Element, list[object]]] = {}
 
-    includes = {k: v for k, v in files.items() if is_model_file_name(k)}
-    spec = mujoco.MjSpec.from_string(text, include=includes, assets=dict(files))
-    found = _unmark(spec, marks)
-    return spec.compile(), found
+    def unmark(spec: mujoco.MjSpec) -> None:
+        found.update(_unmark(spec, marks))
+
+    return compile_from_memory(text, files, unmark), found
 
 
 def _ids(compiled: mujoco.MjModel, found: dict[int, tuple[Element, list[object]]],

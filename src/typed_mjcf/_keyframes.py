@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from typed_mjcf import _tree
+from typed_mjcf._compile import compile_from_memory
 from typed_mjcf._export import Writer
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._xmltext import Node
@@ -47,10 +48,8 @@ class LayoutError(ExportError):
 
 def compile_layout(xml: str, files: dict[str, bytes]) -> mujoco.MjModel:
     """The composed model compiled without keyframes: where each part's values go."""
-    import mujoco  # heavy, and only composed models with keyframes need it here
-
     try:
-        return mujoco.MjModel.from_xml_string(xml, files)
+        return compile_from_memory(xml, files)
     except ValueError as error:
         raise LayoutError(str(error)) from None
 

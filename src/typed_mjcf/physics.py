@@ -40,6 +40,7 @@ from typed_mjcf._binding import (
     new_binding,
 )
 from typed_mjcf._compat import STATE
+from typed_mjcf._compile import compile_from_memory
 from typed_mjcf._dmcompat.debugging import explained
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
@@ -750,7 +751,7 @@ def _scoped_name(element: Element, prefixes: dict[int, str]) -> str | None:
 
 def _load(xml_string: str, assets: Mapping[str, bytes] | None) -> Model:
     try:
-        return _as_model(mujoco.MjModel.from_xml_string(xml_string, dict(assets or {})))
+        return _as_model(compile_from_memory(xml_string, assets or {}))
     except ValueError as error:
         raise MjcfError(f"MuJoCo could not compile the model: {str(error).strip()}") from None
 

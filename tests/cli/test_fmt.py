@@ -319,6 +319,23 @@ def test_processing_instructions_stay(tmp_path: Path) -> None:
                             "</mujoco>\n")
 
 
+@pytest.mark.parametrize("canonical", [False, True])
+def test_blank_lines_outside_the_root_stay(tmp_path: Path, canonical: bool) -> None:
+    """A licence header's blank line (the corpus's humanoid.xml), one at most, before the
+    root and between what follows it; none where the author left none."""
+    model = tmp_path / "m.xml"
+    model.write_text("<!-- header\n  two lines -->\n\n\n<?keep?>\n<mujoco\n  model='m'>"
+                     "<worldbody/></mujoco>\n<!-- a -->\n\n<!-- b -->\n<!-- c -->\n",
+                     encoding="utf-8")
+    (result,) = format_model(str(model), canonical=canonical)
+    root = ('<mujoco model="m"/>' if canonical
+            else "<mujoco\n  model='m'>\n  <worldbody/>\n</mujoco>")
+    assert result.after == ("<!-- header\n  two lines -->\n\n<?keep?>\n" + root +
+                            "\n<!-- a -->\n\n<!-- b -->\n<!-- c -->\n")
+    model.write_text(result.after, encoding="utf-8")
+    assert format_model(str(model), canonical=canonical)[0].after == result.after
+
+
 def test_a_doctype_stays_unless_it_declares_something(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     plain = tmp_path / "plain.xml"

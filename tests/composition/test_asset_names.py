@@ -1,17 +1,22 @@
 """What the text of ``to_xml_string()`` names for each file, and how ``get_assets()`` keys it
 (README, "File names"): files as the source names them, keys by base name, which is how
-MuJoCo's in-memory loader finds a file. Both routes load the model ``compile()`` gives:
+MuJoCo's in-memory loader finds a file (two different files of one base name: by their path,
+which MjSpec's assets hold apart). The routes load the model ``compile()`` gives:
 ``MjModel.from_xml_string(text, get_assets())``, and the text saved beside its source."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
+from xml.sax.saxutils import quoteattr
 
 import mujoco
+import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
 from tests.runtime.model_compare import model_differences
+from typed_mjcf.errors import ExportError
 
 from .robots import box_stl, tetra_obj
 
@@ -74,22 +79,60 @@ def test_one_file_in_two_folders_is_one_asset(tmp_path: Path) -> None:
 
 
 def test_two_different_files_of_one_name(tmp_path: Path) -> None:
-    """MuJoCo's in-memory loader finds files by base name and refuses two keys that differ
-    in their folders only: the second file is named by its key in the text. The text loads
-    with get_assets() and from export_with_assets()'s folder; beside the source it cannot
-    (``assets/cube-2.stl`` is not there), which the README says."""
-    source = model_with(tmp_path, {"assets/cube.stl": box_stl(0.1),
-                                   "assets/more/cube.stl": box_stl(0.2)})
-    with pytest.raises(ValueError, match="Repeated file name"):  # why there is no other way
+    """MuJoCo's in-memory loader from a dict finds files by base name and refuses two keys
+    that differ in their folders only; MjSpec's assets keep them apart by path. The text names
+    both as the source does (it loads beside the source), compile() and get_assets() keep them
+    apart by their path below the model's folder, and the exported folder keeps the folders."""
+    source = model_with(tmp_path, {"assets/torso/base_link.stl": box_stl(0.1),
+                                   "assets/gripper/base_link.stl": box_stl(0.2)})
+    with pytest.raises(ValueError, match="Repeated file name"):  # why not the dict route
         mujoco.MjModel.from_xml_string("<mujoco/>", {"a/cube.stl": b"1", "b/cube.stl": b"2"})
     model = mjcf.from_path(source)
     compiled = model.compile()
+    assert model_differences(compiled, mujoco.MjModel.from_xml_path(str(source))) == []
     text, assets = model.to_xml_string(), model.get_assets()
-    assert 'file="cube.stl"' in text and 'file="cube-2.stl"' in text
-    assert assets == {"cube.stl": box_stl(0.1), "cube-2.stl": box_stl(0.2)}
-    assert model_differences(compiled, mujoco.MjModel.from_xml_string(text, assets)) == []
+    assert 'file="torso/base_link.stl"' in text and 'file="gripper/base_link.stl"' in text
+    assert assets == {"assets/torso/base_link.stl": box_stl(0.1),
+                      "assets/gripper/base_link.stl": box_stl(0.2)}
+    beside = source.with_name("edited.xml")
+    beside.write_text(text, encoding="utf-8")
+    assert model_differences(compiled, mujoco.MjModel.from_xml_path(str(beside))) == []
+    spec = mujoco.MjSpec.from_string(text, assets=assets)
+    assert model_differences(compiled, spec.compile()) == []
+    physics = mjcf.Physics.from_xml_string(text, assets)  # dm_control's pair, through MjSpec
+    assert np.array_equal(physics.model.geom_rbound, compiled.geom_rbound)
+    assert physics.bind(model.find_all("geom")[1]).size is not None  # unnamed, found
+    with pytest.raises(ExportError, match=(
+            "'assets/torso/base_link.stl' and 'assets/gripper/base_link.stl' are different "
+            "files with one base name")):
+        model.get_assets(flat=True)
     exported = mjcf.export_with_assets(model, str(tmp_path / "out"))
+    assert (tmp_path / "out" / "assets" / "gripper" / "base_link.stl").read_bytes() == (
+        box_stl(0.2))
     assert model_differences(compiled, mujoco.MjModel.from_xml_path(exported)) == []
+
+
+@pytest.mark.parametrize("first", ["torso", "gripper"])
+def test_a_mesh_named_after_its_file_keeps_its_name(tmp_path: Path, first: str) -> None:
+    """An unnamed mesh is named by MuJoCo after its file (``base_link``); another, earlier
+    file of that base name must not rename it (as a ``-2`` suffix did): the geom naming it
+    compiles, on every route (a real gripper model, its meshes' order swapped)."""
+    order = [first, *({"torso", "gripper"} - {first})]
+    files = {f"assets/{part}/base_link.stl": box_stl(0.1 if part == "torso" else 0.2)
+             for part in order}
+    meshes = ('<mesh name="torso" file="torso/base_link.stl"/>',
+              '<mesh file="gripper/base_link.stl"/>')
+    source = write(tmp_path, files, MESHES.format(
+        meshes="".join(meshes if first == "torso" else meshes[::-1]),
+        geoms='<body><freejoint/><geom type="mesh" mesh="torso"/>'
+              '<geom type="mesh" mesh="base_link" pos="1 0 0"/></body>'))
+    expected = mujoco.MjModel.from_xml_path(str(source))
+    model = mjcf.from_path(source)
+    assert model_differences(expected, model.compile()) == []
+    physics = mjcf.Physics.from_mjcf_model(model)
+    assert np.array_equal(physics.model.geom_rbound, expected.geom_rbound)
+    exported = mjcf.export_with_assets(model, str(tmp_path / "out"))
+    assert model_differences(expected, mujoco.MjModel.from_xml_path(exported)) == []
 
 
 def test_in_memory_contents_are_named_by_their_key(tmp_path: Path) -> None:
@@ -125,3 +168,34 @@ def test_attached_models_from_other_folders(tmp_path: Path) -> None:
     assert f'file="{tmp_path / "child" / "meshes" / "tip.obj"}"' in text
     assert 'mesh="child/tip"' in text
     assert sorted(assets) == ["cube.stl", "tip.obj"]
+
+
+TAB = {"\t": "&#9;"}  # (a tab written as such is read as a space)
+
+
+@pytest.mark.parametrize("name", ['a"b.stl', ".dot.stl", " lead.stl", "a\tb.stl", "a|b.stl",
+                                  "a:b.stl", "a&b'<c>.stl"])
+def test_a_file_name_file_systems_differ_on_is_written_as_the_source_names_it(
+        tmp_path: Path, name: str) -> None:
+    """A name with characters Windows refuses (or a leading dot) is the source's name on
+    every route (never a sanitised one, which names another file and renames the mesh MuJoCo
+    names after it); the folder export, which cannot write it everywhere, refuses it."""
+    (tmp_path / name).write_bytes(box_stl(0.1))
+    source = tmp_path / "model.xml"
+    source.write_text(
+        f'<mujoco><asset><mesh file={quoteattr(name, TAB)}/></asset><worldbody>'
+        f'<geom type="mesh" mesh={quoteattr(name.removesuffix(".stl"), TAB)}/></worldbody>'
+        f'</mujoco>',
+        encoding="utf-8")
+    expected = mujoco.MjModel.from_xml_path(str(source))
+    model = mjcf.from_path(source)
+    assert model_differences(expected, model.compile()) == []
+    beside = source.with_name("edited.xml")
+    beside.write_text(model.to_xml_string(), encoding="utf-8")
+    assert model_differences(expected, mujoco.MjModel.from_xml_path(str(beside))) == []
+    assert list(model.get_assets()) == [name]
+    with pytest.raises(ExportError, match=re.escape(
+            f"asset/mesh[0]: file={name!r}: cannot export a file named {name!r}: expected a "
+            f"name file systems take everywhere")):
+        mjcf.export_with_assets(model, str(tmp_path / "out"))
+    assert not (tmp_path / "out").exists() or not list((tmp_path / "out").iterdir())

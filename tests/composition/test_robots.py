@@ -26,6 +26,8 @@ from lxml import etree
 
 import typed_mjcf as mjcf
 from tests.runtime.model_compare import model_differences
+from typed_mjcf import _tree
+from typed_mjcf.errors import ExportError
 
 from .robots import HAND_XML, Parts, body, site
 
@@ -161,16 +163,27 @@ def file_attributes(text: str) -> list[str]:
 
 
 def assert_loads_again(model: mjcf.RootElement, out: Path) -> mujoco.MjModel:
+    """compile() is MuJoCo's model of the text written beside the source, of the text with
+    get_assets() (MuJoCo's dict route where no two different files share a base name, else
+    MjSpec's assets, which keep them apart), and of the exported folder."""
     compiled = model.compile()
     text, assets = model.to_xml_string(), model.get_assets()
-    in_memory = mujoco.MjModel.from_xml_string(text, assets)
-    assert model_differences(compiled, in_memory) == [], "to_xml_string() + get_assets()"
-    keys = {key.casefold() for key in assets}
-    for file in file_attributes(text):  # what the text names, get_assets() holds by base name
-        assert Path(file).name.casefold() in keys, file
+    beside = Path(_tree.base_dir(model) or out.parent) / "typed-mjcf-written.xml"
+    beside.write_text(text, encoding="utf-8")
+    assert model_differences(compiled, mujoco.MjModel.from_xml_path(str(beside))) == [], (
+        "to_xml_string() beside the source")
+    beside.unlink()
+    apart = [key for key in assets if "/" in key]
+    if apart:
+        with pytest.raises(ExportError, match="one base name"):
+            model.get_assets(flat=True)
+    else:
+        in_memory = mujoco.MjModel.from_xml_string(text, model.get_assets(flat=True))
+        assert model_differences(compiled, in_memory) == [], "to_xml_string() + get_assets()"
     path = mjcf.export_with_assets(model, str(out))
     assert model_differences(compiled, mujoco.MjModel.from_xml_path(path)) == [], "exported"
-    assert sorted(p.name for p in out.iterdir()) == sorted([*assets, Path(path).name])
+    assert sorted(p.name for p in out.iterdir()) == sorted(
+        {*(key.split("/")[0] for key in assets), Path(path).name})
     return compiled
 
 
@@ -237,16 +250,36 @@ def test_saved_beside_its_source_a_composition_loads_there(tmp_path: Path) -> No
 
 
 def test_a_file_name_two_different_files_have_is_given_once(tmp_path: Path) -> None:
-    """The arm's and the gripper's base_link.stl differ: MuJoCo's in-memory loader finds
-    files by base name, so the text names the gripper's by its key, base_link-2.stl; every
-    other file keeps its path. The gripper's screw.stl has the arm's bytes: one file."""
+    """The arm's and the gripper's base_link.stl differ: the text names each as its source
+    does (the gripper's by its absolute path), and get_assets() keeps them apart by their
+    folders (MuJoCo's loader from a dict finds files by base name; a ``-2`` suffix would
+    rename the mesh MuJoCo names after the file); every other file keeps its path. The
+    gripper's screw.stl has the arm's bytes: one file."""
     parts = Parts(tmp_path / "robots")
     arm, _ = at_site(parts)
     text, assets = arm.to_xml_string(), arm.get_assets()
     files = file_attributes(text)
-    assert "base_link.stl" in files and "base_link-2.stl" in files
-    assert (assets["base_link-2.stl"]
-            == (parts.hand_path.parent / "meshes" / "base_link.stl").read_bytes())
+    hand_base = str(parts.hand_path.parent / "meshes" / "base_link.stl")
+    assert "base_link.stl" in files and hand_base in files
+    assert assets["meshes/base_link.stl"] == Path(hand_base).read_bytes()
+    assert assets["assets/base_link.stl"] == (
+        parts.arm_path.parent / "assets" / "base_link.stl").read_bytes()
+    assert "base_link.stl" not in assets
     assert [f for f in files if "screw" in f] == [
         "screw.stl", str(parts.hand_path.parent / "meshes" / "hardware" / "screw.stl")]
     assert [k for k in assets if "screw" in k] == ["screw.stl"]
+
+
+@pytest.mark.parametrize("part", ["arm_path", "hand_path", "base_path"])
+def test_each_robot_file_is_the_model_mujoco_compiles(tmp_path: Path, part: str) -> None:
+    """The differential property of the corpus tests (test_corpus.py, test_corpus_validate.py,
+    test_corpus_asset_routes.py) on the robot-shaped files: loaded, validate() finds no
+    error, compile() and the text written beside the source are MuJoCo's own model."""
+    path: Path = getattr(Parts(tmp_path), part)
+    expected = mujoco.MjModel.from_xml_path(str(path))
+    model = mjcf.from_path(path)
+    assert [f for f in model.validate() if f.severity == "error"] == []
+    assert model_differences(expected, model.compile()) == []
+    beside = path.with_name("typed-mjcf-written.xml")
+    beside.write_text(model.to_xml_string(), encoding="utf-8")
+    assert model_differences(expected, mujoco.MjModel.from_xml_path(str(beside))) == []

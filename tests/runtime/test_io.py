@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf.errors import ExportError
 
 
 def box_stl(size: float = 0.1) -> bytes:
@@ -187,8 +188,9 @@ def test_different_files_with_the_same_name_get_distinct_names() -> None:
 
 
 def test_attached_models_files_of_the_same_name_never_collide(tmp_path: Path) -> None:
-    """dm_control's pair, from_xml_string(to_xml_string(), get_assets()), loads each model's
-    own file even when both are called shape.stl (MuJoCo's VFS goes by file name)."""
+    """Each model's own file, though both are called shape.stl: the text names each by its
+    absolute path, compile() keeps them apart by folder (MuJoCo's dict route goes by base
+    name)."""
     world = mjcf.RootElement(model="world")
     for n, size in ((1, 0.1), (2, 0.3)):
         folder = tmp_path / f"part{n}"
@@ -201,8 +203,10 @@ def test_attached_models_files_of_the_same_name_never_collide(tmp_path: Path) ->
         part.model = f"part{n}"
         world.attach(part)
     text, assets = world.to_xml_string(), world.get_assets()
-    assert sorted(assets) == ["shape-2.stl", "shape.stl"]
-    pair = mujoco.MjModel.from_xml_string(text, assets)
+    assert sorted(assets) == ["part1/shape.stl", "part2/shape.stl"]  # apart by folder
+    with pytest.raises(ExportError, match="'part1/shape.stl' and 'part2/shape.stl'"):
+        world.get_assets(flat=True)  # what MuJoCo's dict route cannot hold
+    pair = mujoco.MjModel.from_xml_string(text)  # an attached model's files: absolute paths
     compiled = world.compile()
     for m in (pair, compiled):
         sizes = [float(np.ptp(m.mesh_vert[m.mesh_vertadr[i]:m.mesh_vertadr[i] + m.mesh_vertnum[i]],

@@ -315,3 +315,26 @@ def test_the_zip_export_failing_leaves_the_old_archive(tmp_path: Path,
         mjcf.export_with_assets_as_zip(model_with_meshes(["part"]), out, overwrite=True)
     monkeypatch.undo()
     assert _contents(out) == {"m.zip": b"old archive"}
+
+
+def test_a_kept_apart_files_folder_is_never_a_link(tmp_path: Path) -> None:
+    """Two files of one base name are exported under their folders (``assets/a/x.stl``),
+    made inside the export's folder: a link in its place is refused, nothing written."""
+    for part, size in (("a", 0.1), ("b", 0.2)):
+        (tmp_path / "src" / "assets" / part).mkdir(parents=True)
+        (tmp_path / "src" / "assets" / part / "x.stl").write_bytes(box_stl(size))
+    source = tmp_path / "src" / "m.xml"
+    source.write_text("<mujoco><compiler meshdir='assets'/><asset><mesh name='a' "
+                      "file='a/x.stl'/><mesh name='b' file='b/x.stl'/></asset></mujoco>")
+    model = mjcf.from_path(source)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    (tmp_path / "out").mkdir()
+    (tmp_path / "out" / "assets").symlink_to(elsewhere)
+    with pytest.raises(mjcf.MjcfError, match="assets: not a folder"):
+        mjcf.export_with_assets(model, str(tmp_path / "out"))
+    assert not list(elsewhere.iterdir())
+    (tmp_path / "out" / "assets").unlink()
+    path = mjcf.export_with_assets(model, str(tmp_path / "out"))
+    assert files_under(tmp_path / "out") >= {"assets/a/x.stl", "assets/b/x.stl"}
+    assert mujoco.MjModel.from_xml_path(path).nmesh == 2

@@ -19,8 +19,12 @@ _CHILD = """
 import pickle, sys
 import mujoco
 xml, files = pickle.load(sys.stdin.buffer)
-try:
-    mujoco.MjModel.from_xml_string(xml, files)
+try:  # as typed_mjcf._compile compiles (a fresh process: no asset cache to empty)
+    if len({k.replace("\\\\", "/").rsplit("/", 1)[-1].casefold() for k in files}) == len(files):
+        mujoco.MjModel.from_xml_string(xml, files)
+    else:  # files of one base name, kept apart by their paths
+        includes = {k: v for k, v in files.items() if k.lower().endswith(".xml")}
+        mujoco.MjSpec.from_string(xml, include=includes, assets=files).compile()
 except (ValueError, RuntimeError) as error:
     sys.stdout.write(str(error) or type(error).__name__)
 """

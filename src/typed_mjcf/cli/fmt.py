@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import itertools
 import os
 import re
 import shutil
@@ -31,6 +32,7 @@ from typed_mjcf import _tree
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._grammar import ElementSpec
 from typed_mjcf._parse import INCLUDE, root_class
+from typed_mjcf._sourcelines import start_line
 from typed_mjcf._xmltext import MAX_INDENT, escape
 from typed_mjcf.cli._common import (
     BAD_INPUT,
@@ -235,10 +237,10 @@ def format_file(path: str, context: ElementSpec | None = None, canonical: bool =
     head = data.removeprefix(b"\xef\xbb\xbf").lstrip()
     declared = _DECLARATION.match(head) is not None
     if canonical:
-        return Formatted(path, data, _Printer(path, context).document(root, declared))
+        return Formatted(path, data, _Printer(path, context).document(root, declared, text=data))
     tags = start_tags(data)
     printer = _Printer(path, context, iter(tags), indent_unit(tags), width)
-    return Formatted(path, data, printer.document(root, declared, _as_written(head)))
+    return Formatted(path, data, printer.document(root, declared, _as_written(head), data))
 
 
 def _as_written(head: bytes) -> str | None:
@@ -277,9 +279,11 @@ class _Printer:
         return lay_out(spaces, f"<{tag}", written.attributes, written.closing_space + closing,
                        self.width)
 
-    def document(self, root: XmlElement, declared: bool, declaration: str | None = None) -> str:
+    def document(self, root: XmlElement, declared: bool, declaration: str | None = None,
+                 text: bytes = b"") -> str:
         """The text of the file whose root element is ``root``; ``declared``: it starts with an
-        XML declaration (``declaration``, as written, when it can stay so)."""
+        XML declaration (``declaration``, as written, when it can stay so); ``text``: the
+        file's, where the blank lines between what is outside the root are read."""
         tree = root.getroottree()
         info = tree.docinfo
         head: list[str] = []
@@ -294,11 +298,9 @@ class _Printer:
                            f"fmt would not keep; remove it (MJCF does not use DTDs)")
         if info.doctype:
             head.append(info.doctype)
-        before = list(root.itersiblings(preceding=True))
-        for node in reversed(before):
-            head.append(_other(node))
+        head += _outside([*reversed(list(root.itersiblings(preceding=True))), root], text)
         body = self.element(root, root_class().spec, 0, included_root=self.context is not None)
-        tail = [_other(node) for node in root.itersiblings()]
+        tail = _outside(list(root.itersiblings()), text)
         return "".join(f"{line}\n" for line in [*head, *body, *tail])
 
     def element(self, node: XmlElement, spec: ElementSpec, depth: int,
@@ -467,6 +469,35 @@ def _other(node: XmlElement) -> str:
         return etree.tostring(node, encoding="unicode", with_tail=False)
     attributes = "".join(f' {key}="{escape(str(value))}"' for key, value in node.attrib.items())
     return f"<{_tag(node)}{attributes}/>"
+
+
+def _outside(nodes: list[XmlElement], text: bytes) -> list[str]:
+    """The lines of what is outside the root (comments, instructions; the root itself last, if
+    given, is not written), with a blank line where the author left one (lxml keeps no
+    whitespace there: ``text`` says)."""
+    lines: list[str] = []
+    for node, after in itertools.pairwise(nodes):
+        lines.append(_other(node))
+        if _first_line(after, text) - _last_line(node) > 1:
+            lines.append("")  # one at most
+    if nodes and not isinstance(nodes[-1].tag, str):
+        lines.append(_other(nodes[-1]))
+    return lines
+
+
+def _last_line(node: XmlElement) -> int:
+    """The line a comment or processing instruction outside the root ends on."""
+    return node.sourceline or 0
+
+
+def _first_line(node: XmlElement, text: bytes) -> int:
+    """The line a node outside the root (or the root's start tag) begins on (libxml2 gives
+    the line it ends on); 0 without ``text``."""
+    if not text or node.sourceline is None:
+        return 0
+    if isinstance(node.tag, str):
+        return start_line(text, node.sourceline, node.tag)
+    return node.sourceline - _other(node).count("\n")
 
 
 def _tag(node: XmlElement) -> str:
