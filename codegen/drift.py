@@ -13,6 +13,9 @@ an attribute the schema already has, by loading tiny models through the installe
 * **default**: the model with the attribute set to the schema's default is saved back by
   ``MjSpec.to_xml`` (which writes values that differ from MuJoCo's defaults) exactly as the
   model without it; the new default is the documented one when that saves back unchanged;
+* **spellings**: each keyword's integer value (the enum's value column, else its C constant),
+  on every keyword attribute, hand-typed ones too: a reader that also takes the number
+  (``<headlight active="1">`` in 4.0.0) is recorded in the attribute's ``numbers``;
 * **string lists**: an id, reference or string stored in an ``mj*Vec`` field of its ``mjs``
   struct (what MjSpec reports) takes several values.
 
@@ -72,7 +75,7 @@ class Change:
 
     row: str
     name: str
-    what: Literal["kind", "keywords", "count", "default"]
+    what: Literal["kind", "keywords", "count", "default", "spellings", "defaults"]
     before: str
     after: str
 
@@ -438,6 +441,74 @@ def _same_type(a: ir.AttributeDef, b: ir.AttributeDef) -> bool:
 def _fact(row: str, name: str, fields: str) -> str:
     return (f'[[attribute]] element = "{row}", name = "{name}", {fields}, '
             'reason = "<what MuJoCo X changed>"')
+
+
+# ---------------------------------------------------------------------------- spellings
+
+
+def keyword_numbers(schema: ir.Schema, attr: ir.AttributeDef,
+                    enums: Mapping[str, Mapping[str, int]]) -> dict[str, int]:
+    """Each keyword of ``attr``'s enum with its integer: the value column's integer text, or
+    the value of its C constant."""
+    enum = schema.enums.get(attr.enum or "")
+    if enum is None:
+        return {}
+    consts = enums.get(enum.ctype or "", {})
+    out: dict[str, int] = {}
+    for word, value in enum.values:
+        if re.fullmatch(r"-?\d+", value):
+            out[word] = int(value)
+        elif value in consts:
+            out[word] = consts[value]
+    return out
+
+
+def probe_numbers(p: _Probe, attr: ir.AttributeDef,
+                  numbers: Mapping[str, int]) -> dict[str, int] | None:
+    """The keywords whose integer the reader also takes for ``attr`` (None: the probe model
+    cannot tell, its reader taking any word, as a frame sensor's reftype without refname)."""
+    if p.verdict(attr.name, probe.PROBE_VALUE) not in ("keyword", "bad"):
+        return None
+    return {w: n for w, n in numbers.items() if p.verdict(attr.name, str(n)) == "ok"}
+
+
+def check_spellings(schema: ir.Schema, parser: probe.Parser,
+                    enums: Mapping[str, Mapping[str, int]],
+                    sites: Mapping[str, Mapping[str, str]],
+                    rows: set[str] | None = None) -> Drift:
+    """Record in ``schema`` (each keyword attribute's ``numbers``, on its row and the default
+    rows projecting it) which other spellings the installed reader takes; a change is
+    :attr:`Drift.applied`. Every keyword attribute is probed, those facts.toml types too."""
+    drift = Drift()
+    for name in sorted(schema.elements if rows is None else rows):
+        row = schema.elements[name]
+        users = [a for a in row.attributes if a.kind == "keyword"]
+        if row.projection_of is not None or row.alias is not None or not users:
+            continue
+        p = site(schema, name, parser, sites)
+        if p is None:
+            drift.rows_skipped.append(name)
+            continue
+        for attr in users:
+            found = probe_numbers(p, attr, keyword_numbers(schema, attr, enums))
+            if found is None:
+                continue
+            drift.probed += 1
+            new = found or None
+            if new == attr.numbers:
+                continue
+            drift.applied.append(Change(name, attr.name, "spellings", _spelt(attr.numbers),
+                                        _spelt(new)))
+            for target in [row] + [r for r in schema.elements.values()
+                                   if r.projection_of == name]:
+                for other in target.attributes:
+                    if other.name == attr.name and other.enum == attr.enum:
+                        other.numbers = None if new is None else dict(new)
+    return drift
+
+
+def _spelt(numbers: Mapping[str, int] | None) -> str:
+    return "[" + ", ".join(f"{w}={n}" for w, n in (numbers or {}).items()) + "]"
 
 
 def check(schema: ir.Schema, parser: probe.Parser, ref: Reference,

@@ -108,6 +108,8 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append(f"arity={a.arity!r}")
     if a.enum is not None:
         args.append(f"keywords=get_args({typer.keyword_type(a)})")
+    if a.numbers:
+        args.append(f"numbers={tuple(a.numbers.items())!r}")
     alone = typer.alone_type(a)
     if alone is not None:
         args.append(f"alone=get_args({alone})")

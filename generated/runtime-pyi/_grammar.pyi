@@ -27,6 +27,7 @@ class AttributeSpec:
     hi: int | None
     is_array: bool
     keywords: tuple[str, ...]
+    numbers: tuple[tuple[str, int], ...]
     alone: tuple[str, ...]
     ordered: bool
     namespace: str | None
@@ -56,6 +57,7 @@ class AttributeSpec:
         dtype: str | None = None,
         arity: tuple[int, int | None] | None = None,
         keywords: Sequence[str] = (),
+        numbers: Sequence[tuple[str, int]] = (),
         alone: Sequence[str] = (),
         ordered: bool = False,
         namespace: str | None = None,

@@ -2908,7 +2908,7 @@ class Headlight(Element):
             A('ambient', 'real', dtype='float', arity=(3, 3), default='0.1 0.1 0.1', doc='float[3]; default "0.1 0.1 0.1".'),
             A('diffuse', 'real', dtype='float', arity=(3, 3), default='0.4 0.4 0.4', doc='float[3]; default "0.4 0.4 0.4".'),
             A('specular', 'real', dtype='float', arity=(3, 3), default='0.5 0.5 0.5', doc='float[3]; default "0.5 0.5 0.5".'),
-            A('active', 'keyword', keywords=get_args(HeadlightActive), default='auto', doc='one of: false, true, auto; default "auto"; in MuJoCo 3.3.7, 3.17.0: int, default "1".'),
+            A('active', 'keyword', keywords=get_args(HeadlightActive), numbers=(('false', 0), ('true', 1), ('auto', 2)), default='auto', doc='one of: false, true, auto; default "auto"; in MuJoCo 3.3.7, 3.17.0: int, default "1".'),
         ),
         anchor='visual-headlight',
     )

@@ -169,3 +169,54 @@ def test_free_text_that_the_reader_now_types_stops(schema: ir.Schema, wheel: Whe
     attr.kind, attr.dtype, attr.enum, attr.arity, attr.default = "string", None, None, None, None
     found = check(schema, wheel, {"geom"})
     assert [c.line() for c, _ in found.untypable] == [f"geom@{name} kind: string -> {after}"]
+
+
+# ---------------------------------------------------------------- spellings (check_spellings)
+
+
+def spellings(schema: ir.Schema, parser: probe.Parser, wheel: Wheel,
+              rows: set[str]) -> list[str]:
+    found = drift.check_spellings(schema, parser, wheel.enums, drift.load_sites(), rows)
+    assert found.probed > 0
+    return lines(found)
+
+
+def test_numbers_a_reader_starts_taking_are_recorded(schema: ir.Schema, wheel: Wheel) -> None:
+    """The schema as 3.x typed <headlight active> (no numbers) against 4.0.0's reader."""
+    assert wheel.drift_parser is not None
+    for row in ("headlight",):
+        schema.elements[row].attribute("active").numbers = None
+    assert spellings(schema, wheel.drift_parser, wheel, {"headlight"}) == [
+        "headlight@active spellings: [] -> [false=0, true=1, auto=2]"]
+    assert schema.elements["headlight"].attribute("active").numbers == {
+        "false": 0, "true": 1, "auto": 2}
+
+
+def test_numbers_a_reader_stops_taking_are_dropped(schema: ir.Schema, wheel: Wheel) -> None:
+    assert wheel.drift_parser is not None
+    schema.elements["joint"].attribute("type").numbers = {"hinge": 3}
+    schema.elements["default_joint"].attribute("type").numbers = {"hinge": 3}
+    assert spellings(schema, wheel.drift_parser, wheel, {"joint"}) == [
+        "joint@type spellings: [hinge=3] -> []"]
+    assert schema.elements["default_joint"].attribute("type").numbers is None  # the copy too
+
+
+def test_a_release_reading_a_keyword_s_c_value_is_seen(schema: ir.Schema, wheel: Wheel) -> None:
+    """A simulated MuJoCo whose reader takes joint type="3" (mjJNT_HINGE) as hinge."""
+    real = wheel.drift_parser
+    assert real is not None
+
+    def newer(xml: str) -> probe.Outcome:
+        return real(xml.replace('<joint type="3"', '<joint type="hinge"'))
+
+    assert spellings(schema, newer, wheel, {"joint"}) == ["joint@type spellings: [] -> [hinge=3]"]
+    assert schema.elements["default_joint"].attribute("type").numbers == {"hinge": 3}
+
+
+def test_a_reader_taking_any_word_is_not_probed_for_numbers(schema: ir.Schema,
+                                                            wheel: Wheel) -> None:
+    """A frame sensor's reftype is not read without a refname: every word loads."""
+    assert wheel.drift_parser is not None
+    found = drift.check_spellings(schema, wheel.drift_parser, wheel.enums, drift.load_sites(),
+                                  {"framepos"})
+    assert found.applied == [] and found.probed == 2  # interp and objtype, not reftype
