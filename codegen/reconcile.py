@@ -203,6 +203,7 @@ class _Sync:
         for row in self._alias_rows():
             self._sync_probed_attributes(row)
         self._apply_enum_facts()
+        self._set_anchors()  # the probe reads documented defaults by anchor (set again below)
         self._probe_types()
         self._apply_overrides()
         self._probe_spellings()

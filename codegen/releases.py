@@ -178,6 +178,9 @@ def gates(newest: ir.Schema, older: dict[str, ir.Schema]) -> Gates:
                     continue
                 having.append(version)
                 old_type = type_fields(older[version], match)
+                if "default" not in old_type and a.default is not None and match.kind == a.kind:
+                    # a release file written before defaults were probed: the newest's stands
+                    old_type["default"] = a.default
                 if _differs(type_fields(newest, a), old_type):
                     result.types.setdefault(row, {}).setdefault(a.name, {})[version] = old_type
                 elif a.kind in ("keyword", "flags") and match.kind == a.kind:

@@ -123,6 +123,8 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append(f"default={a.default!r}")
     if a.required:
         args.append("required=True")
+    if a.computed is not None:
+        args.append("computed=True")
     if a.pattern is not None:
         args.append(f"pattern={a.pattern!r}")
     if a.bounds:

@@ -33,6 +33,7 @@ class AttributeSpec:
     namespace: str | None
     namespace_from: tuple[str, Mapping[str, str]] | None
     default: str | None
+    computed: bool
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]
@@ -63,6 +64,7 @@ class AttributeSpec:
         namespace: str | None = None,
         namespace_from: tuple[str, Mapping[str, str]] | None = None,
         default: str | None = None,
+        computed: bool = False,
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),

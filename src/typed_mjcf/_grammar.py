@@ -36,6 +36,7 @@ class AttributeSpec:
         "bounds",
         "codec",
         "codec_only",
+        "computed",
         "default",
         "direct",
         "directory",
@@ -74,6 +75,7 @@ class AttributeSpec:
     namespace: str | None
     namespace_from: tuple[str, Mapping[str, str]] | None
     default: str | None
+    computed: bool  # no default: MuJoCo computes the value when the attribute is absent
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
@@ -107,6 +109,7 @@ class AttributeSpec:
         namespace: str | None = None,
         namespace_from: tuple[str, Mapping[str, str]] | None = None,
         default: str | None = None,
+        computed: bool = False,
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),
@@ -131,6 +134,7 @@ class AttributeSpec:
         # objname-like references: the namespace is named by another attribute's keyword
         self.namespace_from = namespace_from
         self.default = default
+        self.computed = computed
         self.required = required
         self.pattern = pattern
         # every value keeps these, or MuJoCo refuses the model (validate() checks them)

@@ -220,3 +220,57 @@ def test_a_reader_taking_any_word_is_not_probed_for_numbers(schema: ir.Schema,
     found = drift.check_spellings(schema, wheel.drift_parser, wheel.enums, drift.load_sites(),
                                   {"framepos"})
     assert found.applied == [] and found.probed == 2  # interp and objtype, not reftype
+
+
+# ------------------------------------------------------------ defaults the schema lacked
+
+
+def test_a_missing_default_is_the_value_the_reader_saves_back_as_absent(
+        schema: ir.Schema, wheel: Wheel) -> None:
+    for row in ("joint", "default_joint"):
+        schema.elements[row].attribute("damping").default = None
+    found = check(schema, wheel, {"joint"})
+    assert lines(found) == ['joint@damping default: (none) -> "0 0 0"']
+    assert schema.elements["default_joint"].attribute("damping").default == "0 0 0"
+
+
+def test_a_value_mujoco_computes_is_recorded_with_why(schema: ir.Schema, wheel: Wheel) -> None:
+    """A geom's mass comes from its density and volume: no written value reads as absent."""
+    for row in ("geom", "default_geom"):
+        schema.elements[row].attribute("mass").computed = None
+    found = check(schema, wheel, {"geom"})
+    assert lines(found) == ["geom@mass default: (none) -> (computed)"]
+    assert schema.elements["geom"].attribute("mass").computed == drift.COMPUTED
+    assert schema.elements["geom"].attribute("mass").default is None
+
+
+def test_an_alternative_to_an_attribute_with_a_default_gets_none(schema: ir.Schema,
+                                                                  wheel: Wheel) -> None:
+    """axisangle="1 0 0 0" reads as absent, but quat's default applies: no default."""
+    found = check(schema, wheel, {"body"})
+    assert found.applied == []
+    assert schema.elements["body"].attribute("axisangle").default is None
+    assert schema.elements["body"].attribute("axisangle").computed is None
+
+
+def test_an_actuator_s_defaults_are_probed_with_its_target(schema: ir.Schema,
+                                                           wheel: Wheel) -> None:
+    """MuJoCo compiles (and saves) a motor only with a joint: the probe gives it one."""
+    for row in ("motor", "default_motor"):
+        schema.elements[row].attribute("ctrlrange").default = None
+    found = check(schema, wheel, {"motor"})
+    assert lines(found) == ['motor@ctrlrange default: (none) -> "0 0"']
+
+
+def test_the_release_day_report_lists_changed_spellings_and_defaults(
+        schema: ir.Schema, wheel: Wheel) -> None:
+    """`python -m codegen generate`'s report, after a simulated MuJoCo release whose reader
+    reads headlight@active's numbers (newly) and a joint's damping when absent as 0."""
+    schema.elements["headlight"].attribute("active").numbers = None
+    for row in ("joint", "default_joint"):
+        schema.elements[row].attribute("damping").default = None
+    _, report = sync(schema, wheel, load_facts())
+    text = report.format()
+    assert "  ~ headlight@active spellings: [] -> [false=0, true=1, auto=2]" in text
+    assert '  ~ joint@damping default: (none) -> "0 0 0"' in text
+    assert not report.drift_errors
