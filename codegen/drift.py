@@ -146,10 +146,11 @@ def site(schema: ir.Schema, row: str, parser: probe.Parser,
 # Objects a probe model's references can name (the default probe needs a model MuJoCo
 # compiles, so an actuator or a sensor needs its target), all named TARGET.
 TARGET = "typedmjcf_target"
-_WORLD = (f'<worldbody><body name="{TARGET}"><joint name="{TARGET}"/>'
+_WORLD = (f'<worldbody><body name="{TARGET}"><joint name="{TARGET}" range="-1 1"/>'
           f'<geom name="{TARGET}" size="0.1"/><site name="{TARGET}"/>'
           f'<camera name="{TARGET}"/></body></worldbody>'
-          f'<tendon><fixed name="{TARGET}"><joint joint="{TARGET}" coef="1"/></fixed></tendon>')
+          f'<tendon><fixed name="{TARGET}" range="-1 1"><joint joint="{TARGET}" coef="1"/>'
+          f'</fixed></tendon>')  # limited: the limit sensors need it
 _TARGETS = frozenset({"body", "joint", "geom", "site", "camera", "tendon"})
 
 
@@ -158,16 +159,20 @@ def targeted(schema: ir.Schema, row: ir.ElementDef, p: _Probe) -> _Probe:
     and one reference of the row naming its target (the first that makes it save)."""
     if not p.baseline.saved.startswith(probe.UNSAVED):
         return p
-    refs: list[dict[str, str]] = [{}]
+    every: list[dict[str, str]] = []  # the row's references, each naming its target
     for attr in row.attributes:
         if attr.kind == "ref" and attr.namespace in _TARGETS:
-            refs.append({attr.name: TARGET})
+            every.append({attr.name: TARGET})
         elif attr.namespace_from is not None:
             enum = schema.enums.get(row.attribute(attr.namespace_from).enum or "")
             for word in ("site", "body", "joint", "geom"):
                 if enum is not None and word in enum.keywords:
-                    refs.append({attr.namespace_from: word, attr.name: TARGET})
+                    every.append({attr.namespace_from: word, attr.name: TARGET})
                     break
+    # the required references together, then with each other one
+    needed = {k: v for ref in every for k, v in ref.items()
+              if any(a.name == k and a.required for a in row.attributes)}
+    refs = [needed] + [{**needed, **ref} for ref in every if not ref.keys() <= needed.keys()]
     for ref in refs:
         required = {tag: dict(attrs) for tag, attrs in p.site.required.items()}
         required.setdefault(row.tag, {}).update(ref)

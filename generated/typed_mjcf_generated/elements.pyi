@@ -1926,18 +1926,18 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1946,7 +1946,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kv: double; default "0"; >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2066,35 +2066,35 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            range: double[2]; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            range: double[2]; default "0.75 1.05".
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
             tendon: reference to namespace ``tendon``; no default (unset when absent).
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
-            timeconst: double[2]; no default (unset when absent).
-            tausmooth: double; no default (unset when absent); >= 0.
-            force: double; no default (unset when absent).
-            scale: double; no default (unset when absent).
-            lmin: double; no default (unset when absent).
-            lmax: double; no default (unset when absent).
-            vmax: double; no default (unset when absent).
-            fpmax: double; no default (unset when absent).
-            fvmax: double; no default (unset when absent).
+            timeconst: double[2]; default "0.01 0.04".
+            tausmooth: double; default "0"; >= 0.
+            force: double; default "-1".
+            scale: double; default "200".
+            lmin: double; default "0.5".
+            lmax: double; default "1.6".
+            vmax: double; default "1.5".
+            fpmax: double; default "1.3".
+            fvmax: double; default "1.2".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -4594,37 +4594,37 @@ class Camprojection(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
     """
@@ -4653,16 +4653,19 @@ class Camprojection(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -5544,25 +5547,25 @@ class Damper(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
     """
@@ -5586,13 +5589,13 @@ class Damper(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
     """
@@ -5604,13 +5607,13 @@ class Damper(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
     """
@@ -5664,7 +5667,7 @@ class Damper(_Typed):
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
     """
@@ -5681,22 +5684,25 @@ class Damper(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "kv"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["forcerange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -6832,19 +6838,19 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-damper
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kv: double; default "0"; >= 0.
         """
 
     @property
@@ -6933,28 +6939,28 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-muscle
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            range: double[2]; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            range: double[2]; default "0.75 1.05".
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            timeconst: double[2]; no default (unset when absent).
-            force: double; no default (unset when absent).
-            scale: double; no default (unset when absent).
-            lmin: double; no default (unset when absent).
-            lmax: double; no default (unset when absent).
-            vmax: double; no default (unset when absent).
-            fpmax: double; no default (unset when absent).
-            fvmax: double; no default (unset when absent).
+            timeconst: double[2]; default "0.01 0.04".
+            force: double; default "-1".
+            scale: double; default "200".
+            lmin: double; default "0.5".
+            lmax: double; default "1.6".
+            vmax: double; default "1.5".
+            fpmax: double; default "1.3".
+            fvmax: double; default "1.2".
         """
 
     @property
@@ -7633,25 +7639,25 @@ class DefaultDamper(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
     """
@@ -7675,7 +7681,7 @@ class DefaultDamper(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
     """
@@ -7687,13 +7693,13 @@ class DefaultDamper(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
     """
@@ -7705,30 +7711,33 @@ class DefaultDamper(_Typed):
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "kv"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["forcerange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
 
 class DefaultDcmotor(_Typed):
@@ -9113,31 +9122,31 @@ class DefaultMuscle(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
     """
@@ -9161,7 +9170,7 @@ class DefaultMuscle(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
     """
@@ -9173,13 +9182,13 @@ class DefaultMuscle(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
     """
@@ -9191,78 +9200,81 @@ class DefaultMuscle(_Typed):
     """
 
     timeconst: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``timeconst``: double[2]; no default (unset when absent).
+    """``timeconst``: double[2]; default "0.01 0.04".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0.75 1.05".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
     """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
-    """``force``: double; no default (unset when absent).
+    """``force``: double; default "-1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
     """
 
     scale: _Attr[_builtins.float | None, _t.Real | None]
-    """``scale``: double; no default (unset when absent).
+    """``scale``: double; default "200".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
     """
 
     lmin: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmin``: double; no default (unset when absent).
+    """``lmin``: double; default "0.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
     """
 
     lmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmax``: double; no default (unset when absent).
+    """``lmax``: double; default "1.6".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
     """
 
     vmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``vmax``: double; no default (unset when absent).
+    """``vmax``: double; default "1.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
     """
 
     fpmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fpmax``: double; no default (unset when absent).
+    """``fpmax``: double; default "1.3".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
     """
 
     fvmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fvmax``: double; no default (unset when absent).
+    """``fvmax``: double; default "1.2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping", "timeconst", "range"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping", "timeconst", "range"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
 
 class DefaultOrientation(_Typed):
@@ -15644,37 +15656,37 @@ class Insidesite(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
     """
@@ -15715,16 +15727,19 @@ class Insidesite(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -16316,37 +16331,37 @@ class Jointlimitfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
     """
@@ -16369,16 +16384,19 @@ class Jointlimitfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16399,37 +16417,37 @@ class Jointlimitpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
     """
@@ -16452,16 +16470,19 @@ class Jointlimitpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16482,37 +16503,37 @@ class Jointlimitvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
     """
@@ -16535,16 +16556,19 @@ class Jointlimitvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -17907,31 +17931,31 @@ class Muscle(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
     """
@@ -17955,7 +17979,7 @@ class Muscle(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
     """
@@ -17973,13 +17997,13 @@ class Muscle(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
     """
@@ -18021,61 +18045,61 @@ class Muscle(_Typed):
     """
 
     timeconst: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``timeconst``: double[2]; no default (unset when absent).
+    """``timeconst``: double[2]; default "0.01 0.04".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
     """
 
     tausmooth: _Attr[_builtins.float | None, _t.Real | None]
-    """``tausmooth``: double; no default (unset when absent); >= 0.
+    """``tausmooth``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0.75 1.05".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
     """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
-    """``force``: double; no default (unset when absent).
+    """``force``: double; default "-1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
     """
 
     scale: _Attr[_builtins.float | None, _t.Real | None]
-    """``scale``: double; no default (unset when absent).
+    """``scale``: double; default "200".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
     """
 
     lmin: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmin``: double; no default (unset when absent).
+    """``lmin``: double; default "0.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
     """
 
     lmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmax``: double; no default (unset when absent).
+    """``lmax``: double; default "1.6".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
     """
 
     vmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``vmax``: double; no default (unset when absent).
+    """``vmax``: double; default "1.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
     """
 
     fpmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fpmax``: double; no default (unset when absent).
+    """``fpmax``: double; default "1.3".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
     """
 
     fvmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fvmax``: double; no default (unset when absent).
+    """``fvmax``: double; default "1.2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
     """
@@ -18092,22 +18116,25 @@ class Muscle(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "tausmooth", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "tausmooth", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping", "timeconst", "range"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping", "timeconst", "range"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user", "lengthrange"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -20730,12 +20757,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
             camera: reference to namespace ``camera``; required.
@@ -21151,12 +21178,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21183,12 +21210,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21215,12 +21242,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21247,12 +21274,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21279,12 +21306,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21311,12 +21338,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21776,12 +21803,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
             objtype: one of: body, xbody, geom, site, camera; required.
@@ -24056,37 +24083,37 @@ class Tendonlimitfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
     """
@@ -24109,16 +24136,19 @@ class Tendonlimitfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24139,37 +24169,37 @@ class Tendonlimitpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
     """
@@ -24192,16 +24222,19 @@ class Tendonlimitpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24222,37 +24255,37 @@ class Tendonlimitvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
     """
@@ -24275,16 +24308,19 @@ class Tendonlimitvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
