@@ -514,8 +514,10 @@ COMPUTED = ("MuJoCo derives the value when the attribute is absent: no plain val
 
 
 def _alternative(row: ir.ElementDef, attr: ir.AttributeDef) -> bool:
-    """``attr`` is refused beside another attribute that has a default (quat's orientation
-    alternatives): that one's default applies when neither is given."""
+    """``attr``, a number, is refused beside another attribute that has a default (quat's
+    orientation alternatives): that one's default applies when neither is given."""
+    if attr.kind not in ("int", "real"):
+        return False  # a keyword or flag (light type beside directional) has its own
     defaults = {a.name for a in row.attributes if a.default is not None}
     return any(attr.name in bundle and any(n in defaults for b in c.bundles for n in b
                                            if b is not bundle)

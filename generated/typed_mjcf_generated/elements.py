@@ -1595,7 +1595,7 @@ class DefaultLight(Element):
         'default_light',
         attributes=(
             A('directional', 'bool', default='false', anchor='body-light-directional', doc='bool; default "false".'),
-            A('type', 'keyword', keywords=get_args(LightType), anchor='body-light-type', doc='one of: spot, directional, point, image; no default (unset when absent).'),
+            A('type', 'keyword', keywords=get_args(LightType), default='spot', anchor='body-light-type', doc='one of: spot, directional, point, image; default "spot".'),
             A('castshadow', 'bool', default='true', anchor='body-light-castshadow', doc='bool; default "true".'),
             A('active', 'bool', default='true', anchor='body-light-active', doc='bool; default "true".'),
             A('pos', 'real', arity=(3, 3), default='0 0 0', anchor='body-light-pos', doc='double[3]; default "0 0 0".'),
@@ -3284,7 +3284,7 @@ class Light(Element):
             A('name', 'id', namespace='light', doc='name declared in namespace ``light``; no default (unset when absent).'),
             A('class', 'ref', py_name='class_', namespace='default', doc='reference to namespace ``default``; no default (unset when absent).'),
             A('directional', 'bool', default='false', doc='bool; default "false".'),
-            A('type', 'keyword', keywords=get_args(LightType), doc='one of: spot, directional, point, image; no default (unset when absent).'),
+            A('type', 'keyword', keywords=get_args(LightType), default='spot', doc='one of: spot, directional, point, image; default "spot".'),
             A('castshadow', 'bool', default='true', doc='bool; default "true".'),
             A('active', 'bool', default='true', doc='bool; default "true".'),
             A('pos', 'real', arity=(3, 3), default='0 0 0', doc='double[3]; default "0 0 0".'),

@@ -4118,7 +4118,7 @@ class Body(_Typed, _Attachable):
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             directional: bool; default "false".
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
@@ -6317,7 +6317,7 @@ class Default(_Typed):
 
         Args:
             directional: bool; default "false".
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
@@ -8724,7 +8724,7 @@ class DefaultLight(_Typed):
     """
 
     type: _Attr[LightType | None, LightType | None]
-    """``type``: one of: spot, directional, point, image; no default (unset when absent).
+    """``type``: one of: spot, directional, point, image; default "spot".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
     """
@@ -8825,7 +8825,7 @@ class DefaultLight(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["type"]) -> LightType | None: ...
+    def resolve(self, name: Literal["type"]) -> LightType: ...
 
     @overload
     def resolve(self, name: Literal["pos", "dir"]) -> _t.Float64Array: ...
@@ -13360,7 +13360,7 @@ class Frame(_Typed, _Attachable):
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             directional: bool; default "false".
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
@@ -17027,7 +17027,7 @@ class Light(_Typed):
     """
 
     type: _Attr[LightType | None, LightType | None]
-    """``type``: one of: spot, directional, point, image; no default (unset when absent).
+    """``type``: one of: spot, directional, point, image; default "spot".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
     """
@@ -17149,7 +17149,7 @@ class Light(_Typed):
     def resolve(self, name: Literal["directional", "castshadow", "active"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["type"]) -> LightType | None: ...
+    def resolve(self, name: Literal["type"]) -> LightType: ...
 
     @overload
     def resolve(self, name: Literal["pos", "dir"]) -> _t.Float64Array: ...
@@ -20086,7 +20086,7 @@ class Replicate(_Typed, _Attachable):
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             directional: bool; default "false".
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
@@ -26165,7 +26165,7 @@ class Worldbody(_Typed, _Attachable):
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             directional: bool; default "false".
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
