@@ -57,6 +57,8 @@ def attribute_doc(typer: Typer, a: ir.AttributeDef, releases: str | None = None)
         facts.append(f'default "{a.default}"')
     elif a.required:
         facts.append("required")
+    elif a.computed is not None:
+        facts.append("default computed by MuJoCo")
     else:
         facts.append("no default (unset when absent)")
     if a.pattern is not None:

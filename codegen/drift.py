@@ -13,6 +13,9 @@ an attribute the schema already has, by loading tiny models through the installe
 * **default**: the model with the attribute set to the schema's default is saved back by
   ``MjSpec.to_xml`` (which writes values that differ from MuJoCo's defaults) exactly as the
   model without it; the new default is the documented one when that saves back unchanged;
+* **spellings**: each keyword's integer value (the enum's value column, else its C constant),
+  on every keyword attribute, hand-typed ones too: a reader that also takes the number
+  (``<headlight active="1">`` in 4.0.0) is recorded in the attribute's ``numbers``;
 * **string lists**: an id, reference or string stored in an ``mj*Vec`` field of its ``mjs``
   struct (what MjSpec reports) takes several values.
 
@@ -26,6 +29,7 @@ left to it: the facts record what the parser alone does not say.
 from __future__ import annotations
 
 import copy
+import dataclasses
 import re
 import tomllib
 from collections.abc import Mapping
@@ -72,7 +76,7 @@ class Change:
 
     row: str
     name: str
-    what: Literal["kind", "keywords", "count", "default"]
+    what: Literal["kind", "keywords", "count", "default", "spellings", "defaults"]
     before: str
     after: str
 
@@ -134,9 +138,49 @@ def site(schema: ir.Schema, row: str, parser: probe.Parser,
         required.setdefault("body", {}).setdefault("name", "typedmjcf_body")
     holds = any(schema.elements[c.element].tag == "body"
                 for c in schema.elements[row].children)
-    found = probe.Site(tags, required, holds)
+    found = probe.Site(tags, required, holds, weighted=True)
     baseline = parser(found.model())
     return None if baseline.error is not None else _Probe(found, parser, baseline)
+
+
+# Objects a probe model's references can name (the default probe needs a model MuJoCo
+# compiles, so an actuator or a sensor needs its target), all named TARGET.
+TARGET = "typedmjcf_target"
+_WORLD = (f'<worldbody><body name="{TARGET}"><joint name="{TARGET}" range="-1 1"/>'
+          f'<geom name="{TARGET}" size="0.1"/><site name="{TARGET}"/>'
+          f'<camera name="{TARGET}"/></body></worldbody>'
+          f'<tendon><fixed name="{TARGET}" range="-1 1"><joint joint="{TARGET}" coef="1"/>'
+          f'</fixed></tendon>')  # limited: the limit sensors need it
+_TARGETS = frozenset({"body", "joint", "geom", "site", "camera", "tendon"})
+
+
+def targeted(schema: ir.Schema, row: ir.ElementDef, p: _Probe) -> _Probe:
+    """``p``, or where MuJoCo cannot save its model, the same row with a world of targets
+    and one reference of the row naming its target (the first that makes it save)."""
+    if not p.baseline.saved.startswith(probe.UNSAVED):
+        return p
+    every: list[dict[str, str]] = []  # the row's references, each naming its target
+    for attr in row.attributes:
+        if attr.kind == "ref" and attr.namespace in _TARGETS:
+            every.append({attr.name: TARGET})
+        elif attr.namespace_from is not None:
+            enum = schema.enums.get(row.attribute(attr.namespace_from).enum or "")
+            for word in ("site", "body", "joint", "geom"):
+                if enum is not None and word in enum.keywords:
+                    every.append({attr.namespace_from: word, attr.name: TARGET})
+                    break
+    # the required references together, then with each other one
+    needed = {k: v for ref in every for k, v in ref.items()
+              if any(a.name == k and a.required for a in row.attributes)}
+    refs = [needed] + [{**needed, **ref} for ref in every if not ref.keys() <= needed.keys()]
+    for ref in refs:
+        required = {tag: dict(attrs) for tag, attrs in p.site.required.items()}
+        required.setdefault(row.tag, {}).update(ref)
+        found = dataclasses.replace(p.site, required=required, world=_WORLD)
+        baseline = p.parser(found.model())
+        if baseline.error is None and not baseline.saved.startswith(probe.UNSAVED):
+            return _Probe(found, p.parser, baseline)
+    return p
 
 
 def load_sites(path: Path = PROBE_SITES) -> dict[str, dict[str, str]]:
@@ -242,6 +286,7 @@ class _Checker:
         self.hand = hand
         self.hand_enums = hand_enums
         self.drift = Drift()
+        self.for_defaults: _Probe | None = None  # the row's probe for defaults (targeted)
         # enum -> (row, attribute, keywords the parser took) for every probed user
         self.keyword_sets: dict[str, list[tuple[str, str, list[str]]]] = {}
 
@@ -254,6 +299,7 @@ class _Checker:
             if p is None:
                 self.drift.rows_skipped.append(name)
                 continue
+            self.for_defaults = targeted(self.schema, row, p)
             for attr in list(row.attributes):
                 if (name, attr.name) in self.hand:
                     continue
@@ -268,10 +314,10 @@ class _Checker:
         if attr.kind in ("int", "real"):
             if self._numeric_kind(p, row, attr):
                 self._counts(p, row, attr)
-                self._default(p, row, attr)
+                self._default(self.for_defaults, row, attr)
         elif attr.kind in ("keyword", "bool", "flags"):
             if self._keyword_kind(p, row, attr):
-                self._default(p, row, attr)
+                self._default(self.for_defaults, row, attr)
         elif attr.kind in _STRING_KINDS:
             self._string_list(row, attr)
         elif attr.kind == "string":
@@ -336,9 +382,12 @@ class _Checker:
         self._apply(row, attr, Change(row.name, attr.name, "count", _count_text(attr.arity),
                                       _count_text(new)), arity=new)
 
-    def _default(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
-        if attr.default is None or p.baseline.saved.startswith(probe.UNSAVED):
+    def _default(self, p: _Probe | None, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        if p is None or p.baseline.saved.startswith(probe.UNSAVED):
             return  # MuJoCo cannot save the probe model: nothing to compare
+        if attr.default is None:
+            self._missing_default(p, row, attr)
+            return
         self.drift.defaults += 1
         if p.load(attr.name, attr.default).saved == p.baseline.saved:
             return
@@ -352,6 +401,38 @@ class _Checker:
         change = Change(row.name, attr.name, "default", f'"{attr.default}"', "(another)")
         self.drift.untypable.append(
             (change, _fact(row.name, attr.name, 'default = "<the value MuJoCo uses>"')))
+
+    def _missing_default(self, p: _Probe, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
+        """No default yet: MuJoCo's documented default when MuJoCo saves the model with it
+        back as with the attribute left out, else the one plain value that does; when the
+        saved model shows the attribute (some value changes it) and none does, MuJoCo
+        computes the value (``computed``); else the probe cannot tell. An alternative to an
+        attribute with a default (axisangle beside quat) has none of its own."""
+        if attr.name in p.site.required.get(row.tag, {}) or _alternative(row, attr):
+            return  # the probe model sets it (no model leaves it out); or quat's applies
+        plain = default_candidates(attr, self.schema)
+        documented = _documented(attr, self.ref)
+        texts = plain + [documented.default] if documented is not None and documented.default \
+            and documented.default not in plain else plain
+        saved = {text: p.load(attr.name, text) for text in texts}
+        same = [t for t, o in saved.items() if o.error is None and o.saved == p.baseline.saved]
+        if len(same) == len(texts) or not same and all(o.error for o in saved.values()):
+            return  # the saved model does not show the attribute: nothing to tell
+        if len([t for t in same if t in plain]) != 1 and len(same) > 1 and documented \
+                is not None and documented.default in same:
+            same = [documented.default]  # the documented one, of several read alike
+        elif len(same) > 1:
+            same = [t for t in same if t in plain]
+        if len(same) > 1 or not same and (attr.computed is not None or not plain):
+            return  # several read alike (a zero quaternion and the unit one): cannot tell
+        self.drift.defaults += 1
+        before = "(computed)" if attr.computed is not None else "(none)"
+        if same:
+            self._apply(row, attr, Change(row.name, attr.name, "default", before,
+                                          f'"{same[0]}"'), default=same[0], computed=None)
+            return
+        self._apply(row, attr, Change(row.name, attr.name, "default", before, "(computed)"),
+                    computed=COMPUTED)
 
     def _string_list(self, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
         c_type = self.structs.get(row.struct or "", {}).get(attr.field or attr.name)
@@ -427,6 +508,40 @@ class _Checker:
         enum.values = sorted(out, key=lambda kv: order.get(kv[0], len(order)))
 
 
+# Why an attribute has no default, when the probe finds none (docs: "computed by MuJoCo").
+COMPUTED = ("MuJoCo derives the value when the attribute is absent: no plain value written "
+            "saves back as the attribute left out (codegen/drift.py)")
+
+
+def _alternative(row: ir.ElementDef, attr: ir.AttributeDef) -> bool:
+    """``attr``, a number, is refused beside another attribute that has a default (quat's
+    orientation alternatives): that one's default applies when neither is given."""
+    if attr.kind not in ("int", "real"):
+        return False  # a keyword or flag (light type beside directional) has its own
+    defaults = {a.name for a in row.attributes if a.default is not None}
+    return any(attr.name in bundle and any(n in defaults for b in c.bundles for n in b
+                                           if b is not bundle)
+               for c in row.constraints if c.kind == "exclusive" for bundle in c.bundles)
+
+
+def default_candidates(attr: ir.AttributeDef, schema: ir.Schema) -> list[str]:
+    """Plain values a default may be, then one that shows the attribute in a saved model:
+    zeros and ones of the full count (``2``: a contrast), false and true, the keywords."""
+    if attr.kind == "bool":
+        return ["false", "true"]
+    if attr.kind == "keyword":
+        enum = schema.enums.get(attr.enum or "")
+        return list(enum.keywords) if enum is not None else []
+    if attr.kind not in ("int", "real"):
+        return []
+    low, high = attr.arity if attr.arity is not None else (1, 1)
+    count = high if high is not None else low
+    if count < 1 or count > _COUNT_CAP:
+        return []
+    unit = [" ".join(["1"] + ["0"] * (count - 1))] if count > 1 else []
+    return [" ".join([v] * count) for v in ("0", "1", "2")] + unit
+
+
 def _saves(p: _Probe) -> bool:
     return not p.baseline.saved.startswith(probe.UNSAVED)
 
@@ -438,6 +553,74 @@ def _same_type(a: ir.AttributeDef, b: ir.AttributeDef) -> bool:
 def _fact(row: str, name: str, fields: str) -> str:
     return (f'[[attribute]] element = "{row}", name = "{name}", {fields}, '
             'reason = "<what MuJoCo X changed>"')
+
+
+# ---------------------------------------------------------------------------- spellings
+
+
+def keyword_numbers(schema: ir.Schema, attr: ir.AttributeDef,
+                    enums: Mapping[str, Mapping[str, int]]) -> dict[str, int]:
+    """Each keyword of ``attr``'s enum with its integer: the value column's integer text, or
+    the value of its C constant."""
+    enum = schema.enums.get(attr.enum or "")
+    if enum is None:
+        return {}
+    consts = enums.get(enum.ctype or "", {})
+    out: dict[str, int] = {}
+    for word, value in enum.values:
+        if re.fullmatch(r"-?\d+", value):
+            out[word] = int(value)
+        elif value in consts:
+            out[word] = consts[value]
+    return out
+
+
+def probe_numbers(p: _Probe, attr: ir.AttributeDef,
+                  numbers: Mapping[str, int]) -> dict[str, int] | None:
+    """The keywords whose integer the reader also takes for ``attr`` (None: the probe model
+    cannot tell, its reader taking any word, as a frame sensor's reftype without refname)."""
+    if p.verdict(attr.name, probe.PROBE_VALUE) not in ("keyword", "bad"):
+        return None
+    return {w: n for w, n in numbers.items() if p.verdict(attr.name, str(n)) == "ok"}
+
+
+def check_spellings(schema: ir.Schema, parser: probe.Parser,
+                    enums: Mapping[str, Mapping[str, int]],
+                    sites: Mapping[str, Mapping[str, str]],
+                    rows: set[str] | None = None) -> Drift:
+    """Record in ``schema`` (each keyword attribute's ``numbers``, on its row and the default
+    rows projecting it) which other spellings the installed reader takes; a change is
+    :attr:`Drift.applied`. Every keyword attribute is probed, those facts.toml types too."""
+    drift = Drift()
+    for name in sorted(schema.elements if rows is None else rows):
+        row = schema.elements[name]
+        users = [a for a in row.attributes if a.kind == "keyword"]
+        if row.projection_of is not None or row.alias is not None or not users:
+            continue
+        p = site(schema, name, parser, sites)
+        if p is None:
+            drift.rows_skipped.append(name)
+            continue
+        for attr in users:
+            found = probe_numbers(p, attr, keyword_numbers(schema, attr, enums))
+            if found is None:
+                continue
+            drift.probed += 1
+            new = found or None
+            if new == attr.numbers:
+                continue
+            drift.applied.append(Change(name, attr.name, "spellings", _spelt(attr.numbers),
+                                        _spelt(new)))
+            for target in [row] + [r for r in schema.elements.values()
+                                   if r.projection_of == name]:
+                for other in target.attributes:
+                    if other.name == attr.name and other.enum == attr.enum:
+                        other.numbers = None if new is None else dict(new)
+    return drift
+
+
+def _spelt(numbers: Mapping[str, int] | None) -> str:
+    return "[" + ", ".join(f"{w}={n}" for w, n in (numbers or {}).items()) + "]"
 
 
 def check(schema: ir.Schema, parser: probe.Parser, ref: Reference,

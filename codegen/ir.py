@@ -78,6 +78,12 @@ class AttributeDef:
     anchor: str | None = None  # XMLreference.rst anchor, e.g. "body-joint-type"
     # numbers: bounds every value keeps, e.g. ["> 0"] (MuJoCo refuses others; facts.toml)
     bounds: list[str] | None = None
+    # keywords: the integer MuJoCo's reader also takes for a keyword, read as an int attribute
+    # is (headlight@active="1" is "true" in 4.0.0); probed by codegen.drift, never by hand
+    numbers: dict[str, int] | None = None
+    # no default: why MuJoCo computes the value when the attribute is absent (codegen.drift
+    # found no written value that MuJoCo reads as the attribute left out)
+    computed: str | None = None
 
 
 @dataclass
@@ -160,7 +166,7 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
     for key in ("dtype", "arity", "enum", "alone", "namespace", "namespace_from", "default",
-                "pattern", "field", "directory", "anchor", "bounds"):
+                "pattern", "field", "directory", "anchor", "bounds", "numbers", "computed"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
@@ -277,6 +283,8 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         doc=cast(str, d.get("doc", "")),
         anchor=cast("str | None", d.get("anchor")),
         bounds=cast("list[str] | None", d.get("bounds")),
+        numbers=cast("dict[str, int] | None", d.get("numbers")),
+        computed=cast("str | None", d.get("computed")),
     )
 
 

@@ -34,6 +34,7 @@ UNKNOWN_NAME = "typedmjcf_no_such_attribute"  # tells whether the row's reader c
 # What the probed row holds, when it holds bodies: named, so that names the row changes
 # (replicate's suffixes) show in the saved model.
 _CONTENT = '<body name="b"><geom size="0.1"/></body>'
+_MASS = '<geom size="0.1"/>'
 _NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _UNKNOWN = "unrecognized attribute"  # the schema check's message for a name it lacks
 
@@ -60,6 +61,10 @@ class Site:
     required: Mapping[str, Mapping[str, str]] = field(
         default_factory=dict[str, Mapping[str, str]])
     holds_bodies: bool = False
+    # a body on the path holds a geom: a moving body needs mass for MuJoCo to compile (and
+    # save) the model, which the default probe compares
+    weighted: bool = False
+    world: str = ""  # what the root holds first (objects the row's references name)
 
     def model(self, attribute: str | None = None) -> str:
         """The probe model, with ``attribute`` set to :data:`PROBE_VALUE` on the row."""
@@ -68,6 +73,10 @@ class Site:
             attrs = dict(self.required.get(tag, {}))
             if attribute is not None and depth == len(self.path) - 1:
                 attrs[attribute] = PROBE_VALUE
+            if self.weighted and tag == "body":
+                inner = _MASS + inner
+            if depth == 0:
+                inner = self.world + inner
             text = "".join(f' {k}="{v}"' for k, v in attrs.items())
             inner = f"<{tag}{text}>{inner}</{tag}>"
         return inner

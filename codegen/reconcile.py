@@ -203,8 +203,10 @@ class _Sync:
         for row in self._alias_rows():
             self._sync_probed_attributes(row)
         self._apply_enum_facts()
+        self._set_anchors()  # the probe reads documented defaults by anchor (set again below)
         self._probe_types()
         self._apply_overrides()
+        self._probe_spellings()
         self._report_committed_untyped()
         self._check_enums()
         self._drop_unused_enums()
@@ -665,6 +667,18 @@ class _Sync:
             f"attribute types probed: {found.probed} attributes ({found.defaults} defaults "
             "in a model MuJoCo saves); rows without a probe model "
             f"that MuJoCo reads (schema/probe.toml): {', '.join(found.rows_skipped) or 'none'}")
+
+    def _probe_spellings(self) -> None:
+        """Other spellings each keyword attribute's reader takes (codegen.drift), once every
+        type is settled (facts.toml's too: headlight@active is a keyword by hand)."""
+        if self.wheel.drift_parser is None:
+            return
+        found = drift.check_spellings(self.schema, self.wheel.drift_parser, self.wheel.enums,
+                                      drift.load_sites())
+        for change in found.applied:
+            self.report.drifted.append(change.line())
+            self.touched.add(change.row)
+        self.report.notes.append(f"keyword spellings probed: {found.probed} attributes")
 
     # -- hand-kept types on existing attributes
 

@@ -32,7 +32,7 @@ RELEASE_FACTS = RELEASES_DIR / "facts.toml"
 
 Releases = tuple[str, ...]
 # An attribute's type in one release: AttributeSpec's keyword arguments (kind, dtype, arity,
-# keywords, default, namespace; those unset left out). Bounds and ``required`` are not here:
+# keywords, numbers, default, namespace; those unset left out). Bounds and ``required`` are not here:
 # the probe does not measure them, so the newest's stand for every release.
 TypeFields = dict[str, object]
 
@@ -138,6 +138,8 @@ def type_fields(schema: ir.Schema, a: ir.AttributeDef) -> TypeFields:
     words = _keywords(schema, a)
     if words:
         found["keywords"] = words
+    if a.numbers:
+        found["numbers"] = tuple(a.numbers.items())
     if a.default is not None:
         found["default"] = a.default
     if a.namespace is not None:
@@ -149,7 +151,7 @@ def type_row(fields: TypeFields) -> tuple[object, ...]:
     """``fields`` as the generated table holds them (``typed_mjcf._releases.TypeRow``)."""
     arity = fields.get("arity")
     return (fields["kind"], fields.get("dtype"), arity, fields.get("keywords", ()),
-            fields.get("default"), fields.get("namespace"))
+            fields.get("numbers", ()), fields.get("default"), fields.get("namespace"))
 
 
 def _differs(newest: TypeFields, old: TypeFields) -> bool:
@@ -176,6 +178,9 @@ def gates(newest: ir.Schema, older: dict[str, ir.Schema]) -> Gates:
                     continue
                 having.append(version)
                 old_type = type_fields(older[version], match)
+                if "default" not in old_type and a.default is not None and match.kind == a.kind:
+                    # a release file written before defaults were probed: the newest's stands
+                    old_type["default"] = a.default
                 if _differs(type_fields(newest, a), old_type):
                     result.types.setdefault(row, {}).setdefault(a.name, {})[version] = old_type
                 elif a.kind in ("keyword", "flags") and match.kind == a.kind:
@@ -238,9 +243,11 @@ def render_table(result: Gates, newest: str) -> str:
               "for rows only older releases have (no class: refused)",
               "dict[str, dict[str, tuple[str, ...]]]", result.removed),
         block("TYPES", "row -> attribute -> release -> its type (kind, number type, value "
-              "count, keywords, default, namespace), where more than the keywords differ",
+              "count, keywords, numbers read as keywords, default, namespace), where more "
+              "than the keywords differ",
               "dict[str, dict[str, dict[str, tuple[str, str | None, tuple[int, int | None] "
-              "| None, tuple[str, ...], str | None, str | None]]]]",
+              "| None, tuple[str, ...], tuple[tuple[str, int], ...], str | None, "
+              "str | None]]]]",
               {row: {name: {version: type_row(fields) for version, fields in by.items()}
                      for name, by in attrs.items()} for row, attrs in result.types.items()}),
     ])
@@ -281,6 +288,9 @@ def describe(fields: TypeFields) -> str:
     if "keywords" in fields:
         words = cast(tuple[str, ...], fields["keywords"])
         text = f"{kind} {'|'.join(words)}"
+        numbers = cast(tuple[tuple[str, int], ...], fields.get("numbers", ()))
+        if numbers:
+            text += f" (or {'|'.join(str(n) for _, n in numbers)})"
     elif "namespace" in fields:
         text = f"{kind}<{fields['namespace']}>"
     else:

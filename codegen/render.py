@@ -108,6 +108,8 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append(f"arity={a.arity!r}")
     if a.enum is not None:
         args.append(f"keywords=get_args({typer.keyword_type(a)})")
+    if a.numbers:
+        args.append(f"numbers={tuple(a.numbers.items())!r}")
     alone = typer.alone_type(a)
     if alone is not None:
         args.append(f"alone=get_args({alone})")
@@ -121,6 +123,8 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append(f"default={a.default!r}")
     if a.required:
         args.append("required=True")
+    if a.computed is not None:
+        args.append("computed=True")
     if a.pattern is not None:
         args.append(f"pattern={a.pattern!r}")
     if a.bounds:

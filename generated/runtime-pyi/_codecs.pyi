@@ -214,12 +214,19 @@ class ArrayCodec(Codec):
     def from_text(self, text: str) -> Array: ...
 
 class KeywordCodec(Codec):
-    def __init__(self, keywords: tuple[str, ...]) -> None:
+    """One keyword, stored as the grammar spells it. Where MuJoCo's reader also takes a
+    keyword's integer (``numbers``: ``<headlight active="1">``), so do parsing and assignment,
+    and the keyword is stored: export writes that canonical spelling, which MuJoCo reads
+    the same."""
+    def __init__(self, keywords: tuple[str, ...],
+                 numbers: tuple[tuple[str, int], ...] = ()) -> None:
         self.keywords = keywords
         self.lookup = {k.lower(): k for k in keywords}
         self.exact = frozenset(self.lookup.values())  # what parse() takes as it is
         self.takes_bool = "true" in self.lookup and "false" in self.lookup
-        self.listing = ", ".join(repr(k) for k in keywords)
+        self.by_number = {n: k for k, n in numbers}
+        also = f" (or {', '.join(str(n) for _, n in numbers)})" if numbers else ""
+        self.listing = ", ".join(repr(k) for k in keywords) + also
     def accept(self, value: object) -> object: ...
     def parse(self, text: str) -> object: ...
 
@@ -248,7 +255,8 @@ class FlagsCodec(Codec):
 
 def make_codec(kind: str, *, dtype: str | None, is_array: bool, lo: int, hi: int | None,
                keywords: tuple[str, ...], pattern: str | None, alone: tuple[str, ...] = (),
-               ordered: bool = False) -> Codec:
+               ordered: bool = False, numbers: tuple[tuple[str, int], ...] = ()) -> Codec:
     """The codec of an attribute (one object per distinct signature). ``alone`` and
-    ``ordered`` concern flags: keywords also taken alone, and a file's order enforced."""
+    ``ordered`` concern flags: keywords also taken alone, and a file's order enforced;
+    ``numbers``, keywords: the integer MuJoCo also reads for a keyword."""
     ...

@@ -27,11 +27,13 @@ class AttributeSpec:
     hi: int | None
     is_array: bool
     keywords: tuple[str, ...]
+    numbers: tuple[tuple[str, int], ...]
     alone: tuple[str, ...]
     ordered: bool
     namespace: str | None
     namespace_from: tuple[str, Mapping[str, str]] | None
     default: str | None
+    computed: bool
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]
@@ -56,11 +58,13 @@ class AttributeSpec:
         dtype: str | None = None,
         arity: tuple[int, int | None] | None = None,
         keywords: Sequence[str] = (),
+        numbers: Sequence[tuple[str, int]] = (),
         alone: Sequence[str] = (),
         ordered: bool = False,
         namespace: str | None = None,
         namespace_from: tuple[str, Mapping[str, str]] | None = None,
         default: str | None = None,
+        computed: bool = False,
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),

@@ -62,7 +62,7 @@ def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, .
     """``attribute``'s keywords in the newest release (the typing surface's)."""
     ...
 TypeRow = tuple[str, "str | None", "tuple[int, int | None] | None", tuple[str, ...],
-                "str | None", "str | None"]
+                tuple[tuple[str, int], ...], "str | None", "str | None"]
 
 def release_codec(spec: ElementSpec, newest: AttributeSpec, release: str) -> Codec:
     """The codec of ``newest`` (an attribute as the newest types it) in ``release``."""

@@ -830,12 +830,12 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
 
         Args:
             autolimits: bool; default "true".
-            boundmass: double; no default (unset when absent).
-            boundinertia: double; no default (unset when absent).
+            boundmass: double; default "0".
+            boundinertia: double; default "0".
             settotalmass: double; default "-1".
             balanceinertia: bool; no default (unset when absent).
             strippath: bool; no default (unset when absent).
-            coordinate: one of: local, global; no default (unset when absent).
+            coordinate: one of: local, global; default "local".
             angle: one of: radian, degree; default "degree".
             fitaabb: bool; no default (unset when absent).
             eulerseq: chars[3]; no default (unset when absent); must match ``[xyzXYZ]{3}``.
@@ -850,8 +850,8 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             savecompiled: bool; default "true"; in MuJoCo >= 3.17.0.
             savecanonical: bool; default "true"; in MuJoCo >= 3.17.0.
             assetdir: string; no default (unset when absent).
-            alignfree: bool; no default (unset when absent).
-            conflict: one of: warning, merge, error; no default (unset when absent); in MuJoCo >= 3.17.0.
+            alignfree: bool; default "false".
+            conflict: one of: warning, merge, error; default "warning"; in MuJoCo >= 3.17.0.
             passthrough: one of: none, textures; default "none"; in MuJoCo >= 3.17.0.
         """
 
@@ -906,9 +906,9 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             gravity: double[3]; default "0 0 -9.81".
             wind: double[3]; default "0 0 0".
             magnetic: double[3]; default "0 -0.5 0".
-            density: double; no default (unset when absent).
-            viscosity: double; no default (unset when absent).
-            o_margin: double; no default (unset when absent).
+            density: double; default "0".
+            viscosity: double; default "0".
+            o_margin: double; default "0".
             o_solref: double[1..2] (1 to 2 values); default "0.02 1".
             o_solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             o_friction: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001".
@@ -918,7 +918,7 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             solver: one of: PGS, CG, Newton; default "Newton".
             iterations: int; default "100".
             ls_iterations: int; default "50".
-            noslip_iterations: int; no default (unset when absent).
+            noslip_iterations: int; default "0".
             ccd_iterations: int; default "35".
             sdf_iterations: int; default "10".
             sdf_initpoints: int; default "40".
@@ -957,8 +957,8 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
             njmax: int; default "-1".
             nconmax: int; default "-1".
             nstack: int; default "-1".
-            nuserdata: int; no default (unset when absent).
-            nkey: int; no default (unset when absent).
+            nuserdata: int; default "0".
+            nkey: int; default "0".
             nuser_body: int; default "-1"; >= -1.
             nuser_jnt: int; default "-1"; >= -1.
             nuser_geom: int; default "-1"; >= -1.
@@ -988,11 +988,11 @@ class RootElement(_Typed, _ModelRoot, _Attachable):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic
 
         Args:
-            meaninertia: double; no default (unset when absent).
-            meanmass: double; no default (unset when absent).
-            meansize: double; no default (unset when absent).
-            extent: double; no default (unset when absent); > 0.
-            center: double[3]; no default (unset when absent).
+            meaninertia: double; default computed by MuJoCo.
+            meanmass: double; default computed by MuJoCo.
+            meansize: double; default computed by MuJoCo.
+            extent: double; default computed by MuJoCo; > 0.
+            center: double[3]; default computed by MuJoCo.
         """
 
     @property
@@ -1311,37 +1311,37 @@ class Accelerometer(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-accelerometer-noise
     """
@@ -1364,16 +1364,19 @@ class Accelerometer(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -1440,21 +1443,21 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             actlimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            actrange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            actrange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1466,16 +1469,16 @@ class Actuator(_Typed):
             body: reference to namespace ``body``; no default (unset when absent).
             actdim: int; default "-1".
             input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
-            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             dyntype: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
             gaintype: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed".
             biastype: one of: none, affine, muscle, dcmotor, so3, user; default "none".
             dynprm: double[1..10] (1 to 10 values); default "1".
             gainprm: double[1..10] (1 to 10 values); default "1".
-            biasprm: double[1..10] (1 to 10 values); no default (unset when absent).
-            actearly: bool; no default (unset when absent).
+            biasprm: double[1..10] (1 to 10 values); default "0 0 0 0 0 0 0 0 0 0".
+            actearly: bool; default "false".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1517,19 +1520,19 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1584,20 +1587,20 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             inheritrange: double; no default (unset when absent).
-            forcerange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1606,10 +1609,10 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kp: double; default "1".
+            kv: double; default "0"; >= 0.
             dampratio: double; no default (unset when absent); >= 0.
-            timeconst: double; no default (unset when absent).
+            timeconst: double; default computed by MuJoCo.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1652,19 +1655,19 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1673,7 +1676,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kv: double; no default (unset when absent).
+            kv: double; default "1".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1721,22 +1724,22 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             actlimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            forcerange: double[2]; no default (unset when absent).
-            actrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            actrange: double[2]; default "0 0".
             inheritrange: double; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1745,8 +1748,8 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kp: double; default "1".
+            kv: double; default "0"; >= 0.
             dampratio: double; no default (unset when absent); >= 0.
             dclass: dm_control's name for ``class_``.
         """
@@ -1850,23 +1853,23 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0"; in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
             forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            posrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
-            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            posrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
+            velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            forcerange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            lengthrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            lengthrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             joint: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
             jointinparent: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -1875,12 +1878,12 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             cranksite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kv: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
+            kp: double; default "1"; in MuJoCo >= 3.17.0.
+            kv: double; default "0"; >= 0; in MuJoCo >= 3.17.0.
             dampratio: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
-            ki: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ki: double; default "0"; in MuJoCo >= 3.17.0.
             imax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            slewmax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            slewmax: double; default "0"; in MuJoCo >= 3.17.0.
             input: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
@@ -1923,18 +1926,18 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -1943,7 +1946,7 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kv: double; default "0"; >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -1989,19 +1992,19 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -2010,10 +2013,10 @@ class Actuator(_Typed):
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             refsite: reference to namespace ``site``; no default (unset when absent).
-            timeconst: double; no default (unset when absent).
-            area: double; no default (unset when absent).
-            diameter: double; no default (unset when absent).
-            bias: double[3]; no default (unset when absent).
+            timeconst: double; default "1".
+            area: double; default "1".
+            diameter: double; default computed by MuJoCo.
+            bias: double[3]; default "0 0 0".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2063,35 +2066,35 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            range: double[2]; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            range: double[2]; default "0.75 1.05".
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             lengthrange: double[2]; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
             tendon: reference to namespace ``tendon``; no default (unset when absent).
             slidersite: reference to namespace ``site``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
-            timeconst: double[2]; no default (unset when absent).
-            tausmooth: double; no default (unset when absent); >= 0.
-            force: double; no default (unset when absent).
-            scale: double; no default (unset when absent).
-            lmin: double; no default (unset when absent).
-            lmax: double; no default (unset when absent).
-            vmax: double; no default (unset when absent).
-            fpmax: double; no default (unset when absent).
-            fvmax: double; no default (unset when absent).
+            timeconst: double[2]; default "0.01 0.04".
+            tausmooth: double; default "0"; >= 0.
+            force: double; default "-1".
+            scale: double; default "200".
+            lmin: double; default "0.5".
+            lmax: double; default "1.6".
+            vmax: double; default "1.5".
+            fpmax: double; default "1.3".
+            fvmax: double; default "1.2".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -3199,8 +3202,8 @@ class AssetSection(_Typed):
             builtin: one of: none, gradient, checker, flat; no default (unset when absent).
             rgb1: double[3]; default "0.8 0.8 0.8".
             rgb2: double[3]; default "0.5 0.5 0.5".
-            mark: one of: none, edge, cross, random; no default (unset when absent).
-            markrgb: double[3]; no default (unset when absent).
+            mark: one of: none, edge, cross, random; default "none".
+            markrgb: double[3]; default "0 0 0".
             random: double; default "0.01".
             width: int; no default (unset when absent).
             height: int; no default (unset when absent).
@@ -3241,11 +3244,11 @@ class AssetSection(_Typed):
             class_: reference to namespace ``default``; no default (unset when absent).
             texture: reference to namespace ``texture``; no default (unset when absent).
             texrepeat: float[2]; default "1 1".
-            texuniform: bool; no default (unset when absent).
-            emission: float; no default (unset when absent).
+            texuniform: bool; default "false".
+            emission: float; default "0".
             specular: float; default "0.5".
             shininess: float; default "0.5".
-            reflectance: float; no default (unset when absent).
+            reflectance: float; default "0".
             metallic: float; default "-1".
             roughness: float; default "-1".
             rgba: float[4]; default "1 1 1 1".
@@ -3597,19 +3600,19 @@ class Body(_Typed, _Attachable):
     """
 
     mocap: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``mocap``: bool; no default (unset when absent).
+    """``mocap``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-mocap
     """
 
     gravcomp: _Attr[_builtins.float | None, _t.Real | None]
-    """``gravcomp``: double; no default (unset when absent).
+    """``gravcomp``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-gravcomp
     """
 
     sleep: _Attr[BodySleep | None, BodySleep | None]
-    """``sleep``: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``sleep``: one of: auto, never, allowed, init; default "auto"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-sleep
     """
@@ -3666,9 +3669,9 @@ class Body(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            mocap: bool; no default (unset when absent).
-            gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            mocap: bool; default "false".
+            gravcomp: double; default "0".
+            sleep: one of: auto, never, allowed, init; default "auto"; in MuJoCo >= 3.17.0.
             simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
@@ -3768,7 +3771,7 @@ class Body(_Typed, _Attachable):
             pos: double[3]; required.
             quat: double[4]; default "1 0 0 0".
             mass: double; required.
-            diaginertia: double[3]; no default (unset when absent).
+            diaginertia: double[3]; default "0 0 0".
             axisangle: double[4]; no default (unset when absent).
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
@@ -3817,26 +3820,26 @@ class Body(_Typed, _Attachable):
             name: name declared in namespace ``joint``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: free, ball, slide, hinge; default "hinge".
-            group: int; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
+            group: int; default "0".
+            pos: double[3]; default "0 0 0".
             axis: double[3]; default "0 0 1".
-            springdamper: double[2]; no default (unset when absent).
+            springdamper: double[2]; default "0 0".
             limited: one of: false, true, auto; default "auto".
             actuatorfrclimited: one of: false, true, auto; default "auto".
             solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
             solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
             solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
-            range: double[2]; no default (unset when absent).
-            actuatorfrcrange: double[2]; no default (unset when absent).
-            actuatorgravcomp: bool; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            ref: double; no default (unset when absent).
-            springref: double; no default (unset when absent).
-            armature: double; no default (unset when absent).
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            frictionloss: double; no default (unset when absent).
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
+            range: double[2]; default "0 0".
+            actuatorfrcrange: double[2]; default "0 0".
+            actuatorgravcomp: bool; default "false".
+            margin: double; default "0".
+            ref: double; default "0".
+            springref: double; default "0".
+            armature: double; default "0".
+            damping: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
+            frictionloss: double; default "0".
             user: double[] (any length); no default (unset when absent).
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
@@ -3858,7 +3861,7 @@ class Body(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``joint``; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             align: one of: false, true, auto; no default (unset when absent).
         """
 
@@ -3917,22 +3920,22 @@ class Body(_Typed, _Attachable):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            group: int; no default (unset when absent).
-            priority: int; no default (unset when absent).
+            group: int; default "0".
+            priority: int; default "0".
             size: double[1..3] (1 to 3 values); no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
-            mass: double; no default (unset when absent).
+            mass: double; default computed by MuJoCo.
             density: double; default "1000".
-            shellinertia: bool; no default (unset when absent).
+            shellinertia: bool; default "false".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            fromto: double[6]; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
+            surfacevel: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
+            fromto: double[6]; default computed by MuJoCo.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -3943,7 +3946,7 @@ class Body(_Typed, _Attachable):
             mesh: reference to namespace ``mesh``; no default (unset when absent).
             fitscale: double; default "1".
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            fluidshape: one of: none, ellipsoid; no default (unset when absent).
+            fluidshape: one of: none, ellipsoid; default "none".
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
             castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
@@ -4004,7 +4007,7 @@ class Body(_Typed, _Attachable):
             name: name declared in namespace ``site``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
-            group: int; no default (unset when absent).
+            group: int; default "0".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -4014,7 +4017,7 @@ class Body(_Typed, _Attachable):
             material: reference to namespace ``material``; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
-            fromto: double[6]; no default (unset when absent).
+            fromto: double[6]; default computed by MuJoCo.
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -4056,7 +4059,7 @@ class Body(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            projection: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
@@ -4069,10 +4072,10 @@ class Body(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
             target: reference to namespace ``body``; no default (unset when absent).
-            focal: float[2]; no default (unset when absent).
-            focalpixel: float[2]; no default (unset when absent).
-            principal: float[2]; no default (unset when absent).
-            principalpixel: float[2]; no default (unset when absent).
+            focal: float[2]; default "0 0".
+            focalpixel: float[2]; default "0 0".
+            principal: float[2]; default "0 0".
+            principalpixel: float[2]; default "0 0".
             sensorsize: float[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -4114,20 +4117,20 @@ class Body(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            directional: bool; no default (unset when absent).
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            directional: bool; default "false".
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
             dir: double[3]; default "0 0 -1".
             bulbradius: float; default "0.02".
-            intensity: float; no default (unset when absent).
+            intensity: float; default "0".
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
             softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
-            ambient: float[3]; no default (unset when absent).
+            ambient: float[3]; default "0 0 0".
             diffuse: float[3]; default "0.7 0.7 0.7".
             specular: float[3]; default "0.3 0.3 0.3".
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
@@ -4196,30 +4199,30 @@ class Body(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``flex``; required.
             type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             dim: int; no default (unset when absent).
-            dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
+            dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             spacing: double[3]; no default (unset when absent).
-            radius: double; no default (unset when absent).
-            rigid: bool; no default (unset when absent).
-            mass: double; no default (unset when absent).
-            inertiabox: double; no default (unset when absent).
-            scale: double[3]; no default (unset when absent).
+            radius: double; default computed by MuJoCo.
+            rigid: bool; default "false".
+            mass: double; default "1".
+            inertiabox: double; default "0.005".
+            scale: double[3]; default "1 1 1".
             file: file; no default (unset when absent).
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
-            rgba: float[4]; no default (unset when absent).
-            flatskin: bool; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
-            quat: double[4]; no default (unset when absent).
-            axisangle: double[4]; no default (unset when absent).
+            rgba: float[4]; default computed by MuJoCo.
+            flatskin: bool; default "false".
+            pos: double[3]; default "0 0 0".
+            quat: double[4]; default "1 0 0 0".
+            axisangle: double[4]; default "1 0 0 0".
             xyaxes: double[6]; no default (unset when absent).
-            zaxis: double[3]; no default (unset when absent).
-            euler: double[3]; no default (unset when absent).
+            zaxis: double[3]; default computed by MuJoCo.
+            euler: double[3]; default "0 0 0".
             origin: double[3]; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
@@ -4335,13 +4338,13 @@ class Body(_Typed, _Attachable):
     def resolve(self, name: Literal["axisangle", "xyaxes", "zaxis", "euler", "user"]) -> _t.Float64Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["mocap"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["mocap"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["gravcomp"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["gravcomp"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["sleep"]) -> BodySleep | None: ...
+    def resolve(self, name: Literal["sleep"]) -> BodySleep: ...
 
     @overload
     def resolve(self, name: Literal["simple", "fuse"]) -> FalseAuto: ...
@@ -4421,7 +4424,7 @@ class Camera(_Typed):
     """
 
     projection: _Attr[Projection | None, Projection | None]
-    """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``projection``: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
     """
@@ -4499,25 +4502,25 @@ class Camera(_Typed):
     """
 
     focal: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``focal``: float[2]; no default (unset when absent).
+    """``focal``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
     """
 
     focalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``focalpixel``: float[2]; no default (unset when absent).
+    """``focalpixel``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
     """
 
     principal: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``principal``: float[2]; no default (unset when absent).
+    """``principal``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
     """
 
     principalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``principalpixel``: float[2]; no default (unset when absent).
+    """``principalpixel``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
     """
@@ -4546,7 +4549,7 @@ class Camera(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["projection"]) -> Projection | None: ...
+    def resolve(self, name: Literal["projection"]) -> Projection: ...
 
     @overload
     def resolve(self, name: Literal["fovy", "ipd"]) -> _builtins.float: ...
@@ -4570,7 +4573,10 @@ class Camera(_Typed):
     def resolve(self, name: Literal["target"]) -> _builtins.str | Body | None: ...
 
     @overload
-    def resolve(self, name: Literal["focal", "focalpixel", "principal", "principalpixel", "sensorsize"]) -> _t.Float32Array | None: ...
+    def resolve(self, name: Literal["focal", "focalpixel", "principal", "principalpixel"]) -> _t.Float32Array: ...
+
+    @overload
+    def resolve(self, name: Literal["sensorsize"]) -> _t.Float32Array | None: ...
 
 
 class Camprojection(_Typed):
@@ -4588,37 +4594,37 @@ class Camprojection(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-camprojection-noise
     """
@@ -4647,16 +4653,19 @@ class Camprojection(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -4680,37 +4689,37 @@ class Clock(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-clock-noise
     """
@@ -4727,16 +4736,19 @@ class Clock(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class Compiler(_Typed):
@@ -4754,13 +4766,13 @@ class Compiler(_Typed):
     """
 
     boundmass: _Attr[_builtins.float | None, _t.Real | None]
-    """``boundmass``: double; no default (unset when absent).
+    """``boundmass``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundmass
     """
 
     boundinertia: _Attr[_builtins.float | None, _t.Real | None]
-    """``boundinertia``: double; no default (unset when absent).
+    """``boundinertia``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-boundinertia
     """
@@ -4784,7 +4796,7 @@ class Compiler(_Typed):
     """
 
     coordinate: _Attr[Coordinate | None, Coordinate | None]
-    """``coordinate``: one of: local, global; no default (unset when absent).
+    """``coordinate``: one of: local, global; default "local".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-coordinate
     """
@@ -4874,13 +4886,13 @@ class Compiler(_Typed):
     """
 
     alignfree: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``alignfree``: bool; no default (unset when absent).
+    """``alignfree``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-alignfree
     """
 
     conflict: _Attr[Conflict | None, Conflict | None]
-    """``conflict``: one of: warning, merge, error; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``conflict``: one of: warning, merge, error; default "warning"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#compiler-conflict
     """
@@ -4952,21 +4964,18 @@ class Compiler(_Typed):
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     @overload
-    def resolve(self, name: Literal["autolimits", "usethread", "savecompiled", "savecanonical"]) -> _builtins.bool:
+    def resolve(self, name: Literal["autolimits", "usethread", "savecompiled", "savecanonical", "alignfree"]) -> _builtins.bool:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["boundmass", "boundinertia"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["boundmass", "boundinertia", "settotalmass"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["settotalmass"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["balanceinertia", "strippath", "fitaabb", "discardvisual", "fusestatic", "saveinertial"]) -> _builtins.bool | None: ...
 
     @overload
-    def resolve(self, name: Literal["balanceinertia", "strippath", "fitaabb", "discardvisual", "fusestatic", "saveinertial", "alignfree"]) -> _builtins.bool | None: ...
-
-    @overload
-    def resolve(self, name: Literal["coordinate"]) -> Coordinate | None: ...
+    def resolve(self, name: Literal["coordinate"]) -> Coordinate: ...
 
     @overload
     def resolve(self, name: Literal["angle"]) -> Angle: ...
@@ -4981,7 +4990,7 @@ class Compiler(_Typed):
     def resolve(self, name: Literal["inertiagrouprange"]) -> _t.Int32Array: ...
 
     @overload
-    def resolve(self, name: Literal["conflict"]) -> Conflict | None: ...
+    def resolve(self, name: Literal["conflict"]) -> Conflict: ...
 
     @overload
     def resolve(self, name: Literal["passthrough"]) -> Passthrough: ...
@@ -5326,31 +5335,31 @@ class Cylinder(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
     """
@@ -5374,13 +5383,13 @@ class Cylinder(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-lengthrange
     """
@@ -5392,13 +5401,13 @@ class Cylinder(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
     """
@@ -5452,25 +5461,25 @@ class Cylinder(_Typed):
     """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
-    """``timeconst``: double; no default (unset when absent).
+    """``timeconst``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
     """
 
     area: _Attr[_builtins.float | None, _t.Real | None]
-    """``area``: double; no default (unset when absent).
+    """``area``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
     """
 
     diameter: _Attr[_builtins.float | None, _t.Real | None]
-    """``diameter``: double; no default (unset when absent).
+    """``diameter``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
     """
 
     bias: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``bias``: double[3]; no default (unset when absent).
+    """``bias``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
     """
@@ -5487,22 +5496,25 @@ class Cylinder(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "timeconst", "area", "diameter"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "timeconst", "area"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping", "bias"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "lengthrange", "gear", "damping", "bias"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength", "diameter"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -5535,25 +5547,25 @@ class Damper(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
     """
@@ -5577,13 +5589,13 @@ class Damper(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-lengthrange
     """
@@ -5595,13 +5607,13 @@ class Damper(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
     """
@@ -5655,7 +5667,7 @@ class Damper(_Typed):
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
     """
@@ -5672,22 +5684,25 @@ class Damper(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "kv"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["forcerange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -6018,11 +6033,11 @@ class Default(_Typed):
         Args:
             texture: reference to namespace ``texture``; no default (unset when absent).
             texrepeat: float[2]; default "1 1".
-            texuniform: bool; no default (unset when absent).
-            emission: float; no default (unset when absent).
+            texuniform: bool; default "false".
+            emission: float; default "0".
             specular: float; default "0.5".
             shininess: float; default "0.5".
-            reflectance: float; no default (unset when absent).
+            reflectance: float; default "0".
             metallic: float; default "-1".
             roughness: float; default "-1".
             rgba: float[4]; default "1 1 1 1".
@@ -6066,26 +6081,26 @@ class Default(_Typed):
 
         Args:
             type: one of: free, ball, slide, hinge; default "hinge".
-            group: int; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
+            group: int; default "0".
+            pos: double[3]; default "0 0 0".
             axis: double[3]; default "0 0 1".
-            springdamper: double[2]; no default (unset when absent).
+            springdamper: double[2]; default "0 0".
             limited: one of: false, true, auto; default "auto".
             actuatorfrclimited: one of: false, true, auto; default "auto".
             solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
             solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
             solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
-            range: double[2]; no default (unset when absent).
-            actuatorfrcrange: double[2]; no default (unset when absent).
-            actuatorgravcomp: bool; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            ref: double; no default (unset when absent).
-            springref: double; no default (unset when absent).
-            armature: double; no default (unset when absent).
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            frictionloss: double; no default (unset when absent).
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
+            range: double[2]; default "0 0".
+            actuatorfrcrange: double[2]; default "0 0".
+            actuatorgravcomp: bool; default "false".
+            margin: double; default "0".
+            ref: double; default "0".
+            springref: double; default "0".
+            armature: double; default "0".
+            damping: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
+            frictionloss: double; default "0".
             user: double[] (any length); no default (unset when absent).
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
         """
@@ -6142,22 +6157,22 @@ class Default(_Typed):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            group: int; no default (unset when absent).
-            priority: int; no default (unset when absent).
+            group: int; default "0".
+            priority: int; default "0".
             size: double[1..3] (1 to 3 values); no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
-            mass: double; no default (unset when absent).
+            mass: double; default computed by MuJoCo.
             density: double; default "1000".
-            shellinertia: bool; no default (unset when absent).
+            shellinertia: bool; default "false".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            fromto: double[6]; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
+            surfacevel: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
+            fromto: double[6]; default computed by MuJoCo.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -6168,7 +6183,7 @@ class Default(_Typed):
             mesh: reference to namespace ``mesh``; no default (unset when absent).
             fitscale: double; default "1".
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            fluidshape: one of: none, ellipsoid; no default (unset when absent).
+            fluidshape: one of: none, ellipsoid; default "none".
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
             castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
@@ -6203,7 +6218,7 @@ class Default(_Typed):
 
         Args:
             type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
-            group: int; no default (unset when absent).
+            group: int; default "0".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -6213,7 +6228,7 @@ class Default(_Typed):
             material: reference to namespace ``material``; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
-            fromto: double[6]; no default (unset when absent).
+            fromto: double[6]; default computed by MuJoCo.
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
         """
@@ -6250,7 +6265,7 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-camera
 
         Args:
-            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            projection: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
@@ -6262,10 +6277,10 @@ class Default(_Typed):
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
-            focal: float[2]; no default (unset when absent).
-            focalpixel: float[2]; no default (unset when absent).
-            principal: float[2]; no default (unset when absent).
-            principalpixel: float[2]; no default (unset when absent).
+            focal: float[2]; default "0 0".
+            focalpixel: float[2]; default "0 0".
+            principal: float[2]; default "0 0".
+            principalpixel: float[2]; default "0 0".
             sensorsize: float[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
         """
@@ -6301,20 +6316,20 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-light
 
         Args:
-            directional: bool; no default (unset when absent).
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            directional: bool; default "false".
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
             dir: double[3]; default "0 0 -1".
             bulbradius: float; default "0.02".
-            intensity: float; no default (unset when absent).
+            intensity: float; default "0".
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
             softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
-            ambient: float[3]; no default (unset when absent).
+            ambient: float[3]; default "0 0 0".
             diffuse: float[3]; default "0.7 0.7 0.7".
             specular: float[3]; default "0.3 0.3 0.3".
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
@@ -6471,33 +6486,33 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-general
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             actlimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            actrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            actrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             actdim: int; default "-1".
             input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
-            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             dyntype: one of: none, integrator, filter, filterexact, muscle, dcmotor, pid, user; default "none".
             gaintype: one of: fixed, affine, muscle, dcmotor, so3, pid, user; default "fixed".
             biastype: one of: none, affine, muscle, dcmotor, so3, user; default "none".
             dynprm: double[1..10] (1 to 10 values); default "1".
             gainprm: double[1..10] (1 to 10 values); default "1".
-            biasprm: double[1..10] (1 to 10 values); no default (unset when absent).
-            actearly: bool; no default (unset when absent).
+            biasprm: double[1..10] (1 to 10 values); default "0 0 0 0 0 0 0 0 0 0".
+            actearly: bool; default "false".
         """
 
     @property
@@ -6527,18 +6542,18 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-motor
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
         """
 
@@ -6574,24 +6589,24 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-position
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             inheritrange: double; no default (unset when absent).
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kp: double; default "1".
+            kv: double; default "0"; >= 0.
             dampratio: double; no default (unset when absent); >= 0.
-            timeconst: double; no default (unset when absent).
+            timeconst: double; default computed by MuJoCo.
         """
 
     @property
@@ -6622,20 +6637,20 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-velocity
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            kv: double; no default (unset when absent).
+            kv: double; default "1".
         """
 
     @property
@@ -6671,24 +6686,24 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-intvelocity
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             actlimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            forcerange: double[2]; no default (unset when absent).
-            actrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            actrange: double[2]; default "0 0".
             inheritrange: double; no default (unset when absent).
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            kp: double; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kp: double; default "1".
+            kv: double; default "0"; >= 0.
             dampratio: double; no default (unset when absent); >= 0.
         """
 
@@ -6770,29 +6785,29 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-pid
 
         Args:
-            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0"; in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
             forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            posrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
-            velrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ffrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            posrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
+            velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            forcerange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kv: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
+            kp: double; default "1"; in MuJoCo >= 3.17.0.
+            kv: double; default "0"; >= 0; in MuJoCo >= 3.17.0.
             dampratio: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
-            ki: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            ki: double; default "0"; in MuJoCo >= 3.17.0.
             imax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            slewmax: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            slewmax: double; default "0"; in MuJoCo >= 3.17.0.
             input: any of: pos, vel, ff; or alone one of: expmap, quat; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
@@ -6823,19 +6838,19 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-damper
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent); each value >= 0.
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            kv: double; no default (unset when absent); >= 0.
+            kv: double; default "0"; >= 0.
         """
 
     @property
@@ -6869,23 +6884,23 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-cylinder
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            timeconst: double; no default (unset when absent).
-            area: double; no default (unset when absent).
-            diameter: double; no default (unset when absent).
-            bias: double[3]; no default (unset when absent).
+            timeconst: double; default "1".
+            area: double; default "1".
+            diameter: double; default computed by MuJoCo.
+            bias: double[3]; default "0 0 0".
         """
 
     @property
@@ -6924,28 +6939,28 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-muscle
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            range: double[2]; no default (unset when absent).
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            range: double[2]; default "0.75 1.05".
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
-            timeconst: double[2]; no default (unset when absent).
-            force: double; no default (unset when absent).
-            scale: double; no default (unset when absent).
-            lmin: double; no default (unset when absent).
-            lmax: double; no default (unset when absent).
-            vmax: double; no default (unset when absent).
-            fpmax: double; no default (unset when absent).
-            fvmax: double; no default (unset when absent).
+            timeconst: double[2]; default "0.01 0.04".
+            force: double; default "-1".
+            scale: double; default "200".
+            lmin: double; default "0.5".
+            lmax: double; default "1.6".
+            vmax: double; default "1.5".
+            fpmax: double; default "1.3".
+            fvmax: double; default "1.2".
         """
 
     @property
@@ -7077,8 +7092,8 @@ class Default(_Typed):
             builtin: one of: none, gradient, checker, flat; no default (unset when absent); in MuJoCo >= 3.17.0.
             rgb1: double[3]; default "0.8 0.8 0.8"; in MuJoCo >= 3.17.0.
             rgb2: double[3]; default "0.5 0.5 0.5"; in MuJoCo >= 3.17.0.
-            mark: one of: none, edge, cross, random; no default (unset when absent); in MuJoCo >= 3.17.0.
-            markrgb: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            mark: one of: none, edge, cross, random; default "none"; in MuJoCo >= 3.17.0.
+            markrgb: double[3]; default "0 0 0"; in MuJoCo >= 3.17.0.
             random: double; default "0.01"; in MuJoCo >= 3.17.0.
             width: int; no default (unset when absent); in MuJoCo >= 3.17.0.
             height: int; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -7344,7 +7359,7 @@ class DefaultCamera(_Typed):
     spec: ClassVar[_S]
 
     projection: _Attr[Projection | None, Projection | None]
-    """``projection``: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``projection``: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-projection
     """
@@ -7416,25 +7431,25 @@ class DefaultCamera(_Typed):
     """
 
     focal: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``focal``: float[2]; no default (unset when absent).
+    """``focal``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focal
     """
 
     focalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``focalpixel``: float[2]; no default (unset when absent).
+    """``focalpixel``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-focalpixel
     """
 
     principal: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``principal``: float[2]; no default (unset when absent).
+    """``principal``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principal
     """
 
     principalpixel: _Attr[_t.Float32Array | None, Reals2 | None]
-    """``principalpixel``: float[2]; no default (unset when absent).
+    """``principalpixel``: float[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-principalpixel
     """
@@ -7452,7 +7467,7 @@ class DefaultCamera(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["projection"]) -> Projection | None:
+    def resolve(self, name: Literal["projection"]) -> Projection:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -7475,7 +7490,10 @@ class DefaultCamera(_Typed):
     def resolve(self, name: Literal["mode"]) -> Camlight: ...
 
     @overload
-    def resolve(self, name: Literal["focal", "focalpixel", "principal", "principalpixel", "sensorsize"]) -> _t.Float32Array | None: ...
+    def resolve(self, name: Literal["focal", "focalpixel", "principal", "principalpixel"]) -> _t.Float32Array: ...
+
+    @overload
+    def resolve(self, name: Literal["sensorsize"]) -> _t.Float32Array | None: ...
 
 
 class DefaultCylinder(_Typed):
@@ -7487,31 +7505,31 @@ class DefaultCylinder(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-ctrlrange
     """
@@ -7535,7 +7553,7 @@ class DefaultCylinder(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-forcerange
     """
@@ -7547,13 +7565,13 @@ class DefaultCylinder(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-armature
     """
@@ -7565,48 +7583,51 @@ class DefaultCylinder(_Typed):
     """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
-    """``timeconst``: double; no default (unset when absent).
+    """``timeconst``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-timeconst
     """
 
     area: _Attr[_builtins.float | None, _t.Real | None]
-    """``area``: double; no default (unset when absent).
+    """``area``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-area
     """
 
     diameter: _Attr[_builtins.float | None, _t.Real | None]
-    """``diameter``: double; no default (unset when absent).
+    """``diameter``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-diameter
     """
 
     bias: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``bias``: double[3]; no default (unset when absent).
+    """``bias``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-cylinder-bias
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "timeconst", "area", "diameter"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "timeconst", "area"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping", "bias"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping", "bias"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength", "diameter"]) -> _builtins.float | None: ...
 
 
 class DefaultDamper(_Typed):
@@ -7618,25 +7639,25 @@ class DefaultDamper(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-delay
     """
@@ -7660,7 +7681,7 @@ class DefaultDamper(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-forcerange
     """
@@ -7672,13 +7693,13 @@ class DefaultDamper(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-armature
     """
@@ -7690,30 +7711,33 @@ class DefaultDamper(_Typed):
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-damper-kv
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "kv"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["forcerange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
 
 class DefaultDcmotor(_Typed):
@@ -7918,31 +7942,31 @@ class DefaultGeneral(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
     """
@@ -7972,13 +7996,13 @@ class DefaultGeneral(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
     """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actrange``: double[2]; no default (unset when absent).
+    """``actrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
     """
@@ -7990,13 +8014,13 @@ class DefaultGeneral(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
     """
@@ -8020,13 +8044,13 @@ class DefaultGeneral(_Typed):
     """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``velrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
     """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ffrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
     """
@@ -8068,39 +8092,39 @@ class DefaultGeneral(_Typed):
     """
 
     biasprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
-    """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent).
+    """``biasprm``: double[1..10] (1 to 10 values); default "0 0 0 0 0 0 0 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
     """
 
     actearly: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``actearly``: bool; no default (unset when absent).
+    """``actearly``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample", "actdim"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "inheritrange"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "actrange", "damping", "velrange", "ffrange", "biasprm"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "actrange", "gear", "damping", "velrange", "ffrange", "dynprm", "gainprm", "biasprm"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited", "actlimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear", "dynprm", "gainprm"]) -> _t.Float64Array: ...
-
-    @overload
-    def resolve(self, name: Literal["actdim"]) -> _builtins.int: ...
+    def resolve(self, name: Literal["cranklength", "inheritrange"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None: ...
@@ -8115,7 +8139,7 @@ class DefaultGeneral(_Typed):
     def resolve(self, name: Literal["biastype"]) -> Bias: ...
 
     @overload
-    def resolve(self, name: Literal["actearly"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["actearly"]) -> _builtins.bool: ...
 
 
 class DefaultGeom(_Typed):
@@ -8151,13 +8175,13 @@ class DefaultGeom(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
     """
 
     priority: _Attr[_builtins.int | None, _t.Integer | None]
-    """``priority``: int; no default (unset when absent).
+    """``priority``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
     """
@@ -8181,7 +8205,7 @@ class DefaultGeom(_Typed):
     """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
-    """``mass``: double; no default (unset when absent).
+    """``mass``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
     """
@@ -8193,7 +8217,7 @@ class DefaultGeom(_Typed):
     """
 
     shellinertia: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``shellinertia``: bool; no default (unset when absent).
+    """``shellinertia``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
     """
@@ -8217,31 +8241,31 @@ class DefaultGeom(_Typed):
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
     """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
-    """``gap``: double; no default (unset when absent).
+    """``gap``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
     """
 
     surfacevel: _Attr[_t.Float64Array | None, Reals1To6 | None]
-    """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``surfacevel``: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
     """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
-    """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``adhesion``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
     """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
-    """``fromto``: double[6]; no default (unset when absent).
+    """``fromto``: double[6]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
     """
@@ -8307,7 +8331,7 @@ class DefaultGeom(_Typed):
     """
 
     fluidshape: _Attr[Fluidshape | None, Fluidshape | None]
-    """``fluidshape``: one of: none, ellipsoid; no default (unset when absent).
+    """``fluidshape``: one of: none, ellipsoid; default "none".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
     """
@@ -8336,28 +8360,25 @@ class DefaultGeom(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["contype", "conaffinity", "condim"]) -> _builtins.int: ...
+    def resolve(self, name: Literal["contype", "conaffinity", "condim", "group", "priority"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["group", "priority"]) -> _builtins.int | None: ...
-
-    @overload
-    def resolve(self, name: Literal["size", "surfacevel", "fromto", "axisangle", "xyaxes", "zaxis", "euler", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["size", "fromto", "axisangle", "xyaxes", "zaxis", "euler", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
 
     @overload
-    def resolve(self, name: Literal["friction", "solref", "solimp", "pos", "quat", "fluidcoef"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["friction", "solref", "solimp", "surfacevel", "pos", "quat", "fluidcoef"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["mass", "margin", "gap", "adhesion"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["mass"]) -> _builtins.float | None: ...
 
     @overload
-    def resolve(self, name: Literal["density", "solmix", "fitscale"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["density", "solmix", "margin", "gap", "adhesion", "fitscale"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["shellinertia"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["shellinertia", "castshadow"]) -> _builtins.bool: ...
 
     @overload
     def resolve(self, name: Literal["hfield"]) -> _builtins.str | Hfield | None: ...
@@ -8369,10 +8390,7 @@ class DefaultGeom(_Typed):
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["fluidshape"]) -> Fluidshape | None: ...
-
-    @overload
-    def resolve(self, name: Literal["castshadow"]) -> _builtins.bool: ...
+    def resolve(self, name: Literal["fluidshape"]) -> Fluidshape: ...
 
 
 class DefaultIntvelocity(_Typed):
@@ -8384,31 +8402,31 @@ class DefaultIntvelocity(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
     """
@@ -8438,13 +8456,13 @@ class DefaultIntvelocity(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
     """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actrange``: double[2]; no default (unset when absent).
+    """``actrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
     """
@@ -8462,13 +8480,13 @@ class DefaultIntvelocity(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
     """
@@ -8480,13 +8498,13 @@ class DefaultIntvelocity(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent).
+    """``kp``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
     """
@@ -8498,24 +8516,27 @@ class DefaultIntvelocity(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "inheritrange", "armature", "cranklength", "kp", "kv", "dampratio"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kp", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "actrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "actrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited", "actlimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["inheritrange", "cranklength", "dampratio"]) -> _builtins.float | None: ...
 
 
 class DefaultJoint(_Typed):
@@ -8533,13 +8554,13 @@ class DefaultJoint(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
     """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``pos``: double[3]; no default (unset when absent).
+    """``pos``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
     """
@@ -8551,7 +8572,7 @@ class DefaultJoint(_Typed):
     """
 
     springdamper: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``springdamper``: double[2]; no default (unset when absent).
+    """``springdamper``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
     """
@@ -8593,61 +8614,61 @@ class DefaultJoint(_Typed):
     """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
+    """``stiffness``: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
     """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actuatorfrcrange``: double[2]; no default (unset when absent).
+    """``actuatorfrcrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
     """
 
     actuatorgravcomp: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``actuatorgravcomp``: bool; no default (unset when absent).
+    """``actuatorgravcomp``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
     """
 
     ref: _Attr[_builtins.float | None, _t.Real | None]
-    """``ref``: double; no default (unset when absent).
+    """``ref``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
     """
 
     springref: _Attr[_builtins.float | None, _t.Real | None]
-    """``springref``: double; no default (unset when absent).
+    """``springref``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent).
+    """``armature``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
     """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
-    """``frictionloss``: double; no default (unset when absent).
+    """``frictionloss``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
     """
@@ -8670,25 +8691,22 @@ class DefaultJoint(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["pos", "springdamper", "stiffness", "range", "actuatorfrcrange", "damping", "user"]) -> _t.Float64Array | None: ...
-
-    @overload
-    def resolve(self, name: Literal["axis", "solreflimit", "solimplimit", "solreffriction", "solimpfriction"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["pos", "axis", "springdamper", "solreflimit", "solimplimit", "solreffriction", "solimpfriction", "stiffness", "range", "actuatorfrcrange", "damping"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["limited", "actuatorfrclimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["actuatorgravcomp"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["actuatorgravcomp"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["margin", "ref", "springref", "armature", "frictionloss"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["margin", "ref", "springref", "armature", "frictionloss", "springyield"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["springyield"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class DefaultLight(_Typed):
@@ -8700,13 +8718,13 @@ class DefaultLight(_Typed):
     spec: ClassVar[_S]
 
     directional: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``directional``: bool; no default (unset when absent).
+    """``directional``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
     """
 
     type: _Attr[LightType | None, LightType | None]
-    """``type``: one of: spot, directional, point, image; no default (unset when absent).
+    """``type``: one of: spot, directional, point, image; default "spot".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
     """
@@ -8742,7 +8760,7 @@ class DefaultLight(_Typed):
     """
 
     intensity: _Attr[_builtins.float | None, _t.Real | None]
-    """``intensity``: float; no default (unset when absent).
+    """``intensity``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
     """
@@ -8778,7 +8796,7 @@ class DefaultLight(_Typed):
     """
 
     ambient: _Attr[_t.Float32Array | None, Reals3 | None]
-    """``ambient``: float[3]; no default (unset when absent).
+    """``ambient``: float[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
     """
@@ -8802,30 +8820,21 @@ class DefaultLight(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["directional"]) -> _builtins.bool | None:
+    def resolve(self, name: Literal["directional", "castshadow", "active"]) -> _builtins.bool:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["type"]) -> LightType | None: ...
-
-    @overload
-    def resolve(self, name: Literal["castshadow", "active"]) -> _builtins.bool: ...
+    def resolve(self, name: Literal["type"]) -> LightType: ...
 
     @overload
     def resolve(self, name: Literal["pos", "dir"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["bulbradius", "range", "cutoff", "softness", "exponent"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["bulbradius", "intensity", "range", "cutoff", "softness", "exponent"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["intensity"]) -> _builtins.float | None: ...
-
-    @overload
-    def resolve(self, name: Literal["attenuation", "diffuse", "specular"]) -> _t.Float32Array: ...
-
-    @overload
-    def resolve(self, name: Literal["ambient"]) -> _t.Float32Array | None: ...
+    def resolve(self, name: Literal["attenuation", "ambient", "diffuse", "specular"]) -> _t.Float32Array: ...
 
     @overload
     def resolve(self, name: Literal["mode"]) -> Camlight: ...
@@ -8852,13 +8861,13 @@ class DefaultMaterial(_Typed):
     """
 
     texuniform: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``texuniform``: bool; no default (unset when absent).
+    """``texuniform``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
     """
 
     emission: _Attr[_builtins.float | None, _t.Real | None]
-    """``emission``: float; no default (unset when absent).
+    """``emission``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
     """
@@ -8876,7 +8885,7 @@ class DefaultMaterial(_Typed):
     """
 
     reflectance: _Attr[_builtins.float | None, _t.Real | None]
-    """``reflectance``: float; no default (unset when absent).
+    """``reflectance``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
     """
@@ -8950,13 +8959,10 @@ class DefaultMaterial(_Typed):
     def resolve(self, name: Literal["texrepeat", "rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["texuniform"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["texuniform"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["emission", "reflectance"]) -> _builtins.float | None: ...
-
-    @overload
-    def resolve(self, name: Literal["specular", "shininess", "metallic", "roughness"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["emission", "specular", "shininess", "reflectance", "metallic", "roughness"]) -> _builtins.float: ...
 
 
 class DefaultMesh(_Typed):
@@ -9006,31 +9012,31 @@ class DefaultMotor(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
     """
@@ -9054,7 +9060,7 @@ class DefaultMotor(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
     """
@@ -9066,13 +9072,13 @@ class DefaultMotor(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
     """
@@ -9084,24 +9090,27 @@ class DefaultMotor(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
 
 class DefaultMuscle(_Typed):
@@ -9113,31 +9122,31 @@ class DefaultMuscle(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
     """
@@ -9161,7 +9170,7 @@ class DefaultMuscle(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
     """
@@ -9173,13 +9182,13 @@ class DefaultMuscle(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
     """
@@ -9191,78 +9200,81 @@ class DefaultMuscle(_Typed):
     """
 
     timeconst: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``timeconst``: double[2]; no default (unset when absent).
+    """``timeconst``: double[2]; default "0.01 0.04".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0.75 1.05".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
     """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
-    """``force``: double; no default (unset when absent).
+    """``force``: double; default "-1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
     """
 
     scale: _Attr[_builtins.float | None, _t.Real | None]
-    """``scale``: double; no default (unset when absent).
+    """``scale``: double; default "200".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
     """
 
     lmin: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmin``: double; no default (unset when absent).
+    """``lmin``: double; default "0.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
     """
 
     lmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmax``: double; no default (unset when absent).
+    """``lmax``: double; default "1.6".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
     """
 
     vmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``vmax``: double; no default (unset when absent).
+    """``vmax``: double; default "1.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
     """
 
     fpmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fpmax``: double; no default (unset when absent).
+    """``fpmax``: double; default "1.3".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
     """
 
     fvmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fvmax``: double; no default (unset when absent).
+    """``fvmax``: double; default "1.2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping", "timeconst", "range"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping", "timeconst", "range"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
 
 class DefaultOrientation(_Typed):
@@ -9446,31 +9458,31 @@ class DefaultPid(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``group``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ctrlrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
     """
@@ -9494,25 +9506,25 @@ class DefaultPid(_Typed):
     """
 
     posrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
+    """``posrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
     """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``velrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
     """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ffrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``forcerange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
     """
@@ -9530,13 +9542,13 @@ class DefaultPid(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
     """
@@ -9548,13 +9560,13 @@ class DefaultPid(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``kp``: double; default "1"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
+    """``kv``: double; default "0"; >= 0; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
     """
@@ -9566,7 +9578,7 @@ class DefaultPid(_Typed):
     """
 
     ki: _Attr[_builtins.float | None, _t.Real | None]
-    """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ki``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
     """
@@ -9578,7 +9590,7 @@ class DefaultPid(_Typed):
     """
 
     slewmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``slewmax``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
     """
@@ -9590,24 +9602,27 @@ class DefaultPid(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "inheritrange", "armature", "cranklength", "kp", "kv", "dampratio", "ki", "imax", "slewmax"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kp", "kv", "ki", "slewmax"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "posrange", "velrange", "ffrange", "forcerange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "posrange", "velrange", "ffrange", "forcerange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["inheritrange", "cranklength", "dampratio", "imax"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["input"]) -> tuple[PidInput, ...] | PidInputAlone | None: ...
@@ -9622,31 +9637,31 @@ class DefaultPosition(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
     """
@@ -9676,7 +9691,7 @@ class DefaultPosition(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
     """
@@ -9688,13 +9703,13 @@ class DefaultPosition(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
     """
@@ -9706,13 +9721,13 @@ class DefaultPosition(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent).
+    """``kp``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
     """
@@ -9724,30 +9739,33 @@ class DefaultPosition(_Typed):
     """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
-    """``timeconst``: double; no default (unset when absent).
+    """``timeconst``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "inheritrange", "armature", "cranklength", "kp", "kv", "dampratio", "timeconst"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kp", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["inheritrange", "cranklength", "dampratio", "timeconst"]) -> _builtins.float | None: ...
 
 
 class DefaultSite(_Typed):
@@ -9765,7 +9783,7 @@ class DefaultSite(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
     """
@@ -9825,7 +9843,7 @@ class DefaultSite(_Typed):
     """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
-    """``fromto``: double[6]; no default (unset when absent).
+    """``fromto``: double[6]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
     """
@@ -9848,7 +9866,7 @@ class DefaultSite(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["pos", "quat", "size"]) -> _t.Float64Array: ...
@@ -10069,13 +10087,13 @@ class DefaultTexture(_Typed):
     """
 
     mark: _Attr[Mark | None, Mark | None]
-    """``mark``: one of: none, edge, cross, random; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``mark``: one of: none, edge, cross, random; default "none"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
     """
 
     markrgb: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``markrgb``: double[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``markrgb``: double[3]; default "0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
     """
@@ -10140,13 +10158,10 @@ class DefaultTexture(_Typed):
     def resolve(self, name: Literal["builtin"]) -> Builtin | None: ...
 
     @overload
-    def resolve(self, name: Literal["rgb1", "rgb2"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["rgb1", "rgb2", "markrgb"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["mark"]) -> Mark | None: ...
-
-    @overload
-    def resolve(self, name: Literal["markrgb"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["mark"]) -> Mark: ...
 
     @overload
     def resolve(self, name: Literal["random"]) -> _builtins.float: ...
@@ -10173,31 +10188,31 @@ class DefaultVelocity(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
     """
@@ -10221,7 +10236,7 @@ class DefaultVelocity(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
     """
@@ -10233,13 +10248,13 @@ class DefaultVelocity(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
     """
@@ -10251,30 +10266,33 @@ class DefaultVelocity(_Typed):
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent).
+    """``kv``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "kv"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
 
 class Deformable(_Typed):
@@ -10513,37 +10531,37 @@ class EKinetic(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_kinetic-noise
     """
@@ -10560,16 +10578,19 @@ class EKinetic(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class EPotential(_Typed):
@@ -10587,37 +10608,37 @@ class EPotential(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-e_potential-noise
     """
@@ -10634,16 +10655,19 @@ class EPotential(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class Elasticity(_Typed):
@@ -10655,19 +10679,19 @@ class Elasticity(_Typed):
     spec: ClassVar[_S]
 
     young: _Attr[_builtins.float | None, _t.Real | None]
-    """``young``: double; no default (unset when absent).
+    """``young``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-young
     """
 
     poisson: _Attr[_builtins.float | None, _t.Real | None]
-    """``poisson``: double; no default (unset when absent).
+    """``poisson``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-poisson
     """
 
     damping: _Attr[_builtins.float | None, _t.Real | None]
-    """``damping``: double; no default (unset when absent).
+    """``damping``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-damping
     """
@@ -10679,7 +10703,7 @@ class Elasticity(_Typed):
     """
 
     elastic2d: _Attr[Elastic2d | None, Elastic2d | None]
-    """``elastic2d``: one of: none, bend, stretch, both; no default (unset when absent).
+    """``elastic2d``: one of: none, bend, stretch, both; default "none".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity-elastic2d
     """
@@ -10709,15 +10733,12 @@ class Elasticity(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["young", "poisson", "damping"]) -> _builtins.float | None:
+    def resolve(self, name: Literal["young", "poisson", "damping", "thickness", "shear"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["thickness", "shear"]) -> _builtins.float: ...
-
-    @overload
-    def resolve(self, name: Literal["elastic2d"]) -> Elastic2d | None: ...
+    def resolve(self, name: Literal["elastic2d"]) -> Elastic2d: ...
 
     @overload
     def resolve(self, name: Literal["yield_", "sectionsize"]) -> _t.Float64Array: ...
@@ -10802,11 +10823,11 @@ class Equality(_Typed):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             body1: reference to namespace ``body``; no default (unset when absent).
             body2: reference to namespace ``body``; no default (unset when absent).
-            relpose: double[7]; no default (unset when absent).
-            anchor: double[3]; no default (unset when absent).
+            relpose: double[7]; default "0 1 0 0 0 0 0".
+            anchor: double[3]; default "0 0 0".
             site1: reference to namespace ``site``; no default (unset when absent).
             site2: reference to namespace ``site``; no default (unset when absent).
-            torquescale: double; no default (unset when absent).
+            torquescale: double; default "1".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -10838,7 +10859,7 @@ class Equality(_Typed):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             joint1: reference to namespace ``joint``; required.
             joint2: reference to namespace ``joint``; no default (unset when absent).
-            polycoef: double[1..5] (1 to 5 values); no default (unset when absent).
+            polycoef: double[1..5] (1 to 5 values); default "0 1 0 0 0".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -10870,7 +10891,7 @@ class Equality(_Typed):
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             tendon1: reference to namespace ``tendon``; required.
             tendon2: reference to namespace ``tendon``; no default (unset when absent).
-            polycoef: double[1..5] (1 to 5 values); no default (unset when absent).
+            polycoef: double[1..5] (1 to 5 values); default "0 1 0 0 0".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -11103,7 +11124,7 @@ class EqualityJoint(_Typed):
     """
 
     polycoef: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent).
+    """``polycoef``: double[1..5] (1 to 5 values); default "0 1 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-joint-polycoef
     """
@@ -11123,13 +11144,10 @@ class EqualityJoint(_Typed):
     def resolve(self, name: Literal["active"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["solref", "solimp"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["solref", "solimp", "polycoef"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["joint1", "joint2"]) -> _builtins.str | AnyJoint | None: ...
-
-    @overload
-    def resolve(self, name: Literal["polycoef"]) -> _t.Float64Array | None: ...
 
 
 class EqualityTendon(_Typed):
@@ -11183,7 +11201,7 @@ class EqualityTendon(_Typed):
     """
 
     polycoef: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``polycoef``: double[1..5] (1 to 5 values); no default (unset when absent).
+    """``polycoef``: double[1..5] (1 to 5 values); default "0 1 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-tendon-polycoef
     """
@@ -11203,13 +11221,10 @@ class EqualityTendon(_Typed):
     def resolve(self, name: Literal["active"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["solref", "solimp"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["solref", "solimp", "polycoef"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["tendon1", "tendon2"]) -> _builtins.str | AnyTendon | None: ...
-
-    @overload
-    def resolve(self, name: Literal["polycoef"]) -> _t.Float64Array | None: ...
 
 
 class Exclude(_Typed):
@@ -11893,16 +11908,16 @@ class Flex(_Typed):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            priority: int; no default (unset when absent).
+            priority: int; default "0".
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
             selfcollide: one of: none, narrow, bvh, sap, auto; default "auto".
             activelayers: int; default "1".
-            passive: bool; no default (unset when absent).
+            passive: bool; default "false".
         """
 
     @property
@@ -11948,11 +11963,11 @@ class Flex(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity
 
         Args:
-            young: double; no default (unset when absent).
-            poisson: double; no default (unset when absent).
-            damping: double; no default (unset when absent).
+            young: double; default "0".
+            poisson: double; default "0".
+            damping: double; default "0".
             thickness: double; default "-1".
-            elastic2d: one of: none, bend, stretch, both; no default (unset when absent).
+            elastic2d: one of: none, bend, stretch, both; default "none".
             shear: double; default "0"; in MuJoCo >= 4.0.0.
             yield_: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0.
             section: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0.
@@ -12077,7 +12092,7 @@ class Flexcomp(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-group
     """
@@ -12089,7 +12104,7 @@ class Flexcomp(_Typed):
     """
 
     dof: _Attr[FDof | None, FDof | None]
-    """``dof``: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
+    """``dof``: one of: full, radial, trilinear, quadratic, 2d; default "full".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dof
     """
@@ -12113,31 +12128,31 @@ class Flexcomp(_Typed):
     """
 
     radius: _Attr[_builtins.float | None, _t.Real | None]
-    """``radius``: double; no default (unset when absent).
+    """``radius``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
     """
 
     rigid: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``rigid``: bool; no default (unset when absent).
+    """``rigid``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rigid
     """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
-    """``mass``: double; no default (unset when absent).
+    """``mass``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-mass
     """
 
     inertiabox: _Attr[_builtins.float | None, _t.Real | None]
-    """``inertiabox``: double; no default (unset when absent).
+    """``inertiabox``: double; default "0.005".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-inertiabox
     """
 
     scale: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``scale``: double[3]; no default (unset when absent).
+    """``scale``: double[3]; default "1 1 1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-scale
     """
@@ -12173,31 +12188,31 @@ class Flexcomp(_Typed):
     """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
-    """``rgba``: float[4]; no default (unset when absent).
+    """``rgba``: float[4]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
     """
 
     flatskin: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``flatskin``: bool; no default (unset when absent).
+    """``flatskin``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-flatskin
     """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``pos``: double[3]; no default (unset when absent).
+    """``pos``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-pos
     """
 
     quat: _Attr[_t.Float64Array | None, Reals4 | None]
-    """``quat``: double[4]; no default (unset when absent).
+    """``quat``: double[4]; default "1 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-quat
     """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
-    """``axisangle``: double[4]; no default (unset when absent).
+    """``axisangle``: double[4]; default "1 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
     """
@@ -12209,13 +12224,13 @@ class Flexcomp(_Typed):
     """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``zaxis``: double[3]; no default (unset when absent).
+    """``zaxis``: double[3]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
     """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``euler``: double[3]; no default (unset when absent).
+    """``euler``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
     """
@@ -12251,11 +12266,11 @@ class Flexcomp(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge
 
         Args:
-            equality: one of: false, true, strain; no default (unset when absent).
+            equality: one of: false, true, strain; default "false".
             solref: double[1..2] (1 to 2 values); no default (unset when absent).
             solimp: double[1..5] (1 to 5 values); no default (unset when absent).
-            stiffness: double; no default (unset when absent).
-            damping: double; no default (unset when absent).
+            stiffness: double; default "0".
+            damping: double; default "0".
         """
 
     @property
@@ -12281,11 +12296,11 @@ class Flexcomp(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-elasticity
 
         Args:
-            young: double; no default (unset when absent).
-            poisson: double; no default (unset when absent).
-            damping: double; no default (unset when absent).
+            young: double; default "0".
+            poisson: double; default "0".
+            damping: double; default "0".
             thickness: double; default "-1".
-            elastic2d: one of: none, bend, stretch, both; no default (unset when absent).
+            elastic2d: one of: none, bend, stretch, both; default "none".
             shear: double; default "0"; in MuJoCo >= 4.0.0.
             yield_: double[1..2] (1 to 2 values); default "0"; in MuJoCo >= 4.0.0.
             section: one of: circle, box; default "circle"; in MuJoCo >= 3.17.0.
@@ -12322,16 +12337,16 @@ class Flexcomp(_Typed):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            priority: int; no default (unset when absent).
+            priority: int; default "0".
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
             selfcollide: one of: none, narrow, bvh, sap, auto; default "auto".
             activelayers: int; default "1".
-            passive: bool; no default (unset when absent).
+            passive: bool; default "false".
         """
 
     @property
@@ -12431,22 +12446,31 @@ class Flexcomp(_Typed):
     def resolve(self, name: Literal["type"]) -> Fcomp | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "dim"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["dof"]) -> FDof | None: ...
+    def resolve(self, name: Literal["dim"]) -> _builtins.int | None: ...
+
+    @overload
+    def resolve(self, name: Literal["dof"]) -> FDof: ...
 
     @overload
     def resolve(self, name: Literal["count", "cellcount"]) -> _t.Int32Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["spacing", "scale", "point", "element", "texcoord", "pos", "quat", "axisangle", "xyaxes", "zaxis", "euler", "origin"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["spacing", "point", "element", "texcoord", "xyaxes", "zaxis", "origin"]) -> _t.Float64Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["radius", "mass", "inertiabox"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["radius"]) -> _builtins.float | None: ...
 
     @overload
-    def resolve(self, name: Literal["rigid", "flatskin"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["rigid", "flatskin"]) -> _builtins.bool: ...
+
+    @overload
+    def resolve(self, name: Literal["mass", "inertiabox"]) -> _builtins.float: ...
+
+    @overload
+    def resolve(self, name: Literal["scale", "pos", "quat", "axisangle", "euler"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["file"]) -> _builtins.str | _t.Asset | None: ...
@@ -12485,7 +12509,7 @@ class FlexcompContact(_Typed):
     """
 
     priority: _Attr[_builtins.int | None, _t.Integer | None]
-    """``priority``: int; no default (unset when absent).
+    """``priority``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-priority
     """
@@ -12515,13 +12539,13 @@ class FlexcompContact(_Typed):
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-margin
     """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
-    """``gap``: double; no default (unset when absent).
+    """``gap``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-gap
     """
@@ -12539,33 +12563,27 @@ class FlexcompContact(_Typed):
     """
 
     passive: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``passive``: bool; no default (unset when absent).
+    """``passive``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-contact-passive
     """
 
     @overload
-    def resolve(self, name: Literal["contype", "conaffinity", "condim", "activelayers"]) -> _builtins.int:
+    def resolve(self, name: Literal["contype", "conaffinity", "condim", "priority", "activelayers"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
-
-    @overload
-    def resolve(self, name: Literal["priority"]) -> _builtins.int | None: ...
 
     @overload
     def resolve(self, name: Literal["friction", "solref", "solimp"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["solmix"]) -> _builtins.float: ...
-
-    @overload
-    def resolve(self, name: Literal["margin", "gap"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["solmix", "margin", "gap"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["selfcollide"]) -> Flexself: ...
 
     @overload
-    def resolve(self, name: Literal["passive"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["passive"]) -> _builtins.bool: ...
 
 
 class FlexcompEdge(_Typed):
@@ -12577,7 +12595,7 @@ class FlexcompEdge(_Typed):
     spec: ClassVar[_S]
 
     equality: _Attr[Flexeq | None, Flexeq | _builtins.bool | None]
-    """``equality``: one of: false, true, strain; no default (unset when absent).
+    """``equality``: one of: false, true, strain; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-equality
     """
@@ -12595,19 +12613,19 @@ class FlexcompEdge(_Typed):
     """
 
     stiffness: _Attr[_builtins.float | None, _t.Real | None]
-    """``stiffness``: double; no default (unset when absent).
+    """``stiffness``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-stiffness
     """
 
     damping: _Attr[_builtins.float | None, _t.Real | None]
-    """``damping``: double; no default (unset when absent).
+    """``damping``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flexcomp-edge-damping
     """
 
     @overload
-    def resolve(self, name: Literal["equality"]) -> Flexeq | None:
+    def resolve(self, name: Literal["equality"]) -> Flexeq:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -12615,7 +12633,7 @@ class FlexcompEdge(_Typed):
     def resolve(self, name: Literal["solref", "solimp"]) -> _t.Float64Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float: ...
 
 
 class Flexstrain(_Typed):
@@ -12707,37 +12725,37 @@ class Force(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-force-noise
     """
@@ -12760,16 +12778,19 @@ class Force(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -12890,9 +12911,9 @@ class Frame(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            mocap: bool; no default (unset when absent).
-            gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            mocap: bool; default "false".
+            gravcomp: double; default "0".
+            sleep: one of: auto, never, allowed, init; default "auto"; in MuJoCo >= 3.17.0.
             simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
@@ -12992,7 +13013,7 @@ class Frame(_Typed, _Attachable):
             pos: double[3]; required.
             quat: double[4]; default "1 0 0 0".
             mass: double; required.
-            diaginertia: double[3]; no default (unset when absent).
+            diaginertia: double[3]; default "0 0 0".
             axisangle: double[4]; no default (unset when absent).
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
@@ -13041,26 +13062,26 @@ class Frame(_Typed, _Attachable):
             name: name declared in namespace ``joint``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: free, ball, slide, hinge; default "hinge".
-            group: int; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
+            group: int; default "0".
+            pos: double[3]; default "0 0 0".
             axis: double[3]; default "0 0 1".
-            springdamper: double[2]; no default (unset when absent).
+            springdamper: double[2]; default "0 0".
             limited: one of: false, true, auto; default "auto".
             actuatorfrclimited: one of: false, true, auto; default "auto".
             solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
             solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
             solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
-            range: double[2]; no default (unset when absent).
-            actuatorfrcrange: double[2]; no default (unset when absent).
-            actuatorgravcomp: bool; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            ref: double; no default (unset when absent).
-            springref: double; no default (unset when absent).
-            armature: double; no default (unset when absent).
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            frictionloss: double; no default (unset when absent).
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
+            range: double[2]; default "0 0".
+            actuatorfrcrange: double[2]; default "0 0".
+            actuatorgravcomp: bool; default "false".
+            margin: double; default "0".
+            ref: double; default "0".
+            springref: double; default "0".
+            armature: double; default "0".
+            damping: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
+            frictionloss: double; default "0".
             user: double[] (any length); no default (unset when absent).
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
@@ -13082,7 +13103,7 @@ class Frame(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``joint``; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             align: one of: false, true, auto; no default (unset when absent).
         """
 
@@ -13141,22 +13162,22 @@ class Frame(_Typed, _Attachable):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            group: int; no default (unset when absent).
-            priority: int; no default (unset when absent).
+            group: int; default "0".
+            priority: int; default "0".
             size: double[1..3] (1 to 3 values); no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
-            mass: double; no default (unset when absent).
+            mass: double; default computed by MuJoCo.
             density: double; default "1000".
-            shellinertia: bool; no default (unset when absent).
+            shellinertia: bool; default "false".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            fromto: double[6]; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
+            surfacevel: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
+            fromto: double[6]; default computed by MuJoCo.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -13167,7 +13188,7 @@ class Frame(_Typed, _Attachable):
             mesh: reference to namespace ``mesh``; no default (unset when absent).
             fitscale: double; default "1".
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            fluidshape: one of: none, ellipsoid; no default (unset when absent).
+            fluidshape: one of: none, ellipsoid; default "none".
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
             castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
@@ -13228,7 +13249,7 @@ class Frame(_Typed, _Attachable):
             name: name declared in namespace ``site``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
-            group: int; no default (unset when absent).
+            group: int; default "0".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -13238,7 +13259,7 @@ class Frame(_Typed, _Attachable):
             material: reference to namespace ``material``; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
-            fromto: double[6]; no default (unset when absent).
+            fromto: double[6]; default computed by MuJoCo.
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -13280,7 +13301,7 @@ class Frame(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            projection: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
@@ -13293,10 +13314,10 @@ class Frame(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
             target: reference to namespace ``body``; no default (unset when absent).
-            focal: float[2]; no default (unset when absent).
-            focalpixel: float[2]; no default (unset when absent).
-            principal: float[2]; no default (unset when absent).
-            principalpixel: float[2]; no default (unset when absent).
+            focal: float[2]; default "0 0".
+            focalpixel: float[2]; default "0 0".
+            principal: float[2]; default "0 0".
+            principalpixel: float[2]; default "0 0".
             sensorsize: float[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -13338,20 +13359,20 @@ class Frame(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            directional: bool; no default (unset when absent).
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            directional: bool; default "false".
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
             dir: double[3]; default "0 0 -1".
             bulbradius: float; default "0.02".
-            intensity: float; no default (unset when absent).
+            intensity: float; default "0".
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
             softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
-            ambient: float[3]; no default (unset when absent).
+            ambient: float[3]; default "0 0 0".
             diffuse: float[3]; default "0.7 0.7 0.7".
             specular: float[3]; default "0.3 0.3 0.3".
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
@@ -13420,30 +13441,30 @@ class Frame(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``flex``; required.
             type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             dim: int; no default (unset when absent).
-            dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
+            dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             spacing: double[3]; no default (unset when absent).
-            radius: double; no default (unset when absent).
-            rigid: bool; no default (unset when absent).
-            mass: double; no default (unset when absent).
-            inertiabox: double; no default (unset when absent).
-            scale: double[3]; no default (unset when absent).
+            radius: double; default computed by MuJoCo.
+            rigid: bool; default "false".
+            mass: double; default "1".
+            inertiabox: double; default "0.005".
+            scale: double[3]; default "1 1 1".
             file: file; no default (unset when absent).
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
-            rgba: float[4]; no default (unset when absent).
-            flatskin: bool; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
-            quat: double[4]; no default (unset when absent).
-            axisangle: double[4]; no default (unset when absent).
+            rgba: float[4]; default computed by MuJoCo.
+            flatskin: bool; default "false".
+            pos: double[3]; default "0 0 0".
+            quat: double[4]; default "1 0 0 0".
+            axisangle: double[4]; default "1 0 0 0".
             xyaxes: double[6]; no default (unset when absent).
-            zaxis: double[3]; no default (unset when absent).
-            euler: double[3]; no default (unset when absent).
+            zaxis: double[3]; default computed by MuJoCo.
+            euler: double[3]; default "0 0 0".
             origin: double[3]; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
@@ -13580,37 +13601,37 @@ class Frameangacc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangacc-noise
     """
@@ -13639,16 +13660,19 @@ class Frameangacc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype"]) -> Frameobj | None: ...
@@ -13672,37 +13696,37 @@ class Frameangvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameangvel-noise
     """
@@ -13743,16 +13767,19 @@ class Frameangvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -13776,37 +13803,37 @@ class Framelinacc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinacc-noise
     """
@@ -13835,16 +13862,19 @@ class Framelinacc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype"]) -> Frameobj | None: ...
@@ -13868,37 +13898,37 @@ class Framelinvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framelinvel-noise
     """
@@ -13939,16 +13969,19 @@ class Framelinvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -13972,37 +14005,37 @@ class Framepos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framepos-noise
     """
@@ -14043,16 +14076,19 @@ class Framepos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -14076,37 +14112,37 @@ class Framequat(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framequat-noise
     """
@@ -14147,16 +14183,19 @@ class Framequat(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -14180,37 +14219,37 @@ class Framexaxis(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framexaxis-noise
     """
@@ -14251,16 +14290,19 @@ class Framexaxis(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -14284,37 +14326,37 @@ class Frameyaxis(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-frameyaxis-noise
     """
@@ -14355,16 +14397,19 @@ class Frameyaxis(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -14388,37 +14433,37 @@ class Framezaxis(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-framezaxis-noise
     """
@@ -14459,16 +14504,19 @@ class Framezaxis(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["objtype", "reftype"]) -> Frameobj | None: ...
@@ -14492,7 +14540,7 @@ class Freejoint(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-freejoint-group
     """
@@ -14509,7 +14557,7 @@ class Freejoint(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["align"]) -> FalseTrueAuto | None: ...
@@ -14640,31 +14688,31 @@ class General(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ctrlrange
     """
@@ -14694,19 +14742,19 @@ class General(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-forcerange
     """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actrange``: double[2]; no default (unset when absent).
+    """``actrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actrange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-lengthrange
     """
@@ -14718,13 +14766,13 @@ class General(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-armature
     """
@@ -14796,13 +14844,13 @@ class General(_Typed):
     """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``velrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-velrange
     """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ffrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-ffrange
     """
@@ -14844,13 +14892,13 @@ class General(_Typed):
     """
 
     biasprm: _Attr[_t.Float64Array | None, Reals1To10 | None]
-    """``biasprm``: double[1..10] (1 to 10 values); no default (unset when absent).
+    """``biasprm``: double[1..10] (1 to 10 values); default "0 0 0 0 0 0 0 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-biasprm
     """
 
     actearly: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``actearly``: bool; no default (unset when absent).
+    """``actearly``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-actearly
     """
@@ -14867,22 +14915,25 @@ class General(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample", "actdim"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "inheritrange"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "actrange", "lengthrange", "damping", "velrange", "ffrange", "biasprm"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "actrange", "lengthrange", "gear", "damping", "velrange", "ffrange", "dynprm", "gainprm", "biasprm"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited", "actlimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear", "dynprm", "gainprm"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength", "inheritrange"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -14897,9 +14948,6 @@ class General(_Typed):
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None: ...
 
     @overload
-    def resolve(self, name: Literal["actdim"]) -> _builtins.int: ...
-
-    @overload
     def resolve(self, name: Literal["input"]) -> tuple[Inputbit, ...] | InputbitAlone | None: ...
 
     @overload
@@ -14912,7 +14960,7 @@ class General(_Typed):
     def resolve(self, name: Literal["biastype"]) -> Bias: ...
 
     @overload
-    def resolve(self, name: Literal["actearly"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["actearly"]) -> _builtins.bool: ...
 
 
 class Geom(_Typed):
@@ -14960,13 +15008,13 @@ class Geom(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-group
     """
 
     priority: _Attr[_builtins.int | None, _t.Integer | None]
-    """``priority``: int; no default (unset when absent).
+    """``priority``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-priority
     """
@@ -14990,7 +15038,7 @@ class Geom(_Typed):
     """
 
     mass: _Attr[_builtins.float | None, _t.Real | None]
-    """``mass``: double; no default (unset when absent).
+    """``mass``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-mass
     """
@@ -15002,7 +15050,7 @@ class Geom(_Typed):
     """
 
     shellinertia: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``shellinertia``: bool; no default (unset when absent).
+    """``shellinertia``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-shellinertia
     """
@@ -15026,31 +15074,31 @@ class Geom(_Typed):
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-margin
     """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
-    """``gap``: double; no default (unset when absent).
+    """``gap``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-gap
     """
 
     surfacevel: _Attr[_t.Float64Array | None, Reals1To6 | None]
-    """``surfacevel``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``surfacevel``: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-surfacevel
     """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
-    """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``adhesion``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-adhesion
     """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
-    """``fromto``: double[6]; no default (unset when absent).
+    """``fromto``: double[6]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fromto
     """
@@ -15116,7 +15164,7 @@ class Geom(_Typed):
     """
 
     fluidshape: _Attr[Fluidshape | None, Fluidshape | None]
-    """``fluidshape``: one of: none, ellipsoid; no default (unset when absent).
+    """``fluidshape``: one of: none, ellipsoid; default "none".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-fluidshape
     """
@@ -15196,28 +15244,25 @@ class Geom(_Typed):
     def resolve(self, name: Literal["type"]) -> GeomType: ...
 
     @overload
-    def resolve(self, name: Literal["contype", "conaffinity", "condim"]) -> _builtins.int: ...
+    def resolve(self, name: Literal["contype", "conaffinity", "condim", "group", "priority"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["group", "priority"]) -> _builtins.int | None: ...
-
-    @overload
-    def resolve(self, name: Literal["size", "surfacevel", "fromto", "axisangle", "xyaxes", "zaxis", "euler", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["size", "fromto", "axisangle", "xyaxes", "zaxis", "euler", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
 
     @overload
-    def resolve(self, name: Literal["friction", "solref", "solimp", "pos", "quat", "fluidcoef"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["friction", "solref", "solimp", "surfacevel", "pos", "quat", "fluidcoef"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["mass", "margin", "gap", "adhesion"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["mass"]) -> _builtins.float | None: ...
 
     @overload
-    def resolve(self, name: Literal["density", "solmix", "fitscale"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["density", "solmix", "margin", "gap", "adhesion", "fitscale"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["shellinertia"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["shellinertia", "castshadow"]) -> _builtins.bool: ...
 
     @overload
     def resolve(self, name: Literal["hfield"]) -> _builtins.str | Hfield | None: ...
@@ -15229,10 +15274,7 @@ class Geom(_Typed):
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["fluidshape"]) -> Fluidshape | None: ...
-
-    @overload
-    def resolve(self, name: Literal["castshadow"]) -> _builtins.bool: ...
+    def resolve(self, name: Literal["fluidshape"]) -> Fluidshape: ...
 
 
 class Global(_Typed):
@@ -15348,37 +15390,37 @@ class Gyro(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-gyro-noise
     """
@@ -15401,16 +15443,19 @@ class Gyro(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -15549,7 +15594,7 @@ class Inertial(_Typed):
     """
 
     diaginertia: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``diaginertia``: double[3]; no default (unset when absent).
+    """``diaginertia``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-inertial-diaginertia
     """
@@ -15585,12 +15630,12 @@ class Inertial(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["pos", "diaginertia", "axisangle", "xyaxes", "zaxis", "euler", "fullinertia"]) -> _t.Float64Array | None:
+    def resolve(self, name: Literal["pos", "axisangle", "xyaxes", "zaxis", "euler", "fullinertia"]) -> _t.Float64Array | None:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["quat"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["quat", "diaginertia"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["mass"]) -> _builtins.float | None: ...
@@ -15611,37 +15656,37 @@ class Insidesite(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-insidesite-noise
     """
@@ -15682,16 +15727,19 @@ class Insidesite(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -15788,31 +15836,31 @@ class Intvelocity(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-ctrlrange
     """
@@ -15842,13 +15890,13 @@ class Intvelocity(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-forcerange
     """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actrange``: double[2]; no default (unset when absent).
+    """``actrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-actrange
     """
@@ -15860,7 +15908,7 @@ class Intvelocity(_Typed):
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-lengthrange
     """
@@ -15872,13 +15920,13 @@ class Intvelocity(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-armature
     """
@@ -15932,13 +15980,13 @@ class Intvelocity(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent).
+    """``kp``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-intvelocity-kv
     """
@@ -15961,22 +16009,25 @@ class Intvelocity(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "inheritrange", "armature", "cranklength", "kp", "kv", "dampratio"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kp", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "actrange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "actrange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited", "actlimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["inheritrange", "cranklength", "dampratio"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -16015,13 +16066,13 @@ class Joint(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-group
     """
 
     pos: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``pos``: double[3]; no default (unset when absent).
+    """``pos``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-pos
     """
@@ -16033,7 +16084,7 @@ class Joint(_Typed):
     """
 
     springdamper: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``springdamper``: double[2]; no default (unset when absent).
+    """``springdamper``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springdamper
     """
@@ -16075,61 +16126,61 @@ class Joint(_Typed):
     """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
+    """``stiffness``: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-stiffness
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-range
     """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actuatorfrcrange``: double[2]; no default (unset when absent).
+    """``actuatorfrcrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorfrcrange
     """
 
     actuatorgravcomp: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``actuatorgravcomp``: bool; no default (unset when absent).
+    """``actuatorgravcomp``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-actuatorgravcomp
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-margin
     """
 
     ref: _Attr[_builtins.float | None, _t.Real | None]
-    """``ref``: double; no default (unset when absent).
+    """``ref``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-ref
     """
 
     springref: _Attr[_builtins.float | None, _t.Real | None]
-    """``springref``: double; no default (unset when absent).
+    """``springref``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-springref
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent).
+    """``armature``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-armature
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-damping
     """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
-    """``frictionloss``: double; no default (unset when absent).
+    """``frictionloss``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-joint-frictionloss
     """
@@ -16161,25 +16212,22 @@ class Joint(_Typed):
     def resolve(self, name: Literal["type"]) -> JointType: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["pos", "springdamper", "stiffness", "range", "actuatorfrcrange", "damping", "user"]) -> _t.Float64Array | None: ...
-
-    @overload
-    def resolve(self, name: Literal["axis", "solreflimit", "solimplimit", "solreffriction", "solimpfriction"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["pos", "axis", "springdamper", "solreflimit", "solimplimit", "solreffriction", "solimpfriction", "stiffness", "range", "actuatorfrcrange", "damping"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["limited", "actuatorfrclimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["actuatorgravcomp"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["actuatorgravcomp"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["margin", "ref", "springref", "armature", "frictionloss"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["margin", "ref", "springref", "armature", "frictionloss", "springyield"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["springyield"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class Jointactuatorfrc(_Typed):
@@ -16197,37 +16245,37 @@ class Jointactuatorfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointactuatorfrc-noise
     """
@@ -16250,16 +16298,19 @@ class Jointactuatorfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16280,37 +16331,37 @@ class Jointlimitfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitfrc-noise
     """
@@ -16333,16 +16384,19 @@ class Jointlimitfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16363,37 +16417,37 @@ class Jointlimitpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitpos-noise
     """
@@ -16416,16 +16470,19 @@ class Jointlimitpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16446,37 +16503,37 @@ class Jointlimitvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointlimitvel-noise
     """
@@ -16499,16 +16556,19 @@ class Jointlimitvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16529,37 +16589,37 @@ class Jointpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointpos-noise
     """
@@ -16582,16 +16642,19 @@ class Jointpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16612,37 +16675,37 @@ class Jointvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-jointvel-noise
     """
@@ -16665,16 +16728,19 @@ class Jointvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -16695,7 +16761,7 @@ class Key(_Typed):
     """
 
     time: _Attr[_builtins.float | None, _t.Real | None]
-    """``time``: double; no default (unset when absent).
+    """``time``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#keyframe-key-time
     """
@@ -16748,7 +16814,7 @@ class Key(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["time"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["time"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["qpos", "qvel", "act", "mpos", "mquat", "ctrl", "plastic"]) -> _t.Float64Array | None: ...
@@ -16784,7 +16850,7 @@ class Keyframe(_Typed):
 
         Args:
             name: name declared in namespace ``key``; no default (unset when absent).
-            time: double; no default (unset when absent).
+            time: double; default "0".
             qpos: double[] (any length); no default (unset when absent).
             qvel: double[] (any length); no default (unset when absent).
             act: double[] (any length); no default (unset when absent).
@@ -16955,13 +17021,13 @@ class Light(_Typed):
     """
 
     directional: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``directional``: bool; no default (unset when absent).
+    """``directional``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-directional
     """
 
     type: _Attr[LightType | None, LightType | None]
-    """``type``: one of: spot, directional, point, image; no default (unset when absent).
+    """``type``: one of: spot, directional, point, image; default "spot".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-type
     """
@@ -16997,7 +17063,7 @@ class Light(_Typed):
     """
 
     intensity: _Attr[_builtins.float | None, _t.Real | None]
-    """``intensity``: float; no default (unset when absent).
+    """``intensity``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-intensity
     """
@@ -17033,7 +17099,7 @@ class Light(_Typed):
     """
 
     ambient: _Attr[_t.Float32Array | None, Reals3 | None]
-    """``ambient``: float[3]; no default (unset when absent).
+    """``ambient``: float[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-light-ambient
     """
@@ -17080,28 +17146,19 @@ class Light(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["directional"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["directional", "castshadow", "active"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["type"]) -> LightType | None: ...
-
-    @overload
-    def resolve(self, name: Literal["castshadow", "active"]) -> _builtins.bool: ...
+    def resolve(self, name: Literal["type"]) -> LightType: ...
 
     @overload
     def resolve(self, name: Literal["pos", "dir"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["bulbradius", "range", "cutoff", "softness", "exponent"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["bulbradius", "intensity", "range", "cutoff", "softness", "exponent"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["intensity"]) -> _builtins.float | None: ...
-
-    @overload
-    def resolve(self, name: Literal["attenuation", "diffuse", "specular"]) -> _t.Float32Array: ...
-
-    @overload
-    def resolve(self, name: Literal["ambient"]) -> _t.Float32Array | None: ...
+    def resolve(self, name: Literal["attenuation", "ambient", "diffuse", "specular"]) -> _t.Float32Array: ...
 
     @overload
     def resolve(self, name: Literal["mode"]) -> Camlight: ...
@@ -17128,37 +17185,37 @@ class Magnetometer(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-magnetometer-noise
     """
@@ -17181,16 +17238,19 @@ class Magnetometer(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -17320,13 +17380,13 @@ class Material(_Typed):
     """
 
     texuniform: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``texuniform``: bool; no default (unset when absent).
+    """``texuniform``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-texuniform
     """
 
     emission: _Attr[_builtins.float | None, _t.Real | None]
-    """``emission``: float; no default (unset when absent).
+    """``emission``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-emission
     """
@@ -17344,7 +17404,7 @@ class Material(_Typed):
     """
 
     reflectance: _Attr[_builtins.float | None, _t.Real | None]
-    """``reflectance``: float; no default (unset when absent).
+    """``reflectance``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-material-reflectance
     """
@@ -17427,13 +17487,10 @@ class Material(_Typed):
     def resolve(self, name: Literal["texrepeat", "rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["texuniform"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["texuniform"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["emission", "reflectance"]) -> _builtins.float | None: ...
-
-    @overload
-    def resolve(self, name: Literal["specular", "shininess", "metallic", "roughness"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["emission", "specular", "shininess", "reflectance", "metallic", "roughness"]) -> _builtins.float: ...
 
 
 class Mesh(_Typed):
@@ -17686,31 +17743,31 @@ class Motor(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-ctrlrange
     """
@@ -17734,13 +17791,13 @@ class Motor(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-forcerange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-lengthrange
     """
@@ -17752,13 +17809,13 @@ class Motor(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-motor-armature
     """
@@ -17823,22 +17880,25 @@ class Motor(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -17871,31 +17931,31 @@ class Muscle(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-ctrlrange
     """
@@ -17919,7 +17979,7 @@ class Muscle(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-forcerange
     """
@@ -17937,13 +17997,13 @@ class Muscle(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-armature
     """
@@ -17985,61 +18045,61 @@ class Muscle(_Typed):
     """
 
     timeconst: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``timeconst``: double[2]; no default (unset when absent).
+    """``timeconst``: double[2]; default "0.01 0.04".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-timeconst
     """
 
     tausmooth: _Attr[_builtins.float | None, _t.Real | None]
-    """``tausmooth``: double; no default (unset when absent); >= 0.
+    """``tausmooth``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-tausmooth
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0.75 1.05".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-range
     """
 
     force: _Attr[_builtins.float | None, _t.Real | None]
-    """``force``: double; no default (unset when absent).
+    """``force``: double; default "-1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-force
     """
 
     scale: _Attr[_builtins.float | None, _t.Real | None]
-    """``scale``: double; no default (unset when absent).
+    """``scale``: double; default "200".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-scale
     """
 
     lmin: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmin``: double; no default (unset when absent).
+    """``lmin``: double; default "0.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmin
     """
 
     lmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``lmax``: double; no default (unset when absent).
+    """``lmax``: double; default "1.6".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-lmax
     """
 
     vmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``vmax``: double; no default (unset when absent).
+    """``vmax``: double; default "1.5".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-vmax
     """
 
     fpmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fpmax``: double; no default (unset when absent).
+    """``fpmax``: double; default "1.3".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fpmax
     """
 
     fvmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``fvmax``: double; no default (unset when absent).
+    """``fvmax``: double; default "1.2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-muscle-fvmax
     """
@@ -18056,22 +18116,25 @@ class Muscle(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "tausmooth", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "tausmooth", "force", "scale", "lmin", "lmax", "vmax", "fpmax", "fvmax"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping", "timeconst", "range"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "gear", "damping", "timeconst", "range"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user", "lengthrange"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -18294,19 +18357,19 @@ class Option(_Typed):
     """
 
     density: _Attr[_builtins.float | None, _t.Real | None]
-    """``density``: double; no default (unset when absent).
+    """``density``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-density
     """
 
     viscosity: _Attr[_builtins.float | None, _t.Real | None]
-    """``viscosity``: double; no default (unset when absent).
+    """``viscosity``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-viscosity
     """
 
     o_margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``o_margin``: double; no default (unset when absent).
+    """``o_margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-o_margin
     """
@@ -18366,7 +18429,7 @@ class Option(_Typed):
     """
 
     noslip_iterations: _Attr[_builtins.int | None, _t.Integer | None]
-    """``noslip_iterations``: int; no default (unset when absent).
+    """``noslip_iterations``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#option-noslip_iterations
     """
@@ -18492,15 +18555,12 @@ class Option(_Typed):
     def insert(self, tag: _builtins.str, /, position: _builtins.int, **kwargs: object) -> _Element: ...
 
     @overload
-    def resolve(self, name: Literal["timestep", "impratio", "tolerance", "ls_tolerance", "noslip_tolerance", "ccd_tolerance", "sleep_tolerance"]) -> _builtins.float:
+    def resolve(self, name: Literal["timestep", "impratio", "tolerance", "ls_tolerance", "noslip_tolerance", "ccd_tolerance", "sleep_tolerance", "density", "viscosity", "o_margin"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
     def resolve(self, name: Literal["gravity", "wind", "magnetic", "o_solref", "o_solimp", "o_friction"]) -> _t.Float64Array: ...
-
-    @overload
-    def resolve(self, name: Literal["density", "viscosity", "o_margin"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["integrator"]) -> Integrator: ...
@@ -18515,10 +18575,7 @@ class Option(_Typed):
     def resolve(self, name: Literal["solver"]) -> Solver: ...
 
     @overload
-    def resolve(self, name: Literal["iterations", "ls_iterations", "ccd_iterations", "sdf_iterations", "sdf_initpoints"]) -> _builtins.int: ...
-
-    @overload
-    def resolve(self, name: Literal["noslip_iterations"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["iterations", "ls_iterations", "noslip_iterations", "ccd_iterations", "sdf_iterations", "sdf_initpoints"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["actuatorgroupdisable"]) -> _t.Int32Array | None: ...
@@ -18798,31 +18855,31 @@ class Pid(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``group``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ctrlrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ctrlrange
     """
@@ -18846,25 +18903,25 @@ class Pid(_Typed):
     """
 
     posrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``posrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
+    """``posrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0. Alias - the position-setpoint range.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-posrange
     """
 
     velrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``velrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``velrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-velrange
     """
 
     ffrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ffrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ffrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ffrange
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``forcerange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-forcerange
     """
@@ -18876,7 +18933,7 @@ class Pid(_Typed):
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``lengthrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-lengthrange
     """
@@ -18888,13 +18945,13 @@ class Pid(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-armature
     """
@@ -18948,13 +19005,13 @@ class Pid(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``kp``: double; default "1"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0; in MuJoCo >= 3.17.0.
+    """``kv``: double; default "0"; >= 0; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-kv
     """
@@ -18966,7 +19023,7 @@ class Pid(_Typed):
     """
 
     ki: _Attr[_builtins.float | None, _t.Real | None]
-    """``ki``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ki``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-ki
     """
@@ -18978,7 +19035,7 @@ class Pid(_Typed):
     """
 
     slewmax: _Attr[_builtins.float | None, _t.Real | None]
-    """``slewmax``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``slewmax``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-pid-slewmax
     """
@@ -19001,22 +19058,25 @@ class Pid(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "inheritrange", "armature", "cranklength", "kp", "kv", "dampratio", "ki", "imax", "slewmax"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kp", "kv", "ki", "slewmax"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "posrange", "velrange", "ffrange", "forcerange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "posrange", "velrange", "ffrange", "forcerange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["inheritrange", "cranklength", "dampratio", "imax"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -19160,31 +19220,31 @@ class Position(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-ctrlrange
     """
@@ -19214,13 +19274,13 @@ class Position(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-forcerange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-lengthrange
     """
@@ -19232,13 +19292,13 @@ class Position(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-armature
     """
@@ -19292,13 +19352,13 @@ class Position(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent).
+    """``kp``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); >= 0.
+    """``kv``: double; default "0"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-kv
     """
@@ -19310,7 +19370,7 @@ class Position(_Typed):
     """
 
     timeconst: _Attr[_builtins.float | None, _t.Real | None]
-    """``timeconst``: double; no default (unset when absent).
+    """``timeconst``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-position-timeconst
     """
@@ -19327,22 +19387,25 @@ class Position(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "inheritrange", "armature", "cranklength", "kp", "kv", "dampratio", "timeconst"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kp", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["inheritrange", "cranklength", "dampratio", "timeconst"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -19594,9 +19657,9 @@ class Replicate(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            mocap: bool; no default (unset when absent).
-            gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            mocap: bool; default "false".
+            gravcomp: double; default "0".
+            sleep: one of: auto, never, allowed, init; default "auto"; in MuJoCo >= 3.17.0.
             simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
@@ -19696,7 +19759,7 @@ class Replicate(_Typed, _Attachable):
             pos: double[3]; required.
             quat: double[4]; default "1 0 0 0".
             mass: double; required.
-            diaginertia: double[3]; no default (unset when absent).
+            diaginertia: double[3]; default "0 0 0".
             axisangle: double[4]; no default (unset when absent).
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
@@ -19745,26 +19808,26 @@ class Replicate(_Typed, _Attachable):
             name: name declared in namespace ``joint``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: free, ball, slide, hinge; default "hinge".
-            group: int; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
+            group: int; default "0".
+            pos: double[3]; default "0 0 0".
             axis: double[3]; default "0 0 1".
-            springdamper: double[2]; no default (unset when absent).
+            springdamper: double[2]; default "0 0".
             limited: one of: false, true, auto; default "auto".
             actuatorfrclimited: one of: false, true, auto; default "auto".
             solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
             solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
             solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
-            range: double[2]; no default (unset when absent).
-            actuatorfrcrange: double[2]; no default (unset when absent).
-            actuatorgravcomp: bool; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            ref: double; no default (unset when absent).
-            springref: double; no default (unset when absent).
-            armature: double; no default (unset when absent).
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            frictionloss: double; no default (unset when absent).
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
+            range: double[2]; default "0 0".
+            actuatorfrcrange: double[2]; default "0 0".
+            actuatorgravcomp: bool; default "false".
+            margin: double; default "0".
+            ref: double; default "0".
+            springref: double; default "0".
+            armature: double; default "0".
+            damping: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
+            frictionloss: double; default "0".
             user: double[] (any length); no default (unset when absent).
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
@@ -19825,22 +19888,22 @@ class Replicate(_Typed, _Attachable):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            group: int; no default (unset when absent).
-            priority: int; no default (unset when absent).
+            group: int; default "0".
+            priority: int; default "0".
             size: double[1..3] (1 to 3 values); no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
-            mass: double; no default (unset when absent).
+            mass: double; default computed by MuJoCo.
             density: double; default "1000".
-            shellinertia: bool; no default (unset when absent).
+            shellinertia: bool; default "false".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            fromto: double[6]; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
+            surfacevel: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
+            fromto: double[6]; default computed by MuJoCo.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -19851,7 +19914,7 @@ class Replicate(_Typed, _Attachable):
             mesh: reference to namespace ``mesh``; no default (unset when absent).
             fitscale: double; default "1".
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            fluidshape: one of: none, ellipsoid; no default (unset when absent).
+            fluidshape: one of: none, ellipsoid; default "none".
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
             castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
@@ -19912,7 +19975,7 @@ class Replicate(_Typed, _Attachable):
             name: name declared in namespace ``site``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
-            group: int; no default (unset when absent).
+            group: int; default "0".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -19922,7 +19985,7 @@ class Replicate(_Typed, _Attachable):
             material: reference to namespace ``material``; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
-            fromto: double[6]; no default (unset when absent).
+            fromto: double[6]; default computed by MuJoCo.
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -19964,7 +20027,7 @@ class Replicate(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            projection: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
@@ -19977,10 +20040,10 @@ class Replicate(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
             target: reference to namespace ``body``; no default (unset when absent).
-            focal: float[2]; no default (unset when absent).
-            focalpixel: float[2]; no default (unset when absent).
-            principal: float[2]; no default (unset when absent).
-            principalpixel: float[2]; no default (unset when absent).
+            focal: float[2]; default "0 0".
+            focalpixel: float[2]; default "0 0".
+            principal: float[2]; default "0 0".
+            principalpixel: float[2]; default "0 0".
             sensorsize: float[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -20022,20 +20085,20 @@ class Replicate(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            directional: bool; no default (unset when absent).
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            directional: bool; default "false".
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
             dir: double[3]; default "0 0 -1".
             bulbradius: float; default "0.02".
-            intensity: float; no default (unset when absent).
+            intensity: float; default "0".
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
             softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
-            ambient: float[3]; no default (unset when absent).
+            ambient: float[3]; default "0 0 0".
             diffuse: float[3]; default "0.7 0.7 0.7".
             specular: float[3]; default "0.3 0.3 0.3".
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
@@ -20469,12 +20532,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20501,12 +20564,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20533,12 +20596,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20565,12 +20628,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20597,12 +20660,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20629,12 +20692,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20661,12 +20724,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
         """
@@ -20694,12 +20757,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
             camera: reference to namespace ``camera``; required.
@@ -20763,12 +20826,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -20795,12 +20858,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -20827,12 +20890,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -20859,12 +20922,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -20987,12 +21050,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21019,12 +21082,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21115,12 +21178,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21147,12 +21210,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21179,12 +21242,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21211,12 +21274,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21243,12 +21306,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21275,12 +21338,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             tendon: reference to namespace ``tendon``; required.
         """
@@ -21310,12 +21373,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21348,12 +21411,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21386,12 +21449,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21424,12 +21487,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21462,12 +21525,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21500,12 +21563,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21538,12 +21601,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21574,12 +21637,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21608,12 +21671,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             objtype: one of: body, xbody, geom, site, camera; required.
             objname: reference to the element ``objtype`` names; required.
@@ -21641,12 +21704,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             body: reference to namespace ``body``; required.
         """
@@ -21673,12 +21736,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             body: reference to namespace ``body``; required.
         """
@@ -21705,12 +21768,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             body: reference to namespace ``body``; required.
         """
@@ -21740,12 +21803,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; required.
             objtype: one of: body, xbody, geom, site, camera; required.
@@ -21898,12 +21961,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             geom1: reference to namespace ``geom``; no default (unset when absent).
             geom2: reference to namespace ``geom``; no default (unset when absent).
@@ -21912,9 +21975,9 @@ class Sensor(_Typed):
             subtree1: reference to namespace ``body``; no default (unset when absent).
             subtree2: reference to namespace ``body``; no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
-            num: int; no default (unset when absent); > 0.
+            num: int; default "1"; > 0.
             data: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).
-            reduce: one of: none, mindist, maxforce, netforce; no default (unset when absent).
+            reduce: one of: none, mindist, maxforce, netforce; default "none".
         """
 
     @property
@@ -21938,12 +22001,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -21968,12 +22031,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -21998,12 +22061,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -22066,8 +22129,8 @@ class Sensor(_Typed):
             datatype: one of: real, positive, axis, quaternion; default "real".
             needstage: one of: none, pos, vel, acc; default "acc".
             dim: int; required.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -22431,37 +22494,37 @@ class SensorContact(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``noise``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-noise
     """
@@ -22515,7 +22578,7 @@ class SensorContact(_Typed):
     """
 
     num: _Attr[_builtins.int | None, _t.Integer | None]
-    """``num``: int; no default (unset when absent); > 0.
+    """``num``: int; default "1"; > 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-num
     """
@@ -22527,7 +22590,7 @@ class SensorContact(_Typed):
     """
 
     reduce: _Attr[Reduce | None, Reduce | None]
-    """``reduce``: one of: none, mindist, maxforce, netforce; no default (unset when absent).
+    """``reduce``: one of: none, mindist, maxforce, netforce; default "none".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-reduce
     """
@@ -22538,16 +22601,19 @@ class SensorContact(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample", "num"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample", "num"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["geom1", "geom2"]) -> _builtins.str | Geom | None: ...
@@ -22562,7 +22628,7 @@ class SensorContact(_Typed):
     def resolve(self, name: Literal["data"]) -> tuple[ConData, ...] | None: ...
 
     @overload
-    def resolve(self, name: Literal["reduce"]) -> Reduce | None: ...
+    def resolve(self, name: Literal["reduce"]) -> Reduce: ...
 
 
 class SensorPlugin(_Typed):
@@ -22714,7 +22780,7 @@ class Site(_Typed, _Attachable):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-group
     """
@@ -22774,7 +22840,7 @@ class Site(_Typed, _Attachable):
     """
 
     fromto: _Attr[_t.Float64Array | None, Reals6 | None]
-    """``fromto``: double[6]; no default (unset when absent).
+    """``fromto``: double[6]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site-fromto
     """
@@ -22806,7 +22872,7 @@ class Site(_Typed, _Attachable):
     def resolve(self, name: Literal["type"]) -> SiteType: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["pos", "quat", "size"]) -> _t.Float64Array: ...
@@ -22857,13 +22923,13 @@ class Size(_Typed):
     """
 
     nuserdata: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nuserdata``: int; no default (unset when absent).
+    """``nuserdata``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nuserdata
     """
 
     nkey: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nkey``: int; no default (unset when absent).
+    """``nkey``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#size-nkey
     """
@@ -22922,10 +22988,7 @@ class Size(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["njmax", "nconmax", "nstack", "nuser_body", "nuser_jnt", "nuser_geom", "nuser_site", "nuser_cam", "nuser_tendon", "nuser_actuator", "nuser_sensor"]) -> _builtins.int: ...
-
-    @overload
-    def resolve(self, name: Literal["nuserdata", "nkey"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["njmax", "nconmax", "nstack", "nuserdata", "nkey", "nuser_body", "nuser_jnt", "nuser_geom", "nuser_site", "nuser_cam", "nuser_tendon", "nuser_actuator", "nuser_sensor"]) -> _builtins.int: ...
 
 
 class Skin(_Typed):
@@ -23384,31 +23447,31 @@ class Statistic(_Typed):
     spec: ClassVar[_S]
 
     meaninertia: _Attr[_builtins.float | None, _t.Real | None]
-    """``meaninertia``: double; no default (unset when absent).
+    """``meaninertia``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meaninertia
     """
 
     meanmass: _Attr[_builtins.float | None, _t.Real | None]
-    """``meanmass``: double; no default (unset when absent).
+    """``meanmass``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meanmass
     """
 
     meansize: _Attr[_builtins.float | None, _t.Real | None]
-    """``meansize``: double; no default (unset when absent).
+    """``meansize``: double; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-meansize
     """
 
     extent: _Attr[_builtins.float | None, _t.Real | None]
-    """``extent``: double; no default (unset when absent); > 0.
+    """``extent``: double; default computed by MuJoCo; > 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-extent
     """
 
     center: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``center``: double[3]; no default (unset when absent).
+    """``center``: double[3]; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#statistic-center
     """
@@ -23437,37 +23500,37 @@ class Subtreeangmom(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreeangmom-noise
     """
@@ -23490,16 +23553,19 @@ class Subtreeangmom(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None: ...
@@ -23520,37 +23586,37 @@ class Subtreecom(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreecom-noise
     """
@@ -23573,16 +23639,19 @@ class Subtreecom(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None: ...
@@ -23603,37 +23672,37 @@ class Subtreelinvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-subtreelinvel-noise
     """
@@ -23656,16 +23725,19 @@ class Subtreelinvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None: ...
@@ -23925,37 +23997,37 @@ class Tendonactuatorfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonactuatorfrc-noise
     """
@@ -23978,16 +24050,19 @@ class Tendonactuatorfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24008,37 +24083,37 @@ class Tendonlimitfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitfrc-noise
     """
@@ -24061,16 +24136,19 @@ class Tendonlimitfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24091,37 +24169,37 @@ class Tendonlimitpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitpos-noise
     """
@@ -24144,16 +24222,19 @@ class Tendonlimitpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24174,37 +24255,37 @@ class Tendonlimitvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonlimitvel-noise
     """
@@ -24227,16 +24308,19 @@ class Tendonlimitvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24257,37 +24341,37 @@ class Tendonpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonpos-noise
     """
@@ -24310,16 +24394,19 @@ class Tendonpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24340,37 +24427,37 @@ class Tendonvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tendonvel-noise
     """
@@ -24393,16 +24480,19 @@ class Tendonvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
@@ -24538,13 +24628,13 @@ class Texture(_Typed):
     """
 
     mark: _Attr[Mark | None, Mark | None]
-    """``mark``: one of: none, edge, cross, random; no default (unset when absent).
+    """``mark``: one of: none, edge, cross, random; default "none".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-mark
     """
 
     markrgb: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``markrgb``: double[3]; no default (unset when absent).
+    """``markrgb``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-texture-markrgb
     """
@@ -24621,13 +24711,10 @@ class Texture(_Typed):
     def resolve(self, name: Literal["builtin"]) -> Builtin | None: ...
 
     @overload
-    def resolve(self, name: Literal["rgb1", "rgb2"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["rgb1", "rgb2", "markrgb"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["mark"]) -> Mark | None: ...
-
-    @overload
-    def resolve(self, name: Literal["markrgb"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["mark"]) -> Mark: ...
 
     @overload
     def resolve(self, name: Literal["random"]) -> _builtins.float: ...
@@ -24663,37 +24750,37 @@ class Torque(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-torque-noise
     """
@@ -24716,16 +24803,19 @@ class Torque(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -24746,37 +24836,37 @@ class Touch(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-touch-noise
     """
@@ -24799,16 +24889,19 @@ class Touch(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -24960,13 +25053,13 @@ class User(_Typed):
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-user-noise
     """
@@ -24995,7 +25088,7 @@ class User(_Typed):
     def resolve(self, name: Literal["dim"]) -> _builtins.int | None: ...
 
     @overload
-    def resolve(self, name: Literal["cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
@@ -25016,37 +25109,37 @@ class Velocimeter(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-velocimeter-noise
     """
@@ -25069,16 +25162,19 @@ class Velocimeter(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -25105,31 +25201,31 @@ class Velocity(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-ctrlrange
     """
@@ -25153,13 +25249,13 @@ class Velocity(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-forcerange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-lengthrange
     """
@@ -25171,13 +25267,13 @@ class Velocity(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-armature
     """
@@ -25231,7 +25327,7 @@ class Velocity(_Typed):
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent).
+    """``kv``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-velocity-kv
     """
@@ -25248,22 +25344,25 @@ class Velocity(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "kv"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature", "kv"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "lengthrange", "gear", "damping"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited", "forcelimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -25639,13 +25738,13 @@ class Weld(_Typed):
     """
 
     relpose: _Attr[_t.Float64Array | None, Reals7 | None]
-    """``relpose``: double[7]; no default (unset when absent).
+    """``relpose``: double[7]; default "0 1 0 0 0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-relpose
     """
 
     anchor: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``anchor``: double[3]; no default (unset when absent).
+    """``anchor``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-anchor
     """
@@ -25663,7 +25762,7 @@ class Weld(_Typed):
     """
 
     torquescale: _Attr[_builtins.float | None, _t.Real | None]
-    """``torquescale``: double; no default (unset when absent).
+    """``torquescale``: double; default "1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#equality-weld-torquescale
     """
@@ -25683,19 +25782,16 @@ class Weld(_Typed):
     def resolve(self, name: Literal["active"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["solref", "solimp"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["solref", "solimp", "relpose", "anchor"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["body1", "body2"]) -> _builtins.str | Body | None: ...
 
     @overload
-    def resolve(self, name: Literal["relpose", "anchor"]) -> _t.Float64Array | None: ...
-
-    @overload
     def resolve(self, name: Literal["site1", "site2"]) -> _builtins.str | Site | None: ...
 
     @overload
-    def resolve(self, name: Literal["torquescale"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["torquescale"]) -> _builtins.float: ...
 
 
 class Worldbody(_Typed, _Attachable):
@@ -25740,9 +25836,9 @@ class Worldbody(_Typed, _Attachable):
             xyaxes: double[6]; no default (unset when absent).
             zaxis: double[3]; no default (unset when absent).
             euler: double[3]; no default (unset when absent).
-            mocap: bool; no default (unset when absent).
-            gravcomp: double; no default (unset when absent).
-            sleep: one of: auto, never, allowed, init; no default (unset when absent); in MuJoCo >= 3.17.0.
+            mocap: bool; default "false".
+            gravcomp: double; default "0".
+            sleep: one of: auto, never, allowed, init; default "auto"; in MuJoCo >= 3.17.0.
             simple: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             fuse: one of: false, auto; default "auto"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
@@ -25871,22 +25967,22 @@ class Worldbody(_Typed, _Attachable):
             contype: int; default "1".
             conaffinity: int; default "1".
             condim: int; default "3".
-            group: int; no default (unset when absent).
-            priority: int; no default (unset when absent).
+            group: int; default "0".
+            priority: int; default "0".
             size: double[1..3] (1 to 3 values); no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
-            mass: double; no default (unset when absent).
+            mass: double; default computed by MuJoCo.
             density: double; default "1000".
-            shellinertia: bool; no default (unset when absent).
+            shellinertia: bool; default "false".
             solmix: double; default "1".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            margin: double; no default (unset when absent).
-            gap: double; no default (unset when absent).
-            surfacevel: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            fromto: double[6]; no default (unset when absent).
+            margin: double; default "0".
+            gap: double; default "0".
+            surfacevel: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
+            fromto: double[6]; default computed by MuJoCo.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -25897,7 +25993,7 @@ class Worldbody(_Typed, _Attachable):
             mesh: reference to namespace ``mesh``; no default (unset when absent).
             fitscale: double; default "1".
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            fluidshape: one of: none, ellipsoid; no default (unset when absent).
+            fluidshape: one of: none, ellipsoid; default "none".
             fluidcoef: double[1..5] (1 to 5 values); default "0.5 0.25 1.5 1 1".
             user: double[] (any length); no default (unset when absent).
             castshadow: bool; default "true"; in MuJoCo >= 4.0.0.
@@ -25958,7 +26054,7 @@ class Worldbody(_Typed, _Attachable):
             name: name declared in namespace ``site``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
             type: one of: sphere, capsule, ellipsoid, cylinder, box, mesh, sdf; default "sphere".
-            group: int; no default (unset when absent).
+            group: int; default "0".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -25968,7 +26064,7 @@ class Worldbody(_Typed, _Attachable):
             material: reference to namespace ``material``; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
             size: double[1..3] (1 to 3 values); default "0.005 0.005 0.005".
-            fromto: double[6]; no default (unset when absent).
+            fromto: double[6]; default computed by MuJoCo.
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -26010,7 +26106,7 @@ class Worldbody(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``camera``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            projection: one of: perspective, orthographic; no default (unset when absent); in MuJoCo >= 3.17.0.
+            projection: one of: perspective, orthographic; default "perspective"; in MuJoCo >= 3.17.0.
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
@@ -26023,10 +26119,10 @@ class Worldbody(_Typed, _Attachable):
             euler: double[3]; no default (unset when absent).
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
             target: reference to namespace ``body``; no default (unset when absent).
-            focal: float[2]; no default (unset when absent).
-            focalpixel: float[2]; no default (unset when absent).
-            principal: float[2]; no default (unset when absent).
-            principalpixel: float[2]; no default (unset when absent).
+            focal: float[2]; default "0 0".
+            focalpixel: float[2]; default "0 0".
+            principal: float[2]; default "0 0".
+            principalpixel: float[2]; default "0 0".
             sensorsize: float[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             dclass: dm_control's name for ``class_``.
@@ -26068,20 +26164,20 @@ class Worldbody(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``light``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            directional: bool; no default (unset when absent).
-            type: one of: spot, directional, point, image; no default (unset when absent).
+            directional: bool; default "false".
+            type: one of: spot, directional, point, image; default "spot".
             castshadow: bool; default "true".
             active: bool; default "true".
             pos: double[3]; default "0 0 0".
             dir: double[3]; default "0 0 -1".
             bulbradius: float; default "0.02".
-            intensity: float; no default (unset when absent).
+            intensity: float; default "0".
             range: float; default "10".
             attenuation: float[3]; default "1 0 0".
             cutoff: float; default "45".
             softness: float; default "0.2"; in MuJoCo >= 3.17.0.
             exponent: float; default "10".
-            ambient: float[3]; no default (unset when absent).
+            ambient: float[3]; default "0 0 0".
             diffuse: float[3]; default "0.7 0.7 0.7".
             specular: float[3]; default "0.3 0.3 0.3".
             mode: one of: fixed, track, trackcom, targetbody, targetbodycom; default "fixed".
@@ -26150,30 +26246,30 @@ class Worldbody(_Typed, _Attachable):
         Args:
             name: name declared in namespace ``flex``; required.
             type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             dim: int; no default (unset when absent).
-            dof: one of: full, radial, trilinear, quadratic, 2d; no default (unset when absent).
+            dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
             spacing: double[3]; no default (unset when absent).
-            radius: double; no default (unset when absent).
-            rigid: bool; no default (unset when absent).
-            mass: double; no default (unset when absent).
-            inertiabox: double; no default (unset when absent).
-            scale: double[3]; no default (unset when absent).
+            radius: double; default computed by MuJoCo.
+            rigid: bool; default "false".
+            mass: double; default "1".
+            inertiabox: double; default "0.005".
+            scale: double[3]; default "1 1 1".
             file: file; no default (unset when absent).
             point: double[] (any length); no default (unset when absent).
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
-            rgba: float[4]; no default (unset when absent).
-            flatskin: bool; no default (unset when absent).
-            pos: double[3]; no default (unset when absent).
-            quat: double[4]; no default (unset when absent).
-            axisangle: double[4]; no default (unset when absent).
+            rgba: float[4]; default computed by MuJoCo.
+            flatskin: bool; default "false".
+            pos: double[3]; default "0 0 0".
+            quat: double[4]; default "1 0 0 0".
+            axisangle: double[4]; default "1 0 0 0".
             xyaxes: double[6]; no default (unset when absent).
-            zaxis: double[3]; no default (unset when absent).
-            euler: double[3]; no default (unset when absent).
+            zaxis: double[3]; default computed by MuJoCo.
+            euler: double[3]; default "0 0 0".
             origin: double[3]; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """

@@ -773,29 +773,55 @@ def _check_spelling(text: str, keyword: str) -> None:
 
 
 class KeywordCodec(Codec):
-    __slots__ = ("exact", "keywords", "listing", "lookup", "takes_bool")
+    """One keyword, stored as the grammar spells it. Where MuJoCo's reader also takes a
+    keyword's integer (``numbers``: ``<headlight active="1">``), so do parsing and assignment,
+    and the keyword is stored: export writes that canonical spelling, which MuJoCo reads
+    the same."""
 
-    def __init__(self, keywords: tuple[str, ...]) -> None:
+    __slots__ = ("by_number", "exact", "keywords", "listing", "lookup", "takes_bool")
+
+    def __init__(self, keywords: tuple[str, ...],
+                 numbers: tuple[tuple[str, int], ...] = ()) -> None:
         self.keywords = keywords
         self.lookup = {k.lower(): k for k in keywords}
         self.exact = frozenset(self.lookup.values())  # what parse() takes as it is
         self.takes_bool = "true" in self.lookup and "false" in self.lookup
-        self.listing = ", ".join(repr(k) for k in keywords)
+        self.by_number = {n: k for k, n in numbers}
+        also = f" (or {', '.join(str(n) for _, n in numbers)})" if numbers else ""
+        self.listing = ", ".join(repr(k) for k in keywords) + also
 
     def accept(self, value: object) -> object:
         if self.takes_bool and (value is True or value is False):
             return "true" if value else "false"
+        if self.by_number and isinstance(value, int | np.integer) \
+                and not isinstance(value, bool | np.bool_):
+            return self._numbered(cast(object, value))
         if not isinstance(value, str):
             raise _type_rejected(f"one of {self.listing}")
         found = self.lookup.get(value.lower())
         if found is None:
+            if self.by_number and value.strip():
+                return self._numbered(value)
             raise Rejected(f"one of {self.listing}" + did_you_mean(value, self.keywords))
+        return found
+
+    def _numbered(self, value: object) -> str:
+        """The keyword whose integer ``value`` is (an int, or text MuJoCo reads as one)."""
+        try:
+            found = self.by_number.get(to_int(value))
+        except Rejected:
+            found = None
+        if found is None:
+            raise Rejected(f"one of {self.listing}" + (
+                did_you_mean(value, self.keywords) if isinstance(value, str) else ""))
         return found
 
     def parse(self, text: str) -> object:
         if text in self.exact:  # spelt as the grammar spells it: the common case
             return text
         found = cast(str, self.accept(text))
+        if text.lower() != found.lower():  # a number MuJoCo reads as the keyword
+            return found
         _check_spelling(text, found)
         return found
 
@@ -892,20 +918,21 @@ _SHARED: dict[tuple[object, ...], Codec] = {}
 
 def make_codec(kind: str, *, dtype: str | None, is_array: bool, lo: int, hi: int | None,
                keywords: tuple[str, ...], pattern: str | None, alone: tuple[str, ...] = (),
-               ordered: bool = False) -> Codec:
+               ordered: bool = False, numbers: tuple[tuple[str, int], ...] = ()) -> Codec:
     """The codec of an attribute (one object per distinct signature). ``alone`` and
-    ``ordered`` concern flags: keywords also taken alone, and a file's order enforced."""
-    key = (kind, dtype, is_array, lo, hi, keywords, pattern, alone, ordered)
+    ``ordered`` concern flags: keywords also taken alone, and a file's order enforced;
+    ``numbers``, keywords: the integer MuJoCo also reads for a keyword."""
+    key = (kind, dtype, is_array, lo, hi, keywords, pattern, alone, ordered, numbers)
     codec = _SHARED.get(key)
     if codec is None:
         codec = _SHARED[key] = _new_codec(kind, dtype, is_array, lo, hi, keywords, pattern,
-                                          alone, ordered)
+                                          alone, ordered, numbers)
     return codec
 
 
 def _new_codec(kind: str, dtype: str | None, is_array: bool, lo: int, hi: int | None,
                keywords: tuple[str, ...], pattern: str | None, alone: tuple[str, ...],
-               ordered: bool) -> Codec:
+               ordered: bool, numbers: tuple[tuple[str, int], ...] = ()) -> Codec:
     if is_array and kind in ("int", "real"):
         return ArrayCodec(kind, dtype or "double", lo, hi)
     if kind == "int":
@@ -915,7 +942,7 @@ def _new_codec(kind: str, dtype: str | None, is_array: bool, lo: int, hi: int | 
     if kind == "bool":
         return BoolCodec()
     if kind == "keyword":
-        return KeywordCodec(keywords)
+        return KeywordCodec(keywords, numbers)
     if kind == "flags":
         return FlagsCodec(keywords, alone, ordered)
     if kind == "id":

@@ -36,6 +36,7 @@ class AttributeSpec:
         "bounds",
         "codec",
         "codec_only",
+        "computed",
         "default",
         "direct",
         "directory",
@@ -52,6 +53,7 @@ class AttributeSpec:
         "name_list",
         "namespace",
         "namespace_from",
+        "numbers",
         "ordered",
         "pattern",
         "py_name",
@@ -67,11 +69,13 @@ class AttributeSpec:
     hi: int | None
     is_array: bool
     keywords: tuple[str, ...]
+    numbers: tuple[tuple[str, int], ...]  # keywords: the integer MuJoCo also reads for each
     alone: tuple[str, ...]  # flags: keywords also taken, one alone in place of the flags
     ordered: bool  # flags: read from files only in the order of ``keywords``
     namespace: str | None
     namespace_from: tuple[str, Mapping[str, str]] | None
     default: str | None
+    computed: bool  # no default: MuJoCo computes the value when the attribute is absent
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
@@ -99,11 +103,13 @@ class AttributeSpec:
         dtype: str | None = None,
         arity: tuple[int, int | None] | None = None,
         keywords: Sequence[str] = (),
+        numbers: Sequence[tuple[str, int]] = (),
         alone: Sequence[str] = (),
         ordered: bool = False,
         namespace: str | None = None,
         namespace_from: tuple[str, Mapping[str, str]] | None = None,
         default: str | None = None,
+        computed: bool = False,
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),
@@ -121,12 +127,14 @@ class AttributeSpec:
         self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
         self.lo, self.hi = arity if arity is not None else (1, 1)
         self.keywords = tuple(keywords)
+        self.numbers = tuple(numbers)
         self.alone = tuple(alone)
         self.ordered = ordered
         self.namespace = namespace
         # objname-like references: the namespace is named by another attribute's keyword
         self.namespace_from = namespace_from
         self.default = default
+        self.computed = computed
         self.required = required
         self.pattern = pattern
         # every value keeps these, or MuJoCo refuses the model (validate() checks them)
@@ -147,7 +155,7 @@ class AttributeSpec:
         self.as_is = self.codec_only or kind == "id" or self.is_reference
         self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
                                 hi=self.hi, keywords=self.keywords, pattern=pattern,
-                                alone=self.alone, ordered=ordered)
+                                alone=self.alone, ordered=ordered, numbers=self.numbers)
 
     def mark_name_list(self, namespace: str) -> None:
         """This text lists names of ``namespace``: an attached model's are scoped when

@@ -170,9 +170,9 @@ def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, .
 
 
 # One release's type of an attribute, as the generated TYPES table writes it: kind, number
-# type, value count (None: one value), keywords, default, namespace
+# type, value count (None: one value), keywords, numbers read as keywords, default, namespace
 TypeRow = tuple[str, "str | None", "tuple[int, int | None] | None", tuple[str, ...],
-                "str | None", "str | None"]
+                tuple[tuple[str, int], ...], "str | None", "str | None"]
 
 
 def release_codec(spec: ElementSpec, newest: AttributeSpec, release: str) -> Codec:
@@ -185,28 +185,30 @@ def _release_type(spec: ElementSpec, newest: AttributeSpec, release: str) -> Typ
     found = TYPES.get(spec.row, {}).get(newest.name, {}).get(release)
     if found is not None:
         return found
-    kind, dtype, arity, words, default, namespace = _type_of(newest)
+    kind, dtype, arity, words, numbers, default, namespace = _type_of(newest)
     words = KEYWORDS.get(spec.row, {}).get(newest.name, {}).get(release, words)
-    return kind, dtype, arity, words, default, namespace
+    return kind, dtype, arity, words, numbers, default, namespace
 
 
 def _type_of(attribute: AttributeSpec) -> TypeRow:
     arity = (attribute.lo, attribute.hi) if attribute.is_array or attribute.kind == "chars" \
         else None
-    return (attribute.kind, attribute.dtype, arity, attribute.keywords, attribute.default,
-            attribute.namespace)
+    return (attribute.kind, attribute.dtype, arity, attribute.keywords, attribute.numbers,
+            attribute.default, attribute.namespace)
 
 
 def _typed(newest: AttributeSpec, typed_as: TypeRow) -> AttributeSpec:
     """A copy of ``newest`` typed as ``typed_as`` says (what the kind does not fix, such as a
     keyword's words taken alone or a number's bounds, kept when the kind is the newest's)."""
-    kind, dtype, arity, words, default, namespace = typed_as
+    kind, dtype, arity, words, numbers, default, namespace = typed_as
     same = kind == newest.kind
     typed = AttributeSpec(
         newest.name, cast("Kind", kind), py_name=newest.py_name, dtype=dtype, arity=arity,
-        keywords=words, alone=newest.alone if same else (), ordered=newest.ordered and same,
+        keywords=words, numbers=numbers, alone=newest.alone if same else (),
+        ordered=newest.ordered and same,
         namespace=namespace, namespace_from=newest.namespace_from if same else None,
-        default=default, required=newest.required, pattern=newest.pattern if same else None,
+        default=default, computed=newest.computed and default is None,
+        required=newest.required, pattern=newest.pattern if same else None,
         bounds=newest.bounds if same else (), directory=newest.directory, anchor=newest.anchor,
         doc=newest.doc, scope=newest.scope)
     typed.index = newest.index

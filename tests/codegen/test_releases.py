@@ -90,9 +90,26 @@ def test_gates_list_each_release_s_type_where_more_than_keywords_differ() -> Non
     namespace: dict[str, object] = {}
     exec(releases.render_table(gates, newest.mujoco_version), namespace)  # noqa: S102
     assert namespace["TYPES"] == {"joint": {"damping": {"3.0.0": (
-        "int", None, (1, 2), (), "3", None)}}}  # typed_mjcf._releases.TypeRow
+        "int", None, (1, 2), (), (), "3", None)}}}  # typed_mjcf._releases.TypeRow
     notes = releases.notes(gates)
     assert notes["joint"]["damping"] == 'MuJoCo 3.0.0: int[1..2], default "3"'
+
+
+def test_gates_list_a_release_reading_no_numbers_for_keywords() -> None:
+    """A release whose reader takes only the keywords (no ``numbers``) types the attribute
+    otherwise: its codec refuses the number the newest reads."""
+    newest = ir.load()
+    old = _older(newest, "3.0.0")
+    assert newest.elements["headlight"].attribute("active").numbers
+    old.elements["headlight"].attribute("active").numbers = None
+    gates = releases.gates(newest, {"3.0.0": old})
+    assert gates.types["headlight"]["active"]["3.0.0"]["kind"] == "keyword"
+    assert "numbers" not in gates.types["headlight"]["active"]["3.0.0"]
+    assert releases.notes(gates)["headlight"]["active"] == (
+        'MuJoCo 3.0.0: keyword false|true|auto, default "auto"')
+    row = releases.type_row(releases.type_fields(newest, newest.elements["headlight"]
+                                                 .attribute("active")))
+    assert row[4] == (("false", 0), ("true", 1), ("auto", 2))
 
 
 def test_gates_list_the_children_only_older_releases_have() -> None:

@@ -169,3 +169,108 @@ def test_free_text_that_the_reader_now_types_stops(schema: ir.Schema, wheel: Whe
     attr.kind, attr.dtype, attr.enum, attr.arity, attr.default = "string", None, None, None, None
     found = check(schema, wheel, {"geom"})
     assert [c.line() for c, _ in found.untypable] == [f"geom@{name} kind: string -> {after}"]
+
+
+# ---------------------------------------------------------------- spellings (check_spellings)
+
+
+def spellings(schema: ir.Schema, parser: probe.Parser, wheel: Wheel,
+              rows: set[str]) -> list[str]:
+    found = drift.check_spellings(schema, parser, wheel.enums, drift.load_sites(), rows)
+    assert found.probed > 0
+    return lines(found)
+
+
+def test_numbers_a_reader_starts_taking_are_recorded(schema: ir.Schema, wheel: Wheel) -> None:
+    """The schema as 3.x typed <headlight active> (no numbers) against 4.0.0's reader."""
+    assert wheel.drift_parser is not None
+    for row in ("headlight",):
+        schema.elements[row].attribute("active").numbers = None
+    assert spellings(schema, wheel.drift_parser, wheel, {"headlight"}) == [
+        "headlight@active spellings: [] -> [false=0, true=1, auto=2]"]
+    assert schema.elements["headlight"].attribute("active").numbers == {
+        "false": 0, "true": 1, "auto": 2}
+
+
+def test_numbers_a_reader_stops_taking_are_dropped(schema: ir.Schema, wheel: Wheel) -> None:
+    assert wheel.drift_parser is not None
+    schema.elements["joint"].attribute("type").numbers = {"hinge": 3}
+    schema.elements["default_joint"].attribute("type").numbers = {"hinge": 3}
+    assert spellings(schema, wheel.drift_parser, wheel, {"joint"}) == [
+        "joint@type spellings: [hinge=3] -> []"]
+    assert schema.elements["default_joint"].attribute("type").numbers is None  # the copy too
+
+
+def test_a_release_reading_a_keyword_s_c_value_is_seen(schema: ir.Schema, wheel: Wheel) -> None:
+    """A simulated MuJoCo whose reader takes joint type="3" (mjJNT_HINGE) as hinge."""
+    real = wheel.drift_parser
+    assert real is not None
+
+    def newer(xml: str) -> probe.Outcome:
+        return real(xml.replace('<joint type="3"', '<joint type="hinge"'))
+
+    assert spellings(schema, newer, wheel, {"joint"}) == ["joint@type spellings: [] -> [hinge=3]"]
+    assert schema.elements["default_joint"].attribute("type").numbers == {"hinge": 3}
+
+
+def test_a_reader_taking_any_word_is_not_probed_for_numbers(schema: ir.Schema,
+                                                            wheel: Wheel) -> None:
+    """A frame sensor's reftype is not read without a refname: every word loads."""
+    assert wheel.drift_parser is not None
+    found = drift.check_spellings(schema, wheel.drift_parser, wheel.enums, drift.load_sites(),
+                                  {"framepos"})
+    assert found.applied == [] and found.probed == 2  # interp and objtype, not reftype
+
+
+# ------------------------------------------------------------ defaults the schema lacked
+
+
+def test_a_missing_default_is_the_value_the_reader_saves_back_as_absent(
+        schema: ir.Schema, wheel: Wheel) -> None:
+    for row in ("joint", "default_joint"):
+        schema.elements[row].attribute("damping").default = None
+    found = check(schema, wheel, {"joint"})
+    assert lines(found) == ['joint@damping default: (none) -> "0 0 0"']
+    assert schema.elements["default_joint"].attribute("damping").default == "0 0 0"
+
+
+def test_a_value_mujoco_computes_is_recorded_with_why(schema: ir.Schema, wheel: Wheel) -> None:
+    """A geom's mass comes from its density and volume: no written value reads as absent."""
+    for row in ("geom", "default_geom"):
+        schema.elements[row].attribute("mass").computed = None
+    found = check(schema, wheel, {"geom"})
+    assert lines(found) == ["geom@mass default: (none) -> (computed)"]
+    assert schema.elements["geom"].attribute("mass").computed == drift.COMPUTED
+    assert schema.elements["geom"].attribute("mass").default is None
+
+
+def test_an_alternative_to_an_attribute_with_a_default_gets_none(schema: ir.Schema,
+                                                                  wheel: Wheel) -> None:
+    """axisangle="1 0 0 0" reads as absent, but quat's default applies: no default."""
+    found = check(schema, wheel, {"body"})
+    assert found.applied == []
+    assert schema.elements["body"].attribute("axisangle").default is None
+    assert schema.elements["body"].attribute("axisangle").computed is None
+
+
+def test_an_actuator_s_defaults_are_probed_with_its_target(schema: ir.Schema,
+                                                           wheel: Wheel) -> None:
+    """MuJoCo compiles (and saves) a motor only with a joint: the probe gives it one."""
+    for row in ("motor", "default_motor"):
+        schema.elements[row].attribute("ctrlrange").default = None
+    found = check(schema, wheel, {"motor"})
+    assert lines(found) == ['motor@ctrlrange default: (none) -> "0 0"']
+
+
+def test_the_release_day_report_lists_changed_spellings_and_defaults(
+        schema: ir.Schema, wheel: Wheel) -> None:
+    """`python -m codegen generate`'s report, after a simulated MuJoCo release whose reader
+    reads headlight@active's numbers (newly) and a joint's damping when absent as 0."""
+    schema.elements["headlight"].attribute("active").numbers = None
+    for row in ("joint", "default_joint"):
+        schema.elements[row].attribute("damping").default = None
+    _, report = sync(schema, wheel, load_facts())
+    text = report.format()
+    assert "  ~ headlight@active spellings: [] -> [false=0, true=1, auto=2]" in text
+    assert '  ~ joint@damping default: (none) -> "0 0 0"' in text
+    assert not report.drift_errors

@@ -17,7 +17,7 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.runtime.release_driver import RELEASE_VARIABLE
-from typed_mjcf import _releases
+from typed_mjcf import _codecs, _releases
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._generated.releases import KEYWORDS, RELEASES, REMOVED, TYPES
 from typed_mjcf._grammar import AttributeSpec, ElementSpec
@@ -56,17 +56,19 @@ def test_an_attribute_has_the_type_of_the_release_in_use(
     cls = CLASSES[row]
     attribute = cls.spec.by_name[name]
     if _releases.RELEASE in by_release:
-        kind, dtype, arity, words, default, namespace = by_release[_releases.RELEASE]
+        kind, dtype, arity, words, numbers, default, namespace = by_release[_releases.RELEASE]
         assert _releases.newest_type(cls.spec, attribute) is not attribute
         assert attribute.kind == kind and attribute.default == default
         assert attribute.namespace == namespace and attribute.keywords == words
+        assert attribute.numbers == numbers
         assert dtype is None or attribute.dtype == dtype
         assert (attribute.lo, attribute.hi) == (arity if arity is not None else (1, 1))
         assert attribute.is_reference == (kind == "ref")
     else:  # the newest's type, untouched
         assert _releases.newest_type(cls.spec, attribute) is attribute
-        assert all(attribute.kind != typed[0] or attribute.default != typed[4]
-                   or attribute.namespace != typed[5] for typed in by_release.values())
+        assert all(attribute.kind != typed[0] or attribute.default != typed[5]
+                   or attribute.namespace != typed[6] or attribute.numbers != typed[4]
+                   for typed in by_release.values())
     assert (attribute in cls.spec.references) == attribute.is_reference
     prop = vars(cls)[attribute.py_name]
     assert prop.spec is attribute and prop.codec is attribute.codec  # the property follows
@@ -142,7 +144,10 @@ def test_a_value_of_another_release_is_refused_naming_it_and_its_own_kept(
         again = mjcf.from_xml_string(model.to_xml_string())
         assert _element(again, row).get_attributes()[attribute.py_name] == \
             element.get_attributes()[attribute.py_name]
-        assert f'{name}="{text}"' in model.to_xml_string()
+        # as given, or the keyword a number MuJoCo reads as one is (its canonical spelling)
+        written = attribute.codec.write(attribute.codec.accept(text), _codecs.DEFAULT_FORMAT)
+        assert written == text or (written, int(text)) in attribute.numbers
+        assert f'{name}="{written}"' in model.to_xml_string()
 
 
 def _takes(spec: ElementSpec, attribute: AttributeSpec, release: str, text: str) -> bool:
@@ -172,9 +177,11 @@ def test_headlight_active_is_the_release_s() -> None:
         assert '<headlight active="0"/>' in model.to_xml_string()
     else:
         assert attribute.default == "auto" and attribute.kind == "keyword"
-        with pytest.raises(InvalidValueError, match=f"'1' for 'active' of <headlight> is in "
+        with pytest.raises(InvalidValueError, match=f"'3' for 'active' of <headlight> is in "
                            f"MuJoCo {', '.join(by_release)} only"):
-            setattr(headlight, "active", "1")
+            setattr(headlight, "active", "3")
+        setattr(headlight, "active", "1")  # what MuJoCo 4 still reads: the keyword true
+        assert '<headlight active="true"/>' in model.to_xml_string()
         headlight.active = "auto"
         assert '<headlight active="auto"/>' in model.to_xml_string()
     _compiles_when_installed(model)

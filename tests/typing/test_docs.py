@@ -93,6 +93,8 @@ def expected_facts(spec: AttributeSpec) -> list[str]:
         facts.append(f'default "{spec.default}"')
     elif spec.required:
         facts.append("required")
+    elif spec.computed:
+        facts.append("default computed by MuJoCo")
     else:
         facts.append("no default")
     return facts
