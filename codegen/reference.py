@@ -129,6 +129,8 @@ def _cell(text: str) -> str:
 def _default(a: ir.AttributeDef) -> str:
     if a.default is not None:
         return f"`{a.default}`" if a.default else '`""`'
+    if a.computed is not None:
+        return "computed by MuJoCo"
     return "required" if a.required else "none"
 
 
@@ -172,7 +174,13 @@ def _attributes(schema: ir.Schema, typer: Typer, gates: releases.Gates,
         rels = gates.attribute_releases(el.name, a.name)
         releases_text = releases.availability(rels, gates.releases) if rels else "all"
         note = docs.note(a) or ""
-        about = "; ".join([typer.describe(a), *(a.bounds or [])]) + (f". {note}" if note else ".")
+        spellings = ([f"also read as {', '.join(f'{n} ({k})' for k, n in a.numbers.items())}"]
+                     if a.numbers else [])
+        otherwise = [f"in MuJoCo {', '.join(versions)}: {releases.describe(fields)}"
+                     for fields, versions in releases.grouped(
+                         gates.types.get(el.name, {}).get(a.name, {}))]
+        about = "; ".join([typer.describe(a), *spellings, *otherwise, *(a.bounds or [])]) + (
+            f". {note}" if note else ".")
         name = f"`{a.name}`" + (f" (`{a.py_name}`)" if a.py_name != a.name else "")
         lines.append(f"| {name} | `{_cell(readable(typer.setter(a)))}` | {_default(a)} | "
                      f"{releases_text} | {_cell(about)} |")

@@ -264,13 +264,13 @@ def notes(result: Gates) -> Notes:
     for row, attrs in result.types.items():
         for name, by_release in attrs.items():
             text = "; in ".join(f"MuJoCo {', '.join(group)}: {describe(fields)}"
-                                for fields, group in _grouped(by_release))
+                                for fields, group in grouped(by_release))
             found.setdefault(row, {})[name] = (
                 f"{found[row][name]}; in {text}" if name in found.get(row, {}) else text)
     return found
 
 
-def _grouped(by_release: dict[str, TypeFields]) -> list[tuple[TypeFields, list[str]]]:
+def grouped(by_release: dict[str, TypeFields]) -> list[tuple[TypeFields, list[str]]]:
     """The releases sharing one type, oldest first."""
     groups: list[tuple[TypeFields, list[str]]] = []
     for version, fields in by_release.items():
