@@ -78,6 +78,9 @@ class AttributeDef:
     anchor: str | None = None  # XMLreference.rst anchor, e.g. "body-joint-type"
     # numbers: bounds every value keeps, e.g. ["> 0"] (MuJoCo refuses others; facts.toml)
     bounds: list[str] | None = None
+    # numbers: a value that keeps all of these counts as not set in presence constraints
+    # (inheritrange="0" is off; facts.toml)
+    off: list[str] | None = None
 
 
 @dataclass
@@ -160,7 +163,7 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
     for key in ("dtype", "arity", "enum", "alone", "namespace", "namespace_from", "default",
-                "pattern", "field", "directory", "anchor", "bounds"):
+                "pattern", "field", "directory", "anchor", "bounds", "off"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
@@ -277,6 +280,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         doc=cast(str, d.get("doc", "")),
         anchor=cast("str | None", d.get("anchor")),
         bounds=cast("list[str] | None", d.get("bounds")),
+        off=cast("list[str] | None", d.get("off")),
     )
 
 

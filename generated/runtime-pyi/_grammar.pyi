@@ -35,6 +35,7 @@ class AttributeSpec:
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]
+    off: tuple[tuple[str, float], ...]
     directory: tuple[str, ...]
     anchor: str | None
     doc: str
@@ -64,6 +65,7 @@ class AttributeSpec:
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),
+        off: Sequence[tuple[str, float]] = (),
         directory: Sequence[str] = (),
         anchor: str | None = None,
         doc: str = "",

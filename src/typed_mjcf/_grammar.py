@@ -52,6 +52,7 @@ class AttributeSpec:
         "name_list",
         "namespace",
         "namespace_from",
+        "off",
         "ordered",
         "pattern",
         "py_name",
@@ -75,6 +76,7 @@ class AttributeSpec:
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
+    off: tuple[tuple[str, float], ...]  # numbers: a value keeping these counts as not set
     directory: tuple[str, ...]
     anchor: str | None
     doc: str
@@ -107,6 +109,7 @@ class AttributeSpec:
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),
+        off: Sequence[tuple[str, float]] = (),
         directory: Sequence[str] = (),
         anchor: str | None = None,
         doc: str = "",
@@ -131,6 +134,8 @@ class AttributeSpec:
         self.pattern = pattern
         # every value keeps these, or MuJoCo refuses the model (validate() checks them)
         self.bounds = tuple(bounds)
+        # a value keeping all of these is "off": presence constraints take it as not set
+        self.off = tuple(off)
         self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
         self.anchor = anchor
         self.doc = doc
