@@ -58,6 +58,7 @@ class AttributeOverride:
     field: str | None = None
     doc: str | None = None
     bounds: tuple[str, ...] | None = None  # numbers: "> 0", ">= -1", "<= 5" (each value)
+    off: tuple[str, ...] | None = None  # numbers: values that count as not set ("<= 0")
     reason: str = ""  # why the entry exists (required in facts.toml); documentation only
 
 
@@ -368,5 +369,6 @@ def _override(value: object, where: str) -> AttributeOverride:
         required=opt_bool("required"), nodefault=opt_bool("nodefault"),
         pattern=opt_str("pattern"), field=opt_str("field"), doc=opt_str("doc"),
         bounds=_bounds(entry["bounds"], f"{where} bounds") if "bounds" in entry else None,
+        off=_bounds(entry["off"], f"{where} off") if "off" in entry else None,
         reason=_str(entry["reason"], f"{where} reason"),
     )

@@ -84,6 +84,9 @@ class AttributeDef:
     # no default: why MuJoCo computes the value when the attribute is absent (codegen.drift
     # found no written value that MuJoCo reads as the attribute left out)
     computed: str | None = None
+    # numbers: a value that keeps all of these counts as not set in presence constraints
+    # (inheritrange="0" is off; facts.toml)
+    off: list[str] | None = None
 
 
 @dataclass
@@ -166,7 +169,8 @@ def _attr_to_json(a: AttributeDef) -> dict[str, object]:
         d["py_name"] = a.py_name
     d["kind"] = a.kind
     for key in ("dtype", "arity", "enum", "alone", "namespace", "namespace_from", "default",
-                "pattern", "field", "directory", "anchor", "bounds", "numbers", "computed"):
+                "pattern", "field", "directory", "anchor", "bounds", "off", "numbers",
+                "computed"):
         value: object = getattr(a, key)
         if isinstance(value, tuple):
             value = list(cast(tuple[object, ...], value))
@@ -285,6 +289,7 @@ def _attr_from_json(d: dict[str, object]) -> AttributeDef:
         bounds=cast("list[str] | None", d.get("bounds")),
         numbers=cast("dict[str, int] | None", d.get("numbers")),
         computed=cast("str | None", d.get("computed")),
+        off=cast("list[str] | None", d.get("off")),
     )
 
 

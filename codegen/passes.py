@@ -304,6 +304,8 @@ def _apply_override(attr: ir.AttributeDef, o: AttributeOverride) -> None:
         attr.alone = list(o.alone)
     if o.bounds is not None:
         attr.bounds = list(o.bounds)
+    if o.off is not None:
+        attr.off = list(o.off)
 
 
 def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
@@ -323,7 +325,7 @@ def _drop_fields_of_other_kinds(attr: ir.AttributeDef) -> None:
     if attr.kind not in ("string", "chars"):
         attr.pattern = None
     if attr.kind not in ("int", "real"):
-        attr.bounds = None
+        attr.bounds = attr.off = None
 
 
 def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
@@ -334,8 +336,8 @@ def _attribute_problem(attr: ir.AttributeDef, schema: ir.Schema) -> str | None:
         return "a real attribute needs dtype 'double' or 'float'"
     if attr.kind in ("keyword", "flags") and attr.enum not in schema.enums:
         return f"{attr.kind} attribute needs a declared enum, got {attr.enum!r}"
-    if attr.bounds and attr.kind not in ("int", "real"):
-        return f"only numbers take bounds, not a {attr.kind} attribute"
+    if (attr.bounds or attr.off) and attr.kind not in ("int", "real"):
+        return f"only numbers take bounds and off values, not a {attr.kind} attribute"
     if attr.kind != "flags" and (attr.alone or attr.ordered):
         return f"only flags take keywords alone or in order, not a {attr.kind} attribute"
     if attr.alone:

@@ -129,6 +129,8 @@ def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
         args.append(f"pattern={a.pattern!r}")
     if a.bounds:
         args.append(f"bounds={tuple((op, float(limit)) for op, limit in map(str.split, a.bounds))!r}")
+    if a.off:
+        args.append(f"off={tuple((op, float(limit)) for op, limit in map(str.split, a.off))!r}")
     if a.directory:
         args.append(f"directory={tuple(a.directory)!r}")
     expected_anchor = f"{el.anchor}-{a.name}" if el.anchor else None

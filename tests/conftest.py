@@ -51,6 +51,8 @@ SLOW = {
     "fidelity/test_corpus_validate.py": "MuJoCo compiles the corpus",
     "fidelity/test_defaults_corpus.py": "MuJoCo compiles the corpus",
     "fidelity/test_round_trip.py": "round trips of the corpus",
+    "fidelity/test_rules.py": "MuJoCo compiles two models or more per rule of the tables",
+    "fidelity/test_refusal_fuzz.py": "MuJoCo compiles mutants of the corpus, in a worker",
     "fidelity/test_properties.py": "hypothesis",
     "runtime/test_corpus.py": "the corpus, compiled",
     "runtime/test_release_driven.py": "the release tests again, in a fresh interpreter per "

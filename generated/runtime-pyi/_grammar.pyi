@@ -37,6 +37,7 @@ class AttributeSpec:
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]
+    off: tuple[tuple[str, float], ...]
     directory: tuple[str, ...]
     anchor: str | None
     doc: str
@@ -68,6 +69,7 @@ class AttributeSpec:
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),
+        off: Sequence[tuple[str, float]] = (),
         directory: Sequence[str] = (),
         anchor: str | None = None,
         doc: str = "",

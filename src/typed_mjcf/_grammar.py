@@ -54,6 +54,7 @@ class AttributeSpec:
         "namespace",
         "namespace_from",
         "numbers",
+        "off",
         "ordered",
         "pattern",
         "py_name",
@@ -79,6 +80,7 @@ class AttributeSpec:
     required: bool
     pattern: str | None
     bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
+    off: tuple[tuple[str, float], ...]  # numbers: a value keeping these counts as not set
     directory: tuple[str, ...]
     anchor: str | None
     doc: str
@@ -113,6 +115,7 @@ class AttributeSpec:
         required: bool = False,
         pattern: str | None = None,
         bounds: Sequence[tuple[str, float]] = (),
+        off: Sequence[tuple[str, float]] = (),
         directory: Sequence[str] = (),
         anchor: str | None = None,
         doc: str = "",
@@ -139,6 +142,8 @@ class AttributeSpec:
         self.pattern = pattern
         # every value keeps these, or MuJoCo refuses the model (validate() checks them)
         self.bounds = tuple(bounds)
+        # a value keeping all of these is "off": presence constraints take it as not set
+        self.off = tuple(off)
         self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
         self.anchor = anchor
         self.doc = doc

@@ -209,7 +209,8 @@ def _typed(newest: AttributeSpec, typed_as: TypeRow) -> AttributeSpec:
         namespace=namespace, namespace_from=newest.namespace_from if same else None,
         default=default, computed=newest.computed and default is None,
         required=newest.required, pattern=newest.pattern if same else None,
-        bounds=newest.bounds if same else (), directory=newest.directory, anchor=newest.anchor,
+        bounds=newest.bounds if same else (), off=newest.off if same else (),
+        directory=newest.directory, anchor=newest.anchor,
         doc=newest.doc, scope=newest.scope)
     typed.index = newest.index
     if newest.name_list is not None and same:

@@ -127,6 +127,7 @@ class _Plan:
     references: tuple[AttributeSpec, ...]
     name_lists: tuple[AttributeSpec, ...]  # texts listing names, each checked as a reference
     bounded: tuple[AttributeSpec, ...]  # numbers with bounds
+    off: tuple[AttributeSpec, ...]  # numbers with values that count as not set
     named_after_file: bool  # unnamed, MuJoCo names the element after its file
 
 
@@ -166,6 +167,7 @@ def _make_plan(spec: ElementSpec, projection: bool) -> _Plan:
         references=spec.references,
         name_lists=tuple(a for a in spec.attributes.values() if a.name_list is not None),
         bounded=tuple(a for a in spec.attributes.values() if a.bounds),
+        off=tuple(a for a in spec.attributes.values() if a.off),
         named_after_file=not projection and spec.namespace in grammar_facts().named_after_file,
     )
 
@@ -278,8 +280,10 @@ def _check_element(state: _Pass, order: int, element: Element, parent: Element |
     plan = state.plan(spec, projection)
     tag = spec.tag
     facts = grammar_facts()
-    for kind, bundles in plan.constraints:
-        _check_constraint(state, order, element, attrs, kind, bundles)
+    if plan.constraints:
+        set_attrs = _present(element, attrs, plan.off) if plan.off else attrs
+        for kind, bundles in plan.constraints:
+            _check_constraint(state, order, element, set_attrs, kind, bundles)
     for attribute in plan.required:
         if attribute.name not in attrs:
             state.add(order, element, "required-attribute",
@@ -348,6 +352,23 @@ def _check_tree(state: _Pass, order: int, element: Element, owner: Owner) -> Non
                       f"needs {' or '.join(a + '=' for a in attach.references)}")
 
 
+def _present(element: Element, attrs: Mapping[str, object],
+             off: tuple[AttributeSpec, ...]) -> Mapping[str, object]:
+    """``attrs`` without the values marked "off" (schema/facts.toml's ``off``: inheritrange="0"),
+    which MuJoCo's presence checks take as not set."""
+    unset = {a.name for a in off if a.name in attrs and _keeps(element, a, a.off)}
+    return {n: v for n, v in attrs.items() if n not in unset} if unset else attrs
+
+
+def _keeps(element: Element, attribute: AttributeSpec,
+           conditions: tuple[tuple[str, float], ...]) -> bool:
+    """Whether every number of the attribute's value keeps all ``conditions``."""
+    value = _tree.read_value(element, attribute)
+    numbers = (cast(list[float], value.tolist()) if isinstance(value, np.ndarray)
+               else [cast(float, value)])
+    return all(_KEEPS[op](float(x), limit) for x in numbers for op, limit in conditions)
+
+
 def _check_constraint(state: _Pass, order: int, element: Element, attrs: Mapping[str, object],
                       kind: str, bundles: tuple[tuple[str, ...], ...]) -> None:
     tag = element.spec.tag
@@ -414,11 +435,11 @@ def ensure_no_crash(model: ModelBase) -> None:
 
 def _check_bounds(state: _Pass, order: int, element: Element,
                   attribute: AttributeSpec) -> None:
+    if _keeps(element, attribute, attribute.bounds):
+        return
     value = _tree.read_value(element, attribute)
     numbers = (cast(list[float], value.tolist()) if isinstance(value, np.ndarray)
                else [cast(float, value)])
-    if all(_KEEPS[op](float(x), limit) for x in numbers for op, limit in attribute.bounds):
-        return
     text = " ".join(f"{float(x):g}" for x in numbers)
     each = "each value " if attribute.is_array else ""
     expected = " and ".join(f"{op} {limit:g}" for op, limit in attribute.bounds)

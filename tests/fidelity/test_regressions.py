@@ -442,6 +442,12 @@ ACCEPTED: dict[str, str] = {
                                '<pid input="expmap"/></default><default class="b">'
                                '<dcmotor motorconst="1" resistance="1" input="vel ff"/>'
                                '</default></default>'),
+    # reported from a robot file: inheritrange="0" is off (MuJoCo refuses only a positive
+    # one beside a non-zero ctrlrange), also in a class below one that sets it
+    "default-inheritrange-off": doc(
+        '<default><position inheritrange="1"/><default class="g"><position '
+        'ctrlrange="0 0.041" kp="100" kv="10" inheritrange="0"/></default></default>', WORLD,
+        '<actuator><position class="g" joint="j"/></actuator>'),
 }
 ACCEPTED_GAPS: dict[str, str] = {}
 

@@ -88,7 +88,10 @@ class Counts:
     mutants: int = 0
     both_accept: int = 0
     both_refuse: int = 0
-    false_accepts: list[tuple[str, str]] = field(default_factory=lambda: [])  # (why, xml)
+    # MuJoCo refuses, typed-mjcf reads the text: validate() finds the error (caught), or
+    # finds none (a false accept); (MuJoCo's error, xml)
+    caught: list[tuple[str, str]] = field(default_factory=lambda: [])
+    false_accepts: list[tuple[str, str]] = field(default_factory=lambda: [])
     false_rejects: list[tuple[str, str]] = field(default_factory=lambda: [])
     crashes: int = 0
 
@@ -125,6 +128,8 @@ def run(count: int, seed: int = 0) -> Counts:
                 counts.both_accept += 1
             elif mine is not None and theirs is not None:
                 counts.both_refuse += 1
+                if mine.startswith("validate:"):
+                    counts.caught.append((theirs, xml))
             elif mine is None:
                 counts.false_accepts.append((str(theirs), xml))
             else:
@@ -141,7 +146,11 @@ def main() -> None:
     print(f"{counts.mutants} mutants: {counts.both_accept} accepted by both, "
           f"{counts.both_refuse} refused by both, {len(counts.false_accepts)} false accepts, "
           f"{len(counts.false_rejects)} false rejects, {counts.crashes} MuJoCo crashes")
-    for title, cases in (("false accepts (MuJoCo's error)", counts.false_accepts),
+    read = len(counts.caught) + len(counts.false_accepts)
+    print(f"MuJoCo refuses, typed-mjcf reads: {read}; caught by validate(): "
+          f"{len(counts.caught)}, not caught (false accepts): {len(counts.false_accepts)}")
+    for title, cases in (("caught by validate() (MuJoCo's error)", counts.caught),
+                         ("false accepts (MuJoCo's error)", counts.false_accepts),
                          ("false rejects (our error)", counts.false_rejects)):
         print(f"\n{title}:")
         for why, _ in Counter(w[:90] for w, _ in cases).most_common():

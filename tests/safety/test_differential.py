@@ -16,8 +16,7 @@ KNOWN_FALSE_ACCEPTS = {
     r"repeated name '.*' in (mesh|hfield)": "two assets named after the same file's stem",
     r"invalid keyword: ''": "an empty keyword value is read as unset",
     r"gridlayout length must match gridsize": "a semantic rule (test_regressions.py KNOWN_GAPS)",
-    r"unknown default childclass": "a childclass MuJoCo's parser looks up in a context "
-                                   "validate() does not",
+    r"unknown default childclass": "childclass=\"\": an empty value is read as unset",
 }
 # typed-mjcf refuses, MuJoCo accepts:
 KNOWN_FALSE_REJECTS = {
