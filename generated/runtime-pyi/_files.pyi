@@ -115,6 +115,11 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
     the MJCF files being read (to refuse one that uses itself)."""
     ...
 
+def file_contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
+              folders: dict[str, str], collected: CollectedFiles) -> bytes:
+    """A file's contents, read as :func:`collect_files` reads it."""
+    ...
+
 def file_stem(file: str) -> str:
     """A file's name without folders and extension (what MuJoCo names an unnamed mesh)."""
     ...

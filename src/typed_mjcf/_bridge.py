@@ -13,6 +13,7 @@ from typed_mjcf._files import CollectedFiles
 from typed_mjcf._keyframes import LayoutError
 from typed_mjcf._locate import locate
 from typed_mjcf._release_facts import clears_asset_cache
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import collect, vfs_text
@@ -41,11 +42,14 @@ def _text(model: ModelBase) -> tuple[str, CollectedFiles]:
         raise _mujoco_error(model, error.mujoco_message, collect(model)) from None
 
 
-def compile_model(model: ModelBase) -> mujoco.MjModel:
-    """Validate, then compile with MuJoCo (files passed through a virtual file system)."""
+def compile_model(model: ModelBase,
+                  limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjModel:
+    """Validate, check what MuJoCo would allocate against ``limits``, then compile with
+    MuJoCo (files passed through a virtual file system)."""
     import mujoco
 
     ensure_valid(model)
+    check_compile(model, limits)  # before _text: a composed model's keyframes compile it
     xml, collected = _text(model)
     if clears_asset_cache():  # else a file of an earlier model with the same name is used
         mujoco.mj_clearCache(mujoco.mj_getCache())

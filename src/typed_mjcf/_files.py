@@ -253,7 +253,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
                 name, key = safe_file_name(*split_name(os.path.basename(path))), path
                 # an MJCF file is rewritten for its own folder: its contents are not shared
                 read = None if is_model_file_name(path) else functools.partial(
-                    _contents, element, attribute, value, model, folders, collected)
+                    file_contents, element, attribute, value, model, folders, collected)
             scoped = prefix if prefix and is_skin_file(element, attribute) else ""
             if scoped:  # its bones are renamed for its scope: its contents are its own
                 key, read = (key, scoped), None
@@ -311,7 +311,7 @@ def collect_files(model: ModelBase, model_file: ModelFileWriter,
     return collected
 
 
-def _contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
+def file_contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
               folders: dict[str, str], collected: CollectedFiles) -> bytes:
     """A file's contents, read as :func:`collect_files` reads it."""
     return _read(element, attribute, value, model, folders, _tree.memory_files(model),
