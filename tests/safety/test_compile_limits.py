@@ -195,3 +195,14 @@ def test_every_corpus_model_compiles_within_the_default_limits() -> None:
     assert checked > 50
     assert most["max_texture_pixels"] * 4 <= limits.max_texture_pixels, most
     assert most["max_hfield_samples"] * 4 <= limits.max_hfield_samples, most
+
+
+def test_check_compile_reports_the_limit_at_the_element(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "m.xml").write_text(
+        '<mujoco>\n<asset>\n<texture name="t" type="2d" builtin="checker" width="9000" '
+        'height="9000"/>\n</asset>\n</mujoco>\n')
+    assert main(["check", "--compile", str(tmp_path / "m.xml")]) == 1
+    out = capsys.readouterr().out
+    assert ":3: compile: asset/texture[t]: width=9000, height=9000 makes 81,000,000 " \
+           "pixels" in out, out
