@@ -7,7 +7,7 @@ keeps MuJoCo's message and names the element it is about (:mod:`typed_mjcf._loca
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from typed_mjcf._files import CollectedFiles
 from typed_mjcf._keyframes import LayoutError
@@ -17,7 +17,7 @@ from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, c
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import collect, vfs_text
-from typed_mjcf.errors import CompileError
+from typed_mjcf.errors import CompileError, InvalidTypeError
 
 if TYPE_CHECKING:
     import mujoco
@@ -72,5 +72,9 @@ def to_spec(model: ModelBase) -> mujoco.MjSpec:
 
 def spec_to_xml(spec: mujoco.MjSpec) -> str:
     """The MJCF text MuJoCo writes for a spec (compiling it first, as ``to_xml`` requires)."""
+    import mujoco
+
+    if not isinstance(cast(object, spec), mujoco.MjSpec):
+        raise InvalidTypeError(f"from_spec needs a mujoco.MjSpec, got {type(spec).__name__}")
     spec.compile()
     return spec.to_xml()

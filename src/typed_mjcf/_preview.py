@@ -100,12 +100,20 @@ def render_png(model: ModelBase, path: str | os.PathLike[str], width: object = 6
                keyframe: object = None, views: object = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
     """Write :func:`render`'s picture to ``path`` as a PNG file."""
+    _check_path(path)
     picture = render(model, width, height, camera, time=time, keyframe=keyframe, views=views,
                      limits=limits)
     write_png(path, picture)
 
 
+def _check_path(path: object) -> None:
+    if not isinstance(path, str | os.PathLike):
+        raise InvalidTypeError(f"render_png: path must be a path (str or os.PathLike[str]), "
+                               f"got {type(path).__name__}")
+
+
 def write_png(path: str | os.PathLike[str], picture: Image) -> None:
+    _check_path(path)
     try:
         with open(path, "wb") as file:
             file.write(encode_png(picture))

@@ -100,11 +100,15 @@ def run(args: argparse.Namespace) -> int:
     as_json = args.format == "json"
     reports: list[Report] = []
     unreadable: list[str] = []
+    try:
+        access = FileAccess(roots=args.allow_files)
+    except MjcfError as problem:  # e.g. --allow-files "": bad input, not a crash
+        error(NAME, f"--allow-files: {one_line(str(problem))}")
+        return BAD_INPUT
     progress = Progress(len(files), args.progress)
     for file in progress.each(files, "checking"):
         try:
-            found = check_file(file, compile_model=args.compile,
-                               files=FileAccess(roots=args.allow_files))
+            found = check_file(file, compile_model=args.compile, files=access)
         except BadInput as problem:
             progress.clear()
             unreadable.append(str(problem))
