@@ -1,17 +1,21 @@
 """CLI paths stay linear inside the default limits: ``fmt`` on many start tags on one line
 (10**6 ``<site/>`` did not answer in 120 s: a scan back to the line's start, and a copy of the
-line before each tag). Counted, not timed: Python lines executed (tests/operations.py) and
-the bytes the start-tag scan searches and copies."""
+line before each tag), ``to-python`` of a long number list (60 MB took 1.9 GB: a Python string
+per number, 32x the text). Counted, not timed: Python lines executed (tests/operations.py),
+the bytes the start-tag scan searches and copies, and peak memory (tracemalloc)."""
 
 from __future__ import annotations
 
 import contextlib
 import io
+import tracemalloc
 from collections.abc import Callable
 from pathlib import Path
 from typing import SupportsIndex
 
+import typed_mjcf as mjcf
 from typed_mjcf.cli import _starttags, main
+from typed_mjcf.cli.to_python import to_python
 
 from ..operations import growth
 
@@ -61,3 +65,35 @@ def test_fmt_check_of_many_tags_on_one_line_is_linear(tmp_path: Path) -> None:
         return run
 
     assert growth(checking, 1000, 8000) < 9
+
+
+def _numbers(folder: Path, count: int) -> mjcf.RootElement:
+    path = folder / f"n{count}.xml"
+    path.write_text('<mujoco><asset><mesh name="m" vertex="' + "0.125 -7 1e-3 " * count
+                    + '"/></asset></mujoco>')
+    return mjcf.from_path(path)
+
+
+def _peak(model: mjcf.RootElement) -> int:
+    """Peak memory (bytes) of writing the model as Python, the model read already."""
+    tracemalloc.start()
+    try:
+        to_python(model, ".")
+        return tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+
+
+def test_to_python_of_a_long_number_list_is_linear_and_costs_a_few_times_its_text(
+        tmp_path: Path) -> None:
+    def writing(count: int) -> Callable[[], object]:
+        model = _numbers(tmp_path, count)
+        return lambda: to_python(model, ".")
+
+    assert growth(writing, 500, 4000) < 9
+    # What each more byte of text costs (past the fixed cost of a piece converted at a time):
+    # 21 bytes before, about 3 now (the code it writes is 1.5 times the text).
+    small, large = 80_000, 240_000  # numbers x 3: 1.1 and 3.4 MB of text
+    extra_text = 14 * (large - small)
+    per_byte = (_peak(_numbers(tmp_path, large)) - _peak(_numbers(tmp_path, small))) / extra_text
+    assert per_byte < 5, per_byte
