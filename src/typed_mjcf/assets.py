@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import hashlib
 import os
-from typing import cast
 
 from typed_mjcf.errors import FileReadError, InvalidTypeError, InvalidValueError
 
@@ -47,10 +46,12 @@ class Asset:
     def from_path(cls, path: str | os.PathLike[str]) -> Asset:
         """Load a file's contents into memory (:class:`~typed_mjcf.FileReadError` if it
         cannot be read)."""
-        if not isinstance(cast(object, path), str | os.PathLike):
+        fspath = getattr(path, "__fspath__", None)  # whatever the static type said
+        name: object = path if isinstance(path, str) else fspath() if callable(fspath) else None
+        if not isinstance(name, str):
             raise InvalidTypeError(f"Asset.from_path needs a path (str or os.PathLike[str]), "
                                    f"got {type(path).__name__}")
-        path = os.fspath(path)
+        path = name
         stem, extension = os.path.splitext(os.path.basename(path))
         try:
             with open(path, "rb") as f:
