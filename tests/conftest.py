@@ -85,6 +85,10 @@ SLOW = {
     "cli/test_fmt.py::test_formatting_twice_changes_nothing": "the corpus, formatted",
     "cli/test_fmt.py::test_the_exporters_canonical_text_is_formatted": "the corpus, exported",
     "cli/test_fmt.py::test_fmt_changes_few_lines_of_the_corpus": "the corpus, formatted",
+    "cli/test_linear_paths.py": "every Python line of fmt and to-python counted, twice",
+    "safety/test_export_signals.py": "exports in subprocesses, signalled",
+    "safety/test_compile_limits.py::test_every_corpus_model_compiles_within_the_default_limits":
+        "the corpus, read",
 }
 
 

@@ -17,6 +17,7 @@ from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import set_notebook_display
 from typed_mjcf._png import encode_png
 from typed_mjcf._preview import VIEWS, FreeView
+from typed_mjcf._resource_limits import CompileLimits, RenderLimits
 from typed_mjcf._traversal import (
     commit_defaults,
     get_attachment_frame,
@@ -64,6 +65,7 @@ __all__ = [
     "Asset",
     "ChildError",
     "CompileError",
+    "CompileLimits",
     "DuplicateIdentifierError",
     "Element",
     "ElementList",
@@ -86,6 +88,7 @@ __all__ = [
     "Physics",
     "PhysicsError",
     "RenderError",
+    "RenderLimits",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",

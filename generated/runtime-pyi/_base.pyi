@@ -12,6 +12,12 @@ from typed_mjcf import _tree
 from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._names import NameScope
 from typed_mjcf._preview import FreeView, render, render_png
+from typed_mjcf._resource_limits import (
+    DEFAULT_COMPILE_LIMITS,
+    DEFAULT_RENDER_LIMITS,
+    CompileLimits,
+    RenderLimits,
+)
 from typed_mjcf._validate import Finding, validate
 import os
 import mujoco
@@ -208,11 +214,12 @@ class ModelRoot(Element, _tree.ModelBase):
         attributes and children, references that name nothing, unused default classes, ...
         Each finding names the element path and the rule; warnings don't stop compile()."""
         ...
-    def compile(self) -> mujoco.MjModel:
+    def compile(self, limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjModel:
         """Validate, then compile with MuJoCo (assets passed through a virtual file system).
 
         Raises ``ValidationError`` listing every error ``validate()`` finds, or
-        ``CompileError`` with MuJoCo's message and the path of the element it concerns."""
+        ``CompileError`` with MuJoCo's message and the path of the element it concerns, or
+        naming the element that takes what MuJoCo would allocate past ``limits``."""
         ...
     def to_spec(self) -> mujoco.MjSpec:
         """This model as a ``mujoco.MjSpec``."""
@@ -220,7 +227,8 @@ class ModelRoot(Element, _tree.ModelBase):
     def render(self, width: int = 640, height: int = 480,
                camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
                keyframe: str | int | Key | None = None,
-               views: tuple[str, ...] | list[str] | None = None) -> RgbImage:
+               views: tuple[str, ...] | list[str] | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
 
         ``camera``: ``None`` frames the whole model as MuJoCo's viewer does (from the
@@ -231,13 +239,15 @@ class ModelRoot(Element, _tree.ModelBase):
         ``top``, ``iso``, or of the model's cameras, which win) makes a contact sheet of
         labelled views instead, the whole ``width`` x ``height``. Renders offscreen
         (EGL, else OSMesa, unless ``MUJOCO_GL`` says otherwise); ``RenderError`` says what
-        to install when no OpenGL back end works.
+        to install when no OpenGL back end works. ``limits`` bounds the simulation steps,
+        the offscreen buffer and the compile (``RenderError``/``CompileError`` past them).
         """
         ...
     def render_png(self, path: str | os.PathLike[str], width: int = 640, height: int = 480,
                    camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
                    keyframe: str | int | Key | None = None,
-                   views: tuple[str, ...] | list[str] | None = None) -> None:
+                   views: tuple[str, ...] | list[str] | None = None,
+                   limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
         """Write ``render()``'s picture to ``path`` as a PNG file."""
         ...
     def __copy__(self) -> RootElement: ...

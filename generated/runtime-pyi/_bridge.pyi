@@ -6,11 +6,14 @@ building, reading and writing models do not need it. When MuJoCo refuses a model
 keeps MuJoCo's message and names the element it is about (:mod:`typed_mjcf._locate`).
 """
 from __future__ import annotations
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import ModelBase
 import mujoco
 
-def compile_model(model: ModelBase) -> mujoco.MjModel:
-    """Validate, then compile with MuJoCo (files passed through a virtual file system)."""
+def compile_model(model: ModelBase,
+                  limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjModel:
+    """Validate, check what MuJoCo would allocate against ``limits``, then compile with
+    MuJoCo (files passed through a virtual file system)."""
     ...
 
 def to_spec(model: ModelBase) -> mujoco.MjSpec:

@@ -137,6 +137,11 @@ def is_model_asset(element: Element, attribute: AttributeSpec) -> bool:
     """Whether the attribute holds a model MuJoCo reads (an ``<asset><model file>``)."""
     ...
 
+def file_contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
+              folders: dict[str, str], collected: CollectedFiles) -> bytes:
+    """A file's contents, read as :func:`collect_files` reads it."""
+    ...
+
 def file_stem(file: str) -> str:
     """A file's name without folders and extension (what MuJoCo names an unnamed mesh)."""
     ...

@@ -59,6 +59,18 @@ class ChildNeeds:
     effect: str
 
 @dataclass(frozen=True, kw_only=True)
+class Allocation:
+    """Memory MuJoCo's compiler allocates for an element, sized by its attributes or by the
+    header of an image it decodes rather than by the model's bytes: ``compile()`` counts it
+    against a field of ``CompileLimits`` before MuJoCo allocates."""
+    limit: str
+    sizes: tuple[str, ...]
+    generator: str
+    shape: str
+    cubes: frozenset[str]
+    images: tuple[str, ...]
+
+@dataclass(frozen=True, kw_only=True)
 class GrammarFacts:
     """Facts about the language as a whole, from ``schema/facts.toml``'s ``[language]``
     (one key per field; a field typed ``X | None`` may be left out)."""
@@ -98,3 +110,4 @@ class GrammarFacts:
     flexcomp: FlexcompFacts | None = None
     keyframe: KeyframeFacts
     child_needs: Mapping[str, ChildNeeds]
+    allocations: Mapping[str, Allocation]

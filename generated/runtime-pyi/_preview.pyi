@@ -11,6 +11,12 @@ import os
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Final, Self, cast
 import numpy as np
+from typed_mjcf._resource_limits import (
+    DEFAULT_RENDER_LIMITS,
+    RenderLimits,
+    check_offscreen,
+    check_steps,
+)
 from typed_mjcf._tree import Element, ModelBase
 from numpy.typing import NDArray
 Image = NDArray[np.uint8]
@@ -30,14 +36,16 @@ VIEWS: Final[dict[str, tuple[float, float]]] = ...
 MAX_SIZE: Final = 8192
 
 def render(model: ModelBase, width: object = 640, height: object = 480, camera: object = None,
-           *, time: object = 0.0, keyframe: object = None, views: object = None) -> Image:
+           *, time: object = 0.0, keyframe: object = None, views: object = None,
+           limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Image:
     """The model as a height x width x 3 ``uint8`` image (see ``RootElement.render``); the
     arguments are checked here, whatever their static types said."""
     ...
 
 def render_png(model: ModelBase, path: str | os.PathLike[str], width: object = 640,
                height: object = 480, camera: object = None, *, time: object = 0.0,
-               keyframe: object = None, views: object = None) -> None:
+               keyframe: object = None, views: object = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
     """Write :func:`render`'s picture to ``path`` as a PNG file."""
     ...
 
@@ -45,7 +53,8 @@ def write_png(path: str | os.PathLike[str], picture: Image) -> None: ...
 
 def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
                 labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None,
-                lighting: bool = False) -> tuple[Image, int]:
+                lighting: bool = False, limits: RenderLimits = DEFAULT_RENDER_LIMITS
+                ) -> tuple[Image, int]:
     """Two models side by side from the same camera, and a third panel showing the first
     with the pixels where the two models differ painted magenta; also how many differ.
 

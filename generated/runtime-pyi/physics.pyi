@@ -37,7 +37,13 @@ from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
 from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import InvalidValueError, MjcfError, RenderError
+from typed_mjcf.errors import (
+    FileReadError,
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    RenderError,
+)
 from typed_mjcf.types import Array, ArrayValues
 from typed_mjcf._base import ModelRoot
 __all__ = ["Binding", "Data", "Model", "Named", "Physics", "PhysicsError",

@@ -20,6 +20,7 @@ from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import set_notebook_display
 from typed_mjcf._png import encode_png
 from typed_mjcf._preview import VIEWS, FreeView
+from typed_mjcf._resource_limits import CompileLimits, RenderLimits
 from typed_mjcf._traversal import (
     commit_defaults,
     get_attachment_frame,
@@ -71,6 +72,7 @@ __all__ = [
     "Asset",
     "ChildError",
     "CompileError",
+    "CompileLimits",
     "DuplicateIdentifierError",
     "Element",
     "ElementList",
@@ -93,6 +95,7 @@ __all__ = [
     "Physics",
     "PhysicsError",
     "RenderError",
+    "RenderLimits",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",

@@ -22,6 +22,7 @@ from typed_mjcf._files import (
     unique_name,
 )
 from typed_mjcf._names import UNNAMED_MODEL
+from typed_mjcf._signals import HeldSignals
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._write import collect, vfs_text
 from typed_mjcf.errors import ExportError
@@ -156,28 +157,35 @@ def write_files(directory: str, outputs: list[tuple[str, bytes]], overwrite: boo
     temporaries: list[str] = []
     done: list[tuple[str, str | None, bool]] = []  # (path, its old file kept as, existed)
     path = directory
-    try:
-        for file_name, contents in pending:
-            path = os.path.join(directory, file_name)
-            temporaries.append(_write_temporary(directory, contents))
-        for (file_name, contents), temporary in zip(pending, temporaries, strict=True):
-            path = os.path.join(directory, file_name)
-            existed = os.path.lexists(path)
-            done.append((path, _put_in_place(temporary, path, contents, overwrite), existed))
-    except BaseException as error:
-        _roll_back(done)
-        if isinstance(error, FileExistsError):
-            raise ExportError(f"{path} appeared while exporting and has other contents; "
-                              f"pass overwrite=True to replace it") from None
-        if isinstance(error, OSError):
-            raise ExportError(f"cannot write {path}: {error.strerror or error}") from error
-        raise
-    finally:
-        for leftover in temporaries:
-            _remove(leftover)
-    for _, backup, _ in done:
-        if backup is not None:
-            _remove(backup)
+    # SIGINT and SIGTERM are taken between files (a handler run just after a rename would
+    # leave it unrecorded, and SIGTERM's default would leave the folder mixed): the export
+    # is put back or finished whole, and the signal acts when the block ends.
+    with HeldSignals() as held:
+        try:
+            for file_name, contents in pending:
+                path = os.path.join(directory, file_name)
+                temporaries.append(_write_temporary(directory, contents))
+                held.check(what)
+            for (file_name, contents), temporary in zip(pending, temporaries, strict=True):
+                path = os.path.join(directory, file_name)
+                existed = os.path.lexists(path)
+                done.append((path, _put_in_place(temporary, path, contents, overwrite),
+                             existed))
+                held.check(what)
+        except BaseException as error:
+            _roll_back(done)
+            if isinstance(error, FileExistsError):
+                raise ExportError(f"{path} appeared while exporting and has other contents; "
+                                  f"pass overwrite=True to replace it") from None
+            if isinstance(error, OSError):
+                raise ExportError(f"cannot write {path}: {error.strerror or error}") from error
+            raise
+        finally:
+            for leftover in temporaries:
+                _remove(leftover)
+        for _, backup, _ in done:
+            if backup is not None:
+                _remove(backup)
 
 
 _TEMPORARY = re.compile(r"\.typed-mjcf-(?:(\d+)-)?[^/\\]*\.tmp\Z")

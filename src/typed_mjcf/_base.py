@@ -24,6 +24,12 @@ from typed_mjcf._files import copied_files, file_stem, rebase_files
 from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import repr_mimebundle, repr_png
 from typed_mjcf._preview import FreeView, render, render_png
+from typed_mjcf._resource_limits import (
+    DEFAULT_COMPILE_LIMITS,
+    DEFAULT_RENDER_LIMITS,
+    CompileLimits,
+    RenderLimits,
+)
 from typed_mjcf._traversal import commit_defaults
 from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
@@ -396,12 +402,13 @@ class ModelRoot(Element, _tree.ModelBase):
         Each finding names the element path and the rule; warnings don't stop compile()."""
         return validate(self)
 
-    def compile(self) -> mujoco.MjModel:
+    def compile(self, limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjModel:
         """Validate, then compile with MuJoCo (assets passed through a virtual file system).
 
         Raises ``ValidationError`` listing every error ``validate()`` finds, or
-        ``CompileError`` with MuJoCo's message and the path of the element it concerns."""
-        return compile_model(self)
+        ``CompileError`` with MuJoCo's message and the path of the element it concerns, or
+        naming the element that takes what MuJoCo would allocate past ``limits``."""
+        return compile_model(self, limits)
 
     def to_spec(self) -> mujoco.MjSpec:
         """This model as a ``mujoco.MjSpec``."""
@@ -412,7 +419,8 @@ class ModelRoot(Element, _tree.ModelBase):
     def render(self, width: int = 640, height: int = 480,
                camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
                keyframe: str | int | Key | None = None,
-               views: tuple[str, ...] | list[str] | None = None) -> RgbImage:
+               views: tuple[str, ...] | list[str] | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
 
         ``camera``: ``None`` frames the whole model as MuJoCo's viewer does (from the
@@ -423,18 +431,20 @@ class ModelRoot(Element, _tree.ModelBase):
         ``top``, ``iso``, or of the model's cameras, which win) makes a contact sheet of
         labelled views instead, the whole ``width`` x ``height``. Renders offscreen
         (EGL, else OSMesa, unless ``MUJOCO_GL`` says otherwise); ``RenderError`` says what
-        to install when no OpenGL back end works.
+        to install when no OpenGL back end works. ``limits`` bounds the simulation steps,
+        the offscreen buffer and the compile (``RenderError``/``CompileError`` past them).
         """
         return cast("RgbImage", render(self, width, height, camera, time=time,
-                                       keyframe=keyframe, views=views))
+                                       keyframe=keyframe, views=views, limits=limits))
 
     def render_png(self, path: str | os.PathLike[str], width: int = 640, height: int = 480,
                    camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
                    keyframe: str | int | Key | None = None,
-                   views: tuple[str, ...] | list[str] | None = None) -> None:
+                   views: tuple[str, ...] | list[str] | None = None,
+                   limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
         """Write ``render()``'s picture to ``path`` as a PNG file."""
         render_png(self, path, width, height, camera, time=time, keyframe=keyframe,
-                   views=views)
+                   views=views, limits=limits)
 
     def _repr_png_(self) -> bytes | None:
         """The picture notebooks show (``None``, the text, if it cannot be made)."""

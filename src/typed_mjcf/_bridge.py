@@ -7,16 +7,17 @@ keeps MuJoCo's message and names the element it is about (:mod:`typed_mjcf._loca
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from typed_mjcf._compile import compile_from_memory, spec_from_memory
 from typed_mjcf._files import CollectedFiles
 from typed_mjcf._keyframes import LayoutError
 from typed_mjcf._locate import locate
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import collect, vfs_text
-from typed_mjcf.errors import CompileError
+from typed_mjcf.errors import CompileError, InvalidTypeError
 
 if TYPE_CHECKING:
     import mujoco
@@ -41,9 +42,12 @@ def _text(model: ModelBase) -> tuple[str, CollectedFiles]:
         raise _mujoco_error(model, error.mujoco_message, collect(model)) from None
 
 
-def compile_model(model: ModelBase) -> mujoco.MjModel:
-    """Validate, then compile with MuJoCo (files passed through a virtual file system)."""
+def compile_model(model: ModelBase,
+                  limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjModel:
+    """Validate, check what MuJoCo would allocate against ``limits``, then compile with
+    MuJoCo (files passed through a virtual file system)."""
     ensure_valid(model)
+    check_compile(model, limits)  # before _text: a composed model's keyframes compile it
     xml, collected = _text(model)
     try:
         return compile_from_memory(xml, collected.files)
@@ -62,5 +66,9 @@ def to_spec(model: ModelBase) -> mujoco.MjSpec:
 
 def spec_to_xml(spec: mujoco.MjSpec) -> str:
     """The MJCF text MuJoCo writes for a spec (compiling it first, as ``to_xml`` requires)."""
+    import mujoco
+
+    if not isinstance(cast(object, spec), mujoco.MjSpec):
+        raise InvalidTypeError(f"from_spec needs a mujoco.MjSpec, got {type(spec).__name__}")
     spec.compile()
     return spec.to_xml()

@@ -301,7 +301,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
                 name, key = collected.apart.get(path, os.path.basename(path)), path
                 # an MJCF file is rewritten for its own folder: its contents are not shared
                 read = None if is_model_file_name(path) else functools.partial(
-                    _contents, element, attribute, value, model, folders, collected)
+                    file_contents, element, attribute, value, model, folders, collected)
             scoped = prefix if prefix and is_skin_file(element, attribute) else ""
             if scoped:  # its bones are renamed for its scope: its contents are its own
                 key, read = (key, scoped), None
@@ -335,7 +335,7 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
                     continue
                 path = resolve_path(owner, attribute, value, folders)
                 by_base.setdefault(os.path.basename(path).casefold(), {})[path] = (
-                    functools.partial(_contents, element, attribute, value, owner, folders,
+                    functools.partial(file_contents, element, attribute, value, owner, folders,
                                       collected))
     base = _tree.base_dir(model) or os.getcwd()
     apart: dict[str, str] = {}
@@ -433,7 +433,7 @@ def _unread_model(owner: ModelBase, element: Element, attribute: AttributeSpec, 
         f"cannot be kept to {access.where}; {access.hint}", source, line)
 
 
-def _contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
+def file_contents(element: Element, attribute: AttributeSpec, value: str, model: ModelBase,
               folders: dict[str, str], collected: CollectedFiles) -> bytes:
     """A file's contents, read as :func:`collect_files` reads it."""
     return _read(element, attribute, value, model, folders, _tree.memory_files(model),

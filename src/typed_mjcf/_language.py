@@ -73,6 +73,20 @@ class ChildNeeds:
 
 
 @dataclass(frozen=True, kw_only=True)
+class Allocation:
+    """Memory MuJoCo's compiler allocates for an element, sized by its attributes or by the
+    header of an image it decodes rather than by the model's bytes: ``compile()`` counts it
+    against a field of ``CompileLimits`` before MuJoCo allocates."""
+
+    limit: str  # the CompileLimits field bounding the count
+    sizes: tuple[str, ...]  # attributes whose product is the count allocated
+    generator: str  # the attribute that, at its default, allocates nothing from sizes ("": always)
+    shape: str  # the attribute whose keywords in ``cubes`` allocate a cube ("": none)
+    cubes: frozenset[str]  # six square faces, ``sizes[0]`` on a side (the others unused)
+    images: tuple[str, ...]  # file attributes: a PNG's declared pixels are decoded
+
+
+@dataclass(frozen=True, kw_only=True)
 class GrammarFacts:
     """Facts about the language as a whole, from ``schema/facts.toml``'s ``[language]``
     (one key per field; a field typed ``X | None`` may be left out)."""
@@ -120,3 +134,5 @@ class GrammarFacts:
     keyframe: KeyframeFacts
     # rows (declaration names) whose child needs attributes when the row sets others
     child_needs: Mapping[str, ChildNeeds]
+    # rows (declaration names) whose compile allocates what their attributes or images declare
+    allocations: Mapping[str, Allocation]

@@ -22,6 +22,12 @@ from typed_mjcf._bridge import compile_model
 from typed_mjcf._font import GLYPH_HEIGHT, GLYPH_WIDTH, draw_text, text_size
 from typed_mjcf._gl import ensure_gl_backend, gl_context
 from typed_mjcf._png import encode_png
+from typed_mjcf._resource_limits import (
+    DEFAULT_RENDER_LIMITS,
+    RenderLimits,
+    check_offscreen,
+    check_steps,
+)
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.errors import InvalidTypeError, InvalidValueError, RenderError, did_you_mean
 
@@ -64,38 +70,50 @@ _CHANGED: Final = (255, 0, 255)  # pixels that differ, in a difference panel
 
 
 def render(model: ModelBase, width: object = 640, height: object = 480, camera: object = None,
-           *, time: object = 0.0, keyframe: object = None, views: object = None) -> Image:
+           *, time: object = 0.0, keyframe: object = None, views: object = None,
+           limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Image:
     """The model as a height x width x 3 ``uint8`` image (see ``RootElement.render``); the
     arguments are checked here, whatever their static types said."""
+    limits = _check_limits(limits)
     width, height = _check_size(width, height)
     seconds = _check_time(time)
     names = _check_views(views)
     if names is not None and camera is not None:
         raise InvalidValueError("render: give camera= or views=, not both")
     ensure_gl_backend()  # before compiling imports mujoco: MUJOCO_GL is set by then
-    m = compile_model(model)
-    data = _posed(model, m, keyframe, seconds)
+    m = compile_model(model, limits.compile)
+    data = _posed(model, m, keyframe, seconds, limits)
     if names is None:
-        with _Offscreen(m, width, height) as offscreen:
+        with _Offscreen(m, width, height, limits) as offscreen:
             return offscreen.shoot(data, _camera(model, m, camera), width, height)
     columns, rows = _grid(len(names))
     scale = _label_scale(width // columns)
     tile_w, tile_h = width // columns, height // rows - _strip(scale)
     _check_size(tile_w, tile_h, f"each of {len(names)} views")
-    with _Offscreen(m, tile_w, tile_h) as offscreen:
+    with _Offscreen(m, tile_w, tile_h, limits) as offscreen:
         tiles = [offscreen.shoot(data, _view(m, name), tile_w, tile_h) for name in names]
     return _sheet(list(zip(names, tiles, strict=True)), columns, width, height, scale)
 
 
 def render_png(model: ModelBase, path: str | os.PathLike[str], width: object = 640,
                height: object = 480, camera: object = None, *, time: object = 0.0,
-               keyframe: object = None, views: object = None) -> None:
+               keyframe: object = None, views: object = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
     """Write :func:`render`'s picture to ``path`` as a PNG file."""
-    picture = render(model, width, height, camera, time=time, keyframe=keyframe, views=views)
+    _check_path(path)
+    picture = render(model, width, height, camera, time=time, keyframe=keyframe, views=views,
+                     limits=limits)
     write_png(path, picture)
 
 
+def _check_path(path: object) -> None:
+    if not isinstance(path, str | os.PathLike):
+        raise InvalidTypeError(f"render_png: path must be a path (str or os.PathLike[str]), "
+                               f"got {type(path).__name__}")
+
+
 def write_png(path: str | os.PathLike[str], picture: Image) -> None:
+    _check_path(path)
     try:
         with open(path, "wb") as file:
             file.write(encode_png(picture))
@@ -106,7 +124,8 @@ def write_png(path: str | os.PathLike[str], picture: Image) -> None:
 
 def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
                 labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None,
-                lighting: bool = False) -> tuple[Image, int]:
+                lighting: bool = False, limits: RenderLimits = DEFAULT_RENDER_LIMITS
+                ) -> tuple[Image, int]:
     """Two models side by side from the same camera, and a third panel showing the first
     with the pixels where the two models differ painted magenta; also how many differ.
 
@@ -118,15 +137,16 @@ def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
     """
     width, height = _check_size(width, height)
     ensure_gl_backend()
-    compiled = [compile_model(a), compile_model(b)]
+    limits = _check_limits(limits)
+    compiled = [compile_model(a, limits.compile), compile_model(b, limits.compile)]
     center, extent = _union(*(_bounds(m) for m in compiled))
     pictures: list[Image] = []
     compared: list[Image] = []
     for model, m in zip((a, b), compiled, strict=True):
         m.stat.center[:] = center  # lights, shadows and clipping scale with these
         m.stat.extent = extent
-        data = _posed(model, m, None, 0.0)
-        with _Offscreen(m, width, height) as offscreen:
+        data = _posed(model, m, None, 0.0, limits)
+        with _Offscreen(m, width, height, limits) as offscreen:
             view = camera if camera is not None else FreeView(
                 azimuth=float(compiled[0].vis.global_.azimuth),
                 elevation=float(compiled[0].vis.global_.elevation))
@@ -171,6 +191,13 @@ def _check_time(time: object) -> float:
     return seconds
 
 
+def _check_limits(limits: object) -> RenderLimits:
+    if not isinstance(limits, RenderLimits):
+        raise InvalidTypeError(f"render: limits={limits!r}: expected a "
+                               f"typed_mjcf.RenderLimits")
+    return limits
+
+
 def _check_views(views: object) -> list[str] | None:
     if views is None:
         return None
@@ -187,14 +214,15 @@ def _check_views(views: object) -> list[str] | None:
 
 
 def _posed(model: ModelBase, m: mujoco.MjModel, keyframe: object,
-           seconds: float) -> mujoco.MjData:
+           seconds: float, limits: RenderLimits) -> mujoco.MjData:
     """The model's state after ``seconds`` of simulation from ``keyframe`` (or ``qpos0``)."""
     import mujoco
 
+    steps = check_steps(seconds, float(m.opt.timestep), limits)
     data = mujoco.MjData(m)
     if keyframe is not None:
         mujoco.mj_resetDataKeyframe(m, data, _key_id(model, m, keyframe))
-    for _ in range(round(seconds / m.opt.timestep)):
+    for _ in range(steps):
         mujoco.mj_step(m, data)
     mujoco.mj_forward(m, data)  # positions of bodies and geoms for the pose reached
     return data
@@ -406,10 +434,12 @@ class _Offscreen:
     this compiled copy) when a picture needs more than ``<visual><global offwidth
     offheight>`` give."""
 
-    def __init__(self, m: mujoco.MjModel, width: int, height: int) -> None:
+    def __init__(self, m: mujoco.MjModel, width: int, height: int,
+                 limits: RenderLimits) -> None:
         import mujoco
 
         visual = m.vis.global_
+        check_offscreen((width, height), (int(visual.offwidth), int(visual.offheight)), limits)
         visual.offwidth = max(int(visual.offwidth), width)
         visual.offheight = max(int(visual.offheight), height)
         self.m = m

@@ -23,7 +23,7 @@ from typed_mjcf._files import safe_file_name
 from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._parse import ParseLimits, read_bounded
 from typed_mjcf._tree import ModelBase
-from typed_mjcf.errors import FileAccessError, FileReadError, ParseError
+from typed_mjcf.errors import FileAccessError, FileReadError, InvalidTypeError, ParseError
 
 _T = TypeVar("_T")
 
@@ -111,6 +111,9 @@ def read_zip(path: str | os.PathLike[str] | IO[bytes], model_file: str, limits: 
     relative to it, and a name for messages. An archive with several MJCF files must name
     one ``model_file``."""
     source = os.fspath(path) if isinstance(path, str | os.PathLike) else "<zip>"
+    if not isinstance(path, str | os.PathLike) and not callable(getattr(path, "read", None)):
+        raise InvalidTypeError(f"from_zip needs a path or an open binary file, got "
+                               f"{type(path).__name__}")
     try:
         if isinstance(path, str | os.PathLike):
             with open(os.fspath(path), "rb") as f:

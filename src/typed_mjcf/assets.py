@@ -5,7 +5,7 @@ from __future__ import annotations
 import hashlib
 import os
 
-from typed_mjcf.errors import InvalidTypeError, InvalidValueError
+from typed_mjcf.errors import FileReadError, InvalidTypeError, InvalidValueError
 
 
 class Asset:
@@ -44,11 +44,21 @@ class Asset:
 
     @classmethod
     def from_path(cls, path: str | os.PathLike[str]) -> Asset:
-        """Load a file's contents into memory."""
-        path = os.fspath(path)
+        """Load a file's contents into memory (:class:`~typed_mjcf.FileReadError` if it
+        cannot be read)."""
+        fspath = getattr(path, "__fspath__", None)  # whatever the static type said
+        name: object = path if isinstance(path, str) else fspath() if callable(fspath) else None
+        if not isinstance(name, str):
+            raise InvalidTypeError(f"Asset.from_path needs a path (str or os.PathLike[str]), "
+                                   f"got {type(path).__name__}")
+        path = name
         stem, extension = os.path.splitext(os.path.basename(path))
-        with open(path, "rb") as f:
-            return cls(f.read(), extension, stem)
+        try:
+            with open(path, "rb") as f:
+                return cls(f.read(), extension, stem)
+        except OSError as error:
+            raise FileReadError(f"cannot read the file: {error.strerror or error}",
+                                path) from None
 
     def __eq__(self, other: object) -> bool:
         return (isinstance(other, Asset) and other.digest == self.digest

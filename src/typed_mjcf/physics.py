@@ -50,7 +50,13 @@ from typed_mjcf._ids import compile_for_physics, ids_for_text, kind_of
 from typed_mjcf._model_state import model_state
 from typed_mjcf._named import make_axes, struct_indexers
 from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import InvalidValueError, MjcfError, RenderError
+from typed_mjcf.errors import (
+    FileReadError,
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    RenderError,
+)
 from typed_mjcf.types import Array, ArrayValues
 
 if TYPE_CHECKING:
@@ -261,8 +267,14 @@ class Physics(Bind):
     @classmethod
     def from_binary_path(cls, file_path: str | os.PathLike[str]) -> Self:
         """A physics of a model binary (MJB) file."""
-        with open(file_path, "rb") as stream:
-            return cls.from_byte_string(stream.read())
+        path = _path(file_path)
+        try:
+            with open(path, "rb") as stream:
+                contents = stream.read()
+        except OSError as error:
+            raise FileReadError(f"cannot read the file: {error.strerror or error}",
+                                path) from None
+        return cls.from_byte_string(contents)
 
     @classmethod
     def from_mjcf_model(cls, mjcf_model: ModelRoot) -> Self:
@@ -291,6 +303,9 @@ class Physics(Bind):
         self._reload_from_data(Data(_load_path(file_path)))
 
     def _load_mjcf(self, mjcf_model: ModelRoot) -> None:
+        if not isinstance(cast(object, mjcf_model), ModelBase):
+            raise InvalidTypeError(f"mjcf_model must be a model (a typed_mjcf.RootElement), "
+                                   f"got {type(mjcf_model).__name__}")
         try:
             compiled = compile_for_physics(mjcf_model)
         except ValueError as error:
@@ -626,6 +641,9 @@ class Physics(Bind):
     def _bind(self, mjcf_elements: Element | Iterable[Element] | None) -> Binding:
         if mjcf_elements is None:
             raise BindingError("mjcf_elements is None.")
+        if not isinstance(cast(object, mjcf_elements), Element | Iterable):
+            raise BindingError(f"cannot bind {mjcf_elements!r}: bind takes an MJCF element "
+                               f"or a sequence of them")
         if isinstance(mjcf_elements, Element):
             elements: list[Element] = [mjcf_elements]
             key: object = mjcf_elements
@@ -749,7 +767,19 @@ def _scoped_name(element: Element, prefixes: dict[int, str]) -> str | None:
     return prefix + own
 
 
+def _path(file_path: object) -> str:
+    if not isinstance(file_path, str | os.PathLike):
+        raise InvalidTypeError(f"file_path must be a path (str or os.PathLike[str]), got "
+                               f"{type(file_path).__name__}")
+    return os.fspath(cast("str | os.PathLike[str]", file_path))
+
+
 def _load(xml_string: str, assets: Mapping[str, bytes] | None) -> Model:
+    if not isinstance(cast(object, xml_string), str):
+        raise InvalidTypeError(f"xml_string must be a str, got {type(xml_string).__name__}")
+    if assets is not None and not isinstance(cast(object, assets), Mapping):
+        raise InvalidTypeError(f"assets must be a mapping of names to bytes, got "
+                               f"{type(assets).__name__}")
     try:
         return _as_model(compile_from_memory(xml_string, assets or {}))
     except ValueError as error:
@@ -757,8 +787,9 @@ def _load(xml_string: str, assets: Mapping[str, bytes] | None) -> Model:
 
 
 def _load_path(file_path: str | os.PathLike[str]) -> Model:
+    path = _path(file_path)
     try:
-        return _as_model(mujoco.MjModel.from_xml_path(os.fspath(file_path)))
+        return _as_model(mujoco.MjModel.from_xml_path(path))
     except ValueError as error:
         raise MjcfError(f"MuJoCo could not compile {os.fspath(file_path)}: "
                         f"{str(error).strip()}") from None

@@ -13,6 +13,7 @@ from typing import cast
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf._binding import BindingError
 
 
 def _call(function: object, *args: object) -> object:
@@ -48,6 +49,29 @@ CALLS: dict[str, tuple[Callable[[mjcf.RootElement, Path], object], type[Exceptio
     "export-zip-not-a-model": (
         lambda m, p: _call(mjcf.export_with_assets_as_zip, m.worldbody, p),
         mjcf.InvalidTypeError, "mjcf_model must be a model .*got Worldbody"),
+    # Entry points taking a path, a file or a model (round two of the audit).
+    "zip-int": (lambda m, _: _call(mjcf.from_zip, 5),
+                mjcf.InvalidTypeError, "from_zip needs a path or an open binary file, got int"),
+    "zip-none": (lambda m, _: _call(mjcf.from_zip, None),
+                 mjcf.InvalidTypeError, "from_zip needs a path .*got NoneType"),
+    "asset-missing-file": (lambda m, p: mjcf.Asset.from_path(p / "x.obj"),
+                           mjcf.FileReadError, r"x\.obj: cannot read the file: No such file"),
+    "asset-folder": (lambda m, p: mjcf.Asset.from_path(p),
+                     mjcf.FileReadError, "cannot read the file: Is a directory"),
+    "asset-path-int": (lambda m, _: _call(mjcf.Asset.from_path, 5),
+                       mjcf.InvalidTypeError, "Asset.from_path needs a path .*got int"),
+    "render-png-path-int": (lambda m, _: _call(m.render_png, 5, 8, 8),
+                            mjcf.InvalidTypeError, "render_png: path must be a path"),
+    "spec-int": (lambda m, _: _call(mjcf.from_spec, 5),
+                 mjcf.InvalidTypeError, "from_spec needs a mujoco.MjSpec, got int"),
+    "physics-model-int": (lambda m, _: _call(mjcf.Physics.from_mjcf_model, 5),
+                          mjcf.InvalidTypeError, "mjcf_model must be a model .*got int"),
+    "physics-path-int": (lambda m, _: _call(mjcf.Physics.from_xml_path, 5),
+                         mjcf.InvalidTypeError, "file_path must be a path .*got int"),
+    "physics-text-int": (lambda m, _: _call(mjcf.Physics.from_xml_string, 5),
+                         mjcf.InvalidTypeError, "xml_string must be a str, got int"),
+    "physics-binary-missing": (lambda m, p: mjcf.Physics.from_binary_path(p / "x.mjb"),
+                               mjcf.FileReadError, "x.mjb: cannot read the file: No such"),
 }
 
 
@@ -101,3 +125,24 @@ def test_a_removed_subtree_pickles() -> None:
     assert again.is_removed and again.name == "b3"
     assert [b.name for b in again.body] == ["b4"]
     assert again.parent is not None and again.parent.name == "b2"
+
+
+def test_bind_of_what_is_no_element_is_a_binding_error() -> None:
+    model = _model()
+    model.worldbody.body[0].add_geom(size=(0.1,))  # a moving body needs mass to compile
+    physics = mjcf.Physics.from_mjcf_model(model)
+    with pytest.raises(BindingError, match=r"cannot bind 5: bind takes an MJCF "
+                                                        r"element or a sequence of them"):
+        _call(physics.bind, 5)
+    with pytest.raises(mjcf.InvalidTypeError, match=r"mjcf_model must be a model"):
+        _call(physics.reload_from_mjcf_model, 5)
+
+
+def test_a_bad_command_line_setting_is_one_line_exit_2(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from typed_mjcf.cli import main
+
+    (tmp_path / "m.xml").write_text("<mujoco/>")
+    assert main(["check", "--compile", "--allow-files", "", str(tmp_path / "m.xml")]) == 2
+    assert capsys.readouterr().err == (
+        "typed-mjcf check: --allow-files: FileAccess.roots holds '', not a folder path\n")

@@ -17,8 +17,14 @@ MAX_ONE_PER_LINE: Final = 12
 
 @dataclass(frozen=True)
 class Items:
-    """A tuple literal: its items' text."""
-    items: tuple[str, ...]
+    """A tuple literal: its items' text joined by ``", "`` (one string, not one per item:
+    a mesh's million numbers cost their text, not a million objects), and how many."""
+    text: str
+    count: int
+    @classmethod
+    def of(cls, items: tuple[str, ...]) -> Items:
+        """The literal of ``items`` (none holding ``", "``: numbers, keywords)."""
+        ...
     def inline(self) -> str: ...
 Value = str | Items
 
@@ -52,6 +58,7 @@ def assignment(indent: str, target: str, prefix: str, text: str) -> list[str]:
     """``target = prefix "text"``, the string split after ``/`` over lines when too long."""
     ...
 
-def fill(items: tuple[str, ...], indent: str) -> list[str]:
-    """Items separated by commas, as many to a line as fit, each line ending with a comma."""
+def fill(text: str, indent: str) -> list[str]:
+    """Items (``text``: joined by ``", "``) as many to a line as fit, each line ending with
+    a comma; an item longer than a line alone on its line."""
     ...

@@ -19,6 +19,8 @@ from collections.abc import Callable, Sequence
 from typed_mjcf import __version__
 from typed_mjcf._releases import describe as describe_releases
 from typed_mjcf.cli import check, diff, fmt, mujoco_stubs, render, to_python
+from typed_mjcf.cli._common import BAD_INPUT
+from typed_mjcf.errors import MjcfError
 
 DESCRIPTION = """\
 Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
@@ -44,9 +46,11 @@ def parser() -> argparse.ArgumentParser:
                              version=f"typed-mjcf {__version__}\n{describe_releases()}")
     commands = main_parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for module in (to_python, check, fmt, diff, render, mujoco_stubs):
-        module.arguments(commands.add_parser(
-            module.NAME, help=module.HELP, description=module.DESCRIPTION,
-            formatter_class=argparse.RawDescriptionHelpFormatter))
+        command = commands.add_parser(module.NAME, help=module.HELP,
+                                      description=module.DESCRIPTION,
+                                      formatter_class=argparse.RawDescriptionHelpFormatter)
+        module.arguments(command)
+        command.set_defaults(command_name=module.NAME)
     return main_parser
 
 
@@ -58,6 +62,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return run(args)
     except KeyboardInterrupt:
         return 130
+    except MjcfError as problem:  # a command let bad input through: still one line, not a
+        print(f"typed-mjcf {args.command_name}: {' '.join(str(problem).split())}",  # trace
+              file=sys.stderr)
+        return BAD_INPUT
     except BrokenPipeError:  # the reader went away (| head): stop quietly
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())

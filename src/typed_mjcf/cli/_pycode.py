@@ -27,14 +27,19 @@ _EXPONENT = re.compile(r"e([+-])0*(\d)")
 
 @dataclass(frozen=True)
 class Items:
-    """A tuple literal: its items' text."""
+    """A tuple literal: its items' text joined by ``", "`` (one string, not one per item:
+    a mesh's million numbers cost their text, not a million objects), and how many."""
 
-    items: tuple[str, ...]
+    text: str
+    count: int
+
+    @classmethod
+    def of(cls, items: tuple[str, ...]) -> Items:
+        """The literal of ``items`` (none holding ``", "``: numbers, keywords)."""
+        return cls(", ".join(items), len(items))
 
     def inline(self) -> str:
-        if len(self.items) == 1:
-            return f"({self.items[0]},)"
-        return f"({', '.join(self.items)})"
+        return f"({self.text},)" if self.count == 1 else f"({self.text})"
 
 
 Value = str | Items  # an expression's text, or a tuple that may be filled across lines
@@ -103,11 +108,11 @@ def call(indent: str, target: str | None, callee: str,
             lines.append(f"{inner}{text}{comma}")
             continue
         lines.append(f"{inner}{_argument(name, '(')}")
-        if len(value.items) > MAX_ONE_PER_LINE:
-            lines += fill(value.items, inner + INDENT)
+        if value.count > MAX_ONE_PER_LINE:
+            lines += fill(value.text, inner + INDENT)
             filled = True
         else:
-            lines += [f"{inner}{INDENT}{item}," for item in value.items]
+            lines += [f"{inner}{INDENT}{item}," for item in value.text.split(", ")]
         lines.append(f"{inner}){comma}")
     lines.append(f"{indent})")
     if filled:
@@ -136,17 +141,20 @@ def _argument(name: str | None, text: str) -> str:
     return text if name is None else f"{name}={text}"
 
 
-def fill(items: tuple[str, ...], indent: str) -> list[str]:
-    """Items separated by commas, as many to a line as fit, each line ending with a comma."""
+def fill(text: str, indent: str) -> list[str]:
+    """Items (``text``: joined by ``", "``) as many to a line as fit, each line ending with
+    a comma; an item longer than a line alone on its line."""
     lines: list[str] = []
-    line = ""
-    for item in items:
-        candidate = f"{line} {item}," if line else f"{item},"
-        if line and len(indent) + len(candidate) > WIDTH:
-            lines.append(indent + line)
-            line = f"{item},"
-        else:
-            line = candidate
-    if line:
-        lines.append(indent + line)
+    room = WIDTH - len(indent) - 1  # the line's items, before its comma
+    start = 0
+    while start < len(text):
+        if len(text) - start <= room:
+            end = len(text)
+        else:  # the last separator that lets the line fit, else the item alone
+            end = text.rfind(", ", start, start + room + 2)
+            if end < 0:
+                end = text.find(", ", start)
+                end = len(text) if end < 0 else end
+        lines.append(f"{indent}{text[start:end]},")
+        start = end + 2
     return lines

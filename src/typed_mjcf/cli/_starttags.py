@@ -46,11 +46,24 @@ class StartTag:
 def start_tags(data: bytes) -> list[StartTag]:
     """Every start tag of ``data``, in document order."""
     tags: list[StartTag] = []
+    # Each byte is looked at once (a scan back to the line's start per tag, and a copy of
+    # the line before it, were quadratic on a line of many tags): where the current line
+    # starts and where the token before ends are carried along.
+    line_start = searched = previous_end = 0
     for match in _TOKEN.finditer(data):
+        start = match.start()
+        newline = data.rfind(b"\n", searched, start)
+        if newline >= 0:
+            line_start = newline + 1
+        searched, end_before = start, previous_end
+        previous_end = match.end()
         if match.group(1) is None:
             continue
-        before = data[data.rfind(b"\n", 0, match.start()) + 1:match.start()]
-        lead = _spaces(before, "") if not before.strip() else None
+        if end_before > line_start:  # a token before it on its line
+            lead = None
+        else:  # only text between tokens: each byte copied once
+            before = data[line_start:start]
+            lead = _spaces(before, "") if not before.strip() else None
         attributes: list[Written] = []
         inside = match.group(2)
         end = 0

@@ -15,6 +15,7 @@ from lxml import etree
 from typed_mjcf._export import iter_written
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._parse import Problem
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, check_compile
 from typed_mjcf._tree import Element
 from typed_mjcf._write import vfs_text
 from typed_mjcf.cli._common import (
@@ -99,11 +100,15 @@ def run(args: argparse.Namespace) -> int:
     as_json = args.format == "json"
     reports: list[Report] = []
     unreadable: list[str] = []
+    try:
+        access = FileAccess(roots=args.allow_files)
+    except MjcfError as problem:  # e.g. --allow-files "": bad input, not a crash
+        error(NAME, f"--allow-files: {one_line(str(problem))}")
+        return BAD_INPUT
     progress = Progress(len(files), args.progress)
     for file in progress.each(files, "checking"):
         try:
-            found = check_file(file, compile_model=args.compile,
-                               files=FileAccess(roots=args.allow_files))
+            found = check_file(file, compile_model=args.compile, files=access)
         except BadInput as problem:
             progress.clear()
             unreadable.append(str(problem))
@@ -187,6 +192,7 @@ def compile_problem(model: RootElement, file: str) -> Report | None:
     """MuJoCo's error compiling the model (or reading its files), at the element it names,
     or ``None``."""
     try:
+        check_compile(model, DEFAULT_COMPILE_LIMITS)  # what the child would allocate
         xml, collected = vfs_text(model)
     except MjcfError as problem:  # a file the model names cannot (or may not) be read
         message = problem.detail if isinstance(problem, ParseError) else str(problem)

@@ -21,8 +21,10 @@ from __future__ import annotations
 import argparse
 import builtins
 import os
+import re
 import textwrap
 from collections import Counter
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import cast
 
@@ -366,17 +368,16 @@ class _Module:
             words = cast(tuple[str, ...], stored)
             if len(words) == 1:
                 return _pycode.string(words[0])
-            return Items(tuple(_pycode.string(word) for word in words))
+            return Items.of(tuple(_pycode.string(word) for word in words))
         if kind == "int" and not attribute.is_array:
             return str(stored)
         if kind == "real" and not attribute.is_array:
             return self.number(self.real(attribute, stored))
         if kind in ("int", "real"):
-            items = self.numbers(attribute, stored)
-            if len(items) == 1 and attribute.lo <= 1 and (attribute.hi is None
-                                                          or attribute.hi >= 1):
-                return items[0]  # one value may be given as a number
-            return Items(tuple(items))
+            text, count = self.numbers(attribute, stored)
+            if count == 1 and attribute.lo <= 1 and (attribute.hi is None or attribute.hi >= 1):
+                return text  # one value may be given as a number
+            return Items(text, count)
         return _pycode.string(cast(str, stored))
 
     def number(self, x: float) -> str:
@@ -399,24 +400,38 @@ class _Module:
                 x = float(exact[0])
         return x
 
-    def numbers(self, attribute: AttributeSpec, stored: object) -> list[str]:
+    def numbers(self, attribute: AttributeSpec, stored: object) -> tuple[str, int]:
+        """The numbers' text joined by ``", "``, and how many: made a piece at a time, so a
+        long list costs about its text (a list of a million strings took 30x it)."""
         codec = cast(ArrayCodec, attribute.codec)
-        if codec.is_int:
-            if isinstance(stored, str):
-                return [str(int(part)) for part in stored.split()]
-            return [str(x) for x in cast(list[int], cast(np.ndarray, stored).tolist())]
+        pieces: list[str] = []
+        count = 0
         if isinstance(stored, str):
-            doubles = [to_float(part) for part in stored.split()]
-            if codec.single:
-                exact = codec.from_text(stored)
-                rounded = np.array(doubles, np.float32)
-                for i in np.flatnonzero(rounded.view(np.uint32) != exact.view(np.uint32)):
-                    doubles[int(i)] = float(exact[int(i)])
-            return [self.number(x) for x in doubles]
-        array = cast(np.ndarray[tuple[int], np.dtype[np.floating]], stored)
-        if array.dtype == np.float32:
-            return [self.number(_short_float32(x)) for x in array.tolist()]
-        return [self.number(float(x)) for x in array.tolist()]
+            exact = codec.from_text(stored) if codec.single and not codec.is_int else None
+            for parts in _pieces(stored):
+                if codec.is_int:
+                    pieces.append(", ".join(str(int(part)) for part in parts))
+                    count += len(parts)
+                    continue
+                doubles = [to_float(part) for part in parts]
+                if exact is not None:
+                    here = exact[count:count + len(doubles)]
+                    rounded = np.array(doubles, np.float32)
+                    for i in np.flatnonzero(rounded.view(np.uint32) != here.view(np.uint32)):
+                        doubles[int(i)] = float(here[int(i)])
+                pieces.append(", ".join(self.number(x) for x in doubles))
+                count += len(doubles)
+            return ", ".join(pieces), count
+        array = cast(np.ndarray[tuple[int], np.dtype[np.generic]], stored)
+        for start in range(0, len(array), _PIECE):
+            values = cast(list[float], array[start:start + _PIECE].tolist())
+            if codec.is_int:
+                pieces.append(", ".join(str(x) for x in values))
+            elif array.dtype == np.float32:
+                pieces.append(", ".join(self.number(_short_float32(x)) for x in values))
+            else:
+                pieces.append(", ".join(self.number(float(x)) for x in values))
+        return ", ".join(pieces), len(array)
 
     def file(self, element: Element, attribute: AttributeSpec, stored: object) -> str:
         """The path as the file writes it (relative to the model's folder, ``meshdir`` and
@@ -443,6 +458,21 @@ class _Module:
 # ---------------------------------------------------------------------------- helpers
 
 _BUILTINS = frozenset(dir(builtins))
+_PIECE = 8192  # numbers converted at a time
+_SPACE = re.compile(r"\s")
+
+
+def _pieces(text: str) -> Iterator[list[str]]:
+    """The whitespace-separated parts of ``text``, about :data:`_PIECE` at a time (never
+    an empty list)."""
+    start, size = 0, 8 * _PIECE  # characters: a few per number
+    while start < len(text):
+        space = _SPACE.search(text, min(start + size, len(text)))
+        end = len(text) if space is None else space.start()
+        parts = text[start:end].split()
+        start = end
+        if parts:
+            yield parts
 
 
 def _refuse_slash(element: Element) -> None:

@@ -1,0 +1,208 @@
+"""Compile and render limits: what MuJoCo would allocate from a few bytes (a builtin texture's
+size, an hfield's rows and columns, a PNG's declared size) and how long a picture's simulation
+runs (steps) are refused before MuJoCo starts, each error naming the element, attribute, value,
+limit and how to raise it (CompileLimits, RenderLimits)."""
+
+from __future__ import annotations
+
+import struct
+import zlib
+from pathlib import Path
+
+import pytest
+
+import typed_mjcf as mjcf
+from typed_mjcf._resource_limits import check_compile, totals
+from typed_mjcf.cli import main
+from typed_mjcf.errors import InvalidTypeError
+
+from ..runtime.test_corpus import CORPUS, compiled, corpus_files
+
+
+def png(width: int, height: int, pixels: bool = True) -> bytes:
+    """A grey RGB PNG; without ``pixels`` only its header is right (what is checked)."""
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return (struct.pack(">I", len(data)) + kind + data
+                + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+
+    raw = (b"\x00" + b"\x80" * (3 * width)) * height if pixels else b"?"
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2,
+                                                              0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+def model(assets: str) -> mjcf.RootElement:
+    return mjcf.from_xml_string(f"<mujoco><asset>{assets}</asset></mujoco>")
+
+
+def test_defaults() -> None:
+    assert (mjcf.CompileLimits().max_texture_pixels, mjcf.CompileLimits().max_hfield_samples) == (
+        1 << 26, 1 << 26)
+    limits = mjcf.RenderLimits()
+    assert (limits.max_steps, limits.max_offscreen_pixels, limits.compile) == (
+        1_000_000, 8192 * 8192, mjcf.CompileLimits())
+
+
+def test_a_huge_builtin_texture_is_refused_before_mujoco_allocates_it() -> None:
+    # 130 bytes of MJCF for 81 M pixels (243 MB in MuJoCo; 40000 x 40000 took 4.7 GB).
+    m = model('<texture name="t" type="2d" builtin="checker" width="9000" height="9000"/>')
+    with pytest.raises(mjcf.CompileError) as info:
+        m.compile()
+    assert str(info.value) == (
+        "asset/texture[t]: width=9000, height=9000 makes 81,000,000 pixels in the model, more "
+        "than the limit of 67,108,864 (CompileLimits.max_texture_pixels); to allow it, pass "
+        "limits=typed_mjcf.CompileLimits(max_texture_pixels=...) with a larger value")
+    assert info.value.path == "asset/texture[t]"
+
+
+@pytest.mark.parametrize(("shape", "faces"), [("2d", 0), ("cube", 6), ("skybox", 6)])
+def test_texture_pixels_are_counted_as_mujoco_allocates_them(shape: str, faces: int) -> None:
+    m = model(f'<texture name="t" type="{shape}" builtin="gradient" width="12" height="5"/>')
+    pixels = faces * 12 * 12 if faces else 12 * 5
+    compiled = m.compile(limits=mjcf.CompileLimits(max_texture_pixels=pixels))
+    assert compiled.ntexdata == 3 * pixels  # RGB: the count is MuJoCo's own
+    with pytest.raises(mjcf.CompileError, match=rf"{pixels:,} pixels in the model, more than "
+                                                rf"the limit of {pixels - 1:,}"):
+        m.compile(limits=mjcf.CompileLimits(max_texture_pixels=pixels - 1))
+
+
+def test_a_texture_sized_by_its_default_class_is_counted() -> None:
+    m = mjcf.from_xml_string(
+        '<mujoco><default><texture builtin="flat" width="10" height="10"/></default>'
+        '<asset><texture name="t" type="2d"/></asset></mujoco>')
+    assert m.compile(limits=mjcf.CompileLimits(max_texture_pixels=100)).ntexdata == 300
+    with pytest.raises(mjcf.CompileError, match=r"texture\[t\]: width=10, height=10 makes 100"):
+        m.compile(limits=mjcf.CompileLimits(max_texture_pixels=99))
+
+
+def test_the_limit_counts_all_textures_and_names_the_one_past_it() -> None:
+    m = model('<texture name="a" type="2d" builtin="flat" width="10" height="10"/>'
+              '<texture name="b" type="2d" builtin="flat" width="10" height="10"/>')
+    with pytest.raises(mjcf.CompileError, match=r"^asset/texture\[b\]: .* makes 200 pixels"):
+        m.compile(limits=mjcf.CompileLimits(max_texture_pixels=150))
+
+
+def test_hfield_samples_are_counted_as_mujoco_allocates_them() -> None:
+    m = model('<hfield name="h" nrow="30" ncol="40" size="1 1 1 1"/>')
+    assert m.compile(limits=mjcf.CompileLimits(max_hfield_samples=1200)).nhfielddata == 1200
+    with pytest.raises(mjcf.CompileError, match=r"^asset/hfield\[h\]: nrow=30, ncol=40 makes "
+                                                r"1,200 samples .*max_hfield_samples"):
+        m.compile(limits=mjcf.CompileLimits(max_hfield_samples=1199))
+
+
+def test_a_small_png_declaring_a_huge_picture_is_refused_before_decoding() -> None:
+    # A 30000 x 30000 PNG of 2.6 MB took 2.7 GB to compile: the header alone is read.
+    m = model('<texture name="t" type="2d"/>')
+    m.asset.texture[0].file = mjcf.Asset(png(30000, 30000, pixels=False), ".png")
+    with pytest.raises(mjcf.CompileError, match=r"^asset/texture\[t\]: file=.* \(a PNG of "
+                                                r"30000 x 30000\) makes 900,000,000 pixels .*"
+                                                r"CompileLimits\.max_texture_pixels"):
+        m.compile()
+
+
+def test_png_files_on_disk_count_for_textures_and_hfields(tmp_path: Path) -> None:
+    (tmp_path / "small.png").write_bytes(png(20, 10))
+    (tmp_path / "m.xml").write_text(
+        '<mujoco><asset><texture name="t" type="2d" file="small.png"/>'
+        '<hfield name="h" file="small.png" size="1 1 1 1"/></asset></mujoco>')
+    m = mjcf.from_path(tmp_path / "m.xml")
+    compiled = m.compile(limits=mjcf.CompileLimits(max_texture_pixels=200,
+                                                   max_hfield_samples=200))
+    assert (compiled.ntexdata, compiled.nhfielddata) == (600, 200)  # as MuJoCo decodes it
+    with pytest.raises(mjcf.CompileError, match=r"texture\[t\]: file='small.png' \(a PNG of "
+                                                r"20 x 10\) makes 200 pixels"):
+        m.compile(limits=mjcf.CompileLimits(max_texture_pixels=199))
+    with pytest.raises(mjcf.CompileError, match=r"hfield\[h\]: file='small.png' .* 200 samples"):
+        m.compile(limits=mjcf.CompileLimits(max_hfield_samples=199))
+
+
+def test_limits_must_be_positive_whole_numbers_of_the_right_class() -> None:
+    with pytest.raises(mjcf.InvalidValueError, match=r"CompileLimits.max_texture_pixels must "
+                                                     r"be at least 1"):
+        mjcf.CompileLimits(max_texture_pixels=0)
+    with pytest.raises(InvalidTypeError, match=r"RenderLimits.max_steps must be an int"):
+        mjcf.RenderLimits(max_steps=1.5)  # type: ignore[arg-type]
+    with pytest.raises(InvalidTypeError, match=r"limits must be a typed_mjcf.CompileLimits"):
+        model("").compile(limits=mjcf.ParseLimits())  # type: ignore[arg-type]
+
+
+def test_a_tiny_timestep_is_refused_before_rendering_steps_it() -> None:
+    # render(time=0.01) stepped 10**7 times; the CLI's --time 1e12 ran until killed.
+    m = mjcf.from_xml_string('<mujoco><option timestep="1e-9"/></mujoco>')
+    with pytest.raises(mjcf.RenderError) as info:
+        m.render(8, 8, time=0.01)
+    assert str(info.value) == (
+        "render: time=0.01 at the model's timestep of 1e-09 s is 10,000,000 steps, more than "
+        "the limit of 1,000,000 (RenderLimits.max_steps); to allow it, pass "
+        "limits=typed_mjcf.RenderLimits(max_steps=...) with a larger value")
+
+
+def test_the_step_limit_is_exact_and_raisable() -> None:
+    m = mjcf.from_xml_string('<mujoco><option timestep="0.001"/></mujoco>')
+    assert m.render(8, 8, time=0.01, limits=mjcf.RenderLimits(max_steps=10)).shape == (8, 8, 3)
+    with pytest.raises(mjcf.RenderError, match=r"is 10 steps, more than the limit of 9"):
+        m.render(8, 8, time=0.01, limits=mjcf.RenderLimits(max_steps=9))
+
+
+def test_a_huge_offscreen_buffer_the_model_asks_for_is_refused() -> None:
+    m = mjcf.from_xml_string(
+        '<mujoco><visual><global offwidth="100000" offheight="100000"/></visual></mujoco>')
+    with pytest.raises(mjcf.RenderError, match=r"model's <visual><global offwidth=100000 "
+                                               r"offheight=100000> is 100000 x 100000, "
+                                               r"10,000,000,000 pixels, more than the limit of "
+                                               r"67,108,864 \(RenderLimits.max_offscreen_pixels\)"):
+        m.render(8, 8)
+    small = mjcf.from_xml_string('<mujoco/>')
+    with pytest.raises(mjcf.RenderError, match=r"is 640 x 480, 307,200 pixels"):
+        small.render(8, 8, limits=mjcf.RenderLimits(max_offscreen_pixels=640 * 480 - 1))
+
+
+def test_render_compiles_within_its_compile_limits() -> None:
+    m = model('<texture name="t" type="2d" builtin="flat" width="10" height="10"/>')
+    limits = mjcf.RenderLimits(compile=mjcf.CompileLimits(max_texture_pixels=99))
+    with pytest.raises(mjcf.CompileError, match=r"max_texture_pixels"):
+        m.render(8, 8, limits=limits)
+
+
+def test_the_render_command_refuses_a_long_simulation_in_one_line(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "m.xml").write_text('<mujoco><option timestep="0.001"/></mujoco>')
+    assert main(["render", str(tmp_path / "m.xml"), "-o", str(tmp_path / "m.png"),
+                 "--time", "1e12"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1
+    assert "1,000,000,000,000,000 steps, more than the limit of 1,000,000" in err
+
+
+def test_every_corpus_model_compiles_within_the_default_limits() -> None:
+    """The defaults are generous: every corpus model MuJoCo compiles uses at most a quarter
+    of each (measured: 5,680,374 texture pixels in jumping_ball_with_head.xml, 40,401 hfield
+    samples in quadruped.xml)."""
+    limits = mjcf.CompileLimits()
+    most = dict.fromkeys(("max_texture_pixels", "max_hfield_samples"), 0)
+    checked = 0
+    for ident, path in CORPUS:
+        try:
+            compiled(ident, path)
+        except pytest.skip.Exception:
+            continue  # MuJoCo refuses it by itself (test_corpus.py names them)
+        m = mjcf.from_path(path, files=corpus_files(ident, path))
+        found = totals(m)
+        for name in most:
+            most[name] = max(most[name], found[name])
+        check_compile(m, limits)
+        checked += 1
+    assert checked > 50
+    assert most["max_texture_pixels"] * 4 <= limits.max_texture_pixels, most
+    assert most["max_hfield_samples"] * 4 <= limits.max_hfield_samples, most
+
+
+def test_check_compile_reports_the_limit_at_the_element(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "m.xml").write_text(
+        '<mujoco>\n<asset>\n<texture name="t" type="2d" builtin="checker" width="9000" '
+        'height="9000"/>\n</asset>\n</mujoco>\n')
+    assert main(["check", "--compile", str(tmp_path / "m.xml")]) == 1
+    out = capsys.readouterr().out
+    assert ":3: compile: asset/texture[t]: width=9000, height=9000 makes 81,000,000 " \
+           "pixels" in out, out
