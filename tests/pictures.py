@@ -81,8 +81,8 @@ def render(picture: Picture, model: mjcf.RootElement | None = None) -> NDArray[n
     """The picture, of ``model`` when given (a changed model, say) else the example's."""
     width, height = picture.size
     return (model or model_of(picture)).render(
-        width, height, picture.camera, keyframe=picture.keyframe, time=picture.time,
-        views=picture.views)
+        picture.camera, width=width, height=height, keyframe=picture.keyframe,
+        time=picture.time, views=picture.views)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -224,13 +224,15 @@ class ModelRoot(Element, _tree.ModelBase):
     def to_spec(self) -> mujoco.MjSpec:
         """This model as a ``mujoco.MjSpec``."""
         ...
-    def render(self, width: int = 640, height: int = 480,
-               camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
-               keyframe: str | int | Key | None = None,
+    def render(self, camera: str | Camera | FreeView | None = None, *, width: int = 640,
+               height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
                views: tuple[str, ...] | list[str] | None = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
 
+        The size is given by keyword (``render(width=320, height=240)``): both are ``int``,
+        so no checker would catch them swapped. (``Physics.render`` keeps dm_control's
+        positional ``height, width``.)
         ``camera``: ``None`` frames the whole model as MuJoCo's viewer does (from the
         model's centre and extent); a camera of the model by name or element; or a
         ``FreeView`` (azimuth, elevation, distance, lookat). The pose is the model's
@@ -243,12 +245,12 @@ class ModelRoot(Element, _tree.ModelBase):
         the offscreen buffer and the compile (``RenderError``/``CompileError`` past them).
         """
         ...
-    def render_png(self, path: str | os.PathLike[str], width: int = 640, height: int = 480,
-                   camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
-                   keyframe: str | int | Key | None = None,
+    def render_png(self, path: str | os.PathLike[str],
+                   camera: str | Camera | FreeView | None = None, *, width: int = 640,
+                   height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
                    views: tuple[str, ...] | list[str] | None = None,
                    limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
-        """Write ``render()``'s picture to ``path`` as a PNG file."""
+        """Write ``render()``'s picture to ``path`` as a PNG file (the size by keyword)."""
         ...
     def __copy__(self) -> RootElement: ...
 ATTACHMENT_FRAME: Final = "attachment_frame"

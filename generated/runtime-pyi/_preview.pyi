@@ -35,15 +35,15 @@ class FreeView:
 VIEWS: Final[dict[str, tuple[float, float]]] = ...
 MAX_SIZE: Final = 8192
 
-def render(model: ModelBase, width: object = 640, height: object = 480, camera: object = None,
-           *, time: object = 0.0, keyframe: object = None, views: object = None,
-           limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Image:
+def render(model: ModelBase, camera: object = None, *, width: object = 640,
+           height: object = 480, time: object = 0.0, keyframe: object = None,
+           views: object = None, limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Image:
     """The model as a height x width x 3 ``uint8`` image (see ``RootElement.render``); the
     arguments are checked here, whatever their static types said."""
     ...
 
-def render_png(model: ModelBase, path: str | os.PathLike[str], width: object = 640,
-               height: object = 480, camera: object = None, *, time: object = 0.0,
+def render_png(model: ModelBase, path: str | os.PathLike[str], camera: object = None, *,
+               width: object = 640, height: object = 480, time: object = 0.0,
                keyframe: object = None, views: object = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
     """Write :func:`render`'s picture to ``path`` as a PNG file."""

@@ -235,7 +235,9 @@ class Physics(Bind):
         (object id, ``mjtObj`` type; -1, -1 for the background). ``render_flag_overrides``:
         MuJoCo's rendering flags to set for this image (``{"shadow": False}``; RGB only).
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
-        display)."""
+        display). The size is ``height, width``, in that order, as in dm_control, whose code
+        calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
+        by keyword."""
         ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
@@ -248,7 +250,9 @@ class Physics(Bind):
         (object id, ``mjtObj`` type; -1, -1 for the background). ``render_flag_overrides``:
         MuJoCo's rendering flags to set for this image (``{"shadow": False}``; RGB only).
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
-        display)."""
+        display). The size is ``height, width``, in that order, as in dm_control, whose code
+        calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
+        by keyword."""
         ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
@@ -261,7 +265,9 @@ class Physics(Bind):
         (object id, ``mjtObj`` type; -1, -1 for the background). ``render_flag_overrides``:
         MuJoCo's rendering flags to set for this image (``{"shadow": False}``; RGB only).
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
-        display)."""
+        display). The size is ``height, width``, in that order, as in dm_control, whose code
+        calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
+        by keyword."""
         ...
     @property
     def contexts(self) -> None:

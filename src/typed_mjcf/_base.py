@@ -416,13 +416,15 @@ class ModelRoot(Element, _tree.ModelBase):
 
     # ------------------------------------------------------------------ pictures
 
-    def render(self, width: int = 640, height: int = 480,
-               camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
-               keyframe: str | int | Key | None = None,
+    def render(self, camera: str | Camera | FreeView | None = None, *, width: int = 640,
+               height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
                views: tuple[str, ...] | list[str] | None = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
 
+        The size is given by keyword (``render(width=320, height=240)``): both are ``int``,
+        so no checker would catch them swapped. (``Physics.render`` keeps dm_control's
+        positional ``height, width``.)
         ``camera``: ``None`` frames the whole model as MuJoCo's viewer does (from the
         model's centre and extent); a camera of the model by name or element; or a
         ``FreeView`` (azimuth, elevation, distance, lookat). The pose is the model's
@@ -434,17 +436,17 @@ class ModelRoot(Element, _tree.ModelBase):
         to install when no OpenGL back end works. ``limits`` bounds the simulation steps,
         the offscreen buffer and the compile (``RenderError``/``CompileError`` past them).
         """
-        return cast("RgbImage", render(self, width, height, camera, time=time,
+        return cast("RgbImage", render(self, camera, width=width, height=height, time=time,
                                        keyframe=keyframe, views=views, limits=limits))
 
-    def render_png(self, path: str | os.PathLike[str], width: int = 640, height: int = 480,
-                   camera: str | Camera | FreeView | None = None, *, time: float = 0.0,
-                   keyframe: str | int | Key | None = None,
+    def render_png(self, path: str | os.PathLike[str],
+                   camera: str | Camera | FreeView | None = None, *, width: int = 640,
+                   height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
                    views: tuple[str, ...] | list[str] | None = None,
                    limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
-        """Write ``render()``'s picture to ``path`` as a PNG file."""
-        render_png(self, path, width, height, camera, time=time, keyframe=keyframe,
-                   views=views, limits=limits)
+        """Write ``render()``'s picture to ``path`` as a PNG file (the size by keyword)."""
+        render_png(self, path, camera, width=width, height=height, time=time,
+                   keyframe=keyframe, views=views, limits=limits)
 
     def _repr_png_(self) -> bytes | None:
         """The picture notebooks show (``None``, the text, if it cannot be made)."""

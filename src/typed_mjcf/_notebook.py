@@ -72,7 +72,8 @@ def repr_mimebundle(model: ModelBase) -> dict[str, str | bytes]:
 
 def _picture(model: ModelBase) -> bytes | None:
     try:
-        return encode_png(render(model, *_SETTINGS.size))
+        width, height = _SETTINGS.size
+        return encode_png(render(model, width=width, height=height))
     except Exception as error:  # noqa: BLE001 - never raise into a notebook: show the text
         warnings.warn(f"typed-mjcf: no picture of the model: {error}", RuntimeWarning,
                       stacklevel=3)

@@ -69,11 +69,15 @@ _CHANGED: Final = (255, 0, 255)  # pixels that differ, in a difference panel
 # ---------------------------------------------------------------------------- public entry
 
 
-def render(model: ModelBase, width: object = 640, height: object = 480, camera: object = None,
-           *, time: object = 0.0, keyframe: object = None, views: object = None,
-           limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Image:
+def render(model: ModelBase, camera: object = None, *, width: object = 640,
+           height: object = 480, time: object = 0.0, keyframe: object = None,
+           views: object = None, limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Image:
     """The model as a height x width x 3 ``uint8`` image (see ``RootElement.render``); the
     arguments are checked here, whatever their static types said."""
+    if isinstance(camera, numbers.Number):
+        raise InvalidTypeError(f"render: camera={camera!r}: the size is given by keyword, "
+                               f"render(width=..., height=...); the first argument is the "
+                               f"camera (a name, a <camera> or a FreeView)")
     limits = _check_limits(limits)
     width, height = _check_size(width, height)
     seconds = _check_time(time)
@@ -95,14 +99,14 @@ def render(model: ModelBase, width: object = 640, height: object = 480, camera: 
     return _sheet(list(zip(names, tiles, strict=True)), columns, width, height, scale)
 
 
-def render_png(model: ModelBase, path: str | os.PathLike[str], width: object = 640,
-               height: object = 480, camera: object = None, *, time: object = 0.0,
+def render_png(model: ModelBase, path: str | os.PathLike[str], camera: object = None, *,
+               width: object = 640, height: object = 480, time: object = 0.0,
                keyframe: object = None, views: object = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
     """Write :func:`render`'s picture to ``path`` as a PNG file."""
     _check_path(path)
-    picture = render(model, width, height, camera, time=time, keyframe=keyframe, views=views,
-                     limits=limits)
+    picture = render(model, camera, width=width, height=height, time=time, keyframe=keyframe,
+                     views=views, limits=limits)
     write_png(path, picture)
 
 

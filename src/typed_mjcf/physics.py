@@ -554,7 +554,9 @@ class Physics(Bind):
         (object id, ``mjtObj`` type; -1, -1 for the background). ``render_flag_overrides``:
         MuJoCo's rendering flags to set for this image (``{"shadow": False}``; RGB only).
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
-        display)."""
+        display). The size is ``height, width``, in that order, as in dm_control, whose code
+        calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
+        by keyword."""
         if depth and segmentation:
             raise InvalidValueError("render: depth and segmentation cannot both be True")
         if render_flag_overrides and (depth or segmentation):

@@ -53,9 +53,9 @@ def test_the_camera_and_keyframe_options_reach_the_picture() -> None:
                  "--keyframe", "moved"]) == 0
     model = box_scene()
     assert np.array_equal(decode_png(Path("a.png").read_bytes()),
-                          model.render(160, 120, "above"))
+                          model.render("above", width=160, height=120))
     assert np.array_equal(decode_png(Path("b.png").read_bytes()),
-                          model.render(160, 120, "above", keyframe="moved"))
+                          model.render("above", width=160, height=120, keyframe="moved"))
 
 
 @pytest.mark.parametrize(("options", "message"), [

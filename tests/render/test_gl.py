@@ -26,7 +26,7 @@ def test_headless_by_default_even_after_mujoco_chose_glfw() -> None:
         import typed_mjcf as mjcf
         from tests.render.scenes import box_scene, red
         assert "glfw" in mujoco.GLContext.__module__
-        image = box_scene().render(64, 48)
+        image = box_scene().render(width=64, height=48)
         print(os.environ["MUJOCO_GL"], image.shape, bool(red(image).any()))
     """)
     env = {k: v for k, v in os.environ.items() if k not in ("MUJOCO_GL", "DISPLAY",
@@ -90,7 +90,7 @@ def test_no_back_end_is_one_error_naming_what_to_install(unchosen: pytest.Monkey
     unchosen.setattr(_gl.platform, "system", lambda: "Linux")
     unchosen.setattr(_gl.ctypes, "CDLL", _missing)
     with pytest.raises(mjcf.RenderError) as caught:
-        box_scene().render(32, 24)
+        box_scene().render(width=32, height=24)
     assert str(caught.value) == (
         "cannot render: no OpenGL back end works here (MUJOCO_GL is not set; egl: libEGL.so "
         "is not installed; osmesa: libOSMesa.so is not installed); install EGL (Debian/Ubuntu: "

@@ -26,7 +26,7 @@ def test_repr_png_is_a_valid_png_of_the_default_view() -> None:
     data = model._repr_png_()
     assert data is not None and data[:8] == b"\x89PNG\r\n\x1a\n"
     assert data[12:16] == b"IHDR" and struct.unpack(">II", data[16:24]) == (480, 360)
-    assert np.array_equal(decode_png(data), model.render(480, 360))
+    assert np.array_equal(decode_png(data), model.render(width=480, height=360))
 
 
 def test_the_mimebundle_renders_once_and_folds_the_xml() -> None:

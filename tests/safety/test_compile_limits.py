@@ -130,7 +130,7 @@ def test_a_tiny_timestep_is_refused_before_rendering_steps_it() -> None:
     # render(time=0.01) stepped 10**7 times; the CLI's --time 1e12 ran until killed.
     m = mjcf.from_xml_string('<mujoco><option timestep="1e-9"/></mujoco>')
     with pytest.raises(mjcf.RenderError) as info:
-        m.render(8, 8, time=0.01)
+        m.render(width=8, height=8, time=0.01)
     assert str(info.value) == (
         "render: time=0.01 at the model's timestep of 1e-09 s is 10,000,000 steps, more than "
         "the limit of 1,000,000 (RenderLimits.max_steps); to allow it, pass "
@@ -139,9 +139,9 @@ def test_a_tiny_timestep_is_refused_before_rendering_steps_it() -> None:
 
 def test_the_step_limit_is_exact_and_raisable() -> None:
     m = mjcf.from_xml_string('<mujoco><option timestep="0.001"/></mujoco>')
-    assert m.render(8, 8, time=0.01, limits=mjcf.RenderLimits(max_steps=10)).shape == (8, 8, 3)
+    assert m.render(width=8, height=8, time=0.01, limits=mjcf.RenderLimits(max_steps=10)).shape == (8, 8, 3)
     with pytest.raises(mjcf.RenderError, match=r"is 10 steps, more than the limit of 9"):
-        m.render(8, 8, time=0.01, limits=mjcf.RenderLimits(max_steps=9))
+        m.render(width=8, height=8, time=0.01, limits=mjcf.RenderLimits(max_steps=9))
 
 
 def test_a_huge_offscreen_buffer_the_model_asks_for_is_refused() -> None:
@@ -151,17 +151,17 @@ def test_a_huge_offscreen_buffer_the_model_asks_for_is_refused() -> None:
                                                r"offheight=100000> is 100000 x 100000, "
                                                r"10,000,000,000 pixels, more than the limit of "
                                                r"67,108,864 \(RenderLimits.max_offscreen_pixels\)"):
-        m.render(8, 8)
+        m.render(width=8, height=8)
     small = mjcf.from_xml_string('<mujoco/>')
     with pytest.raises(mjcf.RenderError, match=r"is 640 x 480, 307,200 pixels"):
-        small.render(8, 8, limits=mjcf.RenderLimits(max_offscreen_pixels=640 * 480 - 1))
+        small.render(width=8, height=8, limits=mjcf.RenderLimits(max_offscreen_pixels=640 * 480 - 1))
 
 
 def test_render_compiles_within_its_compile_limits() -> None:
     m = model('<texture name="t" type="2d" builtin="flat" width="10" height="10"/>')
     limits = mjcf.RenderLimits(compile=mjcf.CompileLimits(max_texture_pixels=99))
     with pytest.raises(mjcf.CompileError, match=r"max_texture_pixels"):
-        m.render(8, 8, limits=limits)
+        m.render(width=8, height=8, limits=limits)
 
 
 def test_the_render_command_refuses_a_long_simulation_in_one_line(

@@ -76,8 +76,8 @@ def run(args: argparse.Namespace) -> int:
     try:
         keyframe = None if args.keyframe is None else key_from_text(model, args.keyframe)
         width, height = args.size
-        picture = render(model, width, height, args.camera, time=args.time, keyframe=keyframe,
-                         views=args.views)
+        picture = render(model, args.camera, width=width, height=height, time=args.time,
+                         keyframe=keyframe, views=args.views)
         write_png(args.output, picture)
     except MjcfError as problem:
         error(NAME, f"{shown(args.file)}: {one_line(str(problem))}")
