@@ -92,6 +92,10 @@ def test_help_names_every_command_and_the_exit_codes(capsys: pytest.CaptureFixtu
     for command in ("to-python", "check", "fmt", "diff"):
         assert f"typed-mjcf {command}" in text
     assert "exit status: 0 ok; 1 findings" in text
+    # fmt keeps what was written unless --canonical: the summary must not say it rewrites
+    fmt_line = next(line for line in text.splitlines() if "typed-mjcf fmt" in line)
+    assert "keeping what was written" in fmt_line and "canonical" not in fmt_line
+    assert "--canonical rewrites" in " ".join(text.split())  # the command list's help
     for command in ("to-python", "check", "fmt", "diff"):
         with pytest.raises(SystemExit):
             main([command, "--help"])

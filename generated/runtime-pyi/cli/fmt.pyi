@@ -19,7 +19,8 @@ from dataclasses import dataclass
 from typed_mjcf._grammar import ElementSpec
 from typed_mjcf.cli._starttags import WIDTH, StartTag, indent_unit, lay_out, start_tags
 NAME = "fmt"
-HELP = "lay MJCF files out consistently, changing as little as it can (comments kept)"
+HELP = ("lay MJCF files out consistently, keeping what was written (comments, spelling, "
+        "order); --canonical rewrites them in the exporter's canonical form")
 DESCRIPTION = """\
 Lay MJCF files out consistently: two-space indentation, one element per line, at most one
 blank line in a row, start tags longer than 100 characters broken before the attribute that

@@ -27,7 +27,7 @@ Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
 
   typed-mjcf to-python robot.xml -o robot.py   write Python that rebuilds the model
   typed-mjcf check robot.xml                   find what MuJoCo would refuse, file:line
-  typed-mjcf fmt robot.xml                     rewrite in the canonical form
+  typed-mjcf fmt robot.xml                     lay it out, keeping what was written
   typed-mjcf diff a.xml b.xml                  what differs, element by element
   typed-mjcf render robot.xml -o robot.png     a picture of the model (offscreen)
   typed-mjcf mujoco-stubs                      the type stubs of `mujoco`, into typings/

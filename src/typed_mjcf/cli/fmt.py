@@ -50,7 +50,8 @@ from typed_mjcf.cli._values import canonical_text
 from typed_mjcf.types import XmlElement
 
 NAME = "fmt"
-HELP = "lay MJCF files out consistently, changing as little as it can (comments kept)"
+HELP = ("lay MJCF files out consistently, keeping what was written (comments, spelling, "
+        "order); --canonical rewrites them in the exporter's canonical form")
 DESCRIPTION = """\
 Lay MJCF files out consistently: two-space indentation, one element per line, at most one
 blank line in a row, start tags longer than 100 characters broken before the attribute that
