@@ -25,8 +25,11 @@ def get_assets(model: ModelBase, *, flat: bool = False) -> dict[str, bytes]:
     ...
 
 def export_with_assets(model: ModelBase, directory: str, model_filename: str | None = None,
-                       *, overwrite: bool = False) -> str:
+                       *, overwrite: bool = False, after_source: bool = True) -> str:
     """Write the XML and its files into ``directory``; return the XML's path.
+
+    Without ``model_filename`` the XML is named after the file the model was read from
+    (``after_source``), else after the model (``model=``), as dm_control names it.
 
     Only plain file names inside ``directory`` are written (the collected names are safe by
     construction; ``model_filename`` must be plain). Every file is checked before any is

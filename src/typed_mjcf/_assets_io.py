@@ -66,9 +66,20 @@ def get_assets(model: ModelBase, *, flat: bool = False) -> dict[str, bytes]:
     return {name.rsplit("/", 1)[-1]: data for name, data in files.items()}
 
 
+def _source_file(model: ModelBase) -> str | None:
+    """The name of the ``.xml`` file the model was read from, if it was read from one."""
+    sources = _tree.source_map(model)
+    main = None if sources is None else sources.main
+    name = os.path.basename(main) if isinstance(main, str) else ""
+    return name if name.lower().endswith(".xml") and len(name) > len(".xml") else None
+
+
 def export_with_assets(model: ModelBase, directory: str, model_filename: str | None = None,
-                       *, overwrite: bool = False) -> str:
+                       *, overwrite: bool = False, after_source: bool = True) -> str:
     """Write the XML and its files into ``directory``; return the XML's path.
+
+    Without ``model_filename`` the XML is named after the file the model was read from
+    (``after_source``), else after the model (``model=``), as dm_control names it.
 
     Only plain file names inside ``directory`` are written (the collected names are safe by
     construction; ``model_filename`` must be plain). Every file is checked before any is
@@ -79,7 +90,9 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
     """
     xml, collected = vfs_text(model)
     if model_filename is None:
-        stem = _tree.scope_of(model).name or UNNAMED_MODEL
+        source = _source_file(model) if after_source else None
+        stem = (source[: -len(".xml")] if source is not None
+                else _tree.scope_of(model).name or UNNAMED_MODEL)
         name = unique_name(safe_file_name(stem, ".xml"), xml.encode("utf-8"), collected)
     else:
         name = model_filename

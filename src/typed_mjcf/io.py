@@ -213,21 +213,31 @@ def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
                        out_file_name: str | None = None, *, overwrite: bool = False) -> str:
     """Write the model's XML and every file it uses into ``out_dir``; return the XML's path.
 
-    The XML is named ``out_file_name`` (which must end in ``.xml``), else after the model.
+    The XML is named ``out_file_name`` (which must end in ``.xml``), else after the file the
+    model was read from (``humanoid.xml`` stays ``humanoid.xml``), else after the model
+    (``model=``; dm_control's ``export_with_assets`` always names it so).
     Files are written only inside ``out_dir``, under flat names (names that would reach
     elsewhere, e.g. with ``..`` or a path separator, are made safe), each atomically (a
     temporary file, then a rename). A file already there with the same contents is left as
     it is; one with different contents is an :class:`~typed_mjcf.ExportError` unless
     ``overwrite=True``, and then nothing is written.
     """
+    return exported(mjcf_model, out_dir, out_file_name, overwrite, after_source=True)
+
+
+def exported(mjcf_model: object, out_dir: object, out_file_name: object, overwrite: object,
+             *, after_source: bool) -> str:
+    """:func:`export_with_assets`, the arguments checked; the XML named after the source file
+    (``after_source``) or the model when no name is given."""
     folder = _folder(out_dir, "out_dir")
     if folder is None:
         raise InvalidTypeError("out_dir must be a path (str or os.PathLike), got None")
-    if out_file_name is not None and not isinstance(out_file_name, str):  # pyright: ignore[reportUnnecessaryIsInstance]
+    if out_file_name is not None and not isinstance(out_file_name, str):
         raise InvalidTypeError(f"out_file_name must be a str, got {type(out_file_name).__name__}")
-    if not isinstance(overwrite, bool):  # pyright: ignore[reportUnnecessaryIsInstance]
+    if not isinstance(overwrite, bool):
         raise InvalidTypeError(f"overwrite must be a bool, got {type(overwrite).__name__}")
-    return export(_model(mjcf_model), folder, out_file_name, overwrite=overwrite)
+    return export(_model(mjcf_model), folder, out_file_name, overwrite=overwrite,
+                  after_source=after_source)
 
 
 def export_with_assets_as_zip(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],

@@ -535,3 +535,17 @@ def test_object_types_may_be_given_as_ints() -> None:
     assert physics.model.name2id("s", site) == 0 and physics.model.id2name(0, site) == "s"
     with pytest.raises(mjcf.InvalidValueError, match="not a kind of MuJoCo object"):
         physics.model.name2id("s", 999)
+
+
+def test_export_names_the_xml_after_the_model_as_dm_control_does(dm: None,
+                                                                   tmp_path: Path) -> None:
+    from dm_control import mjcf as dm_mjcf
+
+    source = tmp_path / "humanoid.xml"
+    source.write_text('<mujoco model="Humanoid"><worldbody><geom size="1"/></worldbody>'
+                      "</mujoco>", encoding="utf-8")
+    model = dm_mjcf.from_path(str(source))
+    written = dm_mjcf.export_with_assets(model, str(tmp_path / "out"))
+    assert written == str(tmp_path / "out" / "Humanoid.xml")
+    # the typed API's function names it after the file, switch or not
+    assert mjcf.export_with_assets(model, tmp_path / "typed").endswith("humanoid.xml")

@@ -239,3 +239,17 @@ def test_to_spec_and_from_spec() -> None:
     back = mjcf.from_spec(spec)
     assert back.find("joint", "j") is not None
     assert back.compile().njnt == 1
+
+
+def test_export_names_the_xml_after_the_file_the_model_was_read_from(tmp_path: Path) -> None:
+    source = tmp_path / "humanoid.xml"
+    source.write_text('<mujoco model="Humanoid"><worldbody><geom size="1"/></worldbody>'
+                      "</mujoco>", encoding="utf-8")
+    read = mjcf.from_path(source)
+    assert mjcf.export_with_assets(read, tmp_path / "a") == str(tmp_path / "a" / "humanoid.xml")
+    assert mjcf.export_with_assets(read, tmp_path / "b", "robot.xml").endswith("robot.xml")
+    # built in Python, or read from text: named after the model
+    built = mjcf.RootElement(model="Humanoid")
+    assert mjcf.export_with_assets(built, tmp_path / "c").endswith("Humanoid.xml")
+    text = mjcf.from_xml_string(source.read_text(encoding="utf-8"))
+    assert mjcf.export_with_assets(text, tmp_path / "d").endswith("Humanoid.xml")

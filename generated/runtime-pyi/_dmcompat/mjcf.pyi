@@ -29,7 +29,8 @@ from typed_mjcf._traversal import (
     get_freejoint,
 )
 from typed_mjcf.assets import Asset
-from typed_mjcf.io import export_with_assets, export_with_assets_as_zip
+from typed_mjcf._dmcompat.export_with_assets import export_with_assets
+from typed_mjcf.io import export_with_assets_as_zip
 PREFIX_SEPARATOR = constants.PREFIX_SEPARATOR
 RootElement = _elements.RootElement
 __all__ = [

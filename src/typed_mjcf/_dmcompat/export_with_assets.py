@@ -1,7 +1,18 @@
-"""``dm_control.mjcf.export_with_assets``."""
+"""``dm_control.mjcf.export_with_assets``: the XML named after the model, as dm_control names
+it (the typed API's names it after the file the model was read from)."""
 
 from __future__ import annotations
 
-from typed_mjcf.io import export_with_assets
+import os
+
+from typed_mjcf._tree import ModelBase
+from typed_mjcf.io import exported
 
 __all__ = ["export_with_assets"]
+
+
+def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],
+                       out_file_name: str | None = None, *, overwrite: bool = False) -> str:
+    """dm_control's ``export_with_assets``: the XML is ``out_file_name``, else
+    ``<model>.xml``; otherwise :func:`typed_mjcf.export_with_assets`."""
+    return exported(mjcf_model, out_dir, out_file_name, overwrite, after_source=False)
