@@ -233,7 +233,9 @@ def test_joint_defaults_resolution_agrees_with_mujoco(attribute: str) -> None:
               body.add_joint(damping=7.0)]
     body.add_geom(size=(0.1,))
     m = model.compile()
-    compiled = {"damping": m.dof_damping, "armature": m.dof_armature,  # type: ignore[attr-defined]
+    # damping is a polynomial: its first coefficient is dof_damping, the rest dof_dampingpoly
+    damping = np.column_stack([m.dof_damping, m.dof_dampingpoly])  # type: ignore[attr-defined]
+    compiled = {"damping": damping, "armature": m.dof_armature,  # type: ignore[attr-defined]
                 "axis": m.jnt_axis}  # type: ignore[attr-defined]
     for i, joint in enumerate(joints):
         assert np.allclose(np.asarray(joint.resolve(attribute), dtype=float),
