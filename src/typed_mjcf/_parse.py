@@ -578,7 +578,7 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
             return later
         missing = release_note(element.spec, key)
         context.refuse("unknown-attribute", element.path, context.error(
-            f"<{element.spec.tag}> has no attribute {_name(key)!r}"
+            f"{element.path}: <{element.spec.tag}> has no attribute {_name(key)!r}"
             + (f": it {missing}" if missing else did_you_mean(_name(key), known)),
             source, context.line(node, source)))
         return later

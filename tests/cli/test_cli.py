@@ -26,7 +26,8 @@ EXPECTED = {
     "not_mjcf.xml": "not_mjcf.xml:1: the root element is <robot>, expected <mujoco>",
     "malformed.xml": "malformed.xml:4: malformed XML: Opening and ending tag mismatch: geom line 3 "
                      "and worldbody, line 4, column 15",
-    "schema.xml": "schema.xml:3: <geom> has no attribute 'sise' (did you mean 'size'?)",
+    "schema.xml": ("schema.xml:3: worldbody/geom[0]: <geom> has no attribute 'sise' "
+                   "(did you mean 'size'?)"),
 }
 GOOD = "<mujoco>\n  <worldbody>\n    <geom size='1'/>\n  </worldbody>\n</mujoco>\n"
 

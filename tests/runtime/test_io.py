@@ -88,7 +88,7 @@ def test_parse_converts_every_value() -> None:
 @pytest.mark.parametrize(("xml", "pattern"), [
     ("<mujoco><worldbody><body></worldbody></mujoco>", r"line 1: malformed XML"),
     ("<mujoco>\n<worldbody>\n<bodyy/></worldbody></mujoco>", r"line 3: <bodyy> is not a legal.*did you mean 'body'"),
-    ("<mujoco>\n<worldbody><body poss='1 2 3'/></worldbody></mujoco>", r"line 2: <body> has no attribute 'poss'.*did you mean 'pos'"),
+    ("<mujoco>\n<worldbody><body poss='1 2 3'/></worldbody></mujoco>", r"line 2: worldbody/body\[0\]: <body> has no attribute 'poss'.*did you mean 'pos'"),
     ("<mujoco>\n\n<worldbody><geom size='1 2 3 4'/></worldbody></mujoco>", r"line 3: .*expected 1 to 3 numbers"),
     ("<mujoco><worldbody><body name='a'/><body name='a'/></worldbody></mujoco>", r"unique"),
     ("<robot/>", r"root element is <robot>"),

@@ -31,7 +31,7 @@ MALFORMED: list[tuple[str | bytes, str]] = [
     ("<mujoco>\n<compiler angle='gradians'/></mujoco>", r"line 2: .*angle"),
     ("<mujoco>\n<worldbody><geom size='1 2 3 4'/></worldbody></mujoco>", r"line 2: .*expected 1 to 3 numbers"),
     ("<mujoco>\n<worldbody><joint range='1 2 3'/></worldbody></mujoco>", r"line 2: "),
-    ("<mujoco>\n<worldbody/>\n<worldbody name='w'/></mujoco>", r"line 3: <worldbody> has no attribute 'name'"),
+    ("<mujoco>\n<worldbody/>\n<worldbody name='w'/></mujoco>", r"line 3: worldbody: <worldbody> has no attribute 'name'"),
     ("<robot/>", r"line 1: the root element is <robot>"),
     ("<mujoco\n>\x00</mujoco>", r"line 2: malformed XML"),
 ]

@@ -99,7 +99,7 @@ def test_errors_inside_included_files_name_the_file_line_and_chain(tmp_path: Pat
         "broken.xml": "<mujoco>\n<body></mujoco>",
         "uses_broken.xml": "<mujoco><include file='broken.xml'/></mujoco>",
     })
-    with pytest.raises(mjcf.ParseError, match=r"a.xml:2: <body> has no attribute 'poss'.*"
+    with pytest.raises(mjcf.ParseError, match=r"a.xml:2: worldbody/body\[0\]: <body> has no attribute 'poss'.*"
                                               r"\(in a.xml, included from main.xml:3\)"):
         mjcf.from_path(tmp_path / "main.xml")
     with pytest.raises(mjcf.ParseError, match=r"broken.xml:2: malformed XML"):

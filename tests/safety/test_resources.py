@@ -194,7 +194,8 @@ def test_the_depth_limit_and_beyond() -> None:
 
 
 @pytest.mark.parametrize(("tag", "expected", "warnings"), [
-    ("site", "line 1: <site> has no attribute 'pos0' (did you mean 'pos'?)", 0),
+    ("site", "line 1: worldbody/site[0]: <site> has no attribute 'pos0' (did you mean 'pos'?)",
+     0),
     # frame ignores attributes it does not know: each is a warning, then pos is refused
     ("frame", "line 1: worldbody/frame[0]: invalid pos='x' on <frame>", 100_000),
 ])

@@ -20,6 +20,7 @@ from typed_mjcf._dmcompat import (
     skin,
     traversal_utils,
 )
+from typed_mjcf._dmcompat.export_with_assets import export_with_assets
 from typed_mjcf._dmcompat.parser import from_file, from_path, from_xml_string, from_zip
 from typed_mjcf._traversal import (
     commit_defaults,
@@ -29,7 +30,6 @@ from typed_mjcf._traversal import (
     get_freejoint,
 )
 from typed_mjcf.assets import Asset
-from typed_mjcf._dmcompat.export_with_assets import export_with_assets
 from typed_mjcf.io import export_with_assets_as_zip
 PREFIX_SEPARATOR = constants.PREFIX_SEPARATOR
 RootElement = _elements.RootElement
