@@ -26,15 +26,16 @@ from typed_mjcf._traversal import (
     get_freejoint,
 )
 from typed_mjcf._tree import ElementList
-from typed_mjcf._validate import Finding, ValidationError
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import (
+    BindingError,
     ChildError,
     CompileError,
     DuplicateIdentifierError,
     ExportError,
     FileAccessError,
     FileReadError,
+    Finding,
     IgnoredAttributeWarning,
     IllegalChildError,
     InvalidReferenceError,
@@ -42,8 +43,10 @@ from typed_mjcf.errors import (
     InvalidValueError,
     MjcfError,
     ParseError,
+    PhysicsError,
     RenderError,
     UnknownAttributeError,
+    ValidationError,
 )
 from typed_mjcf.io import (
     FileAccess,
@@ -57,12 +60,13 @@ from typed_mjcf.io import (
     from_zip,
 )
 from typed_mjcf import physics as physics
-from typed_mjcf.physics import Physics, PhysicsError
+from typed_mjcf.physics import Physics
 PREFIX_SEPARATOR: _Final[str] = "/"
 __all__ = [
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
+    "BindingError",
     "ChildError",
     "CompileError",
     "CompileLimits",

@@ -16,7 +16,6 @@ from types import EllipsisType
 from typing import TYPE_CHECKING, Final, Literal, Protocol, Self, TypeAlias, cast
 import numpy as np
 import numpy.typing as npt
-from typed_mjcf.errors import InvalidValueError, MjcfError, did_you_mean
 from typed_mjcf.types import Array, MuJoCoArray
 import mujoco
 PICKLING_NOT_SUPPORTED: Final = "Objects of type {type} cannot be pickled."
@@ -32,9 +31,6 @@ def index_array(array: npt.NDArray[np.generic], index: object) -> npt.NDArray[np
 def assign_array(array: npt.NDArray[np.generic], index: object, value: object) -> None:
     """``array[index] = value``."""
     ...
-
-class BindingError(MjcfError, ValueError):
-    """An element that cannot be bound to a physics (not compiled, of no bindable kind...)."""
 
 @dataclass(frozen=True, slots=True)
 class Ragged:

@@ -20,7 +20,7 @@ import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from typing import Final, SupportsFloat, SupportsIndex, cast
 import numpy as np
-from typed_mjcf.errors import InvalidTypeError, InvalidValueError, MjcfError, did_you_mean
+from typed_mjcf._errors import InvalidTypeError, InvalidValueError, MjcfError, did_you_mean
 Array = np.ndarray[tuple[int, ...], np.dtype[np.generic]]
 Float64Array = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
 Float32Array = np.ndarray[tuple[int, ...], np.dtype[np.float32]]

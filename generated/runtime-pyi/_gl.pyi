@@ -11,7 +11,7 @@ and sets ``MUJOCO_GL`` for code that imports ``mujoco`` later.
 from __future__ import annotations
 from collections.abc import Sequence
 from typing import Final, Protocol, cast
-from typed_mjcf.errors import RenderError
+from typed_mjcf._errors import RenderError
 
 class GLContext(Protocol):
     """What the library uses of MuJoCo's ``GLContext`` classes."""

@@ -10,9 +10,9 @@ without keyframes.
 """
 from __future__ import annotations
 import numpy as np
+from typed_mjcf._errors import ExportError
 from typed_mjcf._export import Writer
 from typed_mjcf._xmltext import Node
-from typed_mjcf.errors import ExportError
 import mujoco
 Vector = np.ndarray[tuple[int, ...], np.dtype[np.float64]]
 QPOS_SIZE = (7, 4, 1, 1)

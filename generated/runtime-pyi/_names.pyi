@@ -12,7 +12,7 @@ under a scope name that such a literal name starts with (the exported names woul
 from __future__ import annotations
 from collections.abc import Iterator
 from typing import Protocol
-from typed_mjcf.errors import ChildError, DuplicateIdentifierError
+from typed_mjcf._errors import ChildError, DuplicateIdentifierError
 SEPARATOR = "/"
 UNNAMED_MODEL = "unnamed_model"
 

@@ -33,8 +33,7 @@ from typed_mjcf._access import (
     confine,
     open_confined,
 )
-from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import (
+from typed_mjcf._errors import (
     DuplicateIdentifierError,
     FileAccessError,
     FileReadError,
@@ -44,6 +43,7 @@ from typed_mjcf.errors import (
     ParseError,
     did_you_mean,
 )
+from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.types import XmlElement
 INCLUDE = "include"
 XmlNode: TypeAlias = XmlElement

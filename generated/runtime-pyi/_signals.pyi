@@ -14,7 +14,7 @@ import signal
 from collections.abc import Callable
 from types import FrameType, TracebackType
 from typing import Final, Self, TypeAlias
-from typed_mjcf.errors import ExportError
+from typed_mjcf._errors import ExportError
 _Handler: TypeAlias = Callable[[int, FrameType | None], object] | int
 
 class Interrupted(ExportError):

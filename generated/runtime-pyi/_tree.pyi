@@ -35,11 +35,7 @@ from typing import (
 )
 from typed_mjcf._access import ANYWHERE, Confinement
 from typed_mjcf._codecs import ArrayCodec, Rejected
-from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
-from typed_mjcf._language import GrammarFacts
-from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
-from typed_mjcf._sourcelines import SourceText, file_start_line
-from typed_mjcf.errors import (
+from typed_mjcf._errors import (
     ChildError,
     DuplicateIdentifierError,
     IllegalChildError,
@@ -50,6 +46,10 @@ from typed_mjcf.errors import (
     UnknownAttributeError,
     did_you_mean,
 )
+from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._language import GrammarFacts
+from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._sourcelines import SourceText, file_start_line
 E = TypeVar("E", bound="Element")
 E_co = TypeVar("E_co", bound="Element", covariant=True)
 _Slice: TypeAlias = "slice[int | None, int | None, int | None]"

@@ -15,8 +15,8 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal, cast
+from typed_mjcf._errors import InvalidValueError, did_you_mean
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
-from typed_mjcf.errors import InvalidValueError, did_you_mean
 Severity = Literal["error", "warning"]
 Rule = Literal[
     "exclusive", "together", "requires", "oneof", "required-attribute", "required-child",

@@ -28,31 +28,29 @@ import numpy as np
 from typed_mjcf._binding import (
     PICKLING_NOT_SUPPORTED,
     Binding,
-    BindingError,
     EmptyBinding,
     binding_tables,
     new_binding,
+)
+from typed_mjcf._errors import (
+    BindingError,
+    FileReadError,
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    PhysicsError,
+    RenderError,
 )
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
 from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import (
-    FileReadError,
-    InvalidTypeError,
-    InvalidValueError,
-    MjcfError,
-    RenderError,
-)
 from typed_mjcf.types import Array, ArrayValues
 from typed_mjcf._base import ModelRoot
 __all__ = ["Binding", "Data", "Model", "Named", "Physics", "PhysicsError",
            "RenderError"]
 __all__ += _bindings.__all__
 RenderFlags: TypeAlias = Mapping[str, bool] | Mapping[mujoco.mjtRndFlag, bool]
-
-class PhysicsError(MjcfError, RuntimeError):
-    """The simulation reached an invalid state (MuJoCo raised a warning: NaNs, instability)."""
 
 class Model(mujoco.MjModel):
     """A ``mujoco.MjModel`` with what dm_control's model wrapper adds."""

@@ -29,15 +29,16 @@ from typed_mjcf._traversal import (
     get_freejoint,
 )
 from typed_mjcf._tree import ElementList
-from typed_mjcf._validate import Finding, ValidationError
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import (
+    BindingError,
     ChildError,
     CompileError,
     DuplicateIdentifierError,
     ExportError,
     FileAccessError,
     FileReadError,
+    Finding,
     IgnoredAttributeWarning,
     IllegalChildError,
     InvalidReferenceError,
@@ -45,8 +46,10 @@ from typed_mjcf.errors import (
     InvalidValueError,
     MjcfError,
     ParseError,
+    PhysicsError,
     RenderError,
     UnknownAttributeError,
+    ValidationError,
 )
 from typed_mjcf.io import (
     FileAccess,
@@ -62,7 +65,7 @@ from typed_mjcf.io import (
 
 if _TYPE_CHECKING:
     from typed_mjcf import physics as physics
-    from typed_mjcf.physics import Physics, PhysicsError
+    from typed_mjcf.physics import Physics
 
 PREFIX_SEPARATOR: _Final[str] = "/"  # dm_control's name for the scope separator of attached models
 
@@ -70,6 +73,7 @@ __all__ = [
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
+    "BindingError",
     "ChildError",
     "CompileError",
     "CompileLimits",
@@ -120,7 +124,7 @@ from typed_mjcf._dmcompat import install as install_as_dm_control_mjcf
 __all__ += ["install_as_dm_control_mjcf"]
 
 # Simulation imports mujoco, the heaviest import there is: loaded when first used.
-_PHYSICS_NAMES: _Final = frozenset({"Physics", "PhysicsError", "physics"})
+_PHYSICS_NAMES: _Final = frozenset({"Physics", "physics"})
 
 
 def __getattr__(name: str) -> object:

@@ -26,7 +26,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import BinaryIO, Final, cast
 
-from typed_mjcf.errors import InvalidTypeError, InvalidValueError
+from typed_mjcf._errors import InvalidTypeError, InvalidValueError
 
 _HINT: Final = ("pass files=typed_mjcf.FileAccess(roots=[...]) to the loader to allow a folder, "
                 "or FileAccess(anywhere=True) for a model you trust")

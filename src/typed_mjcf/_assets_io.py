@@ -14,6 +14,7 @@ import tempfile
 import time
 
 from typed_mjcf import _tree
+from typed_mjcf._errors import ExportError
 from typed_mjcf._files import (
     CollectedFiles,
     is_plain_file_name,
@@ -25,7 +26,6 @@ from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._signals import HeldSignals
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._write import collect, vfs_text
-from typed_mjcf.errors import ExportError
 
 
 def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str, bytes]:

@@ -20,6 +20,7 @@ from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._compose import attach, attached_children, detach, include_copy
 from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._defaults import resolve
+from typed_mjcf._errors import InvalidTypeError, InvalidValueError, did_you_mean
 from typed_mjcf._files import copied_files, file_stem, rebase_files
 from typed_mjcf._names import NameScope
 from typed_mjcf._notebook import repr_mimebundle, repr_png
@@ -35,7 +36,6 @@ from typed_mjcf._tree import check_removable, grammar_facts
 from typed_mjcf._validate import Finding, validate
 from typed_mjcf._write import attribute_text, element_text
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import InvalidTypeError, InvalidValueError, did_you_mean
 
 if TYPE_CHECKING:
     import os

@@ -20,7 +20,7 @@ import numpy as np
 import numpy.typing as npt
 
 from typed_mjcf._compat import STATE
-from typed_mjcf.errors import InvalidValueError, MjcfError, did_you_mean
+from typed_mjcf._errors import BindingError, InvalidValueError, did_you_mean
 from typed_mjcf.types import Array, MuJoCoArray
 
 if TYPE_CHECKING:
@@ -44,10 +44,6 @@ def index_array(array: npt.NDArray[np.generic], index: object) -> npt.NDArray[np
 def assign_array(array: npt.NDArray[np.generic], index: object, value: object) -> None:
     """``array[index] = value``."""
     array[cast(ArrayIndex, index)] = cast("npt.ArrayLike", value)
-
-
-class BindingError(MjcfError, ValueError):
-    """An element that cannot be bound to a physics (not compiled, of no bindable kind...)."""
 
 
 # ---------------------------------------------------------------------------- the tables

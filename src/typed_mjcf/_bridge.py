@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, cast
 
 from typed_mjcf._compile import compile_from_memory, spec_from_memory
+from typed_mjcf._errors import CompileError, InvalidTypeError
 from typed_mjcf._files import CollectedFiles
 from typed_mjcf._keyframes import LayoutError
 from typed_mjcf._locate import locate
@@ -17,7 +18,6 @@ from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, c
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import collect, vfs_text
-from typed_mjcf.errors import CompileError, InvalidTypeError
 
 if TYPE_CHECKING:
     import mujoco

@@ -12,17 +12,17 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from typed_mjcf import _tree
-from typed_mjcf._export import folder_attributes
-from typed_mjcf._files import copied_files, rebase_files
-from typed_mjcf._merge import combine, rule_of
-from typed_mjcf._names import UNNAMED_MODEL
-from typed_mjcf._tree import Element, ModelBase, grammar_facts, same_value
-from typed_mjcf.errors import (
+from typed_mjcf._errors import (
     ChildError,
     IllegalChildError,
     InvalidReferenceError,
     InvalidValueError,
 )
+from typed_mjcf._export import folder_attributes
+from typed_mjcf._files import copied_files, rebase_files
+from typed_mjcf._merge import combine, rule_of
+from typed_mjcf._names import UNNAMED_MODEL
+from typed_mjcf._tree import Element, ModelBase, grammar_facts, same_value
 
 
 def scope_name(model: ModelBase) -> str:

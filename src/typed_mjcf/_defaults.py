@@ -18,9 +18,9 @@ import numpy as np
 
 from typed_mjcf import _tree
 from typed_mjcf._codecs import Array, ArrayCodec, Codec
+from typed_mjcf._errors import InvalidValueError, UnknownAttributeError, did_you_mean
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
-from typed_mjcf.errors import InvalidValueError, UnknownAttributeError, did_you_mean
 
 
 def main_class(model: ModelBase) -> Element | None:

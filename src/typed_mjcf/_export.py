@@ -24,6 +24,7 @@ from typing import Final, cast
 from typed_mjcf import _tree
 from typed_mjcf._codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._compat import dm_control_behaviour, dm_control_namespace
+from typed_mjcf._errors import ExportError
 from typed_mjcf._files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._grammar import AttributeSpec, ElementSpec, WritePlan
 from typed_mjcf._merge import combine, rule_of
@@ -31,7 +32,6 @@ from typed_mjcf._names import NameScope
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._xmltext import MARKUP, MAX_INDENT, Chunk, Node, escape, indent
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import ExportError
 
 # The text of a file attribute when the files are renamed (for a virtual file system).
 FileNamer = Callable[[Element, AttributeSpec], str]

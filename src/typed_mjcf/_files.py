@@ -28,11 +28,11 @@ from dataclasses import dataclass, field
 from typed_mjcf import _tree
 from typed_mjcf._access import Refused, read_file
 from typed_mjcf._compat import dm_control_behaviour
+from typed_mjcf._errors import FileAccessError, InvalidValueError, MjcfError
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._skin import scope_bone_names
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import FileAccessError, InvalidValueError, MjcfError
 
 
 @dataclass

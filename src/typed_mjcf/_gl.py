@@ -20,7 +20,7 @@ import threading
 from collections.abc import Sequence
 from typing import Final, Protocol, cast
 
-from typed_mjcf.errors import RenderError
+from typed_mjcf._errors import RenderError
 
 # Back ends tried in order when MUJOCO_GL is unset: the headless ones on Linux.
 _HEADLESS: Final = ("egl", "osmesa")

@@ -21,12 +21,12 @@ from typed_mjcf import _tree
 from typed_mjcf._binding import binding_tables
 from typed_mjcf._bridge import compile_model
 from typed_mjcf._compile import compile_from_memory
+from typed_mjcf._errors import CompileError
 from typed_mjcf._export import Writer
 from typed_mjcf._files import element_file_stem
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import element_text, vfs_text
-from typed_mjcf.errors import CompileError
 
 if TYPE_CHECKING:
     import mujoco

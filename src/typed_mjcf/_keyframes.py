@@ -17,10 +17,10 @@ import numpy as np
 
 from typed_mjcf import _tree
 from typed_mjcf._compile import compile_from_memory
+from typed_mjcf._errors import ExportError
 from typed_mjcf._export import Writer
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._xmltext import Node
-from typed_mjcf.errors import ExportError
 
 if TYPE_CHECKING:
     import mujoco

@@ -16,7 +16,7 @@ import numpy as np
 import numpy.typing as npt
 
 from typed_mjcf._binding import DATA, MODEL, assign_array, binding_tables, index_array, rows
-from typed_mjcf.errors import did_you_mean
+from typed_mjcf._errors import did_you_mean
 from typed_mjcf.types import Array, MuJoCoArray
 
 if TYPE_CHECKING:

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import Protocol
 
-from typed_mjcf.errors import ChildError, DuplicateIdentifierError
+from typed_mjcf._errors import ChildError, DuplicateIdentifierError
 
 SEPARATOR = "/"
 UNNAMED_MODEL = "unnamed_model"  # what an attached model without a name is called

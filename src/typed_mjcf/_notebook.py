@@ -8,11 +8,11 @@ import warnings
 from dataclasses import dataclass
 from typing import Literal, cast
 
+from typed_mjcf._errors import InvalidValueError, MjcfError
 from typed_mjcf._png import encode_png
 from typed_mjcf._preview import render
 from typed_mjcf._tree import ModelBase
 from typed_mjcf._write import element_text
-from typed_mjcf.errors import InvalidValueError, MjcfError
 
 Display = Literal["picture", "xml"]
 

@@ -45,12 +45,7 @@ from typed_mjcf._access import (
 )
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._compat import dm_control_behaviour
-from typed_mjcf._gc import collector_paused
-from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._releases import note as release_note
-from typed_mjcf._sourcelines import SourceText
-from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import (
+from typed_mjcf._errors import (
     DuplicateIdentifierError,
     FileAccessError,
     FileReadError,
@@ -60,6 +55,11 @@ from typed_mjcf.errors import (
     ParseError,
     did_you_mean,
 )
+from typed_mjcf._gc import collector_paused
+from typed_mjcf._grammar import AttributeSpec
+from typed_mjcf._releases import note as release_note
+from typed_mjcf._sourcelines import SourceText
+from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.types import XmlElement
 
 INCLUDE = "include"

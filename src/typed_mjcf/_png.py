@@ -7,7 +7,7 @@ import zlib
 
 import numpy as np
 
-from typed_mjcf.errors import InvalidValueError
+from typed_mjcf._errors import InvalidValueError
 from typed_mjcf.types import MuJoCoArray
 
 _SIGNATURE = b"\x89PNG\r\n\x1a\n"

@@ -19,6 +19,7 @@ import numpy as np
 
 from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model
+from typed_mjcf._errors import InvalidTypeError, InvalidValueError, RenderError, did_you_mean
 from typed_mjcf._font import GLYPH_HEIGHT, GLYPH_WIDTH, draw_text, text_size
 from typed_mjcf._gl import ensure_gl_backend, gl_context
 from typed_mjcf._png import encode_png
@@ -29,7 +30,6 @@ from typed_mjcf._resource_limits import (
     check_steps,
 )
 from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import InvalidTypeError, InvalidValueError, RenderError, did_you_mean
 
 if TYPE_CHECKING:
     import mujoco

@@ -17,12 +17,12 @@ from typing import Final
 from typed_mjcf import _tree
 from typed_mjcf._access import check_count
 from typed_mjcf._defaults import resolve
+from typed_mjcf._errors import CompileError, InvalidTypeError, RenderError
 from typed_mjcf._files import CollectedFiles, compiler_folders, file_contents
 from typed_mjcf._grammar import AttributeSpec
 from typed_mjcf._language import Allocation
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
-from typed_mjcf.errors import CompileError, InvalidTypeError, RenderError
 
 _PNG: Final = b"\x89PNG\r\n\x1a\n"
 _FACES: Final = 6  # of a cube texture

@@ -17,7 +17,7 @@ from collections.abc import Callable
 from types import FrameType, TracebackType
 from typing import Final, Self, TypeAlias
 
-from typed_mjcf.errors import ExportError
+from typed_mjcf._errors import ExportError
 
 _Handler: TypeAlias = Callable[[int, FrameType | None], object] | int
 _HELD: Final = tuple(getattr(signal, name) for name in ("SIGINT", "SIGTERM")

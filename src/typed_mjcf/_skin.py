@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import struct
 
-from typed_mjcf.errors import ExportError
+from typed_mjcf._errors import ExportError
 
 NAME_BYTES = 40  # a bone's body name, NUL-padded (MuJoCo's skin file format)
 

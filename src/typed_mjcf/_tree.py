@@ -51,14 +51,7 @@ from typed_mjcf._compat import STATE as _COMPAT
 from typed_mjcf._compat import dm_control_namespace
 from typed_mjcf._debuginfo import RECORDER as _RECORDER
 from typed_mjcf._doclines import DCLASS_DOC, adder_listing
-from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
-from typed_mjcf._language import GrammarFacts
-from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
-from typed_mjcf._release_facts import apply as apply_release_facts
-from typed_mjcf._releases import note as release_note
-from typed_mjcf._releases import restrict, value_note
-from typed_mjcf._sourcelines import SourceText, file_start_line
-from typed_mjcf.errors import (
+from typed_mjcf._errors import (
     ChildError,
     DuplicateIdentifierError,
     IllegalChildError,
@@ -69,6 +62,13 @@ from typed_mjcf.errors import (
     UnknownAttributeError,
     did_you_mean,
 )
+from typed_mjcf._grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._language import GrammarFacts
+from typed_mjcf._names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._release_facts import apply as apply_release_facts
+from typed_mjcf._releases import note as release_note
+from typed_mjcf._releases import restrict, value_note
+from typed_mjcf._sourcelines import SourceText, file_start_line
 
 E = TypeVar("E", bound="Element")
 E_co = TypeVar("E_co", bound="Element", covariant=True)

@@ -23,11 +23,11 @@ import numpy as np
 
 from typed_mjcf import _tree
 from typed_mjcf._compiled_names import CompiledNames
+from typed_mjcf._errors import InvalidValueError, did_you_mean
 from typed_mjcf._export import is_empty_single
 from typed_mjcf._grammar import AttributeSpec, ElementSpec
 from typed_mjcf._language import ChildNeeds
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
-from typed_mjcf.errors import InvalidValueError, did_you_mean
 
 Severity = Literal["error", "warning"]
 Rule = Literal[

@@ -19,11 +19,11 @@ from typing import IO, TypeVar, cast, overload
 from typed_mjcf import _tree
 from typed_mjcf._access import Confinement
 from typed_mjcf._assets_io import model_files, write_files
+from typed_mjcf._errors import FileAccessError, FileReadError, InvalidTypeError, ParseError
 from typed_mjcf._files import safe_file_name
 from typed_mjcf._names import UNNAMED_MODEL
 from typed_mjcf._parse import ParseLimits, read_bounded
 from typed_mjcf._tree import ModelBase
-from typed_mjcf.errors import FileAccessError, FileReadError, InvalidTypeError, ParseError
 
 _T = TypeVar("_T")
 

@@ -1,115 +1,64 @@
-"""The library's errors. Every one derives from :class:`MjcfError` and from the builtin
-exception a Python user would expect (``ValueError``, ``TypeError``, ``AttributeError`` or
-``OSError``), so code written for dm_control.mjcf catches them as it did."""
+"""Every error typed-mjcf raises, and the warning it gives, by their public names.
+
+Each derives from :class:`MjcfError` and from the builtin exception a Python user would
+expect (``ValueError``, ``TypeError``, ``AttributeError``, ``OSError`` or ``RuntimeError``),
+so code written for dm_control.mjcf catches them as it did. They are defined where the
+runtime raises them (:mod:`typed_mjcf._errors`, and :mod:`typed_mjcf._validate` for the
+findings of ``validate()``); this module is where users import them from, and the name
+tracebacks show (``typed_mjcf.errors.ParseError``). ``typed_mjcf`` exports them too.
+"""
 
 from __future__ import annotations
 
-import difflib
-from collections.abc import Iterable
+from typed_mjcf._errors import (
+    BindingError,
+    ChildError,
+    CompileError,
+    DuplicateIdentifierError,
+    ExportError,
+    FileAccessError,
+    FileReadError,
+    IgnoredAttributeWarning,
+    IllegalChildError,
+    InvalidReferenceError,
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    ParseError,
+    PhysicsError,
+    RenderError,
+    UnknownAttributeError,
+    did_you_mean,
+    shown_as_public,
+)
+from typed_mjcf._validate import Finding, ValidationError
 
+__all__ = [
+    "BindingError",
+    "ChildError",
+    "CompileError",
+    "DuplicateIdentifierError",
+    "ExportError",
+    "FileAccessError",
+    "FileReadError",
+    "Finding",
+    "IgnoredAttributeWarning",
+    "IllegalChildError",
+    "InvalidReferenceError",
+    "InvalidTypeError",
+    "InvalidValueError",
+    "MjcfError",
+    "ParseError",
+    "PhysicsError",
+    "RenderError",
+    "UnknownAttributeError",
+    "ValidationError",
+    "did_you_mean",
+]
 
-class MjcfError(Exception):
-    """Base of every error typed-mjcf raises."""
-
-
-class InvalidValueError(MjcfError, ValueError):
-    """A value of the right Python type that MJCF does not allow."""
-
-
-class InvalidTypeError(MjcfError, TypeError, ValueError):
-    """A value of a Python type the attribute cannot take (also a ``ValueError``, which is
-    what dm_control raises for every refused value)."""
-
-
-class InvalidReferenceError(InvalidValueError, InvalidTypeError):
-    """An element given where an element of another namespace (or a model) is expected."""
-
-
-class UnknownAttributeError(MjcfError, AttributeError):
-    """An attribute the element's grammar does not have."""
-
-
-class ChildError(MjcfError, ValueError):
-    """A change to the tree the model cannot take: a second child of a kind allowed once,
-    an attachment that would clash, removing what cannot be removed."""
-
-
-class IllegalChildError(ChildError, AttributeError):
-    """A child the grammar does not allow under its parent (also an ``AttributeError``,
-    as in dm_control), or an assignment to a child property."""
-
-
-class DuplicateIdentifierError(InvalidValueError):
-    """An identifier already taken in its namespace."""
-
-
-class ParseError(MjcfError, ValueError):
-    """MJCF text that cannot be read: malformed XML or something the grammar forbids."""
-
-    source: str | None  # the file (or description) the text came from
-    line: int | None
-    detail: str  # the message without its location
-
-    def __init__(self, message: str, source: str | None = None, line: int | None = None) -> None:
-        self.source = source
-        self.line = line
-        self.detail = message
-        super().__init__(_where(source, line) + message)
-
-
-class FileReadError(ParseError, OSError):
-    """A file the model needs (the model, or a file it includes) cannot be read (also an
-    ``OSError``, as dm_control's ``IOError``)."""
-
-
-class FileAccessError(FileReadError, PermissionError):
-    """A file the model names lies outside the folders it may read (by default its own
-    folder; see :class:`~typed_mjcf.FileAccess`), or its files hold more bytes than allowed."""
-
-
-class CompileError(MjcfError, ValueError):
-    """MuJoCo refused to compile the model; ``path`` is the element its message is about,
-    where one is known."""
-
-    path: str | None
-
-    def __init__(self, message: str, path: str | None = None) -> None:
-        super().__init__(message)
-        self.path = path
-
-
-class ExportError(MjcfError, ValueError):
-    """The model cannot be written as MJCF (e.g. a reference to an unnamed element)."""
-
-
-class RenderError(MjcfError, RuntimeError):
-    """A picture cannot be made: no OpenGL back end works here (the message says what to
-    install, or which setting to change)."""
-
-
-class IgnoredAttributeWarning(UserWarning):
-    """A file gives an element an attribute MuJoCo's reader ignores on it (``<frame>`` and
-    ``<replicate>`` accept any attribute): it is dropped, as MuJoCo drops it."""
-
-    source: str | None  # the file (None: text given in memory)
-    line: int | None
-    path: str  # the element's path in the model
-    detail: str  # the message without its location
-
-    def __init__(self, detail: str, source: str | None = None, line: int | None = None,
-                 path: str = "") -> None:
-        self.source, self.line, self.path, self.detail = source, line, path, detail
-        super().__init__(_where(source, line) + detail)
-
-
-def _where(source: str | None, line: int | None) -> str:
-    """``file:line: `` (or what of it is known) to start a message with."""
-    if source is not None:
-        return f"{source}:{line}: " if line is not None else f"{source}: "
-    return f"line {line}: " if line is not None else ""
-
-
-def did_you_mean(word: str, candidates: Iterable[str]) -> str:
-    """`` (did you mean 'x'?)`` for a close misspelling, else an empty string."""
-    matches = difflib.get_close_matches(word.lower(), list(candidates), n=1, cutoff=0.6)
-    return f" (did you mean {matches[0]!r}?)" if matches else ""
+# Tracebacks and reprs name a class by its __module__: the public one, not where it is defined.
+shown_as_public(__name__, BindingError, ChildError, CompileError, DuplicateIdentifierError,
+                ExportError, FileAccessError, FileReadError, Finding, IgnoredAttributeWarning,
+                IllegalChildError, InvalidReferenceError, InvalidTypeError, InvalidValueError,
+                MjcfError, ParseError, PhysicsError, RenderError, UnknownAttributeError,
+                ValidationError)

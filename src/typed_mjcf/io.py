@@ -15,10 +15,10 @@ from typed_mjcf._access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, on
 from typed_mjcf._assets_io import export_with_assets as export
 from typed_mjcf._bridge import spec_to_xml
 from typed_mjcf._compat import dm_control_behaviour
+from typed_mjcf._errors import InvalidTypeError, ParseError
 from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 from typed_mjcf._tree import ModelBase, name_after_files
 from typed_mjcf._zip import read_zip, use_archive_files, write_zip
-from typed_mjcf.errors import InvalidTypeError, ParseError
 
 if TYPE_CHECKING:
     import mujoco

@@ -34,7 +34,6 @@ from typed_mjcf import _tree
 from typed_mjcf._binding import (
     PICKLING_NOT_SUPPORTED,
     Binding,
-    BindingError,
     EmptyBinding,
     binding_tables,
     new_binding,
@@ -42,6 +41,15 @@ from typed_mjcf._binding import (
 from typed_mjcf._compat import STATE
 from typed_mjcf._compile import compile_from_memory
 from typed_mjcf._dmcompat.debugging import explained
+from typed_mjcf._errors import (
+    BindingError,
+    FileReadError,
+    InvalidTypeError,
+    InvalidValueError,
+    MjcfError,
+    PhysicsError,
+    RenderError,
+)
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
@@ -50,13 +58,6 @@ from typed_mjcf._ids import compile_for_physics, ids_for_text, kind_of
 from typed_mjcf._model_state import model_state
 from typed_mjcf._named import make_axes, struct_indexers
 from typed_mjcf._tree import Element, ModelBase
-from typed_mjcf.errors import (
-    FileReadError,
-    InvalidTypeError,
-    InvalidValueError,
-    MjcfError,
-    RenderError,
-)
 from typed_mjcf.types import Array, ArrayValues
 
 if TYPE_CHECKING:
@@ -70,10 +71,6 @@ _PICKLING_NOT_SUPPORTED: Final = PICKLING_NOT_SUPPORTED  # dm_control's name, it
 # render_flag_overrides: MuJoCo's rendering flags by name ("shadow") or enum, and values
 RenderFlags: TypeAlias = Mapping[str, bool] | Mapping[mujoco.mjtRndFlag, bool]
 _INVALID_STATE: Final = "Physics state is invalid. Warning(s) raised: {}"
-
-
-class PhysicsError(MjcfError, RuntimeError):
-    """The simulation reached an invalid state (MuJoCo raised a warning: NaNs, instability)."""
 
 
 # dm_control's PhysicsError class -> ours deriving from it too (made once each)

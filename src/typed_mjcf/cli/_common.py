@@ -10,10 +10,10 @@ from typing import Final, TextIO, TypeVar, cast
 
 from typed_mjcf import _tree
 from typed_mjcf._access import DEFAULT_ACCESS
+from typed_mjcf._errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._parse import ParseOptions, Problem, parse_path
 from typed_mjcf._tree import Element
-from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import FileAccess, from_path
 
 OK: Final = 0

@@ -12,6 +12,7 @@ from dataclasses import asdict, dataclass
 
 from lxml import etree
 
+from typed_mjcf._errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf._export import iter_written
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._parse import Problem
@@ -31,7 +32,6 @@ from typed_mjcf.cli._common import (
     source_of,
 )
 from typed_mjcf.cli._isolated import MujocoCrashed, compile_in_child
-from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import FileAccess
 
 NAME = "check"

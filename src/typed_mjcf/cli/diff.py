@@ -18,12 +18,12 @@ from dataclasses import dataclass
 
 from typed_mjcf import _tree
 from typed_mjcf._defaults import resolve_all
+from typed_mjcf._errors import MjcfError
 from typed_mjcf._export import iter_written, written_children
 from typed_mjcf._tree import Element
 from typed_mjcf.cli._common import BAD_INPUT, FOUND, OK, BadInput, error, load, shown, where
 from typed_mjcf.cli._values import stored_text, value_text
 from typed_mjcf.cli.render import size, write_diff_picture
-from typed_mjcf.errors import MjcfError
 
 NAME = "diff"
 HELP = "show how two models differ, element by element (exit 1 if they do)"
