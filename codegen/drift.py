@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal, cast
 
-from codegen import ir, probe
+from codegen import ir, probe, unset
 from codegen.wheel import AtVal, Reference, parse_at_val
 
 PROBE_SITES = Path(__file__).resolve().parents[1] / "schema" / "probe.toml"
@@ -311,6 +311,7 @@ class _Checker:
         self.hand = hand
         self.hand_enums = hand_enums
         self.drift = Drift()
+        self.why_computed = unset.computed()  # how MuJoCo computes a value, where recorded
         self.for_defaults: _Probe | None = None  # the row's probe for defaults (targeted)
         # enum -> (row, attribute, keywords the parser took) for every probed user
         self.keyword_sets: dict[str, list[tuple[str, str, list[str]]]] = {}
@@ -332,7 +333,21 @@ class _Checker:
                 self._attribute(p, row, attr)
         self._enums()
         self._default_rows()
+        self._recorded_computed(rows)
         return self.drift
+
+    def _recorded_computed(self, rows: set[str] | None) -> None:
+        """schema/unset.toml's [computed] reasons on the attributes the probe leaves (typed
+        by hand, or set by every probe model) without a default."""
+        for (name, attr_name), why in sorted(self.why_computed.items()):
+            row = self.schema.elements.get(name)
+            if row is None or rows is not None and name not in rows:
+                continue
+            attr = next((a for a in row.attributes if a.name == attr_name), None)
+            if attr is not None and attr.default is None and attr.computed != why:
+                before = "(computed)" if attr.computed is not None else "(none)"
+                self._apply(row, attr, Change(name, attr_name, "default", before,
+                                              "(computed)"), computed=why)
 
     def _default_rows(self) -> None:
         """A <default> row of its own (default_tendon: no row projects it, no probe model
@@ -480,7 +495,8 @@ class _Checker:
                 same = [shown]  # the documented one, of several read alike
             elif plain_same:
                 same = plain_same
-        if len(same) > 1 or not same and (attr.computed is not None or not plain):
+        why = self.why_computed.get((row.name, attr.name), COMPUTED)
+        if len(same) > 1 or not same and (attr.computed == why or not plain):
             return  # several read alike (a zero quaternion and the unit one): cannot tell
         self.drift.defaults += 1
         before = "(computed)" if attr.computed is not None else "(none)"
@@ -489,7 +505,7 @@ class _Checker:
                                           f'"{same[0]}"'), default=same[0], computed=None)
             return
         self._apply(row, attr, Change(row.name, attr.name, "default", before, "(computed)"),
-                    computed=COMPUTED)
+                    computed=why)
 
     def _string_list(self, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
         c_type = self.structs.get(row.struct or "", {}).get(attr.field or attr.name)

@@ -33,17 +33,33 @@ NOT_PROBED = "not probed: "  # a recorded reason from [unprobed.ROW]: the defaul
 def load(path: Path = UNSET) -> dict[tuple[str, str], str]:
     """schema/unset.toml: (row, attribute) -> why it has no default ([none.ROW]), or why the
     probe cannot tell it ([unprobed.ROW], the text starting with :data:`NOT_PROBED`)."""
+    sections = _sections(path)
+    return {**sections["none"],
+            **{key: NOT_PROBED + why for key, why in sections["unprobed"].items()}}
+
+
+def computed(path: Path = UNSET) -> dict[tuple[str, str], str]:
+    """schema/unset.toml's [computed.ROW]: (row, attribute) -> how MuJoCo computes the value
+    (codegen/drift.py records it as the attribute's ``computed``)."""
+    return _sections(path)["computed"]
+
+
+_SECTIONS = ("none", "unprobed", "computed")
+
+
+def _sections(path: Path) -> dict[str, dict[tuple[str, str], str]]:
     raw = tomllib.loads(path.read_text(encoding="utf-8"))
-    out: dict[tuple[str, str], str] = {}
-    for section, prefix in (("none", ""), ("unprobed", NOT_PROBED)):
+    out: dict[str, dict[tuple[str, str], str]] = {}
+    for section in _SECTIONS:
+        found = out[section] = {}
         for row, attrs in _table(raw.pop(section, {}), f"{path}: [{section}]").items():
             where = f"{path}: [{section}.{row}]"
             for name, why in _table(attrs, where).items():
                 if not isinstance(why, str) or not why:
                     raise ValueError(f"{where} {name}: a non-empty string")
-                out[(row, name)] = prefix + why
+                found[(row, name)] = why
     if raw:
-        raise ValueError(f"{path}: unknown tables {sorted(raw)} (none, unprobed)")
+        raise ValueError(f"{path}: unknown tables {sorted(raw)} ({', '.join(_SECTIONS)})")
     return out
 
 

@@ -1468,7 +1468,7 @@ class Actuator(_Typed):
             refsite: reference to namespace ``site``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
             actdim: int; default "-1".
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
             velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -3940,7 +3940,7 @@ class Body(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -5257,7 +5257,7 @@ class Custom(_Typed):
 
         Args:
             name: name declared in namespace ``numeric``; required.
-            size: int; no default (unset when absent).
+            size: int; default computed by MuJoCo.
             data: double[] (any length); no default (unset when absent).
         """
 
@@ -6180,7 +6180,7 @@ class Default(_Typed):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -6523,7 +6523,7 @@ class Default(_Typed):
             armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             actdim: int; default "-1".
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
             velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -8065,7 +8065,7 @@ class DefaultGeneral(_Typed):
     """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
-    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
     """
@@ -8214,7 +8214,7 @@ class DefaultGeom(_Typed):
     """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``size``: double[1..3] (1 to 3 values); no default (unset when absent).
+    """``size``: double[1..3] (1 to 3 values); default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
     """
@@ -13185,7 +13185,7 @@ class Frame(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -14862,7 +14862,7 @@ class General(_Typed):
     """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
-    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
     """
@@ -15044,7 +15044,7 @@ class Geom(_Typed):
     """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``size``: double[1..3] (1 to 3 values); no default (unset when absent).
+    """``size``: double[1..3] (1 to 3 values); default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
     """
@@ -18292,7 +18292,7 @@ class Numeric(_Typed):
     """
 
     size: _Attr[_builtins.int | None, _t.Integer | None]
-    """``size``: int; no default (unset when absent).
+    """``size``: int; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
     """
@@ -19920,7 +19920,7 @@ class Replicate(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -25999,7 +25999,7 @@ class Worldbody(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.

@@ -47,6 +47,15 @@ def test_a_recorded_reason_names_an_attribute_that_has_no_default() -> None:
         assert unset.rule(row, attr) is None, (name, attr_name)
 
 
+def test_a_recorded_computation_is_the_attribute_s_computed() -> None:
+    """[computed.ROW] is written into schema/ by the probe, typed-by-hand attributes too."""
+    for (name, attr_name), why in unset.computed().items():
+        attr = _COMMITTED.elements[name].attribute(attr_name)
+        assert (attr.default, attr.computed) == (None, why), (name, attr_name)
+    assert _COMMITTED.elements["default_geom"].attribute("mass").computed == \
+        unset.computed()[("geom", "mass")]
+
+
 def test_the_rules_give_reasons_by_kind_and_shape() -> None:
     body = _COMMITTED.elements["body"]
     assert unset.rule(body, body.attribute("name")) == _names()
@@ -96,6 +105,20 @@ def check(schema: ir.Schema, wheel: Wheel, rows: set[str]) -> list[str]:
 def _clear(schema: ir.Schema, rows: tuple[str, ...], name: str) -> None:
     for row in rows:
         schema.elements[row].attribute(name).default = None
+
+
+def test_a_computed_value_gets_its_recorded_reason(schema: ir.Schema, wheel: Wheel) -> None:
+    """position@timeconst: 0 (no filter) writes dynprm 0, absent keeps 1: no value reads as
+    absent, and schema/unset.toml says why, not the generic text."""
+    schema.elements["position"].attribute("timeconst").computed = drift.COMPUTED
+    size = schema.elements["geom"].attribute("size")  # every probe model of a geom sets it
+    size.computed = None
+    assert check(schema, wheel, {"position", "geom"}) == [
+        "position@timeconst default: (computed) -> (computed)",
+        "geom@size default: (none) -> (computed)"]
+    assert schema.elements["position"].attribute("timeconst").computed == \
+        unset.computed()[("position", "timeconst")]
+    assert size.computed == unset.computed()[("geom", "size")]
 
 
 def test_a_tendon_s_default_is_probed_with_its_path(schema: ir.Schema, wheel: Wheel) -> None:
