@@ -4216,13 +4216,13 @@ class Body(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``flex``; required.
-            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
             group: int; default "0".
-            dim: int; no default (unset when absent).
+            dim: int; default "2".
             dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            spacing: double[3]; no default (unset when absent).
+            spacing: double[3]; default "0.02 0.02 0.02".
             radius: double; default "0.005".
             rigid: bool; default "false".
             mass: double; default "1".
@@ -12110,7 +12110,7 @@ class Flexcomp(_Typed):
     """
 
     type: _Attr[Fcomp | None, Fcomp | None]
-    """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+    """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
     """
@@ -12122,7 +12122,7 @@ class Flexcomp(_Typed):
     """
 
     dim: _Attr[_builtins.int | None, _t.Integer | None]
-    """``dim``: int; no default (unset when absent).
+    """``dim``: int; default "2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
     """
@@ -12146,7 +12146,7 @@ class Flexcomp(_Typed):
     """
 
     spacing: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``spacing``: double[3]; no default (unset when absent).
+    """``spacing``: double[3]; default "0.02 0.02 0.02".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
     """
@@ -12467,13 +12467,10 @@ class Flexcomp(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["type"]) -> Fcomp | None: ...
+    def resolve(self, name: Literal["type"]) -> Fcomp: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
-
-    @overload
-    def resolve(self, name: Literal["dim"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "dim"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["dof"]) -> FDof: ...
@@ -12482,7 +12479,7 @@ class Flexcomp(_Typed):
     def resolve(self, name: Literal["count", "cellcount"]) -> _t.Int32Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["spacing", "point", "element", "texcoord", "axisangle", "xyaxes", "zaxis", "euler", "origin"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["spacing", "scale", "pos", "quat"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["radius", "mass", "inertiabox"]) -> _builtins.float: ...
@@ -12491,10 +12488,10 @@ class Flexcomp(_Typed):
     def resolve(self, name: Literal["rigid", "flatskin"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["scale", "pos", "quat"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["file"]) -> _builtins.str | _t.Asset | None: ...
 
     @overload
-    def resolve(self, name: Literal["file"]) -> _builtins.str | _t.Asset | None: ...
+    def resolve(self, name: Literal["point", "element", "texcoord", "axisangle", "xyaxes", "zaxis", "euler", "origin"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
@@ -13461,13 +13458,13 @@ class Frame(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``flex``; required.
-            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
             group: int; default "0".
-            dim: int; no default (unset when absent).
+            dim: int; default "2".
             dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            spacing: double[3]; no default (unset when absent).
+            spacing: double[3]; default "0.02 0.02 0.02".
             radius: double; default "0.005".
             rigid: bool; default "false".
             mass: double; default "1".
@@ -26275,13 +26272,13 @@ class Worldbody(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``flex``; required.
-            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
             group: int; default "0".
-            dim: int; no default (unset when absent).
+            dim: int; default "2".
             dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            spacing: double[3]; no default (unset when absent).
+            spacing: double[3]; default "0.02 0.02 0.02".
             radius: double; default "0.005".
             rigid: bool; default "false".
             mass: double; default "1".
