@@ -121,3 +121,29 @@ def _partner(row: ir.ElementDef, attr: ir.AttributeDef) -> str | None:
                     and other.computed is None:
                 return name
     return None
+
+
+def states(schema: ir.Schema, primary_numbers: bool = False) -> dict[str, int]:
+    """How many attributes have a default, are computed, have no default (by a rule or a
+    recorded reason) or are not probed; ``primary_numbers``: only numbers, bools, keywords
+    and flags of rows outside <default>."""
+    recorded = load()
+    out: dict[str, int] = {}
+    for row in schema.elements.values():
+        for attr in row.attributes:
+            if primary_numbers and (row.projection_of is not None or attr.kind not in
+                                    ("int", "real", "keyword", "bool", "flags")):
+                continue
+            why = reason(schema, row, attr, recorded)
+            state = ("default" if attr.default is not None else "computed" if attr.computed
+                     else "unknown" if why is None else "unprobed" if why.startswith(NOT_PROBED)
+                     else "no default (recorded)" if why in recorded.values()
+                     else "no default (rule)")
+            out[state] = out.get(state, 0) + 1
+    return out
+
+
+if __name__ == "__main__":  # python -m codegen.unset: the counts of schema/mjcf.json
+    committed = ir.load()
+    print("every attribute:", states(committed))
+    print("rows' numbers, bools, keywords, flags:", states(committed, primary_numbers=True))
