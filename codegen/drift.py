@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Literal, cast
 
-from codegen import ir, probe
+from codegen import ir, probe, unset
 from codegen.wheel import AtVal, Reference, parse_at_val
 
 PROBE_SITES = Path(__file__).resolve().parents[1] / "schema" / "probe.toml"
@@ -132,35 +132,54 @@ def site(schema: ir.Schema, row: str, parser: probe.Parser,
         for attr in element.attributes:
             if attr.required:
                 attrs[attr.name] = _plain(attr, schema)
-        attrs.update((extra or {}).get(name, {}))
+        attrs.update((k, v) for k, v in (extra or {}).get(name, {}).items()
+                     if k != WORLD and not k.startswith(COMPILE)
+                     and (k != probe.CONTENT or name == row))
     tags = tuple(schema.elements[n].tag for n in path)
     if "body" in tags[:-1]:
         required.setdefault("body", {}).setdefault("name", "typedmjcf_body")
     holds = any(schema.elements[c.element].tag == "body"
                 for c in schema.elements[row].children)
-    found = probe.Site(tags, required, holds, weighted=True)
+    found = probe.Site(tags, required, holds, weighted=True,
+                       world=(extra or {}).get(row, {}).get(WORLD, ""))
     baseline = parser(found.model())
     return None if baseline.error is not None else _Probe(found, parser, baseline)
 
 
 # Objects a probe model's references can name (the default probe needs a model MuJoCo
-# compiles, so an actuator or a sensor needs its target), all named TARGET.
+# compiles, so an actuator or a sensor needs its target), all named TARGET; a second body
+# holds what some rows need besides (a ball joint, a second geom and site: OTHER), which
+# schema/probe.toml names.
 TARGET = "typedmjcf_target"
+OTHER = "typedmjcf_other"
+WORLD = "_world"  # schema/probe.toml: what the root holds for the row (a plugin), as MJCF
+# schema/probe.toml's [ROW.compile]: attributes only the default probe's model has (a mesh's
+# vertices: beside them the reader refuses every builtin, which the keyword probe reads)
+COMPILE = "compile."
 _WORLD = (f'<worldbody><body name="{TARGET}"><joint name="{TARGET}" range="-1 1"/>'
           f'<geom name="{TARGET}" size="0.1"/><site name="{TARGET}"/>'
-          f'<camera name="{TARGET}"/></body></worldbody>'
+          f'<camera name="{TARGET}"/></body>'
+          f'<body name="{OTHER}" pos="0 0 1"><joint name="{OTHER}" type="ball"/>'
+          f'<geom name="{OTHER}" size="0.1"/><site name="{OTHER}"/></body></worldbody>'
           f'<tendon><fixed name="{TARGET}" range="-1 1"><joint joint="{TARGET}" coef="1"/>'
-          f'</fixed></tendon>')  # limited: the limit sensors need it
-_TARGETS = frozenset({"body", "joint", "geom", "site", "camera", "tendon"})
+          f'</fixed></tendon>'  # limited: the limit sensors need it
+          f'<actuator><motor name="{TARGET}" joint="{TARGET}"/></actuator>')
+_TARGETS = frozenset({"body", "joint", "geom", "site", "camera", "tendon", "actuator"})
 
 
-def targeted(schema: ir.Schema, row: ir.ElementDef, p: _Probe) -> _Probe:
+def targeted(schema: ir.Schema, row: ir.ElementDef, p: _Probe,
+             fixed: Mapping[str, str] | None = None) -> _Probe:
     """``p``, or where MuJoCo cannot save its model, the same row with a world of targets
-    and one reference of the row naming its target (the first that makes it save)."""
+    and one reference of the row naming its target (the first that makes it save);
+    ``fixed`` (the row's schema/probe.toml entry) keeps its values."""
     if not p.baseline.saved.startswith(probe.UNSAVED):
         return p
     every: list[dict[str, str]] = []  # the row's references, each naming its target
+    compile_only = {k.removeprefix(COMPILE): v for k, v in (fixed or {}).items()
+                    if k.startswith(COMPILE)}
     for attr in row.attributes:
+        if fixed is not None and attr.name in fixed:
+            continue
         if attr.kind == "ref" and attr.namespace in _TARGETS:
             every.append({attr.name: TARGET})
         elif attr.namespace_from is not None:
@@ -175,8 +194,8 @@ def targeted(schema: ir.Schema, row: ir.ElementDef, p: _Probe) -> _Probe:
     refs = [needed] + [{**needed, **ref} for ref in every if not ref.keys() <= needed.keys()]
     for ref in refs:
         required = {tag: dict(attrs) for tag, attrs in p.site.required.items()}
-        required.setdefault(row.tag, {}).update(ref)
-        found = dataclasses.replace(p.site, required=required, world=_WORLD)
+        required.setdefault(row.tag, {}).update({**compile_only, **ref})
+        found = dataclasses.replace(p.site, required=required, world=_WORLD + p.site.world)
         baseline = p.parser(found.model())
         if baseline.error is None and not baseline.saved.startswith(probe.UNSAVED):
             return _Probe(found, p.parser, baseline)
@@ -184,16 +203,22 @@ def targeted(schema: ir.Schema, row: ir.ElementDef, p: _Probe) -> _Probe:
 
 
 def load_sites(path: Path = PROBE_SITES) -> dict[str, dict[str, str]]:
-    """schema/probe.toml: row -> the attributes its probe model needs besides required ones."""
+    """schema/probe.toml: row -> the attributes its probe model needs besides required ones
+    (``_content``, ``_world``: MJCF it holds; ``[ROW.compile]``'s keys prefixed COMPILE)."""
     if not path.exists():
         return {}
     raw = tomllib.loads(path.read_text(encoding="utf-8"))
     out: dict[str, dict[str, str]] = {}
     for row, attrs in raw.items():
-        if not isinstance(attrs, dict) or not all(
-                isinstance(v, str) for v in cast("dict[str, object]", attrs).values()):
+        table = cast("dict[str, object]", attrs) if isinstance(attrs, dict) else None
+        inner: object = table.pop("compile", {}) if table is not None else {}
+        if table is None or not isinstance(inner, dict) or not all(
+                isinstance(v, str) for v in [*table.values(),
+                                             *cast("dict[str, object]", inner).values()]):
             raise ValueError(f"{path}: [{row}] must hold attribute = \"text\" lines")
-        out[row] = {str(k): str(v) for k, v in cast("dict[str, object]", attrs).items()}
+        out[row] = {str(k): str(v) for k, v in table.items()}
+        out[row].update((COMPILE + str(k), str(v))
+                        for k, v in cast("dict[str, object]", inner).items())
     return out
 
 
@@ -286,6 +311,7 @@ class _Checker:
         self.hand = hand
         self.hand_enums = hand_enums
         self.drift = Drift()
+        self.why_computed = unset.computed()  # how MuJoCo computes a value, where recorded
         self.for_defaults: _Probe | None = None  # the row's probe for defaults (targeted)
         # enum -> (row, attribute, keywords the parser took) for every probed user
         self.keyword_sets: dict[str, list[tuple[str, str, list[str]]]] = {}
@@ -299,14 +325,47 @@ class _Checker:
             if p is None:
                 self.drift.rows_skipped.append(name)
                 continue
-            self.for_defaults = targeted(self.schema, row, p)
+            self.for_defaults = targeted(self.schema, row, p, self.sites.get(name))
             for attr in list(row.attributes):
                 if (name, attr.name) in self.hand:
                     continue
                 self.drift.probed += 1
                 self._attribute(p, row, attr)
         self._enums()
+        self._default_rows()
+        self._recorded_computed(rows)
         return self.drift
+
+    def _recorded_computed(self, rows: set[str] | None) -> None:
+        """schema/unset.toml's [computed] reasons on the attributes the probe leaves (typed
+        by hand, or set by every probe model) without a default."""
+        for (name, attr_name), why in sorted(self.why_computed.items()):
+            row = self.schema.elements.get(name)
+            if row is None or rows is not None and name not in rows:
+                continue
+            attr = next((a for a in row.attributes if a.name == attr_name), None)
+            if attr is not None and attr.default is None and attr.computed != why:
+                before = "(computed)" if attr.computed is not None else "(none)"
+                self._apply(row, attr, Change(name, attr_name, "default", before,
+                                              "(computed)"), computed=why)
+
+    def _default_rows(self) -> None:
+        """A <default> row of its own (default_tendon: no row projects it, no probe model
+        reaches it) takes the default its rows agree on (fixed and spatial tendons)."""
+        for name, row in sorted(self.schema.elements.items()):
+            served = [r for r in self.schema.elements.values() if r.default_row == name]
+            if row.projection_of is not None or not served:
+                continue
+            for attr in row.attributes:
+                if attr.default is not None or attr.computed is not None:
+                    continue
+                found = {a.default for r in served for a in r.attributes
+                         if a.name == attr.name and (a.kind, a.arity, a.enum)
+                         == (attr.kind, attr.arity, attr.enum)}
+                if len(found) == 1 and None not in found:
+                    (value,) = found
+                    self._apply(row, attr, Change(name, attr.name, "default", "(none)",
+                                                  f'"{value}"'), default=value)
 
     # -- one attribute
 
@@ -388,6 +447,10 @@ class _Checker:
         if attr.default is None:
             self._missing_default(p, row, attr)
             return
+        if _alternative(row, attr):  # quat's default applies, not one of its own
+            self._apply(row, attr, Change(row.name, attr.name, "default", f'"{attr.default}"',
+                                          "(none)"), default=None)
+            return
         self.drift.defaults += 1
         if p.load(attr.name, attr.default).saved == p.baseline.saved:
             return
@@ -406,24 +469,34 @@ class _Checker:
         """No default yet: MuJoCo's documented default when MuJoCo saves the model with it
         back as with the attribute left out, else the one plain value that does; when the
         saved model shows the attribute (some value changes it) and none does, MuJoCo
-        computes the value (``computed``); else the probe cannot tell. An alternative to an
-        attribute with a default (axisangle beside quat) has none of its own."""
-        if attr.name in p.site.required.get(row.tag, {}) or _alternative(row, attr):
-            return  # the probe model sets it (no model leaves it out); or quat's applies
+        computes the value (``computed``); else the probe cannot tell. The defaults other rows
+        give the attribute are candidates too. An alternative to an attribute with a default
+        (axisangle beside quat) has none of its own."""
+        if _alternative(row, attr):  # quat's default applies
+            if attr.computed is not None:
+                self._apply(row, attr, Change(row.name, attr.name, "default", "(computed)",
+                                              "(none)"), computed=None)
+            return
+        if attr.name in p.site.required.get(row.tag, {}):
+            return  # the probe model sets it (no model leaves it out)
         plain = default_candidates(attr, self.schema)
         documented = _documented(attr, self.ref)
-        texts = plain + [documented.default] if documented is not None and documented.default \
-            and documented.default not in plain else plain
+        shown = documented.default if documented is not None and documented.default else None
+        # then the default other rows give the attribute (a flexcomp's radius: its flex's)
+        texts = list(dict.fromkeys(plain + ([shown] if shown else [])
+                                   + borrowed_defaults(attr, self.schema)))
         saved = {text: p.load(attr.name, text) for text in texts}
         same = [t for t, o in saved.items() if o.error is None and o.saved == p.baseline.saved]
         if len(same) == len(texts) or not same and all(o.error for o in saved.values()):
             return  # the saved model does not show the attribute: nothing to tell
-        if len([t for t in same if t in plain]) != 1 and len(same) > 1 and documented \
-                is not None and documented.default in same:
-            same = [documented.default]  # the documented one, of several read alike
-        elif len(same) > 1:
-            same = [t for t in same if t in plain]
-        if len(same) > 1 or not same and (attr.computed is not None or not plain):
+        if len(same) > 1:
+            plain_same = [t for t in same if t in plain]
+            if len(plain_same) != 1 and shown in same:
+                same = [shown]  # the documented one, of several read alike
+            elif plain_same:
+                same = plain_same
+        why = self.why_computed.get((row.name, attr.name), COMPUTED)
+        if len(same) > 1 or not same and (attr.computed == why or not plain):
             return  # several read alike (a zero quaternion and the unit one): cannot tell
         self.drift.defaults += 1
         before = "(computed)" if attr.computed is not None else "(none)"
@@ -432,7 +505,7 @@ class _Checker:
                                           f'"{same[0]}"'), default=same[0], computed=None)
             return
         self._apply(row, attr, Change(row.name, attr.name, "default", before, "(computed)"),
-                    computed=COMPUTED)
+                    computed=why)
 
     def _string_list(self, row: ir.ElementDef, attr: ir.AttributeDef) -> None:
         c_type = self.structs.get(row.struct or "", {}).get(attr.field or attr.name)
@@ -515,13 +588,22 @@ COMPUTED = ("MuJoCo derives the value when the attribute is absent: no plain val
 
 def _alternative(row: ir.ElementDef, attr: ir.AttributeDef) -> bool:
     """``attr``, a number, is refused beside another attribute that has a default (quat's
-    orientation alternatives): that one's default applies when neither is given."""
+    orientation alternatives): that one's default applies when neither is given. Of two
+    with a default (a flexcomp's quat and axisangle), the first in the constraint owns it."""
     if attr.kind not in ("int", "real"):
         return False  # a keyword or flag (light type beside directional) has its own
-    defaults = {a.name for a in row.attributes if a.default is not None}
-    return any(attr.name in bundle and any(n in defaults for b in c.bundles for n in b
-                                           if b is not bundle)
-               for c in row.constraints if c.kind == "exclusive" for bundle in c.bundles)
+    for c in row.constraints:
+        if c.kind != "exclusive" or not any(attr.name in b for b in c.bundles):
+            continue
+        names = [n for b in c.bundles for n in b]
+        for name in names:
+            other = next((a for a in row.attributes if a.name == name), None)
+            if other is None or other.default is None or any(
+                    attr.name in b and name in b for b in c.bundles):
+                continue
+            if attr.default is None or names.index(name) < names.index(attr.name):
+                return True
+    return False
 
 
 def default_candidates(attr: ir.AttributeDef, schema: ir.Schema) -> list[str]:
@@ -529,7 +611,7 @@ def default_candidates(attr: ir.AttributeDef, schema: ir.Schema) -> list[str]:
     zeros and ones of the full count (``2``: a contrast), false and true, the keywords."""
     if attr.kind == "bool":
         return ["false", "true"]
-    if attr.kind == "keyword":
+    if attr.kind in ("keyword", "flags"):  # flags: each alone (the documented set follows)
         enum = schema.enums.get(attr.enum or "")
         return list(enum.keywords) if enum is not None else []
     if attr.kind not in ("int", "real"):
@@ -540,6 +622,13 @@ def default_candidates(attr: ir.AttributeDef, schema: ir.Schema) -> list[str]:
         return []
     unit = [" ".join(["1"] + ["0"] * (count - 1))] if count > 1 else []
     return [" ".join([v] * count) for v in ("0", "1", "2")] + unit
+
+
+def borrowed_defaults(attr: ir.AttributeDef, schema: ir.Schema) -> list[str]:
+    """The defaults other rows give an attribute of this name and type, sorted."""
+    return sorted({a.default for r in schema.elements.values() for a in r.attributes
+                   if a.name == attr.name and a.default is not None and a is not attr
+                   and (a.kind, a.arity, a.enum) == (attr.kind, attr.arity, attr.enum)})
 
 
 def _saves(p: _Probe) -> bool:

@@ -39,6 +39,8 @@ _NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _UNKNOWN = "unrecognized attribute"  # the schema check's message for a name it lacks
 
 Verdict = Literal["read", "unknown", "refused"]
+# In a Site's ``required``: not an attribute but MJCF the element holds first (a tendon's path)
+CONTENT = "_content"
 
 
 @dataclass(frozen=True)
@@ -71,6 +73,7 @@ class Site:
         inner = _CONTENT if self.holds_bodies else ""
         for depth, tag in reversed(list(enumerate(self.path))):
             attrs = dict(self.required.get(tag, {}))
+            inner = attrs.pop(CONTENT, "") + inner
             if attribute is not None and depth == len(self.path) - 1:
                 attrs[attribute] = PROBE_VALUE
             if self.weighted and tag == "body":

@@ -30,6 +30,7 @@ from codegen.facts import AttributeOverride, Facts
 from codegen.passes import (
     DEFAULT_ROW,
     PROJECTION_PREFIX,
+    add_constraints,
     apply_override,
     enum_from_fact,
     enums_of,
@@ -181,6 +182,7 @@ class _Sync:
         self.single = facts.single
         self.overrides = {(o.element, o.name): o for o in facts.attributes}
         self.enum_facts = facts.enums
+        self.constraint_facts = facts.constraints
         self.matches: dict[str, WheelRow] = {}  # IR row -> the printSchema row it stands for
         self.added_edges: dict[str, list[ir.ChildDef]] = {}  # per row, edges sync added
         self.touched: set[str] = set()
@@ -204,6 +206,7 @@ class _Sync:
             self._sync_probed_attributes(row)
         self._apply_enum_facts()
         self._set_anchors()  # the probe reads documented defaults by anchor (set again below)
+        add_constraints(self.schema, self.constraint_facts)  # alternatives take no default
         self._probe_types()
         self._apply_overrides()
         self._probe_spellings()

@@ -1468,7 +1468,7 @@ class Actuator(_Typed):
             refsite: reference to namespace ``site``; no default (unset when absent).
             body: reference to namespace ``body``; no default (unset when absent).
             actdim: int; default "-1".
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
             velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -1786,20 +1786,20 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0"; in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            forcerange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             joint: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
             site: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
             refsite: reference to namespace ``site``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            kp: double; default "1"; in MuJoCo >= 3.17.0.
+            kv: double; default "0"; in MuJoCo >= 3.17.0.
+            dampratio: double; default "0"; in MuJoCo >= 3.17.0.
             input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
@@ -2125,16 +2125,16 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
             body: reference to namespace ``body``; no default (unset when absent).
-            gain: double; no default (unset when absent); >= 0.
+            gain: double; default "1"; >= 0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2184,17 +2184,17 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent); in MuJoCo >= 3.17.0.
             class_: reference to namespace ``default``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0"; in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            lengthrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            lengthrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             joint: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
             jointinparent: reference to namespace ``joint``; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -2206,12 +2206,12 @@ class Actuator(_Typed):
             motorconst: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
             resistance: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
             nominal: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            saturation: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            inductance: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cogging: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            controller: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            thermal: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            lugre: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            saturation: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
+            inductance: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cogging: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
+            controller: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            thermal: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            lugre: double[1..5] (1 to 5 values); default "0 0 0 0 0"; in MuJoCo >= 3.17.0.
             input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
             dclass: dm_control's name for ``class_``.
         """
@@ -2261,23 +2261,23 @@ class Actuator(_Typed):
         Args:
             name: name declared in namespace ``actuator``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent).
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0".
             user: double[] (any length); no default (unset when absent).
             plugin: string; no default (unset when absent).
             instance: reference to namespace ``instance``; no default (unset when absent).
             ctrllimited: one of: false, true, auto; default "auto".
             forcelimited: one of: false, true, auto; default "auto".
             actlimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            actrange: double[2]; no default (unset when absent).
-            lengthrange: double[2]; no default (unset when absent).
+            forcerange: double[2]; default "0 0".
+            actrange: double[2]; default "0 0".
+            lengthrange: double[2]; default "0 0".
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0".
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             joint: reference to namespace ``joint``; no default (unset when absent).
             jointinparent: reference to namespace ``joint``; no default (unset when absent).
@@ -2288,7 +2288,7 @@ class Actuator(_Typed):
             tendon: reference to namespace ``tendon``; no default (unset when absent).
             cranksite: reference to namespace ``site``; no default (unset when absent).
             slidersite: reference to namespace ``site``; no default (unset when absent).
-            actearly: bool; no default (unset when absent).
+            actearly: bool; default "false".
             dclass: dm_control's name for ``class_``.
         """
 
@@ -2410,31 +2410,31 @@ class ActuatorPlugin(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent).
+    """``ctrlrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-ctrlrange
     """
@@ -2476,19 +2476,19 @@ class ActuatorPlugin(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-forcerange
     """
 
     actrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actrange``: double[2]; no default (unset when absent).
+    """``actrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actrange
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent).
+    """``lengthrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-lengthrange
     """
@@ -2500,13 +2500,13 @@ class ActuatorPlugin(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-armature
     """
@@ -2572,7 +2572,7 @@ class ActuatorPlugin(_Typed):
     """
 
     actearly: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``actearly``: bool; no default (unset when absent).
+    """``actearly``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-plugin-actearly
     """
@@ -2631,16 +2631,19 @@ class ActuatorPlugin(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample", "actdim"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange", "actrange", "lengthrange", "damping"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange", "actrange", "lengthrange", "gear", "damping", "dynprm"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["instance"]) -> _builtins.str | Instance | None: ...
@@ -2649,7 +2652,7 @@ class ActuatorPlugin(_Typed):
     def resolve(self, name: Literal["ctrllimited", "forcelimited", "actlimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear", "dynprm"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -2658,16 +2661,13 @@ class ActuatorPlugin(_Typed):
     def resolve(self, name: Literal["site", "cranksite", "slidersite"]) -> _builtins.str | Site | None: ...
 
     @overload
-    def resolve(self, name: Literal["actdim"]) -> _builtins.int: ...
-
-    @overload
     def resolve(self, name: Literal["dyntype"]) -> Dyn: ...
 
     @overload
     def resolve(self, name: Literal["tendon"]) -> _builtins.str | AnyTendon | None: ...
 
     @overload
-    def resolve(self, name: Literal["actearly"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["actearly"]) -> _builtins.bool: ...
 
 
 class Actuatorfrc(_Typed):
@@ -2685,37 +2685,37 @@ class Actuatorfrc(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorfrc-noise
     """
@@ -2738,16 +2738,19 @@ class Actuatorfrc(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["actuator"]) -> _builtins.str | AnyActuator | None: ...
@@ -2768,37 +2771,37 @@ class Actuatorpos(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorpos-noise
     """
@@ -2821,16 +2824,19 @@ class Actuatorpos(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["actuator"]) -> _builtins.str | AnyActuator | None: ...
@@ -2851,37 +2857,37 @@ class Actuatorvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-actuatorvel-noise
     """
@@ -2904,16 +2910,19 @@ class Actuatorvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["actuator"]) -> _builtins.str | AnyActuator | None: ...
@@ -2940,25 +2949,25 @@ class Adhesion(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
     """
@@ -2982,7 +2991,7 @@ class Adhesion(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
     """
@@ -2994,7 +3003,7 @@ class Adhesion(_Typed):
     """
 
     gain: _Attr[_builtins.float | None, _t.Real | None]
-    """``gain``: double; no default (unset when absent); >= 0.
+    """``gain``: double; default "1"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
     """
@@ -3011,19 +3020,22 @@ class Adhesion(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "gain"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "gain"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
+
+    @overload
+    def resolve(self, name: Literal["forcerange"]) -> _t.Float64Array: ...
 
     @overload
     def resolve(self, name: Literal["body"]) -> _builtins.str | Body | None: ...
@@ -3075,10 +3087,10 @@ class AssetSection(_Typed):
             normal: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            refpos: double[3]; no default (unset when absent).
+            refpos: double[3]; default "0 0 0".
             refquat: double[4]; default "1 0 0 0".
             scale: double[3]; default "1 1 1".
-            smoothnormal: bool; no default (unset when absent).
+            smoothnormal: bool; default "false".
             maxhullvert: int; default "-1".
             inertia: one of: convex, legacy, exact, shell; default "legacy".
             builtin: one of: none, sphere, hemisphere, cone, supertorus, supersphere, wedge, plate; no default (unset when absent).
@@ -3140,11 +3152,11 @@ class AssetSection(_Typed):
             file: file; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            inflate: float; no default (unset when absent).
+            inflate: float; default "0".
             vertex: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            group: int; no default (unset when absent); >= 0 and <= 5.
+            group: int; default "0"; >= 0 and <= 5.
         """
 
     @property
@@ -3392,37 +3404,37 @@ class Ballangvel(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballangvel-noise
     """
@@ -3445,16 +3457,19 @@ class Ballangvel(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -3475,37 +3490,37 @@ class Ballquat(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-ballquat-noise
     """
@@ -3528,16 +3543,19 @@ class Ballquat(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
@@ -3922,7 +3940,7 @@ class Body(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -4063,7 +4081,7 @@ class Body(_Typed, _Attachable):
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+            output: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -4198,14 +4216,14 @@ class Body(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``flex``; required.
-            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
             group: int; default "0".
-            dim: int; no default (unset when absent).
+            dim: int; default "2".
             dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            spacing: double[3]; no default (unset when absent).
-            radius: double; default computed by MuJoCo.
+            spacing: double[3]; default "0.02 0.02 0.02".
+            radius: double; default "0.005".
             rigid: bool; default "false".
             mass: double; default "1".
             inertiabox: double; default "0.005".
@@ -4215,14 +4233,14 @@ class Body(_Typed, _Attachable):
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
-            rgba: float[4]; default computed by MuJoCo.
+            rgba: float[4]; default "0.5 0.5 0.5 1".
             flatskin: bool; default "false".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
-            axisangle: double[4]; default "1 0 0 0".
+            axisangle: double[4]; no default (unset when absent).
             xyaxes: double[6]; no default (unset when absent).
-            zaxis: double[3]; default computed by MuJoCo.
-            euler: double[3]; default "0 0 0".
+            zaxis: double[3]; no default (unset when absent).
+            euler: double[3]; no default (unset when absent).
             origin: double[3]; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
@@ -4448,7 +4466,7 @@ class Camera(_Typed):
     """
 
     output: _Attr[tuple[Camout, ...] | None, Camout | Collection[Camout] | None]
-    """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``output``: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
     """
@@ -4558,7 +4576,7 @@ class Camera(_Typed):
     def resolve(self, name: Literal["resolution"]) -> _t.Int32Array: ...
 
     @overload
-    def resolve(self, name: Literal["output"]) -> tuple[Camout, ...] | None: ...
+    def resolve(self, name: Literal["output"]) -> tuple[Camout, ...]: ...
 
     @overload
     def resolve(self, name: Literal["pos", "quat"]) -> _t.Float64Array: ...
@@ -5156,11 +5174,11 @@ class Contact(_Typed):
             condim: int; default "3".
             friction: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
-            solreffriction: double[1..2] (1 to 2 values); no default (unset when absent).
+            solreffriction: double[1..2] (1 to 2 values); default "0 0".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            gap: double; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            gap: double; default "0".
+            margin: double; default "0".
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
             dclass: dm_control's name for ``class_``.
         """
 
@@ -5239,7 +5257,7 @@ class Custom(_Typed):
 
         Args:
             name: name declared in namespace ``numeric``; required.
-            size: int; no default (unset when absent).
+            size: int; default computed by MuJoCo.
             data: double[] (any length); no default (unset when absent).
         """
 
@@ -5735,31 +5753,31 @@ class Dcmotor(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``group``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ctrlrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
     """
@@ -5777,7 +5795,7 @@ class Dcmotor(_Typed):
     """
 
     lengthrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``lengthrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``lengthrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lengthrange
     """
@@ -5789,13 +5807,13 @@ class Dcmotor(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
     """
@@ -5867,37 +5885,37 @@ class Dcmotor(_Typed):
     """
 
     saturation: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``saturation``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
     """
 
     inductance: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``inductance``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
     """
 
     cogging: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``cogging``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
     """
 
     controller: _Attr[_t.Float64Array | None, Reals1To6 | None]
-    """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``controller``: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
     """
 
     thermal: _Attr[_t.Float64Array | None, Reals1To6 | None]
-    """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``thermal``: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
     """
 
     lugre: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``lugre``: double[1..5] (1 to 5 values); default "0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
     """
@@ -5920,22 +5938,25 @@ class Dcmotor(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "resistance"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "lengthrange", "damping", "motorconst", "nominal", "saturation", "inductance", "cogging", "controller", "thermal", "lugre"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "lengthrange", "gear", "damping", "saturation", "inductance", "cogging", "controller", "thermal", "lugre"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user", "motorconst", "nominal"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength", "resistance"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["joint", "jointinparent"]) -> _builtins.str | AnyJoint | None: ...
@@ -6159,7 +6180,7 @@ class Default(_Typed):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -6269,7 +6290,7 @@ class Default(_Typed):
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+            output: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -6360,11 +6381,11 @@ class Default(_Typed):
             condim: int; default "3".
             friction: double[1..5] (1 to 5 values); default "1 1 0.005 0.0001 0.0001".
             solref: double[1..2] (1 to 2 values); default "0.02 1".
-            solreffriction: double[1..2] (1 to 2 values); no default (unset when absent).
+            solreffriction: double[1..2] (1 to 2 values); default "0 0".
             solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            gap: double; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            adhesion: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            gap: double; default "0".
+            margin: double; default "0".
+            adhesion: double; default "0"; in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -6384,9 +6405,9 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality
 
         Args:
-            active: bool; no default (unset when absent).
-            solref: double[1..2] (1 to 2 values); no default (unset when absent).
-            solimp: double[1..5] (1 to 5 values); no default (unset when absent).
+            active: bool; default "true".
+            solref: double[1..2] (1 to 2 values); default "0.02 1".
+            solimp: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
         """
 
     @property
@@ -6423,26 +6444,26 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon
 
         Args:
-            group: int; no default (unset when absent).
+            group: int; default "0".
             limited: one of: false, true, auto; default "auto".
-            range: double[2]; no default (unset when absent).
-            solreflimit: double[1..2] (1 to 2 values); no default (unset when absent).
-            solimplimit: double[1..5] (1 to 5 values); no default (unset when absent).
-            solreffriction: double[1..2] (1 to 2 values); no default (unset when absent).
-            solimpfriction: double[1..5] (1 to 5 values); no default (unset when absent).
-            frictionloss: double; no default (unset when absent).
-            springlength: double[1..2] (1 to 2 values); no default (unset when absent).
-            width: double; no default (unset when absent).
+            range: double[2]; default "0 0".
+            solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
+            solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
+            solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
+            solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
+            frictionloss: double; default "0".
+            springlength: double[1..2] (1 to 2 values); default "-1 -1".
+            width: double; default "0.003".
             material: reference to namespace ``material``; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent).
-            damping: double[1..3] (1 to 3 values); no default (unset when absent).
-            rgba: float[4]; no default (unset when absent).
+            margin: double; default "0".
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0".
+            damping: double[1..3] (1 to 3 values); default "0 0 0".
+            rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
             actuatorfrclimited: one of: false, true, auto; default "auto"; in MuJoCo >= 4.0.0.
-            actuatorfrcrange: double[2]; no default (unset when absent); in MuJoCo >= 4.0.0.
+            actuatorfrcrange: double[2]; default "0 0"; in MuJoCo >= 4.0.0.
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
-            armature: double; no default (unset when absent); in MuJoCo >= 4.0.0.
+            armature: double; default "0"; in MuJoCo >= 4.0.0.
         """
 
     @property
@@ -6502,7 +6523,7 @@ class Default(_Typed):
             armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent).
             actdim: int; default "-1".
-            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+            input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
             velrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             ffrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             inheritrange: double; no default (unset when absent); in MuJoCo >= 3.17.0.
@@ -6733,17 +6754,17 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-orientation
 
         Args:
-            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0"; in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             forcelimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
-            forcerange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kp: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            kv: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            dampratio: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            forcerange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
+            kp: double; default "1"; in MuJoCo >= 3.17.0.
+            kv: double; default "0"; in MuJoCo >= 3.17.0.
+            dampratio: double; default "0"; in MuJoCo >= 3.17.0.
             input: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
 
@@ -6986,15 +7007,15 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-adhesion
 
         Args:
-            group: int; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0".
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
             ctrlrange: double[2]; no default (unset when absent).
             user: double[] (any length); no default (unset when absent).
             forcelimited: one of: false, true, auto; default "auto".
-            forcerange: double[2]; no default (unset when absent).
-            gain: double; no default (unset when absent); >= 0.
+            forcerange: double[2]; default "0 0".
+            gain: double; default "1"; >= 0.
         """
 
     @property
@@ -7032,26 +7053,26 @@ class Default(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-dcmotor
 
         Args:
-            group: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            ctrlrange: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+            group: int; default "0"; in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            ctrlrange: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent); in MuJoCo >= 3.17.0.
             ctrllimited: one of: false, true, auto; default "auto"; in MuJoCo >= 3.17.0.
             gear: double[1..6] (1 to 6 values); default "1 0 0 0 0 0"; in MuJoCo >= 3.17.0.
-            damping: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            damping: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0"; in MuJoCo >= 3.17.0.
             cranklength: double; no default (unset when absent); in MuJoCo >= 3.17.0.
             motorconst: double[1..2] (1 to 2 values); no default (unset when absent); each value > 0; in MuJoCo >= 3.17.0.
             resistance: double; no default (unset when absent); > 0; in MuJoCo >= 3.17.0.
             nominal: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            saturation: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            inductance: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cogging: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            controller: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            thermal: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            lugre: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+            saturation: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
+            inductance: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cogging: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
+            controller: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            thermal: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
+            lugre: double[1..5] (1 to 5 values); default "0 0 0 0 0"; in MuJoCo >= 3.17.0.
             input: any of: pos, vel, ff, voltage; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. Token subset, or the none keyword.
         """
 
@@ -7279,25 +7300,25 @@ class DefaultAdhesion(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-delay
     """
@@ -7321,33 +7342,36 @@ class DefaultAdhesion(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent).
+    """``forcerange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-forcerange
     """
 
     gain: _Attr[_builtins.float | None, _t.Real | None]
-    """``gain``: double; no default (unset when absent); >= 0.
+    """``gain``: double; default "1"; >= 0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-adhesion-gain
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "gain"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "gain"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
+
+    @overload
+    def resolve(self, name: Literal["forcerange"]) -> _t.Float64Array: ...
 
 
 class DefaultCamera(_Typed):
@@ -7383,7 +7407,7 @@ class DefaultCamera(_Typed):
     """
 
     output: _Attr[tuple[Camout, ...] | None, Camout | Collection[Camout] | None]
-    """``output``: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``output``: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-camera-output
     """
@@ -7478,7 +7502,7 @@ class DefaultCamera(_Typed):
     def resolve(self, name: Literal["resolution"]) -> _t.Int32Array: ...
 
     @overload
-    def resolve(self, name: Literal["output"]) -> tuple[Camout, ...] | None: ...
+    def resolve(self, name: Literal["output"]) -> tuple[Camout, ...]: ...
 
     @overload
     def resolve(self, name: Literal["pos", "quat"]) -> _t.Float64Array: ...
@@ -7749,31 +7773,31 @@ class DefaultDcmotor(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``group``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ctrlrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-ctrlrange
     """
@@ -7797,13 +7821,13 @@ class DefaultDcmotor(_Typed):
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0. Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``armature``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-armature
     """
@@ -7833,37 +7857,37 @@ class DefaultDcmotor(_Typed):
     """
 
     saturation: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``saturation``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``saturation``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-saturation
     """
 
     inductance: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``inductance``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``inductance``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-inductance
     """
 
     cogging: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``cogging``: double[1..3] (1 to 3 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``cogging``: double[1..3] (1 to 3 values); default "0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-cogging
     """
 
     controller: _Attr[_t.Float64Array | None, Reals1To6 | None]
-    """``controller``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``controller``: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-controller
     """
 
     thermal: _Attr[_t.Float64Array | None, Reals1To6 | None]
-    """``thermal``: double[1..6] (1 to 6 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``thermal``: double[1..6] (1 to 6 values); default "0 0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-thermal
     """
 
     lugre: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``lugre``: double[1..5] (1 to 5 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``lugre``: double[1..5] (1 to 5 values); default "0 0 0 0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-dcmotor-lugre
     """
@@ -7875,24 +7899,27 @@ class DefaultDcmotor(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "armature", "cranklength", "resistance"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "armature"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "damping", "motorconst", "nominal", "saturation", "inductance", "cogging", "controller", "thermal", "lugre"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "gear", "damping", "saturation", "inductance", "cogging", "controller", "thermal", "lugre"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user", "motorconst", "nominal"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["ctrllimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["gear"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["cranklength", "resistance"]) -> _builtins.float | None: ...
 
     @overload
     def resolve(self, name: Literal["input"]) -> tuple[DcmotorInput, ...] | DcmotorInputAlone | None: ...
@@ -7907,30 +7934,30 @@ class DefaultEquality(_Typed):
     spec: ClassVar[_S]
 
     active: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``active``: bool; no default (unset when absent).
+    """``active``: bool; default "true".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-active
     """
 
     solref: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``solref``: double[1..2] (1 to 2 values); no default (unset when absent).
+    """``solref``: double[1..2] (1 to 2 values); default "0.02 1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solref
     """
 
     solimp: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``solimp``: double[1..5] (1 to 5 values); no default (unset when absent).
+    """``solimp``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-equality-solimp
     """
 
     @overload
-    def resolve(self, name: Literal["active"]) -> _builtins.bool | None:
+    def resolve(self, name: Literal["active"]) -> _builtins.bool:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["solref", "solimp"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["solref", "solimp"]) -> _t.Float64Array: ...
 
 
 class DefaultGeneral(_Typed):
@@ -8038,7 +8065,7 @@ class DefaultGeneral(_Typed):
     """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
-    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
     """
@@ -8187,7 +8214,7 @@ class DefaultGeom(_Typed):
     """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``size``: double[1..3] (1 to 3 values); no default (unset when absent).
+    """``size``: double[1..3] (1 to 3 values); default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
     """
@@ -9286,31 +9313,31 @@ class DefaultOrientation(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``group``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ctrlrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
     """
@@ -9328,25 +9355,25 @@ class DefaultOrientation(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``forcerange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``kp``: double; default "1"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``kv``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
     """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
-    """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``dampratio``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
     """
@@ -9358,18 +9385,21 @@ class DefaultOrientation(_Typed):
     """
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "kp", "kv", "dampratio"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "kp", "kv", "dampratio"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
@@ -9405,7 +9435,7 @@ class DefaultPair(_Typed):
     """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent).
+    """``solreffriction``: double[1..2] (1 to 2 values); default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
     """
@@ -9417,19 +9447,19 @@ class DefaultPair(_Typed):
     """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
-    """``gap``: double; no default (unset when absent).
+    """``gap``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
     """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
-    """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``adhesion``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
     """
@@ -9440,13 +9470,10 @@ class DefaultPair(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["friction", "solref", "solimp"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["friction", "solref", "solreffriction", "solimp"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["solreffriction"]) -> _t.Float64Array | None: ...
-
-    @overload
-    def resolve(self, name: Literal["gap", "margin", "adhesion"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["gap", "margin", "adhesion"]) -> _builtins.float: ...
 
 
 class DefaultPid(_Typed):
@@ -9893,7 +9920,7 @@ class DefaultTendon(_Typed):
     spec: ClassVar[_S]
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-group
     """
@@ -9905,49 +9932,49 @@ class DefaultTendon(_Typed):
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-range
     """
 
     solreflimit: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``solreflimit``: double[1..2] (1 to 2 values); no default (unset when absent).
+    """``solreflimit``: double[1..2] (1 to 2 values); default "0.02 1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreflimit
     """
 
     solimplimit: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``solimplimit``: double[1..5] (1 to 5 values); no default (unset when absent).
+    """``solimplimit``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimplimit
     """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent).
+    """``solreffriction``: double[1..2] (1 to 2 values); default "0.02 1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solreffriction
     """
 
     solimpfriction: _Attr[_t.Float64Array | None, Reals1To5 | None]
-    """``solimpfriction``: double[1..5] (1 to 5 values); no default (unset when absent).
+    """``solimpfriction``: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-solimpfriction
     """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
-    """``frictionloss``: double; no default (unset when absent).
+    """``frictionloss``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-frictionloss
     """
 
     springlength: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``springlength``: double[1..2] (1 to 2 values); no default (unset when absent).
+    """``springlength``: double[1..2] (1 to 2 values); default "-1 -1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-springlength
     """
 
     width: _Attr[_builtins.float | None, _t.Real | None]
-    """``width``: double; no default (unset when absent).
+    """``width``: double; default "0.003".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-width
     """
@@ -9959,25 +9986,25 @@ class DefaultTendon(_Typed):
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-margin
     """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent).
+    """``stiffness``: double[1..3] (1 to 3 values); default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-stiffness
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent).
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-damping
     """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
-    """``rgba``: float[4]; no default (unset when absent).
+    """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-rgba
     """
@@ -9995,7 +10022,7 @@ class DefaultTendon(_Typed):
     """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actuatorfrcrange``: double[2]; no default (unset when absent); in MuJoCo >= 4.0.0.
+    """``actuatorfrcrange``: double[2]; default "0 0"; in MuJoCo >= 4.0.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-actuatorfrcrange
     """
@@ -10007,13 +10034,13 @@ class DefaultTendon(_Typed):
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent); in MuJoCo >= 4.0.0.
+    """``armature``: double; default "0"; in MuJoCo >= 4.0.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#default-tendon-armature
     """
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None:
+    def resolve(self, name: Literal["group"]) -> _builtins.int:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -10021,19 +10048,19 @@ class DefaultTendon(_Typed):
     def resolve(self, name: Literal["limited", "actuatorfrclimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["range", "solreflimit", "solimplimit", "solreffriction", "solimpfriction", "springlength", "stiffness", "damping", "user", "actuatorfrcrange"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["range", "solreflimit", "solimplimit", "solreffriction", "solimpfriction", "springlength", "stiffness", "damping", "actuatorfrcrange"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["frictionloss", "width", "margin", "armature"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["frictionloss", "width", "margin", "springyield", "armature"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
 
     @overload
-    def resolve(self, name: Literal["rgba"]) -> _t.Float32Array | None: ...
+    def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["springyield"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class DefaultTexture(_Typed):
@@ -10332,12 +10359,12 @@ class Deformable(_Typed):
 
         Args:
             name: name declared in namespace ``flex``; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             dim: int; default "2".
             radius: double; default "0.005".
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            flatskin: bool; no default (unset when absent).
+            flatskin: bool; default "false".
             body: string; required. Space-separated body names.
             vertex: double[] (any length); no default (unset when absent).
             element: int[] (any length); required.
@@ -10374,11 +10401,11 @@ class Deformable(_Typed):
             file: file; no default (unset when absent).
             material: reference to namespace ``material``; no default (unset when absent).
             rgba: float[4]; default "0.5 0.5 0.5 1".
-            inflate: float; no default (unset when absent).
+            inflate: float; default "0".
             vertex: float[] (any length); no default (unset when absent).
             texcoord: float[] (any length); no default (unset when absent).
             face: int[] (any length); no default (unset when absent).
-            group: int; no default (unset when absent); >= 0 and <= 5.
+            group: int; default "0"; >= 0 and <= 5.
         """
 
     @overload
@@ -10427,37 +10454,37 @@ class Distance(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-distance-noise
     """
@@ -10498,16 +10525,19 @@ class Distance(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["geom1", "geom2"]) -> _builtins.str | Geom | None: ...
@@ -11391,7 +11421,7 @@ class Fixed(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-group
     """
@@ -11409,13 +11439,13 @@ class Fixed(_Typed):
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-range
     """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actuatorfrcrange``: double[2]; no default (unset when absent).
+    """``actuatorfrcrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-actuatorfrcrange
     """
@@ -11445,7 +11475,7 @@ class Fixed(_Typed):
     """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
-    """``frictionloss``: double; no default (unset when absent).
+    """``frictionloss``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-frictionloss
     """
@@ -11457,25 +11487,25 @@ class Fixed(_Typed):
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-margin
     """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
+    """``stiffness``: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-stiffness
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent).
+    """``armature``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-fixed-armature
     """
@@ -11546,22 +11576,19 @@ class Fixed(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["limited", "actuatorfrclimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["range", "actuatorfrcrange", "stiffness", "damping", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["range", "actuatorfrcrange", "solreflimit", "solimplimit", "solreffriction", "solimpfriction", "springlength", "stiffness", "damping"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["solreflimit", "solimplimit", "solreffriction", "solimpfriction", "springlength"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["frictionloss", "margin", "armature", "springyield"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["frictionloss", "margin", "armature"]) -> _builtins.float | None: ...
-
-    @overload
-    def resolve(self, name: Literal["springyield"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class FixedJoint(_Typed):
@@ -11789,7 +11816,7 @@ class Flex(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-group
     """
@@ -11819,7 +11846,7 @@ class Flex(_Typed):
     """
 
     flatskin: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``flatskin``: bool; no default (unset when absent).
+    """``flatskin``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-flex-flatskin
     """
@@ -11936,8 +11963,8 @@ class Flex(_Typed):
         Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge
 
         Args:
-            stiffness: double; no default (unset when absent).
-            damping: double; no default (unset when absent).
+            stiffness: double; default "0".
+            damping: double; default "0".
         """
 
     @property
@@ -12016,10 +12043,7 @@ class Flex(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
-
-    @overload
-    def resolve(self, name: Literal["dim"]) -> _builtins.int: ...
+    def resolve(self, name: Literal["group", "dim"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["radius"]) -> _builtins.float: ...
@@ -12028,7 +12052,7 @@ class Flex(_Typed):
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["flatskin"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["flatskin"]) -> _builtins.bool: ...
 
     @overload
     def resolve(self, name: Literal["vertex", "nodecoord"]) -> _t.Float64Array | None: ...
@@ -12055,18 +12079,18 @@ class FlexEdge(_Typed):
     spec: ClassVar[_S]
 
     stiffness: _Attr[_builtins.float | None, _t.Real | None]
-    """``stiffness``: double; no default (unset when absent).
+    """``stiffness``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-stiffness
     """
 
     damping: _Attr[_builtins.float | None, _t.Real | None]
-    """``damping``: double; no default (unset when absent).
+    """``damping``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#flex-edge-damping
     """
 
-    def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float | None:
+    def resolve(self, name: Literal["stiffness", "damping"]) -> _builtins.float:
         """The value MuJoCo uses for the attribute: set here, else from the default classes
         that apply, else the grammar's default."""
 
@@ -12086,7 +12110,7 @@ class Flexcomp(_Typed):
     """
 
     type: _Attr[Fcomp | None, Fcomp | None]
-    """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+    """``type``: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-type
     """
@@ -12098,7 +12122,7 @@ class Flexcomp(_Typed):
     """
 
     dim: _Attr[_builtins.int | None, _t.Integer | None]
-    """``dim``: int; no default (unset when absent).
+    """``dim``: int; default "2".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-dim
     """
@@ -12122,13 +12146,13 @@ class Flexcomp(_Typed):
     """
 
     spacing: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``spacing``: double[3]; no default (unset when absent).
+    """``spacing``: double[3]; default "0.02 0.02 0.02".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-spacing
     """
 
     radius: _Attr[_builtins.float | None, _t.Real | None]
-    """``radius``: double; default computed by MuJoCo.
+    """``radius``: double; default "0.005".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-radius
     """
@@ -12188,7 +12212,7 @@ class Flexcomp(_Typed):
     """
 
     rgba: _Attr[_t.Float32Array | None, Reals4 | None]
-    """``rgba``: float[4]; default computed by MuJoCo.
+    """``rgba``: float[4]; default "0.5 0.5 0.5 1".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-rgba
     """
@@ -12212,7 +12236,7 @@ class Flexcomp(_Typed):
     """
 
     axisangle: _Attr[_t.Float64Array | None, Reals4 | None]
-    """``axisangle``: double[4]; default "1 0 0 0".
+    """``axisangle``: double[4]; no default (unset when absent).
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-axisangle
     """
@@ -12224,13 +12248,13 @@ class Flexcomp(_Typed):
     """
 
     zaxis: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``zaxis``: double[3]; default computed by MuJoCo.
+    """``zaxis``: double[3]; no default (unset when absent).
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-zaxis
     """
 
     euler: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``euler``: double[3]; default "0 0 0".
+    """``euler``: double[3]; no default (unset when absent).
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-flexcomp-euler
     """
@@ -12443,13 +12467,10 @@ class Flexcomp(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["type"]) -> Fcomp | None: ...
+    def resolve(self, name: Literal["type"]) -> Fcomp: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
-
-    @overload
-    def resolve(self, name: Literal["dim"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "dim"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["dof"]) -> FDof: ...
@@ -12458,25 +12479,22 @@ class Flexcomp(_Typed):
     def resolve(self, name: Literal["count", "cellcount"]) -> _t.Int32Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["spacing", "point", "element", "texcoord", "xyaxes", "zaxis", "origin"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["spacing", "scale", "pos", "quat"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["radius"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["radius", "mass", "inertiabox"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["rigid", "flatskin"]) -> _builtins.bool: ...
 
     @overload
-    def resolve(self, name: Literal["mass", "inertiabox"]) -> _builtins.float: ...
-
-    @overload
-    def resolve(self, name: Literal["scale", "pos", "quat", "axisangle", "euler"]) -> _t.Float64Array: ...
-
-    @overload
     def resolve(self, name: Literal["file"]) -> _builtins.str | _t.Asset | None: ...
 
     @overload
-    def resolve(self, name: Literal["rgba"]) -> _t.Float32Array | None: ...
+    def resolve(self, name: Literal["point", "element", "texcoord", "axisangle", "xyaxes", "zaxis", "euler", "origin"]) -> _t.Float64Array | None: ...
+
+    @overload
+    def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
 
     @overload
     def resolve(self, name: Literal["mesh"]) -> _builtins.str | Mesh | None: ...
@@ -13164,7 +13182,7 @@ class Frame(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -13305,7 +13323,7 @@ class Frame(_Typed, _Attachable):
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+            output: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -13440,14 +13458,14 @@ class Frame(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``flex``; required.
-            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
             group: int; default "0".
-            dim: int; no default (unset when absent).
+            dim: int; default "2".
             dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            spacing: double[3]; no default (unset when absent).
-            radius: double; default computed by MuJoCo.
+            spacing: double[3]; default "0.02 0.02 0.02".
+            radius: double; default "0.005".
             rigid: bool; default "false".
             mass: double; default "1".
             inertiabox: double; default "0.005".
@@ -13457,14 +13475,14 @@ class Frame(_Typed, _Attachable):
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
-            rgba: float[4]; default computed by MuJoCo.
+            rgba: float[4]; default "0.5 0.5 0.5 1".
             flatskin: bool; default "false".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
-            axisangle: double[4]; default "1 0 0 0".
+            axisangle: double[4]; no default (unset when absent).
             xyaxes: double[6]; no default (unset when absent).
-            zaxis: double[3]; default computed by MuJoCo.
-            euler: double[3]; default "0 0 0".
+            zaxis: double[3]; no default (unset when absent).
+            euler: double[3]; no default (unset when absent).
             origin: double[3]; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """
@@ -14578,37 +14596,37 @@ class Fromto(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-fromto-noise
     """
@@ -14649,16 +14667,19 @@ class Fromto(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["geom1", "geom2"]) -> _builtins.str | Geom | None: ...
@@ -14838,7 +14859,7 @@ class General(_Typed):
     """
 
     input: _Attr[tuple[Inputbit, ...] | InputbitAlone | None, Inputbit | Collection[Inputbit] | InputbitAlone | None]
-    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; no default (unset when absent); in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
+    """``input``: any of: pos, vel, ff, voltage, pressure; or alone one of: expmap, quat, none; default computed by MuJoCo; in MuJoCo >= 3.17.0. So3 chart keyword, or servo token subset.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-general-input
     """
@@ -15020,7 +15041,7 @@ class Geom(_Typed):
     """
 
     size: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``size``: double[1..3] (1 to 3 values); no default (unset when absent).
+    """``size``: double[1..3] (1 to 3 values); default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-geom-size
     """
@@ -17550,7 +17571,7 @@ class Mesh(_Typed):
     """
 
     refpos: _Attr[_t.Float64Array | None, Reals3 | None]
-    """``refpos``: double[3]; no default (unset when absent).
+    """``refpos``: double[3]; default "0 0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-refpos
     """
@@ -17568,7 +17589,7 @@ class Mesh(_Typed):
     """
 
     smoothnormal: _Attr[_builtins.bool | None, _builtins.bool | None]
-    """``smoothnormal``: bool; no default (unset when absent).
+    """``smoothnormal``: bool; default "false".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#asset-mesh-smoothnormal
     """
@@ -17666,13 +17687,10 @@ class Mesh(_Typed):
     def resolve(self, name: Literal["face"]) -> _t.Int32Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["refpos", "params"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["refpos", "refquat", "scale"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["refquat", "scale"]) -> _t.Float64Array: ...
-
-    @overload
-    def resolve(self, name: Literal["smoothnormal"]) -> _builtins.bool | None: ...
+    def resolve(self, name: Literal["smoothnormal"]) -> _builtins.bool: ...
 
     @overload
     def resolve(self, name: Literal["maxhullvert"]) -> _builtins.int: ...
@@ -17682,6 +17700,9 @@ class Mesh(_Typed):
 
     @overload
     def resolve(self, name: Literal["builtin"]) -> MeshBuiltin | None: ...
+
+    @overload
+    def resolve(self, name: Literal["params"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
@@ -18161,37 +18182,37 @@ class Normal(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-normal-noise
     """
@@ -18232,16 +18253,19 @@ class Normal(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["geom1", "geom2"]) -> _builtins.str | Geom | None: ...
@@ -18265,7 +18289,7 @@ class Numeric(_Typed):
     """
 
     size: _Attr[_builtins.int | None, _t.Integer | None]
-    """``size``: int; no default (unset when absent).
+    """``size``: int; default computed by MuJoCo.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#custom-numeric-size
     """
@@ -18602,31 +18626,31 @@ class Orientation(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``group``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-group
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-delay
     """
 
     ctrlrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``ctrlrange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``ctrlrange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-ctrlrange
     """
@@ -18644,7 +18668,7 @@ class Orientation(_Typed):
     """
 
     forcerange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``forcerange``: double[2]; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``forcerange``: double[2]; default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-forcerange
     """
@@ -18668,19 +18692,19 @@ class Orientation(_Typed):
     """
 
     kp: _Attr[_builtins.float | None, _t.Real | None]
-    """``kp``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``kp``: double; default "1"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kp
     """
 
     kv: _Attr[_builtins.float | None, _t.Real | None]
-    """``kv``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``kv``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-kv
     """
 
     dampratio: _Attr[_builtins.float | None, _t.Real | None]
-    """``dampratio``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``dampratio``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#actuator-orientation-dampratio
     """
@@ -18703,16 +18727,19 @@ class Orientation(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group", "nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "kp", "kv", "dampratio"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "kp", "kv", "dampratio"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["ctrlrange", "user", "forcerange"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["ctrlrange", "forcerange"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["forcelimited"]) -> FalseTrueAuto: ...
@@ -18778,7 +18805,7 @@ class Pair(_Typed):
     """
 
     solreffriction: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``solreffriction``: double[1..2] (1 to 2 values); no default (unset when absent).
+    """``solreffriction``: double[1..2] (1 to 2 values); default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-solreffriction
     """
@@ -18790,19 +18817,19 @@ class Pair(_Typed):
     """
 
     gap: _Attr[_builtins.float | None, _t.Real | None]
-    """``gap``: double; no default (unset when absent).
+    """``gap``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-gap
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-margin
     """
 
     adhesion: _Attr[_builtins.float | None, _t.Real | None]
-    """``adhesion``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``adhesion``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#contact-pair-adhesion
     """
@@ -18825,13 +18852,10 @@ class Pair(_Typed):
     def resolve(self, name: Literal["condim"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["friction", "solref", "solimp"]) -> _t.Float64Array: ...
+    def resolve(self, name: Literal["friction", "solref", "solreffriction", "solimp"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["solreffriction"]) -> _t.Float64Array | None: ...
-
-    @overload
-    def resolve(self, name: Literal["gap", "margin", "adhesion"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["gap", "margin", "adhesion"]) -> _builtins.float: ...
 
 
 class Pid(_Typed):
@@ -19494,37 +19518,37 @@ class Rangefinder(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-cutoff
     """
 
     noise: _Attr[_builtins.float | None, _t.Real | None]
-    """``noise``: double; no default (unset when absent).
+    """``noise``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-noise
     """
@@ -19548,7 +19572,7 @@ class Rangefinder(_Typed):
     """
 
     data: _Attr[tuple[RayData, ...] | None, RayData | Collection[RayData] | None]
-    """``data``: any of: dist, dir, origin, point, normal, depth; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``data``: any of: dist, dir, origin, point, normal, depth; default "dist"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-rangefinder-data
     """
@@ -19559,16 +19583,19 @@ class Rangefinder(_Typed):
         that apply, else the grammar's default."""
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff", "noise"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
     @overload
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
@@ -19577,7 +19604,7 @@ class Rangefinder(_Typed):
     def resolve(self, name: Literal["camera"]) -> _builtins.str | Camera | None: ...
 
     @overload
-    def resolve(self, name: Literal["data"]) -> tuple[RayData, ...] | None: ...
+    def resolve(self, name: Literal["data"]) -> tuple[RayData, ...]: ...
 
 
 class Replicate(_Typed, _Attachable):
@@ -19890,7 +19917,7 @@ class Replicate(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -20031,7 +20058,7 @@ class Replicate(_Typed, _Attachable):
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+            output: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -20792,16 +20819,16 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
             camera: reference to namespace ``camera``; no default (unset when absent); in MuJoCo >= 3.17.0.
-            data: any of: dist, dir, origin, point, normal, depth; no default (unset when absent); in MuJoCo >= 3.17.0.
+            data: any of: dist, dir, origin, point, normal, depth; default "dist"; in MuJoCo >= 3.17.0.
         """
 
     @property
@@ -20954,12 +20981,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             actuator: reference to namespace ``actuator``; required.
         """
@@ -20986,12 +21013,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             actuator: reference to namespace ``actuator``; required.
         """
@@ -21018,12 +21045,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             actuator: reference to namespace ``actuator``; required.
         """
@@ -21114,12 +21141,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21146,12 +21173,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             joint: reference to namespace ``joint``; required.
         """
@@ -21841,12 +21868,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             geom1: reference to namespace ``geom``; no default (unset when absent).
             geom2: reference to namespace ``geom``; no default (unset when absent).
@@ -21879,12 +21906,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             geom1: reference to namespace ``geom``; no default (unset when absent).
             geom2: reference to namespace ``geom``; no default (unset when absent).
@@ -21917,12 +21944,12 @@ class Sensor(_Typed):
 
         Args:
             name: name declared in namespace ``sensor``; no default (unset when absent).
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent).
-            noise: double; no default (unset when absent).
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0".
+            noise: double; default "0".
             user: double[] (any length); no default (unset when absent).
             geom1: reference to namespace ``geom``; no default (unset when absent).
             geom2: reference to namespace ``geom``; no default (unset when absent).
@@ -21976,7 +22003,7 @@ class Sensor(_Typed):
             subtree2: reference to namespace ``body``; no default (unset when absent).
             site: reference to namespace ``site``; no default (unset when absent).
             num: int; default "1"; > 0.
-            data: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).
+            data: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; default "found".
             reduce: one of: none, mindist, maxforce, netforce; default "none".
         """
 
@@ -22094,11 +22121,11 @@ class Sensor(_Typed):
             name: name declared in namespace ``sensor``; no default (unset when absent).
             geom: reference to namespace ``geom``; required.
             mesh: reference to namespace ``mesh``; required.
-            nsample: int; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interp: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
-            delay: double; no default (unset when absent); in MuJoCo >= 3.17.0.
-            interval: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
-            cutoff: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+            nsample: int; default "0"; in MuJoCo >= 3.17.0.
+            interp: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
+            delay: double; default "0"; in MuJoCo >= 3.17.0.
+            interval: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
+            cutoff: double; default "0"; in MuJoCo >= 3.17.0.
             user: double[] (any length); no default (unset when absent).
         """
 
@@ -22158,7 +22185,7 @@ class Sensor(_Typed):
             name: name declared in namespace ``sensor``; no default (unset when absent).
             plugin: string; no default (unset when absent).
             instance: reference to namespace ``instance``; no default (unset when absent).
-            cutoff: double; no default (unset when absent).
+            cutoff: double; default "0".
             objtype: string; no default (unset when absent).
             objname: reference to the element ``objtype`` names; no default (unset when absent).
             reftype: string; no default (unset when absent).
@@ -22584,7 +22611,7 @@ class SensorContact(_Typed):
     """
 
     data: _Attr[tuple[ConData, ...] | None, ConData | Collection[ConData] | None]
-    """``data``: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; no default (unset when absent).
+    """``data``: any of: found, force, torque, dist, pos, normal, tangent, linvel, angvel; default "found".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-contact-data
     """
@@ -22625,7 +22652,7 @@ class SensorContact(_Typed):
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
 
     @overload
-    def resolve(self, name: Literal["data"]) -> tuple[ConData, ...] | None: ...
+    def resolve(self, name: Literal["data"]) -> tuple[ConData, ...]: ...
 
     @overload
     def resolve(self, name: Literal["reduce"]) -> Reduce: ...
@@ -22658,7 +22685,7 @@ class SensorPlugin(_Typed):
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent).
+    """``cutoff``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-plugin-cutoff
     """
@@ -22744,7 +22771,7 @@ class SensorPlugin(_Typed):
     def resolve(self, name: Literal["instance"]) -> _builtins.str | Instance | None: ...
 
     @overload
-    def resolve(self, name: Literal["cutoff"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["cutoff"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["objname", "refname"]) -> AnyTarget | None: ...
@@ -23024,7 +23051,7 @@ class Skin(_Typed):
     """
 
     inflate: _Attr[_builtins.float | None, _t.Real | None]
-    """``inflate``: float; no default (unset when absent).
+    """``inflate``: float; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-inflate
     """
@@ -23048,7 +23075,7 @@ class Skin(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent); >= 0 and <= 5.
+    """``group``: int; default "0"; >= 0 and <= 5.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#deformable-skin-group
     """
@@ -23116,7 +23143,7 @@ class Skin(_Typed):
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
 
     @overload
-    def resolve(self, name: Literal["inflate"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["inflate"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["vertex", "texcoord"]) -> _t.Float32Array | None: ...
@@ -23125,7 +23152,7 @@ class Skin(_Typed):
     def resolve(self, name: Literal["face"]) -> _t.Int32Array | None: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
 
 class Spatial(_Typed):
@@ -23149,7 +23176,7 @@ class Spatial(_Typed):
     """
 
     group: _Attr[_builtins.int | None, _t.Integer | None]
-    """``group``: int; no default (unset when absent).
+    """``group``: int; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-group
     """
@@ -23167,13 +23194,13 @@ class Spatial(_Typed):
     """
 
     range: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``range``: double[2]; no default (unset when absent).
+    """``range``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-range
     """
 
     actuatorfrcrange: _Attr[_t.Float64Array | None, Reals2 | None]
-    """``actuatorfrcrange``: double[2]; no default (unset when absent).
+    """``actuatorfrcrange``: double[2]; default "0 0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-actuatorfrcrange
     """
@@ -23203,7 +23230,7 @@ class Spatial(_Typed):
     """
 
     frictionloss: _Attr[_builtins.float | None, _t.Real | None]
-    """``frictionloss``: double; no default (unset when absent).
+    """``frictionloss``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-frictionloss
     """
@@ -23227,25 +23254,25 @@ class Spatial(_Typed):
     """
 
     margin: _Attr[_builtins.float | None, _t.Real | None]
-    """``margin``: double; no default (unset when absent).
+    """``margin``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-margin
     """
 
     stiffness: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``stiffness``: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
+    """``stiffness``: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-stiffness
     """
 
     damping: _Attr[_t.Float64Array | None, Reals1To3 | None]
-    """``damping``: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
+    """``damping``: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-damping
     """
 
     armature: _Attr[_builtins.float | None, _t.Real | None]
-    """``armature``: double; no default (unset when absent).
+    """``armature``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial-armature
     """
@@ -23366,28 +23393,25 @@ class Spatial(_Typed):
     def resolve(self, name: Literal["class_"]) -> _builtins.str | Default | None: ...
 
     @overload
-    def resolve(self, name: Literal["group"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["group"]) -> _builtins.int: ...
 
     @overload
     def resolve(self, name: Literal["limited", "actuatorfrclimited"]) -> FalseTrueAuto: ...
 
     @overload
-    def resolve(self, name: Literal["range", "actuatorfrcrange", "stiffness", "damping", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["range", "actuatorfrcrange", "solreflimit", "solimplimit", "solreffriction", "solimpfriction", "springlength", "stiffness", "damping"]) -> _t.Float64Array: ...
 
     @overload
-    def resolve(self, name: Literal["solreflimit", "solimplimit", "solreffriction", "solimpfriction", "springlength"]) -> _t.Float64Array: ...
-
-    @overload
-    def resolve(self, name: Literal["frictionloss", "margin", "armature"]) -> _builtins.float | None: ...
-
-    @overload
-    def resolve(self, name: Literal["width", "springyield"]) -> _builtins.float: ...
+    def resolve(self, name: Literal["frictionloss", "width", "margin", "armature", "springyield"]) -> _builtins.float: ...
 
     @overload
     def resolve(self, name: Literal["material"]) -> _builtins.str | Material | None: ...
 
     @overload
     def resolve(self, name: Literal["rgba"]) -> _t.Float32Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class SpatialGeom(_Typed):
@@ -23770,31 +23794,31 @@ class Tactile(_Typed):
     """
 
     nsample: _Attr[_builtins.int | None, _t.Integer | None]
-    """``nsample``: int; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``nsample``: int; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-nsample
     """
 
     interp: _Attr[Interp | None, Interp | None]
-    """``interp``: one of: zoh, linear, cubic; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interp``: one of: zoh, linear, cubic; default "zoh"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interp
     """
 
     delay: _Attr[_builtins.float | None, _t.Real | None]
-    """``delay``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``delay``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-delay
     """
 
     interval: _Attr[_t.Float64Array | None, Reals1To2 | None]
-    """``interval``: double[1..2] (1 to 2 values); no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``interval``: double[1..2] (1 to 2 values); default "0 0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-interval
     """
 
     cutoff: _Attr[_builtins.float | None, _t.Real | None]
-    """``cutoff``: double; no default (unset when absent); in MuJoCo >= 3.17.0.
+    """``cutoff``: double; default "0"; in MuJoCo >= 3.17.0.
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#sensor-tactile-cutoff
     """
@@ -23817,16 +23841,19 @@ class Tactile(_Typed):
     def resolve(self, name: Literal["mesh"]) -> _builtins.str | Mesh | None: ...
 
     @overload
-    def resolve(self, name: Literal["nsample"]) -> _builtins.int | None: ...
+    def resolve(self, name: Literal["nsample"]) -> _builtins.int: ...
 
     @overload
-    def resolve(self, name: Literal["interp"]) -> Interp | None: ...
+    def resolve(self, name: Literal["interp"]) -> Interp: ...
 
     @overload
-    def resolve(self, name: Literal["delay", "cutoff"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["delay", "cutoff"]) -> _builtins.float: ...
 
     @overload
-    def resolve(self, name: Literal["interval", "user"]) -> _t.Float64Array | None: ...
+    def resolve(self, name: Literal["interval"]) -> _t.Float64Array: ...
+
+    @overload
+    def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
 class Tendon(_Typed):
@@ -23874,23 +23901,23 @@ class Tendon(_Typed):
         Args:
             name: name declared in namespace ``tendon``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             limited: one of: false, true, auto; default "auto".
             actuatorfrclimited: one of: false, true, auto; default "auto".
-            range: double[2]; no default (unset when absent).
-            actuatorfrcrange: double[2]; no default (unset when absent).
+            range: double[2]; default "0 0".
+            actuatorfrcrange: double[2]; default "0 0".
             solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
             solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
             solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            frictionloss: double; no default (unset when absent).
+            frictionloss: double; default "0".
             springlength: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both.
             width: double; default "0.003".
             material: reference to namespace ``material``; no default (unset when absent).
-            margin: double; no default (unset when absent).
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            margin: double; default "0".
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
+            damping: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0".
             rgba: float[4]; default "0.5 0.5 0.5 1".
             user: double[] (any length); no default (unset when absent).
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
@@ -23931,21 +23958,21 @@ class Tendon(_Typed):
         Args:
             name: name declared in namespace ``tendon``; no default (unset when absent).
             class_: reference to namespace ``default``; no default (unset when absent).
-            group: int; no default (unset when absent).
+            group: int; default "0".
             limited: one of: false, true, auto; default "auto".
             actuatorfrclimited: one of: false, true, auto; default "auto".
-            range: double[2]; no default (unset when absent).
-            actuatorfrcrange: double[2]; no default (unset when absent).
+            range: double[2]; default "0 0".
+            actuatorfrcrange: double[2]; default "0 0".
             solreflimit: double[1..2] (1 to 2 values); default "0.02 1".
             solimplimit: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
             solreffriction: double[1..2] (1 to 2 values); default "0.02 1".
             solimpfriction: double[1..5] (1 to 5 values); default "0.9 0.95 0.001 0.5 2".
-            frictionloss: double; no default (unset when absent).
+            frictionloss: double; default "0".
             springlength: double[1..2] (1 to 2 values); default "-1 -1". One value - copied to both.
-            margin: double; no default (unset when absent).
-            stiffness: double[1..3] (1 to 3 values); no default (unset when absent). Spring polynomial, 1+mjNPOLY coefficients.
-            damping: double[1..3] (1 to 3 values); no default (unset when absent). Damper polynomial, 1+mjNPOLY coefficients.
-            armature: double; no default (unset when absent).
+            margin: double; default "0".
+            stiffness: double[1..3] (1 to 3 values); default "0 0 0". Spring polynomial, 1+mjNPOLY coefficients.
+            damping: double[1..3] (1 to 3 values); default "0 0 0". Damper polynomial, 1+mjNPOLY coefficients.
+            armature: double; default "0".
             user: double[] (any length); no default (unset when absent).
             springyield: double; default "0"; in MuJoCo >= 4.0.0.
             dclass: dm_control's name for ``class_``.
@@ -24938,7 +24965,7 @@ class Tuple(_Typed):
         Args:
             objtype: string; required.
             objname: reference to the element ``objtype`` names; required.
-            prm: double; no default (unset when absent).
+            prm: double; default "0".
         """
 
     @overload
@@ -24991,7 +25018,7 @@ class TupleElement(_Typed):
     """
 
     prm: _Attr[_builtins.float | None, _t.Real | None]
-    """``prm``: double; no default (unset when absent).
+    """``prm``: double; default "0".
 
     https://mujoco.readthedocs.io/en/stable/XMLreference.html#tuple-element-prm
     """
@@ -25005,7 +25032,7 @@ class TupleElement(_Typed):
     def resolve(self, name: Literal["objname"]) -> AnyTarget | None: ...
 
     @overload
-    def resolve(self, name: Literal["prm"]) -> _builtins.float | None: ...
+    def resolve(self, name: Literal["prm"]) -> _builtins.float: ...
 
 
 class User(_Typed):
@@ -25969,7 +25996,7 @@ class Worldbody(_Typed, _Attachable):
             condim: int; default "3".
             group: int; default "0".
             priority: int; default "0".
-            size: double[1..3] (1 to 3 values); no default (unset when absent).
+            size: double[1..3] (1 to 3 values); default computed by MuJoCo.
             material: reference to namespace ``material``; no default (unset when absent).
             friction: double[1..3] (1 to 3 values); default "1 0.005 0.0001".
             mass: double; default computed by MuJoCo.
@@ -26110,7 +26137,7 @@ class Worldbody(_Typed, _Attachable):
             fovy: double; default "45".
             ipd: double; default "0.068".
             resolution: int[2]; default "1 1".
-            output: any of: rgb, depth, distance, normal, segmentation; no default (unset when absent); in MuJoCo >= 3.17.0.
+            output: any of: rgb, depth, distance, normal, segmentation; default "rgb"; in MuJoCo >= 3.17.0.
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
             axisangle: double[4]; no default (unset when absent).
@@ -26245,14 +26272,14 @@ class Worldbody(_Typed, _Attachable):
 
         Args:
             name: name declared in namespace ``flex``; required.
-            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; no default (unset when absent).
+            type: one of: grid, box, cylinder, ellipsoid, square, disc, circle, mesh, gmsh, direct; default "grid".
             group: int; default "0".
-            dim: int; no default (unset when absent).
+            dim: int; default "2".
             dof: one of: full, radial, trilinear, quadratic, 2d; default "full".
             count: int[3]; no default (unset when absent).
             cellcount: int[3]; no default (unset when absent); in MuJoCo >= 3.17.0.
-            spacing: double[3]; no default (unset when absent).
-            radius: double; default computed by MuJoCo.
+            spacing: double[3]; default "0.02 0.02 0.02".
+            radius: double; default "0.005".
             rigid: bool; default "false".
             mass: double; default "1".
             inertiabox: double; default "0.005".
@@ -26262,14 +26289,14 @@ class Worldbody(_Typed, _Attachable):
             element: double[] (any length); no default (unset when absent).
             texcoord: double[] (any length); no default (unset when absent).
             material: string; no default (unset when absent); in MuJoCo 3.3.7, 3.17.0: ref<material>.
-            rgba: float[4]; default computed by MuJoCo.
+            rgba: float[4]; default "0.5 0.5 0.5 1".
             flatskin: bool; default "false".
             pos: double[3]; default "0 0 0".
             quat: double[4]; default "1 0 0 0".
-            axisangle: double[4]; default "1 0 0 0".
+            axisangle: double[4]; no default (unset when absent).
             xyaxes: double[6]; no default (unset when absent).
-            zaxis: double[3]; default computed by MuJoCo.
-            euler: double[3]; default "0 0 0".
+            zaxis: double[3]; no default (unset when absent).
+            euler: double[3]; no default (unset when absent).
             origin: double[3]; no default (unset when absent).
             mesh: reference to namespace ``mesh``; no default (unset when absent); in MuJoCo >= 3.17.0.
         """

@@ -14,7 +14,7 @@ import dataclasses
 
 import pytest
 
-from codegen import drift, ir, probe
+from codegen import drift, ir, probe, unset
 from codegen.facts import load_facts
 from codegen.reconcile import sync
 from codegen.wheel import Wheel, read_wheel
@@ -240,7 +240,8 @@ def test_a_value_mujoco_computes_is_recorded_with_why(schema: ir.Schema, wheel: 
         schema.elements[row].attribute("mass").computed = None
     found = check(schema, wheel, {"geom"})
     assert lines(found) == ["geom@mass default: (none) -> (computed)"]
-    assert schema.elements["geom"].attribute("mass").computed == drift.COMPUTED
+    assert schema.elements["geom"].attribute("mass").computed == \
+        unset.computed()[("geom", "mass")]  # schema/unset.toml says how
     assert schema.elements["geom"].attribute("mass").default is None
 
 
