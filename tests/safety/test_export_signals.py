@@ -20,6 +20,9 @@ MESHES = 30  # and the model's XML: 31 renames
 
 CHILD = """
 import os, signal, sys
+# Ctrl-C raises KeyboardInterrupt, as in a process started from a shell (one started by a
+# pytest-xdist worker may inherit SIGINT ignored, and then the export rightly goes on)
+signal.signal(signal.SIGINT, signal.default_int_handler)
 sys.path[:0] = [{tests!r}]
 from test_export_signals import model
 import typed_mjcf as mjcf
