@@ -355,3 +355,44 @@ def test_physics_compiles_within_the_limits_and_bounds_its_offscreen_buffer() ->
         Physics.from_mjcf_model(mjcf.from_xml_string("<mujoco/>")).render(
             8, 8, limits=mjcf.RenderLimits(max_offscreen_pixels=640 * 480 - 1))
 
+
+def test_the_render_command_raises_a_limit_with_limit(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "m.xml").write_text('<mujoco><option timestep="0.001"/></mujoco>')
+    command = ["render", str(tmp_path / "m.xml"), "-o", str(tmp_path / "m.png"), "--size",
+               "8x8", "--time", "0.01"]
+    assert main([*command, "--limit", "max_steps=9"]) == 2
+    assert "is 10 steps, more than the limit of 9" in capsys.readouterr().err
+    assert main([*command, "--limit", "max_steps=10", "--limit",
+                 "max-texture-pixels=1_000"]) == 0
+    assert (tmp_path / "m.png").read_bytes().startswith(b"\x89PNG")
+
+
+@pytest.mark.parametrize(("given", "said"), [
+    ("max_steps", "'max_steps': expected NAME=VALUE"),
+    ("max_stepz=3", ("'max_stepz' is not a limit; limits: max_texture_pixels, "
+                     "max_hfield_samples, max_mesh_vertices, max_flex_points, "
+                     "max_replicated_elements, max_steps, max_offscreen_pixels")),
+    ("max_steps=lots", "'max_steps=lots': 'lots' is not a whole number"),
+    ("max_steps=0", "'max_steps=0': RenderLimits.max_steps must be at least 1")])
+def test_a_wrong_limit_is_a_usage_error(given: str, said: str, tmp_path: Path,
+                                        capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(SystemExit) as info:
+        main(["render", str(tmp_path / "m.xml"), "-o", str(tmp_path / "m.png"),
+              "--limit", given])
+    assert info.value.code == 2
+    assert said in capsys.readouterr().err
+
+
+def test_check_compile_raises_a_compile_limit_with_limit(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "m.xml").write_text(
+        '<mujoco><asset><texture name="t" type="2d" builtin="flat" width="10" height="10"/>'
+        '</asset></mujoco>')
+    command = ["check", "--compile", str(tmp_path / "m.xml")]
+    assert main([*command, "--limit", "max_texture_pixels=99"]) == 1
+    assert "makes 100 pixels in the model, more than the limit of 99" in capsys.readouterr().out
+    assert main([*command, "--limit", "max_texture_pixels=100"]) == 0
+    with pytest.raises(SystemExit):  # check compiles, it does not render
+        main([*command, "--limit", "max_steps=10"])
+    assert "'max_steps' is not a limit" in capsys.readouterr().err
