@@ -221,8 +221,9 @@ class ModelRoot(Element, _tree.ModelBase):
         ``CompileError`` with MuJoCo's message and the path of the element it concerns, or
         naming the element that takes what MuJoCo would allocate past ``limits``."""
         ...
-    def to_spec(self) -> mujoco.MjSpec:
-        """This model as a ``mujoco.MjSpec``."""
+    def to_spec(self, limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjSpec:
+        """This model as a ``mujoco.MjSpec``; ``CompileError`` naming the element that takes
+        what MuJoCo would allocate past ``limits`` (as :meth:`compile`)."""
         ...
     def render(self, camera: str | Camera | FreeView | None = None, *, width: int = 640,
                height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,

@@ -16,8 +16,10 @@ def compile_model(model: ModelBase,
     MuJoCo (files passed through a virtual file system)."""
     ...
 
-def to_spec(model: ModelBase) -> mujoco.MjSpec:
-    """The model as a ``mujoco.MjSpec``."""
+def to_spec(model: ModelBase,
+            limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjSpec:
+    """The model as a ``mujoco.MjSpec``, checked against ``limits`` first (``MjSpec`` reads
+    replicates and flexcomps out as it parses, and is made to be compiled)."""
     ...
 
 def spec_to_xml(spec: mujoco.MjSpec) -> str:

@@ -33,11 +33,11 @@ _INTEGER = r"[-+]?\d{1,9}"
 FLOAT32_MAX: Final = float(np.finfo(np.float32).max)
 FLOAT32_RANGE: Final = f"within the range of a float32 (magnitude at most {FLOAT32_MAX:.8g})"
 
-def checked_texts() -> set[str]:
-    """A new, empty set of checked texts for a codec."""
+def checked_texts() -> dict[str, str]:
+    """A new, empty table of checked texts for a codec (each text to itself)."""
     ...
 
-def remember(checked: set[str], text: str) -> None:
+def remember(checked: dict[str, str], text: str) -> None:
     """Note that ``text`` passed a codec's check (if there is room, and it is short)."""
     ...
 
@@ -222,7 +222,8 @@ class KeywordCodec(Codec):
                  numbers: tuple[tuple[str, int], ...] = ()) -> None:
         self.keywords = keywords
         self.lookup = {k.lower(): k for k in keywords}
-        self.exact = frozenset(self.lookup.values())  # what parse() takes as it is
+        # what parse() takes as it is, to the grammar's own string (shared by every value)
+        self.exact = {word: word for word in self.lookup.values()}
         self.takes_bool = "true" in self.lookup and "false" in self.lookup
         self.by_number = {n: k for k, n in numbers}
         also = f" (or {', '.join(str(n) for _, n in numbers)})" if numbers else ""

@@ -13,6 +13,7 @@ gives (names do not change how MuJoCo compiles).
 from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 import mujoco
 
@@ -28,9 +29,11 @@ class Compiled:
     model: mujoco.MjModel
     unnamed: Mapping[int, tuple[Element, tuple[int, ...]]]
 
-def compile_for_physics(model: ModelBase) -> Compiled:
-    """Validate and compile ``model`` as ``compile()`` does, keeping the ids of its unnamed
-    elements (and of those the export names, as it names attachment frames)."""
+def compile_for_physics(model: ModelBase,
+                        limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> Compiled:
+    """Validate and compile ``model`` as ``compile()`` does (within ``limits``), keeping the
+    ids of its unnamed elements (and of those the export names, as it names attachment
+    frames)."""
     ...
 
 def ids_for_text(model: ModelBase, text: str, files: Mapping[str, bytes],

@@ -59,6 +59,15 @@ class ChildNeeds:
     effect: str
 
 @dataclass(frozen=True, kw_only=True)
+class GeneratedShape:
+    """A shape MuJoCo's compiler generates from a list of numbers: it allocates ``factor`` x
+    the product of the numbers at the places ``counts`` names (``params`` names each place,
+    as MuJoCo's reference does)."""
+    params: tuple[str, ...]
+    counts: tuple[str, ...]
+    factor: int
+
+@dataclass(frozen=True, kw_only=True)
 class Allocation:
     """Memory MuJoCo's compiler allocates for an element, sized by its attributes or by the
     header of an image it decodes rather than by the model's bytes: ``compile()`` counts it
@@ -69,6 +78,9 @@ class Allocation:
     shape: str
     cubes: frozenset[str]
     images: tuple[str, ...]
+    values: str | None = None
+    builtins: Mapping[str, GeneratedShape] | None = None
+    copies: str | None = None
 
 @dataclass(frozen=True, kw_only=True)
 class GrammarFacts:

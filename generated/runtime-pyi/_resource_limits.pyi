@@ -25,9 +25,20 @@ class CompileLimits:
     ``max_hfield_samples``
         Elevation samples of all height fields (64 Mi floats, 256 MB): nrow x ncol, or a PNG
         file's declared width x height.
+    ``max_mesh_vertices``
+        Vertices of all builtin meshes generated from ``params`` (16 Ki: a cone of 2,000
+        took 0.3 s, of 20,000 more than 100 s).
+    ``max_flex_points``
+        Points of all flexcomps, the product of ``count`` (4096: a grid of 8000 took 45 s).
+    ``max_replicated_elements``
+        Elements ``<replicate>`` adds, nested copies multiplied (128 Ki: 90,000 geoms took
+        16 s and 772 MB).
     """
     max_texture_pixels: int = ...
     max_hfield_samples: int = ...
+    max_mesh_vertices: int = ...
+    max_flex_points: int = ...
+    max_replicated_elements: int = ...
     def __post_init__(self) -> None: ...
 
 @dataclass(frozen=True, slots=True)

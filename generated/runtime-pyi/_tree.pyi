@@ -18,6 +18,7 @@ Features (parsing, export, composition, validation, ...) use the functions at th
 module (the internal API), not the elements' private slots.
 """
 from __future__ import annotations
+from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
@@ -184,15 +185,19 @@ class SourceMap:
     ``includes`` maps each included file to the file that included it and the element its
     contents were read into.
 
-    The map holds each element's line, and its file only if it is not the main one: no
-    (file, line) pair is made per element (the collector would scan each once a parse ends).
+    The map holds the elements in a list and their lines in an array beside it, and an
+    element's file only if it is not the main one: no dict entry, int or (file, line) pair
+    per element (about 50 bytes each); the index from element to place is made when first
+    asked for (messages), not while reading.
     """
     def __init__(self, main: str | None = None) -> None:
         self.main = main  # the file (or text) the model was read from
-        self.line_of: dict[Element, int | None] = {}  # every element, in reading order
+        self.order: list[Element] = []  # every element, in reading order
+        self.line_numbers = _array_of("q")  # the line of each (0: none given)
         self.files: dict[Element, str | None] = {}  # the elements read from another file
         self.includes: dict[str, tuple[str | None, Element]] = {}
-        self.texts: dict[str, SourceText | None] = {}
+        self.texts: dict[str, SourceText | None] = {}  # files read again for messages
+        self._places: dict[Element, int] = {}
     def add(self, element: Element, source: str | None, line: int | None) -> None:
         """Record that ``element`` was read at ``source:line``."""
         ...

@@ -8,17 +8,20 @@ from typed_mjcf._codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._export import FileNamer, Writer
 from typed_mjcf._files import CollectedFiles, collect_files
 from typed_mjcf._names import NameScope
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import Element, ModelBase
 NO_ATTRIBUTES: Final[frozenset[str]] = ...
 
 def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
                  collected: CollectedFiles | None = None, names_from: NameScope | None = None,
-                 self_only: bool = False, namer: Callable[[Writer], None] | None = None) -> str:
+                 self_only: bool = False, namer: Callable[[Writer], None] | None = None,
+                 limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> str:
     """The XML text of ``element`` and its subtree (attached models included: a top-level
     section of a composed model holds the attached models' too); with ``collected``, every
     file by its flat name and no folder attributes; names as seen from ``names_from``;
     only the element's own tag with ``self_only``; ``namer`` may give unnamed elements
-    names for this text (in the writer's ``given_names``) before it is written."""
+    names for this text (in the writer's ``given_names``) before it is written; ``limits``
+    bound the compile that lays out a composed model's keyframes."""
     ...
 
 def collect(model: ModelBase) -> CollectedFiles:
@@ -31,10 +34,11 @@ def attribute_text(element: Element, name: str, fmt: Format,
     ...
 
 def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
-             namer: Callable[[Writer], None] | None = None) -> tuple[str, CollectedFiles]:
+             namer: Callable[[Writer], None] | None = None,
+             limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> tuple[str, CollectedFiles]:
     """The model's XML with every file by its flat name (and no folder attributes), and the
-    files: what MuJoCo compiles from memory and what a folder export writes (``namer``: as
-    for :func:`element_text`)."""
+    files: what MuJoCo compiles from memory and what a folder export writes (``namer``,
+    ``limits``: as for :func:`element_text`)."""
     ...
 
 def rewrite_model_file(owner: ModelBase, path: str, contents: bytes, collected: CollectedFiles,

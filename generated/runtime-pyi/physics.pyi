@@ -44,6 +44,13 @@ from typed_mjcf._errors import (
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
+from typed_mjcf._resource_limits import (
+    DEFAULT_COMPILE_LIMITS,
+    DEFAULT_RENDER_LIMITS,
+    CompileLimits,
+    RenderLimits,
+    check_offscreen,
+)
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.types import Array, ArrayValues
 from typed_mjcf._base import ModelRoot
@@ -124,11 +131,13 @@ class Physics(Bind):
         """A physics of a model binary (MJB) file."""
         ...
     @classmethod
-    def from_mjcf_model(cls, mjcf_model: ModelRoot) -> Self:
-        """A physics of ``mjcf_model``, compiled as ``mjcf_model.compile()`` compiles it;
-        every element of it can be bound, named or not."""
+    def from_mjcf_model(cls, mjcf_model: ModelRoot, *,
+                        limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> Self:
+        """A physics of ``mjcf_model``, compiled as ``mjcf_model.compile(limits)`` compiles
+        it; every element of it can be bound, named or not."""
         ...
-    def reload_from_mjcf_model(self, mjcf_model: ModelRoot) -> None:
+    def reload_from_mjcf_model(self, mjcf_model: ModelRoot, *,
+                               limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> None:
         """Compile ``mjcf_model`` again into this physics (its state is reset)."""
         ...
     def reload_from_xml_string(self, xml_string: str,
@@ -226,7 +235,8 @@ class Physics(Bind):
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[False] = False, segmentation: Literal[False] = False,
                scene_option: mujoco.MjvOption | None = None,
-               render_flag_overrides: RenderFlags | None = None) -> Array[np.uint8]:
+               render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Array[np.uint8]:
         """An image of the scene from camera ``camera_id`` (a name or an id; -1: the free
         camera): height x width x 3 ``uint8`` RGB; with ``depth``, height x width
         ``float32`` distances in metres; with ``segmentation``, height x width x 2 ``int32``
@@ -235,13 +245,15 @@ class Physics(Bind):
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
         display). The size is ``height, width``, in that order, as in dm_control, whose code
         calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
-        by keyword."""
+        by keyword. ``limits.max_offscreen_pixels`` bounds the offscreen buffer a new size
+        allocates (the model's ``offwidth`` x ``offheight``)."""
         ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[True], segmentation: Literal[False] = False,
                scene_option: mujoco.MjvOption | None = None,
-               render_flag_overrides: RenderFlags | None = None) -> Array[np.float32]:
+               render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Array[np.float32]:
         """An image of the scene from camera ``camera_id`` (a name or an id; -1: the free
         camera): height x width x 3 ``uint8`` RGB; with ``depth``, height x width
         ``float32`` distances in metres; with ``segmentation``, height x width x 2 ``int32``
@@ -250,13 +262,15 @@ class Physics(Bind):
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
         display). The size is ``height, width``, in that order, as in dm_control, whose code
         calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
-        by keyword."""
+        by keyword. ``limits.max_offscreen_pixels`` bounds the offscreen buffer a new size
+        allocates (the model's ``offwidth`` x ``offheight``)."""
         ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[False] = False, segmentation: Literal[True],
                scene_option: mujoco.MjvOption | None = None,
-               render_flag_overrides: RenderFlags | None = None) -> Array[np.int32]:
+               render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Array[np.int32]:
         """An image of the scene from camera ``camera_id`` (a name or an id; -1: the free
         camera): height x width x 3 ``uint8`` RGB; with ``depth``, height x width
         ``float32`` distances in metres; with ``segmentation``, height x width x 2 ``int32``
@@ -265,7 +279,8 @@ class Physics(Bind):
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
         display). The size is ``height, width``, in that order, as in dm_control, whose code
         calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
-        by keyword."""
+        by keyword. ``limits.max_offscreen_pixels`` bounds the offscreen buffer a new size
+        allocates (the model's ``offwidth`` x ``offheight``)."""
         ...
     @property
     def contexts(self) -> None:

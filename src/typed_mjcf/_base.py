@@ -410,9 +410,10 @@ class ModelRoot(Element, _tree.ModelBase):
         naming the element that takes what MuJoCo would allocate past ``limits``."""
         return compile_model(self, limits)
 
-    def to_spec(self) -> mujoco.MjSpec:
-        """This model as a ``mujoco.MjSpec``."""
-        return to_spec(self)
+    def to_spec(self, limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjSpec:
+        """This model as a ``mujoco.MjSpec``; ``CompileError`` naming the element that takes
+        what MuJoCo would allocate past ``limits`` (as :meth:`compile`)."""
+        return to_spec(self, limits)
 
     # ------------------------------------------------------------------ pictures
 

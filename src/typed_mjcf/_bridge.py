@@ -33,11 +33,11 @@ def _mujoco_error(model: ModelBase, message: str, collected: CollectedFiles) -> 
                         path=location.path)
 
 
-def _text(model: ModelBase) -> tuple[str, CollectedFiles]:
+def _text(model: ModelBase, limits: CompileLimits) -> tuple[str, CollectedFiles]:
     """The model's text for MuJoCo; a composed model whose keyframes are combined is compiled
-    once without them, and MuJoCo may refuse it then."""
+    once without them (within ``limits``), and MuJoCo may refuse it then."""
     try:
-        return vfs_text(model)
+        return vfs_text(model, limits=limits)
     except LayoutError as error:
         raise _mujoco_error(model, error.mujoco_message, collect(model)) from None
 
@@ -48,16 +48,19 @@ def compile_model(model: ModelBase,
     MuJoCo (files passed through a virtual file system)."""
     ensure_valid(model)
     check_compile(model, limits)  # before _text: a composed model's keyframes compile it
-    xml, collected = _text(model)
+    xml, collected = _text(model, limits)
     try:
         return compile_from_memory(xml, collected.files)
     except (ValueError, RuntimeError) as error:  # (RuntimeError: a C++ exception it did not
         raise _mujoco_error(model, str(error), collected) from None  # expect)
 
 
-def to_spec(model: ModelBase) -> mujoco.MjSpec:
-    """The model as a ``mujoco.MjSpec``."""
-    xml, collected = _text(model)
+def to_spec(model: ModelBase,
+            limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> mujoco.MjSpec:
+    """The model as a ``mujoco.MjSpec``, checked against ``limits`` first (``MjSpec`` reads
+    replicates and flexcomps out as it parses, and is made to be compiled)."""
+    check_compile(model, limits)
+    xml, collected = _text(model, limits)
     try:
         return spec_from_memory(xml, collected.files)
     except (ValueError, RuntimeError) as error:

@@ -24,6 +24,7 @@ from typed_mjcf._compile import compile_from_memory
 from typed_mjcf._errors import CompileError
 from typed_mjcf._export import Writer
 from typed_mjcf._files import element_file_stem
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf._validate import ensure_valid
 from typed_mjcf._write import element_text, vfs_text
@@ -55,18 +56,21 @@ class Compiled:
     unnamed: Mapping[int, tuple[Element, tuple[int, ...]]]
 
 
-def compile_for_physics(model: ModelBase) -> Compiled:
-    """Validate and compile ``model`` as ``compile()`` does, keeping the ids of its unnamed
-    elements (and of those the export names, as it names attachment frames)."""
+def compile_for_physics(model: ModelBase,
+                        limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> Compiled:
+    """Validate and compile ``model`` as ``compile()`` does (within ``limits``), keeping the
+    ids of its unnamed elements (and of those the export names, as it names attachment
+    frames)."""
     ensure_valid(model)
+    check_compile(model, limits)
     marks: list[Element] = []
     written: dict[int, tuple[Element, str]] = {}
     try:
-        text, collected = vfs_text(model, namer=_namer(model, marks, written))
+        text, collected = vfs_text(model, namer=_namer(model, marks, written), limits=limits)
         compiled, found = _compile_marked(text, collected.files, marks)
     except ValueError as error:
         # MuJoCo's message may name a marker: compile() says it about the model as written
-        compile_model(model)
+        compile_model(model, limits)
         raise CompileError(f"MuJoCo could not compile the model: {error}") from None
     return Compiled(compiled, _ids(compiled, found, written))
 

@@ -73,6 +73,17 @@ class ChildNeeds:
 
 
 @dataclass(frozen=True, kw_only=True)
+class GeneratedShape:
+    """A shape MuJoCo's compiler generates from a list of numbers: it allocates ``factor`` x
+    the product of the numbers at the places ``counts`` names (``params`` names each place,
+    as MuJoCo's reference does)."""
+
+    params: tuple[str, ...]
+    counts: tuple[str, ...]
+    factor: int
+
+
+@dataclass(frozen=True, kw_only=True)
 class Allocation:
     """Memory MuJoCo's compiler allocates for an element, sized by its attributes or by the
     header of an image it decodes rather than by the model's bytes: ``compile()`` counts it
@@ -84,6 +95,13 @@ class Allocation:
     shape: str  # the attribute whose keywords in ``cubes`` allocate a cube ("": none)
     cubes: frozenset[str]  # six square faces, ``sizes[0]`` on a side (the others unused)
     images: tuple[str, ...]  # file attributes: a PNG's declared pixels are decoded
+    # the attribute holding the numbers a generated shape is made from, and the shapes (by
+    # the generator's keyword) whose count they give; a shape not listed is not counted
+    values: str | None = None
+    builtins: Mapping[str, GeneratedShape] | None = None
+    # the attribute counting the copies MuJoCo makes of what the element holds: each element
+    # inside counts once per copy beyond the first (nested copies multiply)
+    copies: str | None = None
 
 
 @dataclass(frozen=True, kw_only=True)

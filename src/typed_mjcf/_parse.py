@@ -671,7 +671,9 @@ class _Builder:
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
         context, stack = self.context, self.stack
         # where each element was read (SourceMap.add, inline: it is per element)
-        line_of, files, main = self.sources.line_of, self.sources.files, self.sources.main
+        sources = self.sources
+        read, lines = sources.order.append, sources.line_numbers.append
+        files, main = sources.files, sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
         new_child, assign_texts, read_rest = _tree.new_child, _tree.assign_texts, _read_rest
         names = not context.options.escape_separators  # the tree claims names as read
@@ -734,7 +736,8 @@ class _Builder:
             child = new_child(parent, child_spec)
             if merged and parent in merged:
                 self.read_in[child] = merged[parent]
-            line_of[child] = child_node.sourceline
+            read(child)
+            lines(child_node.sourceline or 0)
             if source is not main:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()

@@ -14,13 +14,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Final
 
+import numpy as np
+
 from typed_mjcf import _tree
 from typed_mjcf._access import check_count
 from typed_mjcf._defaults import resolve
 from typed_mjcf._errors import CompileError, InvalidTypeError, RenderError
 from typed_mjcf._files import CollectedFiles, compiler_folders, file_contents
 from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._language import Allocation
+from typed_mjcf._language import Allocation, GeneratedShape
 from typed_mjcf._tree import Element, ModelBase, grammar_facts
 from typed_mjcf.assets import Asset
 
@@ -40,14 +42,33 @@ class CompileLimits:
     ``max_hfield_samples``
         Elevation samples of all height fields (64 Mi floats, 256 MB): nrow x ncol, or a PNG
         file's declared width x height.
+    ``max_mesh_vertices``
+        Vertices of all builtin meshes generated from ``params`` (16 Ki: a cone of 2,000
+        took 0.3 s, of 20,000 more than 100 s).
+    ``max_flex_points``
+        Points of all flexcomps, the product of ``count`` (4096: a grid of 8000 took 45 s).
+    ``max_replicated_elements``
+        Elements ``<replicate>`` adds, nested copies multiplied (128 Ki: 90,000 geoms took
+        16 s and 772 MB).
     """
 
     max_texture_pixels: int = 1 << 26
     max_hfield_samples: int = 1 << 26
+    max_mesh_vertices: int = 1 << 14
+    max_flex_points: int = 1 << 12
+    max_replicated_elements: int = 1 << 17
 
     def __post_init__(self) -> None:
-        for name in ("max_texture_pixels", "max_hfield_samples"):
+        for name in _COMPILE_FIELDS:
             check_count(f"CompileLimits.{name}", getattr(self, name))
+
+
+_COMPILE_FIELDS: Final = ("max_texture_pixels", "max_hfield_samples", "max_mesh_vertices",
+                          "max_flex_points", "max_replicated_elements")
+# what each limit counts, for messages
+_UNITS: Final = {"max_texture_pixels": "pixels", "max_hfield_samples": "samples",
+                 "max_mesh_vertices": "vertices", "max_flex_points": "points",
+                 "max_replicated_elements": "copied elements"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -97,9 +118,8 @@ def check_compile(model: ModelBase, limits: CompileLimits) -> None:
         total = totals[limit] = totals.get(limit, 0) + count
         if total > bound:
             raise CompileError(
-                f"{element.path}: {what} makes {total:,} "
-                f"{'pixels' if 'pixel' in limit else 'samples'} in the model, more than the "
-                f"limit of {bound:,} (CompileLimits.{limit}); "
+                f"{element.path}: {what} makes {total:,} {_UNITS[limit]} in the model, more "
+                f"than the limit of {bound:,} (CompileLimits.{limit}); "
                 f"{_raise_hint('CompileLimits', limit)}", path=element.path)
 
 
@@ -107,16 +127,35 @@ def allocations(model: ModelBase) -> Iterator[tuple[Element, str, str, int]]:
     """What compiling ``model`` allocates beyond its bytes: (the element, the CompileLimits
     field counting it, which attributes say so as text, the count), in document order."""
     facts = grammar_facts().allocations
+    # elements with children inside copies: (how many times each is compiled, the innermost
+    # copier, the limit counting its copies, what it says), for their children to inherit
+    copied: dict[Element, tuple[int, Element, str, str]] = {}
     for element in _tree.iter_composed(model, True):
+        parent = _tree.parent_of(element)
+        found = None if parent is None else copied.get(parent)
+        times = 1
         allocation = facts.get(element.spec.row)
+        if found is not None:
+            times, copier, limit, said = found
+            if allocation is None or allocation.copies is None:  # (a copier is not kept)
+                yield copier, limit, said, times - 1
         if allocation is not None:
+            if allocation.copies is not None:
+                count = _whole(resolve(element, allocation.copies))
+                if count > 1:
+                    times *= count
+                    said = (f"{allocation.copies}={count} (what it holds compiled "
+                            f"{times:,} times)")
+                    found = (times, element, allocation.limit, said)
             for what, count in _counts(element, allocation):
-                yield element, allocation.limit, what, count
+                yield element, allocation.limit, what, count * times
+        if found is not None and _tree.children(element):
+            copied[element] = found
 
 
 def totals(model: ModelBase) -> dict[str, int]:
     """The model's count for each field of :class:`CompileLimits`."""
-    found = dict.fromkeys(CompileLimits.__dataclass_fields__, 0)
+    found: dict[str, int] = dict.fromkeys(_COMPILE_FIELDS, 0)
     for _, limit, _, count in allocations(model):
         found[limit] += count
     return found
@@ -127,17 +166,21 @@ def _counts(element: Element, allocation: Allocation) -> list[tuple[str, int]]:
     found: list[tuple[str, int]] = []
     attributes = element.spec.by_key
     generator = attributes.get(allocation.generator)
-    if generator is None or str(resolve(element, generator.name)) != generator.default:
+    kind = None if generator is None else resolve(element, generator.name)
+    if allocation.sizes and (generator is None or str(kind) != generator.default):
         sizes = [_whole(resolve(element, name)) for name in allocation.sizes]
         shape = (str(resolve(element, allocation.shape)) if allocation.shape in attributes
                  else None)
-        said = ", ".join(f"{name}={size}" for name, size in zip(allocation.sizes, sizes,
-                                                                strict=True))
+        said = ", ".join(f"{name}={_said(element, name, size)}"
+                         for name, size in zip(allocation.sizes, sizes, strict=True))
         if shape in allocation.cubes:
             found.append((f"{said} (a {shape}: {_FACES} faces of {sizes[0]} x {sizes[0]})",
                           _FACES * sizes[0] * sizes[0]))
         else:
             found.append((said, math.prod(sizes)))
+    builtin = (allocation.builtins or {}).get(str(kind))
+    if builtin is not None and allocation.values is not None:
+        found.append(_generated(element, allocation.values, str(kind), builtin))
     for name in allocation.images:
         attribute = attributes.get(name)
         value = None if attribute is None else _tree.read_value(element, attribute)
@@ -150,7 +193,37 @@ def _counts(element: Element, allocation: Allocation) -> list[tuple[str, int]]:
     return found
 
 
+def _generated(element: Element, values: str, kind: str,
+               builtin: GeneratedShape) -> tuple[str, int]:
+    """What a generated shape allocates: (its parameters named, as text; the count)."""
+    numbers = _numbers(resolve(element, values))
+    given = dict(zip(builtin.params, numbers, strict=False))
+    count = builtin.factor * math.prod(_whole(given.get(name, 0)) for name in builtin.counts)
+    shown = ", ".join(f"{name} {_text(given[name])}" for name in dict.fromkeys(builtin.counts)
+                      if name in given)
+    return f"{values}={' '.join(map(_text, numbers))!r} (a {kind} of {shown})", count
+
+
+def _numbers(value: object) -> list[float]:
+    return [float(v) for v in value] if isinstance(value, np.ndarray) else []
+
+
+def _text(number: float) -> str:
+    return str(int(number)) if number.is_integer() else repr(number)
+
+
+def _said(element: Element, name: str, size: int) -> str:
+    numbers = _numbers(resolve(element, name))
+    return " ".join(map(_text, numbers)) if numbers else str(size)
+
+
 def _whole(value: object) -> int:
+    """A count MuJoCo reads from ``value`` (a whole number, or the product of an array's; 0
+    for anything else)."""
+    if isinstance(value, np.ndarray):
+        return math.prod(_whole(v) for v in value.tolist())
+    if isinstance(value, float) and math.isfinite(value):
+        value = int(value)
     return value if isinstance(value, int) and value > 0 else 0
 
 

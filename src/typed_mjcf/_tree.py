@@ -27,6 +27,7 @@ import copy
 import inspect
 import os
 import weakref
+from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
@@ -721,30 +722,39 @@ class SourceMap:
     ``includes`` maps each included file to the file that included it and the element its
     contents were read into.
 
-    The map holds each element's line, and its file only if it is not the main one: no
-    (file, line) pair is made per element (the collector would scan each once a parse ends).
+    The map holds the elements in a list and their lines in an array beside it, and an
+    element's file only if it is not the main one: no dict entry, int or (file, line) pair
+    per element (about 50 bytes each); the index from element to place is made when first
+    asked for (messages), not while reading.
     """
 
-    __slots__ = ("files", "includes", "line_of", "main", "texts")
+    __slots__ = ("_places", "files", "includes", "line_numbers", "main", "order", "texts")
 
     def __init__(self, main: str | None = None) -> None:
         self.main = main  # the file (or text) the model was read from
-        self.line_of: dict[Element, int | None] = {}  # every element, in reading order
+        self.order: list[Element] = []  # every element, in reading order
+        self.line_numbers = _array_of("q")  # the line of each (0: none given)
         self.files: dict[Element, str | None] = {}  # the elements read from another file
         self.includes: dict[str, tuple[str | None, Element]] = {}
         self.texts: dict[str, SourceText | None] = {}  # files read again for messages
+        self._places: dict[Element, int] = {}  # element -> place in order, made on demand
 
     def add(self, element: Element, source: str | None, line: int | None) -> None:
         """Record that ``element`` was read at ``source:line``."""
-        self.line_of[element] = line
+        self.order.append(element)
+        self.line_numbers.append(line or 0)
         if source is not self.main:
             self.files[element] = source
 
     def get(self, element: Element) -> tuple[str | None, int | None] | None:
         """Where ``element`` was read, if it was."""
-        if element not in self.line_of:
+        index, order = self._places, self.order
+        for number in range(len(index), len(order)):  # the elements read since it was asked
+            index[order[number]] = number
+        place = index.get(element)
+        if place is None:
             return None
-        return self.files.get(element, self.main), self.line_of[element]
+        return self.files.get(element, self.main), self.line_numbers[place] or None
 
     @property
     def lines(self) -> Mapping[Element, tuple[str | None, int | None]]:
@@ -767,10 +777,10 @@ class _Lines(Mapping[Element, tuple[str | None, int | None]]):
         return found
 
     def __iter__(self) -> Iterator[Element]:
-        return iter(self._sources.line_of)
+        return iter(self._sources.order)
 
     def __len__(self) -> int:
-        return len(self._sources.line_of)
+        return len(self._sources.order)
 
 
 def new_model(cls: type[ModelBase]) -> ModelBase:

@@ -16,6 +16,7 @@ from typed_mjcf._gc import collector_paused
 from typed_mjcf._keyframes import combine_keyframes, compile_layout, has_keyframes
 from typed_mjcf._names import NameScope
 from typed_mjcf._parse import ParseOptions, is_model_text, parse_text
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf._validate import ensure_no_crash
 from typed_mjcf._xmltext import serialize
@@ -25,12 +26,14 @@ NO_ATTRIBUTES: Final[frozenset[str]] = frozenset()
 
 def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
                  collected: CollectedFiles | None = None, names_from: NameScope | None = None,
-                 self_only: bool = False, namer: Callable[[Writer], None] | None = None) -> str:
+                 self_only: bool = False, namer: Callable[[Writer], None] | None = None,
+                 limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> str:
     """The XML text of ``element`` and its subtree (attached models included: a top-level
     section of a composed model holds the attached models' too); with ``collected``, every
     file by its flat name and no folder attributes; names as seen from ``names_from``;
     only the element's own tag with ``self_only``; ``namer`` may give unnamed elements
-    names for this text (in the writer's ``given_names``) before it is written."""
+    names for this text (in the writer's ``given_names``) before it is written; ``limits``
+    bound the compile that lays out a composed model's keyframes."""
     root = _tree.model_of(element)
     if root is not None:
         _tree.check_arrays(root)  # arrays edited in place (dm_control's behaviour)
@@ -48,7 +51,7 @@ def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: b
             return writer.text(element, pretty_print)
         root = _tree.model_of(element)
         if isinstance(element, ModelBase) and root is element:
-            return _model_text(writer, element, collected, pretty_print)
+            return _model_text(writer, element, collected, pretty_print, limits)
         if root is not None and element.parent is root:  # a section: attached ones join it
             node = Writer(root, fmt, file_namer, skip, names_from).model(root)
             section = next((n for n in node if n.tag == element.spec.tag), None)
@@ -58,12 +61,13 @@ def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: b
 
 
 def _model_text(writer: Writer, element: ModelBase, collected: CollectedFiles | None,
-                pretty_print: bool) -> str:
+                pretty_print: bool, limits: CompileLimits) -> str:
     """A composed model's text: attached models joined, keyframes combined."""
     with collector_paused():
         node = writer.model(element)
         if has_keyframes(writer):
-            ensure_no_crash(element)  # MuJoCo compiles it below: nothing that crashes it
+            ensure_no_crash(element)  # MuJoCo compiles it below: nothing that crashes it,
+            check_compile(element, limits)  # nor allocates past the limits
             if collected is None:  # the layout is compiled from memory: files by flat names
                 collected = collect(element)
                 layout = Writer(element, DEFAULT_FORMAT, collected.name_of,
@@ -88,12 +92,14 @@ def attribute_text(element: Element, name: str, fmt: Format,
 
 
 def vfs_text(model: ModelBase, fmt: Format = DEFAULT_FORMAT, pretty_print: bool = True,
-             namer: Callable[[Writer], None] | None = None) -> tuple[str, CollectedFiles]:
+             namer: Callable[[Writer], None] | None = None,
+             limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> tuple[str, CollectedFiles]:
     """The model's XML with every file by its flat name (and no folder attributes), and the
-    files: what MuJoCo compiles from memory and what a folder export writes (``namer``: as
-    for :func:`element_text`)."""
+    files: what MuJoCo compiles from memory and what a folder export writes (``namer``,
+    ``limits``: as for :func:`element_text`)."""
     collected = collect(model)
-    return element_text(model, fmt, pretty_print, collected, namer=namer), collected
+    return element_text(model, fmt, pretty_print, collected, namer=namer,
+                        limits=limits), collected
 
 
 def rewrite_model_file(owner: ModelBase, path: str, contents: bytes, collected: CollectedFiles,

@@ -57,6 +57,13 @@ from typed_mjcf._gl import ensure_gl_backend, gl_error
 from typed_mjcf._ids import compile_for_physics, ids_for_text, kind_of
 from typed_mjcf._model_state import model_state
 from typed_mjcf._named import make_axes, struct_indexers
+from typed_mjcf._resource_limits import (
+    DEFAULT_COMPILE_LIMITS,
+    DEFAULT_RENDER_LIMITS,
+    CompileLimits,
+    RenderLimits,
+    check_offscreen,
+)
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.types import Array, ArrayValues
 
@@ -274,18 +281,20 @@ class Physics(Bind):
         return cls.from_byte_string(contents)
 
     @classmethod
-    def from_mjcf_model(cls, mjcf_model: ModelRoot) -> Self:
-        """A physics of ``mjcf_model``, compiled as ``mjcf_model.compile()`` compiles it;
-        every element of it can be bound, named or not."""
+    def from_mjcf_model(cls, mjcf_model: ModelRoot, *,
+                        limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> Self:
+        """A physics of ``mjcf_model``, compiled as ``mjcf_model.compile(limits)`` compiles
+        it; every element of it can be bound, named or not."""
         physics = cls.__new__(cls)
         physics._warnings_cause_exception = True
         physics._renderers = {}
-        physics._load_mjcf(mjcf_model)
+        physics._load_mjcf(mjcf_model, limits)
         return physics
 
-    def reload_from_mjcf_model(self, mjcf_model: ModelRoot) -> None:
+    def reload_from_mjcf_model(self, mjcf_model: ModelRoot, *,
+                               limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> None:
         """Compile ``mjcf_model`` again into this physics (its state is reset)."""
-        self._load_mjcf(mjcf_model)
+        self._load_mjcf(mjcf_model, limits)
 
     def reload_from_xml_string(self, xml_string: str,
                                assets: Mapping[str, bytes] | None = None) -> None:
@@ -299,12 +308,12 @@ class Physics(Bind):
         self._source, self._unnamed = None, {}
         self._reload_from_data(Data(_load_path(file_path)))
 
-    def _load_mjcf(self, mjcf_model: ModelRoot) -> None:
+    def _load_mjcf(self, mjcf_model: ModelRoot, limits: CompileLimits) -> None:
         if not isinstance(cast(object, mjcf_model), ModelBase):
             raise InvalidTypeError(f"mjcf_model must be a model (a typed_mjcf.RootElement), "
                                    f"got {type(mjcf_model).__name__}")
         try:
-            compiled = compile_for_physics(mjcf_model)
+            compiled = compile_for_physics(mjcf_model, limits)
         except ValueError as error:
             if not STATE[0]:
                 raise
@@ -528,22 +537,26 @@ class Physics(Bind):
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[False] = False, segmentation: Literal[False] = False,
                scene_option: mujoco.MjvOption | None = None,
-               render_flag_overrides: RenderFlags | None = None) -> Array[np.uint8]: ...
+               render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Array[np.uint8]: ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[True], segmentation: Literal[False] = False,
                scene_option: mujoco.MjvOption | None = None,
-               render_flag_overrides: RenderFlags | None = None) -> Array[np.float32]: ...
+               render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Array[np.float32]: ...
     @overload
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: Literal[False] = False, segmentation: Literal[True],
                scene_option: mujoco.MjvOption | None = None,
-               render_flag_overrides: RenderFlags | None = None) -> Array[np.int32]: ...
+               render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> Array[np.int32]: ...
 
     def render(self, height: int = 240, width: int = 320, camera_id: int | str = -1, *,
                depth: bool = False, segmentation: bool = False,
                scene_option: mujoco.MjvOption | None = None,
                render_flag_overrides: RenderFlags | None = None,
+               limits: RenderLimits = DEFAULT_RENDER_LIMITS,
                ) -> Array[np.uint8] | Array[np.float32] | Array[np.int32]:
         """An image of the scene from camera ``camera_id`` (a name or an id; -1: the free
         camera): height x width x 3 ``uint8`` RGB; with ``depth``, height x width
@@ -553,7 +566,8 @@ class Physics(Bind):
         Uses the OpenGL back end ``MUJOCO_GL`` chooses (``egl`` renders without a
         display). The size is ``height, width``, in that order, as in dm_control, whose code
         calls it positionally; typed-mjcf's own ``model.render`` takes ``width=``/``height=``
-        by keyword."""
+        by keyword. ``limits.max_offscreen_pixels`` bounds the offscreen buffer a new size
+        allocates (the model's ``offwidth`` x ``offheight``)."""
         if depth and segmentation:
             raise InvalidValueError("render: depth and segmentation cannot both be True")
         if render_flag_overrides and (depth or segmentation):
@@ -562,7 +576,7 @@ class Physics(Bind):
         flags = [(_render_flag(flag), bool(value))
                  for flag, value in (render_flag_overrides or {}).items()]
         camera = self._camera(camera_id)
-        renderer = self._renderer(height, width)
+        renderer = self._renderer(height, width, limits)
         if self._dirty:
             self.forward()
         saved: list[tuple[mujoco.mjtRndFlag, bool]] = []
@@ -591,12 +605,13 @@ class Physics(Bind):
                                     f"cameras (-1 is the free camera)")
         return camera_id
 
-    def _renderer(self, height: int, width: int) -> mujoco.Renderer:
+    def _renderer(self, height: int, width: int, limits: RenderLimits) -> mujoco.Renderer:
         found = self._renderers.get((height, width))
         if found is not None:
             return found
-        ensure_gl_backend()
         offwidth, offheight = self.model.vis.global_.offwidth, self.model.vis.global_.offheight
+        check_offscreen((width, height), (int(offwidth), int(offheight)), limits)
+        ensure_gl_backend()
         if width > offwidth or height > offheight:
             raise InvalidValueError(
                 f"render: {width}x{height} is larger than the model's offscreen buffer "

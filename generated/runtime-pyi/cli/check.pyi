@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from dataclasses import asdict, dataclass
 from typed_mjcf._generated.elements import RootElement
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf.io import FileAccess
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
@@ -21,7 +22,8 @@ Each finding is printed as
 with "(warning)" after the rule for warnings (legal, but probably not meant), then a summary
 line. An attribute MuJoCo's reader ignores (on <frame> and <replicate>, which accept any) is
 an ignored-attribute warning. --compile also compiles each model that has no errors with
-MuJoCo.
+MuJoCo, first refusing what would make MuJoCo allocate past a limit (--limit NAME=VALUE
+raises one, e.g. --limit max_texture_pixels=200000000).
 
 exit status: 0 no errors (warnings allowed, unless --strict), 1 errors found, 2 a file
 cannot be read as MJCF at all (not XML, not a model, a missing include: its one-line error
@@ -46,13 +48,15 @@ def run(args: argparse.Namespace) -> int: ...
 
 def _count(n: int, noun: str) -> str: ...
 
-def check_file(path: str, compile_model: bool = False,
-               files: FileAccess | None = None) -> list[Report]:
+def check_file(path: str, compile_model: bool = False, files: FileAccess | None = None,
+               limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> list[Report]:
     """The findings for one model file (reading files where ``files`` allows: by default in
-    its folder); raises :class:`BadInput` if it cannot be read."""
+    its folder; compiling within ``limits``); raises :class:`BadInput` if it cannot be
+    read."""
     ...
 
-def compile_problem(model: RootElement, file: str) -> Report | None:
+def compile_problem(model: RootElement, file: str,
+                    limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> Report | None:
     """MuJoCo's error compiling the model (or reading its files), at the element it names,
     or ``None``."""
     ...

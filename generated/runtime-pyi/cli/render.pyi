@@ -15,6 +15,11 @@ seconds from there.
 
   typed-mjcf render robot.xml -o robot.png
   typed-mjcf render robot.xml -o sheet.png --views front,side,top,iso --size 1280x960
+  typed-mjcf render big.xml -o big.png --limit max_texture_pixels=200000000 --limit max_steps=10000000
+
+What a few bytes of MJCF may make MuJoCo allocate (textures, height fields, builtin meshes,
+flexcomps, replicated elements, the offscreen buffer) and the steps of --time are bounded;
+the error names the limit, and --limit NAME=VALUE raises it.
 
 Headless by default: MuJoCo renders with EGL, else OSMesa, unless MUJOCO_GL names a back
 end; when none works, the error says what to install.

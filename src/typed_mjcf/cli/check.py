@@ -16,7 +16,7 @@ from typed_mjcf._errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf._export import iter_written
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._parse import Problem
-from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, check_compile
+from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._tree import Element
 from typed_mjcf._write import vfs_text
 from typed_mjcf.cli._common import (
@@ -32,6 +32,7 @@ from typed_mjcf.cli._common import (
     source_of,
 )
 from typed_mjcf.cli._isolated import MujocoCrashed, compile_in_child
+from typed_mjcf.cli._limits import add_limit_argument, limits
 from typed_mjcf.io import FileAccess
 
 NAME = "check"
@@ -49,7 +50,8 @@ Each finding is printed as
 with "(warning)" after the rule for warnings (legal, but probably not meant), then a summary
 line. An attribute MuJoCo's reader ignores (on <frame> and <replicate>, which accept any) is
 an ignored-attribute warning. --compile also compiles each model that has no errors with
-MuJoCo.
+MuJoCo, first refusing what would make MuJoCo allocate past a limit (--limit NAME=VALUE
+raises one, e.g. --limit max_texture_pixels=200000000).
 
 exit status: 0 no errors (warnings allowed, unless --strict), 1 errors found, 2 a file
 cannot be read as MJCF at all (not XML, not a model, a missing include: its one-line error
@@ -69,6 +71,7 @@ def arguments(parser: argparse.ArgumentParser) -> None:
                         help="text (default): one line per finding; json: one JSON document "
                              "with every finding and the summary")
     parser.add_argument("--strict", action="store_true", help="exit 1 on warnings too")
+    add_limit_argument(parser, render=False)  # for --compile
     parser.add_argument("--allow-files", action="append", default=[], metavar="FOLDER",
                         help="a folder outside the model's own whose files it may read "
                              "(repeatable; by default only the model's folder)")
@@ -108,7 +111,8 @@ def run(args: argparse.Namespace) -> int:
     progress = Progress(len(files), args.progress)
     for file in progress.each(files, "checking"):
         try:
-            found = check_file(file, compile_model=args.compile, files=access)
+            found = check_file(file, compile_model=args.compile, files=access,
+                               limits=limits(args.limit).compile)
         except BadInput as problem:
             progress.clear()
             unreadable.append(str(problem))
@@ -150,10 +154,11 @@ def _count(n: int, noun: str) -> str:
     return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
 
 
-def check_file(path: str, compile_model: bool = False,
-               files: FileAccess | None = None) -> list[Report]:
+def check_file(path: str, compile_model: bool = False, files: FileAccess | None = None,
+               limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> list[Report]:
     """The findings for one model file (reading files where ``files`` allows: by default in
-    its folder); raises :class:`BadInput` if it cannot be read."""
+    its folder; compiling within ``limits``); raises :class:`BadInput` if it cannot be
+    read."""
     ignored: list[IgnoredAttributeWarning] = []
     problems: list[Problem] = []
     model = load(path, ignored, problems, files)
@@ -163,7 +168,7 @@ def check_file(path: str, compile_model: bool = False,
     reports += [_report(f.element, f.rule, f.severity, f.path, f.message, path)
                 for f in model.validate()]
     if compile_model and not any(r.severity == "error" for r in reports):
-        problem = compile_problem(model, path)
+        problem = compile_problem(model, path, limits)
         if problem is not None:
             reports.append(problem)
     return reports
@@ -188,12 +193,13 @@ def _report(element: Element | None, rule: str, severity: str, path: str, messag
                   message)
 
 
-def compile_problem(model: RootElement, file: str) -> Report | None:
+def compile_problem(model: RootElement, file: str,
+                    limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> Report | None:
     """MuJoCo's error compiling the model (or reading its files), at the element it names,
     or ``None``."""
     try:
-        check_compile(model, DEFAULT_COMPILE_LIMITS)  # what the child would allocate
-        xml, collected = vfs_text(model)
+        check_compile(model, limits)  # what the child would allocate
+        xml, collected = vfs_text(model, limits=limits)
     except MjcfError as problem:  # a file the model names cannot (or may not) be read
         message = problem.detail if isinstance(problem, ParseError) else str(problem)
         element = _element_at_path(model, message.split(": ", 1)[0]) or model

@@ -9,6 +9,7 @@ from typed_mjcf._errors import MjcfError
 from typed_mjcf._preview import VIEWS, key_from_text, render, render_pair, write_png
 from typed_mjcf._tree import ModelBase
 from typed_mjcf.cli._common import BAD_INPUT, OK, BadInput, error, load, one_line, shown
+from typed_mjcf.cli._limits import add_limit_argument, limits
 
 NAME = "render"
 HELP = "render a model to a PNG picture (offscreen, no display needed)"
@@ -21,6 +22,11 @@ seconds from there.
 
   typed-mjcf render robot.xml -o robot.png
   typed-mjcf render robot.xml -o sheet.png --views front,side,top,iso --size 1280x960
+  typed-mjcf render big.xml -o big.png --limit max_texture_pixels=200000000 --limit max_steps=10000000
+
+What a few bytes of MJCF may make MuJoCo allocate (textures, height fields, builtin meshes,
+flexcomps, replicated elements, the offscreen buffer) and the steps of --time are bounded;
+the error names the limit, and --limit NAME=VALUE raises it.
 
 Headless by default: MuJoCo renders with EGL, else OSMesa, unless MUJOCO_GL names a back
 end; when none works, the error says what to install.
@@ -46,6 +52,7 @@ def arguments(parser: argparse.ArgumentParser) -> None:
                         help="pose the model as the key named KEY (or numbered KEY) first")
     parser.add_argument("--time", type=float, default=0.0, metavar="SECONDS",
                         help="simulate this many seconds before rendering (default 0)")
+    add_limit_argument(parser, render=True)
     parser.set_defaults(run=run)
 
 
@@ -77,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
         keyframe = None if args.keyframe is None else key_from_text(model, args.keyframe)
         width, height = args.size
         picture = render(model, args.camera, width=width, height=height, time=args.time,
-                         keyframe=keyframe, views=args.views)
+                         keyframe=keyframe, views=args.views, limits=limits(args.limit))
         write_png(args.output, picture)
     except MjcfError as problem:
         error(NAME, f"{shown(args.file)}: {one_line(str(problem))}")
