@@ -144,12 +144,12 @@ def _cheaper_renders() -> None:
 
     make = Physics._renderer  # a renderer is made per image size, when first used
 
-    def renderer(self: Physics, height: int, width: int) -> Any:
+    def renderer(self: Physics, height: int, width: int, *args: Any) -> Any:
         known = (height, width) in self._renderers
         quality = self.model.vis.quality
         quality.shadowsize = min(quality.shadowsize, SHADOW_MAP)
         quality.offsamples = 0
-        made = make(self, height, width)
+        made = make(self, height, width, *args)  # *args: what else _renderer takes
         if not known:
             for flag in (mujoco.mjtRndFlag.mjRND_SHADOW, mujoco.mjtRndFlag.mjRND_REFLECTION):
                 made.scene.flags[flag] = 0
