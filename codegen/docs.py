@@ -11,7 +11,7 @@ Editors read an ``Args:`` block line by line: pyright shows, for keyword ``p``, 
 of the whole docstring containing ``p: `` (or ``p (``), and only that line. So each entry is
 one line, a note never contains ``word: ``, and an attribute comes before any attribute whose
 name ends with its name (``range`` before ``ctrlrange``). The layout of an ``add_<tag>()``
-docstring is ``typed_mjcf._doclines.adder_listing``, which the run time uses too.
+docstring is ``typed_mjcf._core.doclines.adder_listing``, which the run time uses too.
 """
 
 from __future__ import annotations
@@ -26,9 +26,9 @@ from codegen.runtime import core_module
 from codegen.typing_names import Typer
 
 if TYPE_CHECKING:
-    from typed_mjcf import _doclines as doclines
+    from typed_mjcf._core import doclines
 else:  # the module alone, without the package's __init__ (see codegen/runtime.py)
-    doclines = core_module("_doclines")
+    doclines = core_module("_core/doclines")
 
 DOCS_URL = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 

@@ -109,7 +109,7 @@ class Facts:
     # default-class row -> the element rows taking their defaults from it
     default_rows: dict[str, list[str]] = dataclasses.field(
         default_factory=dict[str, list[str]])
-    # facts about the language as a whole (typed_mjcf._language declares them); None: the
+    # facts about the language as a whole (typed_mjcf._core.language declares them); None: the
     # file has no [language] table (small test files)
     language: GrammarFacts | None = None
 

@@ -1,6 +1,6 @@
 """``[language]`` of ``schema/facts.toml``, read, stored and rendered from one declaration.
 
-The declaration is :class:`typed_mjcf._language.GrammarFacts`: each field is one key, its
+The declaration is :class:`typed_mjcf._core.language.GrammarFacts`: each field is one key, its
 type says what the key holds (``str``, ``int``, ``bool``, ``Literal[...]``, ``frozenset[str]``,
 ``tuple[str, ...]``, ``Mapping[str, T]``, another frozen dataclass of that module as a
 sub-table, ``T | None`` for a key that may be left out). Nothing here names a fact: a new one
@@ -21,9 +21,9 @@ from codegen.errors import FactsError
 from codegen.runtime import core_module
 
 if TYPE_CHECKING:
-    from typed_mjcf import _language as declaration
+    from typed_mjcf._core import language as declaration
 else:  # the module alone, without the package's __init__ (see codegen/runtime.py)
-    declaration = core_module("_language")
+    declaration = core_module("_core/language")
 
 GrammarFacts = declaration.GrammarFacts
 _D = TypeVar("_D")

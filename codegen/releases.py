@@ -8,7 +8,7 @@ result as ``generated/typed_mjcf_generated/releases.py``: per row, the attribute
 not every release has (the releases that have them), the keyword sets that differ, and the
 attributes whose type differs (kind, number type, value count, keywords, default or
 namespace: what codegen/drift.py probes). The runtime picks the installed release's gates
-once, at import (``typed_mjcf._releases``).
+once, at import (``typed_mjcf._releases.gating``).
 """
 
 from __future__ import annotations
@@ -148,7 +148,7 @@ def type_fields(schema: ir.Schema, a: ir.AttributeDef) -> TypeFields:
 
 
 def type_row(fields: TypeFields) -> tuple[object, ...]:
-    """``fields`` as the generated table holds them (``typed_mjcf._releases.TypeRow``)."""
+    """``fields`` as the generated table holds them (``typed_mjcf._releases.gating.TypeRow``)."""
     arity = fields.get("arity")
     return (fields["kind"], fields.get("dtype"), arity, fields.get("keywords", ()),
             fields.get("numbers", ()), fields.get("default"), fields.get("namespace"))
@@ -227,7 +227,7 @@ def render_table(result: Gates, newest: str) -> str:
          "schema/releases/."),
         "# Do not edit: change schema/ or codegen/ and run `nox -s generate`.",
         ('"""The MuJoCo releases the bindings cover and what each one\'s grammar lacks '
-         '(``typed_mjcf._releases`` applies them)."""'),
+         '(``typed_mjcf._releases.gating`` applies them)."""'),
         "",
         "from typing import Final",
         "",

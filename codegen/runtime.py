@@ -1,7 +1,7 @@
 """Core modules of the runtime the generator reads, loaded by their path.
 
-A core module that imports nothing from ``typed_mjcf`` (``_language``: the language facts'
-declaration; ``_doclines``: the layout of ``add_<tag>()`` docstrings) is loaded on its own,
+A core module that imports nothing from ``typed_mjcf`` (``_core/language``: the language
+facts' declaration; ``_core/doclines``: the layout of ``add_<tag>()`` docstrings) is loaded on its own,
 under its own name, without the package's ``__init__``: that imports the generated package,
 which a change the generator is about to render (a new language fact) may have made stale.
 """
@@ -17,8 +17,9 @@ SRC = Path(__file__).resolve().parent.parent / "src" / "typed_mjcf"
 
 
 def core_module(name: str) -> ModuleType:
-    """``typed_mjcf.<name>``, as imported already or loaded from its file."""
-    qualified = f"typed_mjcf.{name}"
+    """``typed_mjcf.<name>`` (``name`` a path under the package: ``_core/language``), as
+    imported already or loaded from its file."""
+    qualified = "typed_mjcf." + name.replace("/", ".")
     if qualified in sys.modules:
         return sys.modules[qualified]
     spec = importlib.util.spec_from_file_location(qualified, SRC / f"{name}.py")

@@ -66,7 +66,7 @@ autodoc_preserve_defaults = True
 
 def _public_target(app: Sphinx, env: BuildEnvironment, node: pending_xref,
                    contnode: Element) -> Element | None:
-    """A name written by its private module (``typed_mjcf._tree.Element``) or bare
+    """A name written by its private module (``typed_mjcf._core.tree.Element``) or bare
     (``Element``, ``Body``) resolved to what users import: the documented public object, else
     the element class's page of the MJCF reference. Anything else stays a warning."""
     if node.get("refdomain") != "py":

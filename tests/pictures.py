@@ -90,7 +90,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--out", type=Path, default=FOLDER, help="where to write them")
     args = parser.parse_args(argv)
     args.out.mkdir(parents=True, exist_ok=True)
-    from typed_mjcf._png import encode_png
+    from typed_mjcf._sim.png import encode_png
 
     for name, picture in PICTURES.items():
         path = args.out / name

@@ -19,7 +19,7 @@ import typed_mjcf as mjcf
 from codegen import ir, render
 from codegen.wheel import WheelRow, read_print_schema, read_reference
 from typed_mjcf import Element
-from typed_mjcf._tree import Attribute, element_class
+from typed_mjcf._core.tree import Attribute, element_class
 
 ELEMENTS_PYI = render.GENERATED_DIR / "elements.pyi"
 

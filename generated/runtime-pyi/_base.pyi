@@ -8,17 +8,17 @@ feature module.
 from __future__ import annotations
 from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Final, cast
-from typed_mjcf import _tree
-from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
-from typed_mjcf._names import NameScope
-from typed_mjcf._preview import FreeView, render, render_png
-from typed_mjcf._resource_limits import (
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
+from typed_mjcf._core.names import NameScope
+from typed_mjcf._model.resource_limits import (
     DEFAULT_COMPILE_LIMITS,
     DEFAULT_RENDER_LIMITS,
     CompileLimits,
     RenderLimits,
 )
-from typed_mjcf._validate import Finding, validate
+from typed_mjcf._model.validate import Finding, validate
+from typed_mjcf._sim.preview import FreeView, render, render_png
 import os
 import mujoco
 from typed_mjcf._generated.elements import Body, Camera, Key, Namespace, RootElement
@@ -115,7 +115,7 @@ class Element(_tree.Element):
 
         Numbers read from a file are written as they were read; values set in Python in the
         shortest form that reads back exactly. ``precision`` (significant digits; ``None``:
-        the library's default, ``typed_mjcf._codecs.DEFAULT_PRECISION``, the shortest form),
+        the library's default, ``typed_mjcf._core.codecs.DEFAULT_PRECISION``, the shortest form),
         ``zero_threshold`` (smaller magnitudes are written as 0) and ``canonical=True`` (every
         number in the canonical form, as if set in Python) reformat every number. Names are
         written as seen from the element's model, or from ``prefix_root`` (a name scope);

@@ -15,7 +15,7 @@ dm_control's ``mjcf.Physics`` API (its names and signatures, written anew on ``m
 ``physics.model`` and ``physics.data`` are ``mujoco.MjModel`` and ``mujoco.MjData`` (of
 subclasses that add what dm_control's wrappers have: ``ptr``, ``name2id``, ``id2name``,
 ``disable``). Elements are found in the compiled model by their scoped names; unnamed ones by
-where they were compiled (:mod:`typed_mjcf._ids`), when the physics was made from their
+where they were compiled (:mod:`typed_mjcf._sim.ids`), when the physics was made from their
 model.
 """
 from __future__ import annotations
@@ -25,14 +25,7 @@ from collections.abc import Generator, Iterable, Mapping
 from typing import TYPE_CHECKING, Final, Literal, NamedTuple, Self, TypeAlias, cast, overload
 import mujoco
 import numpy as np
-from typed_mjcf._binding import (
-    PICKLING_NOT_SUPPORTED,
-    Binding,
-    EmptyBinding,
-    binding_tables,
-    new_binding,
-)
-from typed_mjcf._errors import (
+from typed_mjcf._core.errors import (
     BindingError,
     FileReadError,
     InvalidTypeError,
@@ -41,17 +34,24 @@ from typed_mjcf._errors import (
     PhysicsError,
     RenderError,
 )
+from typed_mjcf._core.tree import Element, ModelBase
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
-from typed_mjcf._resource_limits import (
+from typed_mjcf._model.resource_limits import (
     DEFAULT_COMPILE_LIMITS,
     DEFAULT_RENDER_LIMITS,
     CompileLimits,
     RenderLimits,
     check_offscreen,
 )
-from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf._sim.binding import (
+    PICKLING_NOT_SUPPORTED,
+    Binding,
+    EmptyBinding,
+    binding_tables,
+    new_binding,
+)
 from typed_mjcf.types import Array, ArrayValues
 from typed_mjcf._base import ModelRoot
 __all__ = ["Binding", "Data", "Model", "Named", "Physics", "PhysicsError",

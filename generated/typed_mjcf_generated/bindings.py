@@ -7,8 +7,8 @@ checkers see are in ``bindings.pyi``.
 
 from __future__ import annotations
 
-from typed_mjcf._binding import Binding, BindingTables, Kind, Ragged, finish_bindings
-from typed_mjcf._named import StructIndexer
+from typed_mjcf._sim.binding import Binding, BindingTables, Kind, Ragged, finish_bindings
+from typed_mjcf._sim.named import StructIndexer
 
 __all__ = [
     "ActuatorBinding",

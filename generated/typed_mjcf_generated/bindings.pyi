@@ -9,7 +9,7 @@ from typing import overload
 import numpy as _np
 
 from typed_mjcf._base import Element as _Element
-from typed_mjcf._binding import Binding as _Binding
+from typed_mjcf._sim.binding import Binding as _Binding
 from typed_mjcf._generated.elements import (
     Accelerometer,
     ActuatorPlugin,
@@ -103,8 +103,8 @@ from typed_mjcf._generated.elements import (
     Weld,
     Worldbody,
 )
-from typed_mjcf._named import FieldIndexer as _FieldIndexer
-from typed_mjcf._named import StructIndexer as _StructIndexer
+from typed_mjcf._sim.named import FieldIndexer as _FieldIndexer
+from typed_mjcf._sim.named import StructIndexer as _StructIndexer
 from typed_mjcf.types import Array as _Array
 from typed_mjcf.types import ArrayValues as _ArrayValues
 

@@ -13,11 +13,11 @@ from typing import Literal, TypeAlias, TypedDict, get_args
 
 from typed_mjcf import types as _t
 from typed_mjcf._base import Attachable, Element, ModelRoot
-from typed_mjcf._grammar import AttributeSpec as A
-from typed_mjcf._grammar import ChildSpec as C
-from typed_mjcf._grammar import ElementSpec as S
-from typed_mjcf._language import Allocation, AttachFacts, ChildNeeds, FlexcompFacts, GeneratedShape, GrammarFacts, KeyframeFacts
-from typed_mjcf._tree import finish_grammar
+from typed_mjcf._core.grammar import AttributeSpec as A
+from typed_mjcf._core.grammar import ChildSpec as C
+from typed_mjcf._core.grammar import ElementSpec as S
+from typed_mjcf._core.language import Allocation, AttachFacts, ChildNeeds, FlexcompFacts, GeneratedShape, GrammarFacts, KeyframeFacts
+from typed_mjcf._core.tree import finish_grammar
 
 __all__ = [
     "Accelerometer",

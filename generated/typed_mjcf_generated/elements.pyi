@@ -13,8 +13,8 @@ from typed_mjcf import types as _t
 from typed_mjcf._base import Attachable as _Attachable
 from typed_mjcf._base import Element as _Element
 from typed_mjcf._base import ModelRoot as _ModelRoot
-from typed_mjcf._grammar import ElementSpec as _S
-from typed_mjcf._tree import ElementList as _List
+from typed_mjcf._core.grammar import ElementSpec as _S
+from typed_mjcf._core.tree import ElementList as _List
 
 __all__ = [
     "Accelerometer",

@@ -14,21 +14,21 @@ from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.tree import ElementList
 from typed_mjcf._generated import elements as _elements
 from typed_mjcf._generated.elements import *
-from typed_mjcf._names import NameScope
-from typed_mjcf._notebook import set_notebook_display
-from typed_mjcf._png import encode_png
-from typed_mjcf._preview import VIEWS, FreeView
-from typed_mjcf._resource_limits import CompileLimits, RenderLimits
-from typed_mjcf._traversal import (
+from typed_mjcf._model.resource_limits import CompileLimits, RenderLimits
+from typed_mjcf._model.traversal import (
     commit_defaults,
     get_attachment_frame,
     get_frame_freejoint,
     get_frame_joints,
     get_freejoint,
 )
-from typed_mjcf._tree import ElementList
+from typed_mjcf._sim.notebook import set_notebook_display
+from typed_mjcf._sim.png import encode_png
+from typed_mjcf._sim.preview import VIEWS, FreeView
 from typed_mjcf.assets import Asset
 from typed_mjcf.errors import (
     BindingError,

@@ -12,29 +12,29 @@ from typing import TYPE_CHECKING, Final, cast
 
 from lxml import etree
 
-from typed_mjcf import _tree
-from typed_mjcf._assets_io import get_assets
-from typed_mjcf._bridge import compile_model, to_spec
-from typed_mjcf._codecs import Format
-from typed_mjcf._compat import dm_control_behaviour
-from typed_mjcf._compose import attach, attached_children, detach, include_copy
-from typed_mjcf._debuginfo import StackTraceEntry, attribute_stacks, init_stack
-from typed_mjcf._defaults import resolve
-from typed_mjcf._errors import InvalidTypeError, InvalidValueError, did_you_mean
-from typed_mjcf._files import copied_files, file_stem, rebase_files
-from typed_mjcf._names import NameScope
-from typed_mjcf._notebook import repr_mimebundle, repr_png
-from typed_mjcf._preview import FreeView, render, render_png
-from typed_mjcf._resource_limits import (
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.codecs import Format
+from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
+from typed_mjcf._core.errors import InvalidTypeError, InvalidValueError, did_you_mean
+from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.tree import check_removable, grammar_facts
+from typed_mjcf._model.assets_io import get_assets
+from typed_mjcf._model.compose import attach, attached_children, detach, include_copy
+from typed_mjcf._model.defaults import resolve
+from typed_mjcf._model.resource_limits import (
     DEFAULT_COMPILE_LIMITS,
     DEFAULT_RENDER_LIMITS,
     CompileLimits,
     RenderLimits,
 )
-from typed_mjcf._traversal import commit_defaults
-from typed_mjcf._tree import check_removable, grammar_facts
-from typed_mjcf._validate import Finding, validate
-from typed_mjcf._write import attribute_text, element_text
+from typed_mjcf._model.traversal import commit_defaults
+from typed_mjcf._model.validate import Finding, validate
+from typed_mjcf._model.write import attribute_text, element_text
+from typed_mjcf._sim.bridge import compile_model, to_spec
+from typed_mjcf._sim.notebook import repr_mimebundle, repr_png
+from typed_mjcf._sim.preview import FreeView, render, render_png
+from typed_mjcf._text.files import copied_files, file_stem, rebase_files
 from typed_mjcf.assets import Asset
 
 if TYPE_CHECKING:
@@ -267,7 +267,7 @@ class Element(_tree.Element):
 
         Numbers read from a file are written as they were read; values set in Python in the
         shortest form that reads back exactly. ``precision`` (significant digits; ``None``:
-        the library's default, ``typed_mjcf._codecs.DEFAULT_PRECISION``, the shortest form),
+        the library's default, ``typed_mjcf._core.codecs.DEFAULT_PRECISION``, the shortest form),
         ``zero_threshold`` (smaller magnitudes are written as 0) and ``canonical=True`` (every
         number in the canonical form, as if set in Python) reformat every number. Names are
         written as seen from the element's model, or from ``prefix_root`` (a name scope);

@@ -5,7 +5,7 @@ from __future__ import annotations
 import hashlib
 import os
 
-from typed_mjcf._errors import FileReadError, InvalidTypeError, InvalidValueError
+from typed_mjcf._core.errors import FileReadError, InvalidTypeError, InvalidValueError
 
 
 class Asset:

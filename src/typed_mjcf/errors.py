@@ -3,14 +3,14 @@
 Each derives from :class:`MjcfError` and from the builtin exception a Python user would
 expect (``ValueError``, ``TypeError``, ``AttributeError``, ``OSError`` or ``RuntimeError``),
 so code written for dm_control.mjcf catches them as it did. They are defined where the
-runtime raises them (:mod:`typed_mjcf._errors`, and :mod:`typed_mjcf._validate` for the
+runtime raises them (:mod:`typed_mjcf._core.errors`, and :mod:`typed_mjcf._model.validate` for the
 findings of ``validate()``); this module is where users import them from, and the name
 tracebacks show (``typed_mjcf.errors.ParseError``). ``typed_mjcf`` exports them too.
 """
 
 from __future__ import annotations
 
-from typed_mjcf._errors import (
+from typed_mjcf._core.errors import (
     BindingError,
     ChildError,
     CompileError,
@@ -31,7 +31,7 @@ from typed_mjcf._errors import (
     did_you_mean,
     shown_as_public,
 )
-from typed_mjcf._validate import Finding, ValidationError
+from typed_mjcf._model.validate import Finding, ValidationError
 
 __all__ = [
     "BindingError",

@@ -11,14 +11,14 @@ import os
 from collections.abc import Mapping
 from typing import IO, TYPE_CHECKING, cast
 
-from typed_mjcf._access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
-from typed_mjcf._assets_io import export_with_assets as export
-from typed_mjcf._bridge import spec_to_xml
-from typed_mjcf._compat import dm_control_behaviour
-from typed_mjcf._errors import InvalidTypeError, ParseError
-from typed_mjcf._parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
-from typed_mjcf._tree import ModelBase, name_after_files
-from typed_mjcf._zip import read_zip, use_archive_files, write_zip
+from typed_mjcf._core.access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
+from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.errors import InvalidTypeError, ParseError
+from typed_mjcf._core.tree import ModelBase, name_after_files
+from typed_mjcf._model.assets_io import export_with_assets as export
+from typed_mjcf._model.zip import read_zip, use_archive_files, write_zip
+from typed_mjcf._sim.bridge import spec_to_xml
+from typed_mjcf._text.parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 
 if TYPE_CHECKING:
     import mujoco

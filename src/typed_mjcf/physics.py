@@ -14,7 +14,7 @@ dm_control's ``mjcf.Physics`` API (its names and signatures, written anew on ``m
 ``physics.model`` and ``physics.data`` are ``mujoco.MjModel`` and ``mujoco.MjData`` (of
 subclasses that add what dm_control's wrappers have: ``ptr``, ``name2id``, ``id2name``,
 ``disable``). Elements are found in the compiled model by their scoped names; unnamed ones by
-where they were compiled (:mod:`typed_mjcf._ids`), when the physics was made from their
+where they were compiled (:mod:`typed_mjcf._sim.ids`), when the physics was made from their
 model.
 """
 
@@ -30,18 +30,9 @@ from typing import TYPE_CHECKING, Final, Literal, NamedTuple, Self, TypeAlias, c
 import mujoco
 import numpy as np
 
-from typed_mjcf import _tree
-from typed_mjcf._binding import (
-    PICKLING_NOT_SUPPORTED,
-    Binding,
-    EmptyBinding,
-    binding_tables,
-    new_binding,
-)
-from typed_mjcf._compat import STATE
-from typed_mjcf._compile import compile_from_memory
-from typed_mjcf._dmcompat.debugging import explained
-from typed_mjcf._errors import (
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.behaviour import STATE
+from typed_mjcf._core.errors import (
     BindingError,
     FileReadError,
     InvalidTypeError,
@@ -50,21 +41,30 @@ from typed_mjcf._errors import (
     PhysicsError,
     RenderError,
 )
+from typed_mjcf._core.tree import Element, ModelBase
+from typed_mjcf._dmcompat.debugging import explained
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
-from typed_mjcf._gl import ensure_gl_backend, gl_error
-from typed_mjcf._ids import compile_for_physics, ids_for_text, kind_of
-from typed_mjcf._model_state import model_state
-from typed_mjcf._named import make_axes, struct_indexers
-from typed_mjcf._resource_limits import (
+from typed_mjcf._model.resource_limits import (
     DEFAULT_COMPILE_LIMITS,
     DEFAULT_RENDER_LIMITS,
     CompileLimits,
     RenderLimits,
     check_offscreen,
 )
-from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf._sim.binding import (
+    PICKLING_NOT_SUPPORTED,
+    Binding,
+    EmptyBinding,
+    binding_tables,
+    new_binding,
+)
+from typed_mjcf._sim.compile import compile_from_memory
+from typed_mjcf._sim.gl import ensure_gl_backend, gl_error
+from typed_mjcf._sim.ids import compile_for_physics, ids_for_text, kind_of
+from typed_mjcf._sim.model_state import model_state
+from typed_mjcf._sim.named import make_axes, struct_indexers
 from typed_mjcf.types import Array, ArrayValues
 
 if TYPE_CHECKING:

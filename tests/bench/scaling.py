@@ -15,7 +15,7 @@ import time
 from collections.abc import Callable, Sequence
 
 import typed_mjcf as mjcf
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
 
 
 def chain(n: int) -> mjcf.RootElement:

@@ -12,7 +12,7 @@ import pytest
 from pytest import approx
 
 import typed_mjcf as mjcf
-from typed_mjcf._parse import ParseOptions, Problem, parse_path
+from typed_mjcf._text.parse import ParseOptions, Problem, parse_path
 from typed_mjcf.cli import main
 from typed_mjcf.cli._common import Progress
 

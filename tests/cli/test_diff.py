@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _tree
-from typed_mjcf._files import name_files
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._text.files import name_files
 from typed_mjcf.cli import main
 from typed_mjcf.cli.diff import diff_models
 

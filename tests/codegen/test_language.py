@@ -1,4 +1,4 @@
-"""``[language]`` travels generically: typed_mjcf._language declares each fact once, and
+"""``[language]`` travels generically: typed_mjcf._core.language declares each fact once, and
 codegen/language.py reads, stores and renders whatever that declaration has."""
 
 from __future__ import annotations
@@ -17,8 +17,8 @@ import pytest
 
 from codegen import ir, language
 from codegen.facts import FactsError, load_facts
-from typed_mjcf._language import FROM_GRAMMAR, GrammarFacts, KeyframeFacts
-from typed_mjcf._tree import grammar_facts
+from typed_mjcf._core.language import FROM_GRAMMAR, GrammarFacts, KeyframeFacts
+from typed_mjcf._core.tree import grammar_facts
 
 
 def _table() -> dict[str, object]:
@@ -125,6 +125,6 @@ def test_a_new_fact_goes_from_facts_toml_to_the_runtime(tmp_path: Path) -> None:
         "[language]\n", '[language]\nmirrored = ["joint", "site"]\n', 1), encoding="utf-8")
     done = _run(copy, "-m", "codegen", "generate")
     assert done.returncode == 0, done.stderr
-    used = _run(copy, "-c", "from typed_mjcf._tree import grammar_facts; "
+    used = _run(copy, "-c", "from typed_mjcf._core.tree import grammar_facts; "
                             "print(sorted(grammar_facts().mirrored))")
     assert used.stdout.strip() == "['joint', 'site']", used.stderr

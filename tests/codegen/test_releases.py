@@ -90,7 +90,7 @@ def test_gates_list_each_release_s_type_where_more_than_keywords_differ() -> Non
     namespace: dict[str, object] = {}
     exec(releases.render_table(gates, newest.mujoco_version), namespace)  # noqa: S102
     assert namespace["TYPES"] == {"joint": {"damping": {"3.0.0": (
-        "int", None, (1, 2), (), (), "3", None)}}}  # typed_mjcf._releases.TypeRow
+        "int", None, (1, 2), (), (), "3", None)}}}  # typed_mjcf._releases.gating.TypeRow
     notes = releases.notes(gates)
     assert notes["joint"]["damping"] == 'MuJoCo 3.0.0: int[1..2], default "3"'
 

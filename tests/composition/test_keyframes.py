@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._tree import element_classes, grammar_facts
+from typed_mjcf._core.tree import element_classes, grammar_facts
 
 from .robots import site
 

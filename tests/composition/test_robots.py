@@ -26,7 +26,7 @@ from lxml import etree
 
 import typed_mjcf as mjcf
 from tests.runtime.model_compare import model_differences
-from typed_mjcf import _tree
+from typed_mjcf._core import tree as _tree
 from typed_mjcf.errors import ExportError
 
 from .robots import HAND_XML, Parts, body, site

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._compat import dm_control_behaviour
+from typed_mjcf._core.behaviour import dm_control_behaviour
 from typed_mjcf._dmcompat import debugging, installed
 
 from ..runtime.test_io import box_stl

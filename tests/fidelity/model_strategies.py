@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 
 import typed_mjcf as mjcf
 from typed_mjcf import Element
-from typed_mjcf._grammar import AttributeSpec, ElementSpec
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core.tree import element_classes
 
 T = TypeVar("T")
 

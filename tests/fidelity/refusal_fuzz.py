@@ -29,8 +29,8 @@ from pathlib import Path
 from lxml import etree
 
 import typed_mjcf as mjcf
-from typed_mjcf._grammar import AttributeSpec, ElementSpec
-from typed_mjcf._validate import validate
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
+from typed_mjcf._model.validate import validate
 from typed_mjcf.types import XmlElement
 
 from ..runtime.test_corpus import CORPUS, corpus_files

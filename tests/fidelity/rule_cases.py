@@ -16,8 +16,8 @@ import functools
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from typed_mjcf import _tree
-from typed_mjcf._grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
 
 # A world with something of every kind a rule's element may name.
 WORLD = (

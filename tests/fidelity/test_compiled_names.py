@@ -11,9 +11,9 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _tree
-from typed_mjcf._compiled_names import CompiledNames
-from typed_mjcf._tree import Element, grammar_facts
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.tree import Element, grammar_facts
+from typed_mjcf._model.compiled_names import CompiledNames
 
 from ..runtime.test_io import box_stl
 

@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
 
 from ..runtime.test_corpus import CORPUS, XFAIL, skip_unless_mujoco_reads
 

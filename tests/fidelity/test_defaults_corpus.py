@@ -17,8 +17,8 @@ import typed_mjcf as mjcf
 from tests.cli import corpus
 from tests.runtime.model_compare import clear_asset_cache, model_differences
 from tests.runtime.test_corpus import corpus_files
-from typed_mjcf import _tree
-from typed_mjcf._defaults import resolve, resolve_all
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._model.defaults import resolve, resolve_all
 
 
 @pytest.fixture(autouse=True)

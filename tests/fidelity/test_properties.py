@@ -12,7 +12,7 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import typed_mjcf as mjcf
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
 
 from .model_strategies import Builder
 

@@ -12,7 +12,7 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
 
 WORLD = ('<worldbody><body name="b"><joint name="j"/><geom size="0.1"/>'
          '<site name="s"/><site name="s2"/></body></worldbody>')

@@ -15,8 +15,8 @@ import pytest
 
 import typed_mjcf as mjcf
 from typed_mjcf import Element
-from typed_mjcf._release_facts import UNDERFLOWING_NUMBERS, has
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
+from typed_mjcf._releases.facts import UNDERFLOWING_NUMBERS, has
 
 from ..runtime.model_compare import model_differences
 

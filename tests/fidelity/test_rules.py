@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
 
 from .rule_cases import Rule, cases, rules
 

@@ -25,8 +25,8 @@ import pytest
 
 import typed_mjcf as mjcf
 from codegen import ir, probe
-from typed_mjcf import _tree
-from typed_mjcf._grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
 from typed_mjcf.errors import MjcfError
 
 # One named element of each kind a probed element may refer to; ``{body}`` is where the

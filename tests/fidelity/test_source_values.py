@@ -23,10 +23,10 @@ from lxml import etree
 
 import typed_mjcf as mjcf
 from tests.runtime.test_corpus import CORPUS
-from typed_mjcf import _tree
-from typed_mjcf._codecs import ArrayCodec, RealCodec
-from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import Element
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.codecs import ArrayCodec, RealCodec
+from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.tree import Element
 
 
 def _parseable() -> list[object]:

@@ -10,7 +10,7 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._validate import (
+from typed_mjcf._model.validate import (
     RULES,
     Finding,
     ValidationError,

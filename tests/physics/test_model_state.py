@@ -1,5 +1,5 @@
 """A compiled model's state written with ``mj_saveModel`` is ``__getstate__``'s, byte for byte,
-and a Physics' model made from it is the compiled model (``typed_mjcf._model_state``)."""
+and a Physics' model made from it is the compiled model (``typed_mjcf._sim.model_state``)."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ import mujoco
 import pytest
 
 import typed_mjcf
-from typed_mjcf import _model_state
-from typed_mjcf._model_state import model_state
+from typed_mjcf._sim import model_state as _model_state
+from typed_mjcf._sim.model_state import model_state
 from typed_mjcf.physics import Physics
 
 TEXTURED = """<mujoco><asset>

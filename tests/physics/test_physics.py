@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._png import encode_png
+from typed_mjcf._sim.png import encode_png
 from typed_mjcf.physics import BindingError
 
 

@@ -6,7 +6,7 @@ import string
 
 import numpy as np
 
-from typed_mjcf._font import GLYPH_HEIGHT, draw_text, text_size
+from typed_mjcf._sim.font import GLYPH_HEIGHT, draw_text, text_size
 
 INK = (200, 100, 50)
 

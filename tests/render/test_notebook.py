@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _gl
+from typed_mjcf._sim import gl as _gl
 
 from .scenes import box_scene, decode_png
 

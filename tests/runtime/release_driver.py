@@ -4,7 +4,7 @@ installed MuJoCo's, so the release tests run for every release on the newest MuJ
     TYPED_MJCF_TEST_RELEASE=3.17.0 pytest -p tests.runtime.release_driver tests/runtime/...
 
 The runtime reads the release from the ``*.dist-info`` beside the ``mujoco`` module
-(``typed_mjcf._releases.installed_mujoco``); while typed-mjcf is imported, that lookup is
+(``typed_mjcf._releases.gating.installed_mujoco``); while typed-mjcf is imported, that lookup is
 pointed at a folder holding only ``mujoco-<release>.dist-info``. MuJoCo itself stays the
 installed one (tests that compare with it check ``mujoco.__version__``).
 """
@@ -38,7 +38,7 @@ def pretend(release: str) -> None:
 
     setattr(importlib.util, "find_spec", find_spec)  # read once: at import
     try:
-        importlib.import_module("typed_mjcf._releases")  # reads the release
+        importlib.import_module("typed_mjcf._releases.gating")  # reads the release
     finally:
         setattr(importlib.util, "find_spec", real)
 

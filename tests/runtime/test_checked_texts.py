@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._codecs import (
+from typed_mjcf._core.codecs import (
     _CHECKED_LENGTH,
     _CHECKED_TEXTS,
     ArrayCodec,

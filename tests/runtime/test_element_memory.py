@@ -8,7 +8,7 @@ import gc
 import tracemalloc
 
 import typed_mjcf as mjcf
-from typed_mjcf import _tree
+from typed_mjcf._core import tree as _tree
 
 ELEMENTS = 20_000
 

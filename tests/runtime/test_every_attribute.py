@@ -12,8 +12,8 @@ import pytest
 
 import typed_mjcf as mjcf
 from typed_mjcf import Element
-from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.tree import element_classes
 
 
 def _routes() -> dict[str, list[str]]:

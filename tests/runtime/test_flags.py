@@ -17,7 +17,7 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._codecs import FlagsCodec, Format, Rejected
+from typed_mjcf._core.codecs import FlagsCodec, Format, Rejected
 from typed_mjcf.cli.to_python import to_python
 
 WORLD = ('<worldbody><body name="b"><joint name="j"/><geom size="0.1"/></body>'

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._codecs import FLOAT32_MAX
+from typed_mjcf._core.codecs import FLOAT32_MAX
 
 # just beyond a float32's largest value (MuJoCo refuses it) and just within (it compiles)
 BEYOND, WITHIN = 3.4028236e38, 3.4e38

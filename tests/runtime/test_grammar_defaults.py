@@ -9,8 +9,8 @@ import mujoco
 import numpy as np
 
 import typed_mjcf as mjcf
-from typed_mjcf._defaults import resolve
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core.tree import element_classes
+from typed_mjcf._model.defaults import resolve
 
 # MJCF name -> MjsJoint field (MuJoCo's C name where it differs)
 NAMES = {"damping": "damping", "armature": "armature", "frictionloss": "frictionloss",

@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._codecs import KeywordCodec
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core.codecs import KeywordCodec
+from typed_mjcf._core.tree import element_classes
 from typed_mjcf.errors import MjcfError
 
 HEADLIGHT = '<mujoco><visual><headlight active="{}"/></visual></mujoco>'

@@ -18,8 +18,8 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
-from typed_mjcf import _codecs
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core import codecs as _codecs
+from typed_mjcf._core.tree import element_classes
 from typed_mjcf.cli import main
 
 X = 0.98765  # written "0.98765" by default; "0.988" at 3 digits; "0.99" by the test spelling

@@ -1,5 +1,5 @@
 """Facts about MJCF as a whole that differ between releases (schema/releases/behaviour.toml, the
-generated table, ``typed_mjcf._release_facts``): each checked against the installed MuJoCo
+generated table, ``typed_mjcf._releases.facts``): each checked against the installed MuJoCo
 itself, and the behaviour of a release lacking it checked on any MuJoCo by applying that
 release's facts (``apply(release)``), then the installed one's again."""
 
@@ -13,10 +13,11 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _release_facts, _releases
 from typed_mjcf._generated.release_facts import SINCE
 from typed_mjcf._generated.releases import RELEASES
-from typed_mjcf._release_facts import ASSET_CACHE_CHECKS_CONTENTS, UNDERFLOWING_NUMBERS, has
+from typed_mjcf._releases.facts import ASSET_CACHE_CHECKS_CONTENTS, UNDERFLOWING_NUMBERS, has
+from typed_mjcf._releases.gating import _releases
+from typed_mjcf._releases.gating import facts as _release_facts
 
 from .model_compare import clear_asset_cache
 

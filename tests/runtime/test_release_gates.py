@@ -1,4 +1,4 @@
-"""The runtime follows the installed MuJoCo's grammar (``typed_mjcf._releases``): what that
+"""The runtime follows the installed MuJoCo's grammar (``typed_mjcf._releases.gating``): what that
 release lacks of the newest's (the typing surface) is refused, naming the release that has
 it; what it has is accepted. The tests read the generated table, so they check whichever
 release is installed (``nox -s releases`` runs them on the older ones)."""
@@ -11,9 +11,9 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.runtime.release_driver import RELEASE_VARIABLE
-from typed_mjcf import _releases
+from typed_mjcf._core.tree import Attribute, element_classes
 from typed_mjcf._generated.releases import ATTRIBUTES, CHILDREN, KEYWORDS, RELEASES
-from typed_mjcf._tree import Attribute, element_classes
+from typed_mjcf._releases.gating import gating as _releases
 from typed_mjcf.errors import (
     IllegalChildError,
     InvalidValueError,

@@ -1,4 +1,4 @@
-"""An attribute's type follows the release in use (``typed_mjcf._releases``): where an older
+"""An attribute's type follows the release in use (``typed_mjcf._releases.gating``): where an older
 release types it otherwise than the newest (kind, value count, keywords, default, namespace;
 the generated ``TYPES`` table), its spec, codec and default are that release's, on every
 route (assignment, parse, export, validate); a value only another release takes is refused
@@ -17,11 +17,12 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.runtime.release_driver import RELEASE_VARIABLE
-from typed_mjcf import _codecs, _releases
-from typed_mjcf._codecs import Rejected
+from typed_mjcf._core import codecs as _codecs
+from typed_mjcf._core.codecs import Rejected
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core.tree import Element, element_classes
 from typed_mjcf._generated.releases import KEYWORDS, RELEASES, REMOVED, TYPES
-from typed_mjcf._grammar import AttributeSpec, ElementSpec
-from typed_mjcf._tree import Element, element_classes
+from typed_mjcf._releases import gating as _releases
 from typed_mjcf.errors import InvalidValueError, ParseError
 
 CLASSES = {cls.spec.row: cls for cls in element_classes().values()}

@@ -6,7 +6,7 @@ import copy
 from pathlib import Path
 
 import typed_mjcf as mjcf
-from typed_mjcf import _tree
+from typed_mjcf._core import tree as _tree
 
 MAIN = """\
 <mujoco model="m">

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _grammar, _tree
+from typed_mjcf._core import grammar as _grammar
+from typed_mjcf._core import tree as _tree
 
 
 @pytest.fixture

@@ -26,9 +26,10 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
-from typed_mjcf import _codecs, _tree
-from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import Element, element_classes
+from typed_mjcf._core import codecs as _codecs
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.tree import Element, element_classes
 from typed_mjcf.errors import MjcfError
 
 # ---------------------------------------------------------------------------- storing

@@ -15,10 +15,10 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
-from typed_mjcf._codecs import Format
-from typed_mjcf._export import Writer
-from typed_mjcf._write import element_text
-from typed_mjcf._xmltext import serialize
+from typed_mjcf._core.codecs import Format
+from typed_mjcf._model.write import element_text
+from typed_mjcf._text.export import Writer
+from typed_mjcf._text.xmltext import serialize
 from typed_mjcf.errors import ExportError, ParseError
 
 from .test_corpus import CORPUS

@@ -17,7 +17,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 
 import typed_mjcf as mjcf
-from typed_mjcf._validate import validate
+from typed_mjcf._model.validate import validate
 
 from .test_fuzz import MUTATIONS, SEEDS
 

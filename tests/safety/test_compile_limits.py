@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._resource_limits import check_compile, totals
+from typed_mjcf._model.resource_limits import check_compile, totals
 from typed_mjcf.cli import main
 from typed_mjcf.errors import InvalidTypeError
 

@@ -172,7 +172,8 @@ def test_compile_raises_the_librarys_error_for_mujocos_runtime_error() -> None:
     CompileError."""
     code = textwrap.dedent("""
         import typed_mjcf as mjcf
-        from typed_mjcf import _bridge, _validate
+        from typed_mjcf._model import validate as _validate
+        from typed_mjcf._sim import bridge as _bridge
         model = mjcf.from_xml_string('<mujoco><asset><model name="x"/></asset></mujoco>')
         _bridge.ensure_valid = lambda model: None  # as if validate() let it through
         try:

@@ -11,7 +11,7 @@ from typing import IO
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _parse  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._text import parse as _parse  # pyright: ignore[reportPrivateUsage]
 
 from ..operations import growth
 

@@ -13,7 +13,7 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _assets_io  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._model import assets_io as _assets_io  # pyright: ignore[reportPrivateUsage]
 
 from ..runtime.test_io import box_stl
 

@@ -26,7 +26,7 @@ signal.signal(signal.SIGINT, signal.default_int_handler)
 sys.path[:0] = [{tests!r}]
 from test_export_signals import model
 import typed_mjcf as mjcf
-from typed_mjcf import _assets_io
+from typed_mjcf._model import assets_io as _assets_io
 
 folder, version, at, how = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
 real = _assets_io._put_in_place

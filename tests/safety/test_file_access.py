@@ -14,7 +14,7 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _tree  # pyright: ignore[reportPrivateUsage]
+from typed_mjcf._core import tree as _tree  # pyright: ignore[reportPrivateUsage]
 
 from ..runtime.test_io import box_stl
 

@@ -1,6 +1,6 @@
 """The file opened is the file checked: a process that can write the model's folder and swaps
 a file (or a folder of the path) for a link out of it while the library reads gets nothing
-from outside (typed_mjcf._access.open_confined)."""
+from outside (typed_mjcf._core.access.open_confined)."""
 
 from __future__ import annotations
 

@@ -13,7 +13,7 @@ from typing import cast
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._binding import BindingError
+from typed_mjcf._sim.binding import BindingError
 
 
 def _call(function: object, *args: object) -> object:

@@ -30,7 +30,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import typed_mjcf
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core.tree import element_classes
 from typed_mjcf.errors import MjcfError
 
 from ..runtime.test_corpus import corpus

@@ -12,8 +12,8 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._grammar import ElementSpec
-from typed_mjcf._parse import root_class
+from typed_mjcf._core.grammar import ElementSpec
+from typed_mjcf._text.parse import root_class
 
 
 def _once_only_children() -> list[tuple[list[ElementSpec], str]]:

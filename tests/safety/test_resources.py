@@ -20,8 +20,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf import _tree
-from typed_mjcf._codecs import _DOUBLE, _FLOAT, _INTEGER, _PIECE, ArrayCodec, Format, Rejected
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.codecs import _DOUBLE, _FLOAT, _INTEGER, _PIECE, ArrayCodec, Format, Rejected
 from typed_mjcf.io import ParseLimits
 
 HANG_GUARD = 120  # seconds: a stuck child fails the test instead of stalling the suite

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import typed_mjcf as mjcf
-from typed_mjcf._tree import element_classes
+from typed_mjcf._core.tree import element_classes
 
 
 def _is_xml_char(c: str) -> bool:  # XML 1.0, production [2] Char

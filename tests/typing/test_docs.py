@@ -22,8 +22,8 @@ from types import FunctionType
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import DCLASS, Element, element_classes
+from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.tree import DCLASS, Element, element_classes
 
 STUB = Path(mjcf.__file__).resolve().parent / "_generated" / "elements.pyi"
 

@@ -3,9 +3,9 @@
 dm_control's implementation."""
 from __future__ import annotations
 from typing import Final
-from typed_mjcf._names import SEPARATOR
-from typed_mjcf._tree import DCLASS as _DCLASS
-from typed_mjcf._tree import grammar_facts
+from typed_mjcf._core.names import SEPARATOR
+from typed_mjcf._core.tree import DCLASS as _DCLASS
+from typed_mjcf._core.tree import grammar_facts
 _FACTS: Final = grammar_facts()
 PREFIX_SEPARATOR: Final = SEPARATOR
 PREFIX_SEPARATOR_ESCAPE: Final = "\\"

@@ -16,7 +16,7 @@ import contextlib
 from collections.abc import Generator, Iterator
 from typing import Final, NamedTuple
 from typed_mjcf._base import Element, ModelRoot
-from typed_mjcf._debuginfo import StackTraceEntry
+from typed_mjcf._core.debuginfo import StackTraceEntry
 DEBUG_METADATA_PREFIX: Final = "pymjcfdebug"
 
 class ElementDebugInfo(NamedTuple):

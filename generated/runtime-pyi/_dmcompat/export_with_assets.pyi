@@ -3,7 +3,7 @@
 it (the typed API's names it after the file the model was read from)."""
 from __future__ import annotations
 import os
-from typed_mjcf._tree import ModelBase
+from typed_mjcf._core.tree import ModelBase
 __all__ = ["export_with_assets"]
 
 def export_with_assets(mjcf_model: ModelBase, out_dir: str | os.PathLike[str],

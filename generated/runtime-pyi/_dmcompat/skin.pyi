@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import NamedTuple, TypeAlias
 import numpy as np
-from typed_mjcf._skin import NAME_BYTES
+from typed_mjcf._text.skin import NAME_BYTES
 MAX_BODY_NAME_LENGTH = NAME_BYTES
 Floats: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.float32]]
 Ints: TypeAlias = np.ndarray[tuple[int, ...], np.dtype[np.int32]]

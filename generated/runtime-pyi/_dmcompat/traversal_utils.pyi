@@ -1,7 +1,7 @@
 # Generated from src/typed_mjcf/_dmcompat/traversal_utils.py by codegen/runtime_stubs.py (python -m codegen render); do not edit.
 """``dm_control.mjcf.traversal_utils``."""
 from __future__ import annotations
-from typed_mjcf._traversal import (
+from typed_mjcf._model.traversal import (
     commit_defaults,
     get_attachment_frame,
     get_frame_freejoint,

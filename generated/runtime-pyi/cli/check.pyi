@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from dataclasses import asdict, dataclass
 from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
+from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf.io import FileAccess
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"

@@ -18,7 +18,7 @@ they (and ``meshdir`` and the like) mean what they meant in the file.
 """
 from __future__ import annotations
 import argparse
-from typed_mjcf._tree import Element, ModelBase, grammar_facts
+from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 NAME = "to-python"
 HELP = "write typed-mjcf Python code that rebuilds a model"
 DESCRIPTION = """\

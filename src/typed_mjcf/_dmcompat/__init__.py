@@ -16,7 +16,7 @@ from collections.abc import Generator
 from contextlib import contextmanager
 from typing import Final
 
-from typed_mjcf._compat import set_dm_control_behaviour
+from typed_mjcf._core.behaviour import set_dm_control_behaviour
 from typed_mjcf._dmcompat import (
     attribute,
     base,

@@ -23,13 +23,14 @@ from typing import Final, NamedTuple
 
 from lxml import etree
 
-from typed_mjcf import _debuginfo, _tree
 from typed_mjcf._base import Element, ModelRoot
-from typed_mjcf._debuginfo import StackTraceEntry
-from typed_mjcf._errors import CompileError
-from typed_mjcf._locate import written_nodes
-from typed_mjcf._validate import ValidationError
-from typed_mjcf._write import collect
+from typed_mjcf._core import debuginfo as _debuginfo
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.debuginfo import StackTraceEntry
+from typed_mjcf._core.errors import CompileError
+from typed_mjcf._model.validate import ValidationError
+from typed_mjcf._model.write import collect
+from typed_mjcf._sim.locate import written_nodes
 from typed_mjcf.types import XmlElement
 
 DEBUG_METADATA_PREFIX: Final = "pymjcfdebug"

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import typed_mjcf._generated.elements as _elements
 from typed_mjcf._base import Element, ModelRoot
-from typed_mjcf._tree import ElementList
+from typed_mjcf._core.tree import ElementList
 
 RootElement = _elements.RootElement
 _ElementImpl = Element  # dm_control's implementation class of every element

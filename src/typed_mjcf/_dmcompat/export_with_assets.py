@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import os
 
-from typed_mjcf._tree import ModelBase
+from typed_mjcf._core.tree import ModelBase
 from typed_mjcf.io import exported
 
 __all__ = ["export_with_assets"]

@@ -23,7 +23,7 @@ from typed_mjcf._dmcompat import (
 )
 from typed_mjcf._dmcompat.export_with_assets import export_with_assets
 from typed_mjcf._dmcompat.parser import from_file, from_path, from_xml_string, from_zip
-from typed_mjcf._traversal import (
+from typed_mjcf._model.traversal import (
     commit_defaults,
     get_attachment_frame,
     get_frame_freejoint,

@@ -2,6 +2,6 @@
 
 from __future__ import annotations
 
-from typed_mjcf._names import NameScope
+from typed_mjcf._core.names import NameScope
 
 __all__ = ["NameScope"]

@@ -10,7 +10,7 @@ from collections.abc import Callable
 from typing import Final, ParamSpec, TypeVar
 
 from typed_mjcf import io
-from typed_mjcf._access import FileAccess
+from typed_mjcf._core.access import FileAccess
 
 _P = ParamSpec("_P")
 _R = TypeVar("_R")

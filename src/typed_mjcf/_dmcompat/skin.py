@@ -9,7 +9,7 @@ from typing import NamedTuple, TypeAlias
 
 import numpy as np
 
-from typed_mjcf._skin import NAME_BYTES
+from typed_mjcf._text.skin import NAME_BYTES
 
 MAX_BODY_NAME_LENGTH = NAME_BYTES
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typed_mjcf._traversal import (
+from typed_mjcf._model.traversal import (
     commit_defaults,
     get_attachment_frame,
     get_frame_freejoint,

@@ -8,12 +8,12 @@ import warnings
 from collections.abc import Iterable, Iterator
 from typing import Final, TextIO, TypeVar, cast
 
-from typed_mjcf import _tree
-from typed_mjcf._access import DEFAULT_ACCESS
-from typed_mjcf._errors import IgnoredAttributeWarning, MjcfError, ParseError
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.access import DEFAULT_ACCESS
+from typed_mjcf._core.errors import IgnoredAttributeWarning, MjcfError, ParseError
+from typed_mjcf._core.tree import Element
 from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._parse import ParseOptions, Problem, parse_path
-from typed_mjcf._tree import Element
+from typed_mjcf._text.parse import ParseOptions, Problem, parse_path
 from typed_mjcf.io import FileAccess, from_path
 
 OK: Final = 0

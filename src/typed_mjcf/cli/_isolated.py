@@ -13,13 +13,13 @@ import subprocess
 import sys
 from collections.abc import Mapping
 
-from typed_mjcf._errors import CompileError
+from typed_mjcf._core.errors import CompileError
 
 _CHILD = """
 import pickle, sys
 import mujoco
 xml, files = pickle.load(sys.stdin.buffer)
-try:  # as typed_mjcf._compile compiles (a fresh process: no asset cache to empty)
+try:  # as typed_mjcf._sim.compile compiles (a fresh process: no asset cache to empty)
     if len({k.replace("\\\\", "/").rsplit("/", 1)[-1].casefold() for k in files}) == len(files):
         mujoco.MjModel.from_xml_string(xml, files)
     else:  # files of one base name, kept apart by their paths

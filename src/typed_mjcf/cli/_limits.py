@@ -8,7 +8,7 @@ import argparse
 import dataclasses
 from collections.abc import Callable
 
-from typed_mjcf._resource_limits import DEFAULT_RENDER_LIMITS, CompileLimits, RenderLimits
+from typed_mjcf._model.resource_limits import DEFAULT_RENDER_LIMITS, CompileLimits, RenderLimits
 from typed_mjcf.errors import MjcfError
 
 

@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass
 from typing import Final
 
-from typed_mjcf import _codecs
+from typed_mjcf._core import codecs as _codecs
 
 WIDTH: Final = 100
 INDENT: Final = "    "

@@ -12,13 +12,13 @@ from dataclasses import asdict, dataclass
 
 from lxml import etree
 
-from typed_mjcf._errors import IgnoredAttributeWarning, MjcfError, ParseError
-from typed_mjcf._export import iter_written
+from typed_mjcf._core.errors import IgnoredAttributeWarning, MjcfError, ParseError
+from typed_mjcf._core.tree import Element
 from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._parse import Problem
-from typed_mjcf._resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
-from typed_mjcf._tree import Element
-from typed_mjcf._write import vfs_text
+from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
+from typed_mjcf._model.write import vfs_text
+from typed_mjcf._text.export import iter_written
+from typed_mjcf._text.parse import Problem
 from typed_mjcf.cli._common import (
     BAD_INPUT,
     FOUND,

@@ -16,11 +16,11 @@ import itertools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
-from typed_mjcf import _tree
-from typed_mjcf._defaults import resolve_all
-from typed_mjcf._errors import MjcfError
-from typed_mjcf._export import iter_written, written_children
-from typed_mjcf._tree import Element
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.errors import MjcfError
+from typed_mjcf._core.tree import Element
+from typed_mjcf._model.defaults import resolve_all
+from typed_mjcf._text.export import iter_written, written_children
 from typed_mjcf.cli._common import BAD_INPUT, FOUND, OK, BadInput, error, load, shown, where
 from typed_mjcf.cli._values import stored_text, value_text
 from typed_mjcf.cli.render import size, write_diff_picture

@@ -28,12 +28,12 @@ from dataclasses import dataclass
 
 from lxml import etree
 
-from typed_mjcf import _tree
-from typed_mjcf._codecs import Rejected
-from typed_mjcf._grammar import ElementSpec
-from typed_mjcf._parse import INCLUDE, root_class
-from typed_mjcf._sourcelines import start_line
-from typed_mjcf._xmltext import MAX_INDENT, escape
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.codecs import Rejected
+from typed_mjcf._core.grammar import ElementSpec
+from typed_mjcf._core.sourcelines import start_line
+from typed_mjcf._text.parse import INCLUDE, root_class
+from typed_mjcf._text.xmltext import MAX_INDENT, escape
 from typed_mjcf.cli._common import (
     BAD_INPUT,
     FOUND,

@@ -30,11 +30,11 @@ from typing import cast
 
 import numpy as np
 
-from typed_mjcf import _tree
-from typed_mjcf._codecs import ArrayCodec, KeywordCodec, make_codec, to_float
-from typed_mjcf._export import iter_written
-from typed_mjcf._grammar import AttributeSpec
-from typed_mjcf._tree import Element, ModelBase, grammar_facts
+from typed_mjcf._core import tree as _tree
+from typed_mjcf._core.codecs import ArrayCodec, KeywordCodec, make_codec, to_float
+from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
+from typed_mjcf._text.export import iter_written
 from typed_mjcf.assets import Asset
 from typed_mjcf.cli import _pycode
 from typed_mjcf.cli._common import BAD_INPUT, OK, BadInput, error, load, shown, where

@@ -1,0 +1,6 @@
+# Generated from src/typed_mjcf/_core/__init__.py by codegen/runtime_stubs.py (python -m codegen render); do not edit.
+"""The core: grammar tables, value codecs, names and the element tree.
+
+Imports nothing else of the package (only ``typed_mjcf.assets`` and ``typed_mjcf.types``,
+the value types): the layers above extend it through the hooks it offers.
+"""

@@ -1,0 +1,2 @@
+"""Operations on a whole model: composition, defaults, validation, keyframes, limits, and
+export with its checks (to a string, a folder or a zip)."""

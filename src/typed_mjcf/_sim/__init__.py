@@ -1,0 +1,1 @@
+"""MuJoCo itself: compiling, compiled names and ids, bindings, physics state and pictures."""
