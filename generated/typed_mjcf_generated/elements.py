@@ -18,6 +18,7 @@ from typed_mjcf._core.grammar import ChildSpec as C
 from typed_mjcf._core.grammar import ElementSpec as S
 from typed_mjcf._core.language import Allocation, AttachFacts, ChildNeeds, FlexcompFacts, GeneratedShape, GrammarFacts, KeyframeFacts
 from typed_mjcf._core.tree import finish_grammar
+from typed_mjcf._releases import follow_installed_release
 
 __all__ = [
     "Accelerometer",
@@ -4757,7 +4758,7 @@ finish_grammar(GrammarFacts(
     keyframe=KeyframeFacts(qpos='qpos', qvel='qvel', act='act', ctrl='ctrl', mpos='mpos', mquat='mquat', time='time'),
     child_needs={'flexcomp': ChildNeeds(child='plugin', when=(), needs=('plugin', 'instance'), effect='crashes the process compiling it (SIGSEGV)'), 'mesh': ChildNeeds(child='plugin', when=('file',), needs=('instance',), effect='crashes the process compiling it (SIGSEGV)')},
     allocations={'flexcomp': Allocation(limit='max_flex_points', sizes=('count',), generator='', shape='', cubes=frozenset([]), images=(), values=None, builtins=None, copies=None), 'hfield': Allocation(limit='max_hfield_samples', sizes=('nrow', 'ncol'), generator='', shape='', cubes=frozenset([]), images=('file',), values=None, builtins=None, copies=None), 'mesh': Allocation(limit='max_mesh_vertices', sizes=(), generator='builtin', shape='', cubes=frozenset([]), images=(), values='params', builtins={'cone': GeneratedShape(params=('nvert', 'radius'), counts=('nvert',), factor=2), 'plate': GeneratedShape(params=('res_x', 'res_y'), counts=('res_x', 'res_y'), factor=1), 'supersphere': GeneratedShape(params=('resolution', 'e', 'n'), counts=('resolution', 'resolution'), factor=1), 'supertorus': GeneratedShape(params=('resolution', 'radius', 's', 't'), counts=('resolution', 'resolution'), factor=1), 'wedge': GeneratedShape(params=('res_phi', 'res_theta', 'fov_phi', 'fov_theta', 'gamma'), counts=('res_phi', 'res_theta'), factor=1)}, copies=None), 'replicate': Allocation(limit='max_replicated_elements', sizes=(), generator='', shape='', cubes=frozenset([]), images=(), values=None, builtins=None, copies='count'), 'texture': Allocation(limit='max_texture_pixels', sizes=('width', 'height'), generator='builtin', shape='type', cubes=frozenset(['cube', 'skybox']), images=('file', 'fileright', 'fileleft', 'fileup', 'filedown', 'filefront', 'fileback'), values=None, builtins=None, copies=None)},
-))
+), adjust=follow_installed_release)
 
 Integers2: TypeAlias = tuple[_t.Integer, _t.Integer] | _t.NumberList[_t.Integer] | _t.IntArrayLike
 """2 integers: a tuple of that length, a list or a numpy array."""

@@ -33,7 +33,7 @@ def test_every_runtime_module_has_a_stub() -> None:
                for p in runtime_stubs.SOURCE_DIR.rglob("*.py")
                if p.relative_to(runtime_stubs.SOURCE_DIR).parts[0] not in runtime_stubs.SKIPPED}
     assert set(files) == modules
-    assert {"_tree.pyi", "_base.pyi", "types.pyi", "__init__.pyi", "io.pyi"} <= modules
+    assert {"_core/tree.pyi", "_base.pyi", "types.pyi", "__init__.pyi", "io.pyi"} <= modules
 
 
 def stubs(tmp_path: Path, modules: dict[str, str], generated: str = "") -> dict[str, str]:

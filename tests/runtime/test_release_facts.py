@@ -15,9 +15,9 @@ import pytest
 import typed_mjcf as mjcf
 from typed_mjcf._generated.release_facts import SINCE
 from typed_mjcf._generated.releases import RELEASES
+from typed_mjcf._releases import facts as _release_facts
+from typed_mjcf._releases import gating as _releases
 from typed_mjcf._releases.facts import ASSET_CACHE_CHECKS_CONTENTS, UNDERFLOWING_NUMBERS, has
-from typed_mjcf._releases.gating import _releases
-from typed_mjcf._releases.gating import facts as _release_facts
 
 from .model_compare import clear_asset_cache
 

@@ -13,7 +13,7 @@ import typed_mjcf as mjcf
 from tests.runtime.release_driver import RELEASE_VARIABLE
 from typed_mjcf._core.tree import Attribute, element_classes
 from typed_mjcf._generated.releases import ATTRIBUTES, CHILDREN, KEYWORDS, RELEASES
-from typed_mjcf._releases.gating import gating as _releases
+from typed_mjcf._releases import gating as _releases
 from typed_mjcf.errors import (
     IllegalChildError,
     InvalidValueError,

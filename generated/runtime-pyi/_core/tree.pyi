@@ -65,9 +65,27 @@ def element_classes() -> Mapping[str, type[Element]]:
     """Every generated class, by name."""
     ...
 
-def finish_grammar(facts: GrammarFacts) -> None:
+def finish_grammar(facts: GrammarFacts,
+                   adjust: Callable[[Mapping[str, type[Element]]], None] | None = None) -> None:
     """Called by the generated tables once every class exists: the language-wide facts,
-    which rows hold bodies, and the signature and docstring of every ``add_<tag>()``."""
+    which rows hold bodies, and the signature and docstring of every ``add_<tag>()``.
+    ``adjust`` is what a layer above changes in the tables first (the installed MuJoCo's
+    release: what it lacks or types otherwise, ``typed_mjcf._releases``)."""
+    ...
+NameNote = Callable[["ElementSpec", str], "str | None"]
+ValueNote = Callable[["ElementSpec", "AttributeSpec", object], "str | None"]
+
+def explain_refusals(name_note: NameNote, value_note: ValueNote) -> None:
+    """Register what says why a name (an attribute, a child, ``add_<tag>``) or a value is
+    refused, beyond the row's own rules: "needs MuJoCo >= 4.0.0; installed 3.17.0"."""
+    ...
+
+def name_note(spec: ElementSpec, name: str) -> str | None:
+    """Why ``name`` is not on ``spec``'s row, when a layer above knows (else None)."""
+    ...
+
+def value_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> str | None:
+    """Why ``value`` is refused for ``attribute``, when a layer above knows (else None)."""
     ...
 
 def grammar_facts() -> GrammarFacts: ...

@@ -43,7 +43,7 @@ from typed_mjcf._core.errors import (
     ParseError,
     did_you_mean,
 )
-from typed_mjcf._core.tree import Element, ModelBase
+from typed_mjcf._core.tree import Element, ModelBase, name_note
 from typed_mjcf.types import XmlElement
 INCLUDE = "include"
 XmlNode: TypeAlias = XmlElement

@@ -67,9 +67,6 @@ from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._core.language import GrammarFacts
 from typed_mjcf._core.names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
-from typed_mjcf._releases.facts import apply as apply_release_facts
-from typed_mjcf._releases.gating import note as release_note
-from typed_mjcf._releases.gating import restrict, value_note
 
 E = TypeVar("E", bound="Element")
 E_co = TypeVar("E_co", bound="Element", covariant=True)
@@ -98,9 +95,12 @@ def element_classes() -> Mapping[str, type[Element]]:
     return _CLASSES
 
 
-def finish_grammar(facts: GrammarFacts) -> None:
+def finish_grammar(facts: GrammarFacts,
+                   adjust: Callable[[Mapping[str, type[Element]]], None] | None = None) -> None:
     """Called by the generated tables once every class exists: the language-wide facts,
-    which rows hold bodies, and the signature and docstring of every ``add_<tag>()``."""
+    which rows hold bodies, and the signature and docstring of every ``add_<tag>()``.
+    ``adjust`` is what a layer above changes in the tables first (the installed MuJoCo's
+    release: what it lacks or types otherwise, ``typed_mjcf._releases``)."""
     _FACTS[:] = [facts]
     for cls in _CLASSES.values():  # dm_control's spelling of the class attribute
         dclass = cls.spec.by_name.get(facts.dclass)
@@ -118,9 +118,32 @@ def finish_grammar(facts: GrammarFacts) -> None:
         for child in cls.spec.children.values():
             child.cls = _CLASSES[child.class_name]
             child.holder = cls.spec
-    restrict(_CLASSES)  # the installed MuJoCo's grammar: what it lacks is refused
-    apply_release_facts()  # and its behaviour no grammar row states
+    if adjust is not None:
+        adjust(_CLASSES)
     document_adders()
+
+
+# Why a name or a value is refused when the reason lies outside the core's tables (the
+# release in use lacks it): the layer that adjusts the tables registers how to say so.
+NameNote = Callable[["ElementSpec", str], "str | None"]
+ValueNote = Callable[["ElementSpec", "AttributeSpec", object], "str | None"]
+_NOTES: list[tuple[NameNote, ValueNote]] = []
+
+
+def explain_refusals(name_note: NameNote, value_note: ValueNote) -> None:
+    """Register what says why a name (an attribute, a child, ``add_<tag>``) or a value is
+    refused, beyond the row's own rules: "needs MuJoCo >= 4.0.0; installed 3.17.0"."""
+    _NOTES[:] = [(name_note, value_note)]
+
+
+def name_note(spec: ElementSpec, name: str) -> str | None:
+    """Why ``name`` is not on ``spec``'s row, when a layer above knows (else None)."""
+    return _NOTES[0][0](spec, name) if _NOTES else None
+
+
+def value_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> str | None:
+    """Why ``value`` is refused for ``attribute``, when a layer above knows (else None)."""
+    return _NOTES[0][1](spec, attribute, value) if _NOTES else None
 
 
 def grammar_facts() -> GrammarFacts:
@@ -319,7 +342,7 @@ class Element(_Layout):
         """``name`` is none of the row's attributes: the message says which are (reading,
         ``action`` says what was done, e.g. "can't set attribute")."""
         spec = self.spec
-        missing = release_note(spec, name)
+        missing = name_note(spec, name)
         if missing is not None:
             return UnknownAttributeError(f"{self.path}: {name!r} of <{spec.tag}> {missing}")
         known = [a.py_name for a in spec.attributes.values()]
@@ -497,7 +520,7 @@ class Element(_Layout):
             if not isinstance(tag, str):  # pyright: ignore[reportUnnecessaryIsInstance]
                 raise InvalidTypeError(f"{self.path}: a child tag must be a string, got {tag!r}")
             legal = list(self.spec.children)
-            missing = release_note(self.spec, tag)
+            missing = name_note(self.spec, tag)
             if missing is not None:
                 raise IllegalChildError(f"{self.path}: <{tag}> as a child of "
                                         f"<{self.spec.tag}> {missing}")

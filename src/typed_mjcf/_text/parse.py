@@ -59,8 +59,7 @@ from typed_mjcf._core.errors import (
 from typed_mjcf._core.gc import collector_paused
 from typed_mjcf._core.grammar import AttributeSpec
 from typed_mjcf._core.sourcelines import SourceText
-from typed_mjcf._core.tree import Element, ModelBase
-from typed_mjcf._releases.gating import note as release_note
+from typed_mjcf._core.tree import Element, ModelBase, name_note
 from typed_mjcf.types import XmlElement
 
 INCLUDE = "include"
@@ -577,7 +576,7 @@ def _set_other(element: Element, attribute: AttributeSpec | None, key: str, text
                 known = []
             _warn_ignored(element, _name(key), text, known, source, context.line(node, source))
             return later
-        missing = release_note(element.spec, key)
+        missing = name_note(element.spec, key)
         context.refuse("unknown-attribute", element.path, context.error(
             f"{element.path}: <{element.spec.tag}> has no attribute {_name(key)!r}"
             + (f": it {missing}" if missing else did_you_mean(_name(key), known)),
@@ -712,7 +711,7 @@ class _Builder:
             child_spec = child_specs.get(tag)
             if child_spec is None:
                 legal = list(child_specs)
-                missing = release_note(parent.spec, tag)
+                missing = name_note(parent.spec, tag)
                 context.refuse("illegal-child", parent.path, context.error(
                     f"<{_name(tag)}> is not a legal child of <{parent.spec.tag}> ({parent.path})"
                     + (f": it {missing}" if missing else did_you_mean(_name(tag), legal)),
