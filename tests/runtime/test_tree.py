@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import copy
+from collections.abc import Callable
 
 import numpy as np
 import pytest
@@ -217,6 +218,44 @@ def test_arrays_read_back_cannot_change_the_model(model: mjcf.RootElement) -> No
         body.pos[0] = 99
     body.pos = (99, 0, 1)
     assert body.pos.tolist() == [99, 0, 1]
+
+
+def _add_to_one(body: mjcf.Body) -> None:
+    body.pos[2] += 1
+
+
+def _add_to_all(body: mjcf.Body) -> None:
+    body.pos += 1
+
+
+def _set_a_slice(body: mjcf.Body) -> None:
+    body.pos[:2] = 0
+
+
+def _scale(body: mjcf.Body) -> None:
+    body.pos *= 2
+
+
+@pytest.mark.parametrize("edit", [_add_to_one, _add_to_all, _set_a_slice, _scale])
+def test_an_edit_in_place_says_to_assign_a_new_value(
+        model: mjcf.RootElement, edit: Callable[[mjcf.Body], None]) -> None:
+    """The library's error (numpy's says only "read-only"), and the value stays."""
+    body = model.worldbody.body[0]
+    before = body.to_xml_string()
+    with pytest.raises(mjcf.InvalidValueError, match=r"read-only: assign a new value instead, "
+                                                     r"e\.g\. `body\.pos = "):
+        edit(body)
+    assert body.to_xml_string() == before
+
+
+def test_arithmetic_on_a_read_array_gives_a_plain_array(model: mjcf.RootElement) -> None:
+    pos = model.worldbody.body[0].pos
+    assert pos is not None
+    moved = pos + 1
+    assert type(moved) is np.ndarray and moved.flags.writeable
+    assert repr(pos).startswith("array(") and type(np.asarray(pos)) is np.ndarray
+    model.worldbody.body[0].pos = moved  # and back through assignment
+    assert model.worldbody.body[0].pos.tolist() == moved.tolist()
 
 
 def test_deepcopy_remaps_element_references(model: mjcf.RootElement) -> None:

@@ -26,6 +26,7 @@ from typing import Final, SupportsFloat, SupportsIndex, cast
 
 import numpy as np
 
+from typed_mjcf._core.arrays import read_only
 from typed_mjcf._core.errors import InvalidTypeError, InvalidValueError, MjcfError, did_you_mean
 from typed_mjcf.assets import Asset
 
@@ -569,11 +570,6 @@ def _pieces(text: str) -> Iterator[str]:
 _SPACE: Final = re.compile(r"\s", re.ASCII)
 
 
-def _frozen(array: Array) -> Array:
-    array.flags.writeable = False  # read back as it is stored: changes go through assignment
-    return array
-
-
 class ArrayCodec(Codec):
     """A list of numbers of a fixed or bounded length, stored as a read-only numpy array."""
 
@@ -657,8 +653,8 @@ class ArrayCodec(Codec):
     def read(self, stored: object) -> object:
         """A read-only array: changes go through assignment (and its checks)."""
         if type(stored) is str:
-            return _frozen(self.from_text(stored))
-        return _frozen(cast(Array, stored).view())
+            return read_only(self.from_text(stored))
+        return read_only(cast(Array, stored))
 
     def write(self, stored: object, fmt: Format) -> str:
         if type(stored) is str:
