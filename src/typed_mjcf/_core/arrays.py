@@ -49,13 +49,17 @@ def _in_place(name: str) -> object:
     return operator
 
 
-# body.pos += 1 too (numpy alone: "output array is read-only"); set after the class so that
-# the checkers keep numpy's own signatures of the operators
-for _name in ("__iadd__", "__isub__", "__imul__", "__itruediv__", "__ifloordiv__",
-              "__imod__", "__ipow__", "__imatmul__", "__iand__", "__ior__", "__ixor__",
-              "__ilshift__", "__irshift__"):
-    setattr(ReadOnlyArray, _name, _in_place(_name))
-setattr(ReadOnlyArray, "__array_wrap__", _plain_result)
+def _install_operators() -> None:
+    """``body.pos += 1`` too (numpy alone: "output array is read-only"), and plain results;
+    set after the class so that the checkers keep numpy's own signatures."""
+    for name in ("__iadd__", "__isub__", "__imul__", "__itruediv__", "__ifloordiv__",
+                 "__imod__", "__ipow__", "__imatmul__", "__iand__", "__ior__", "__ixor__",
+                 "__ilshift__", "__irshift__"):
+        setattr(ReadOnlyArray, name, _in_place(name))
+    setattr(ReadOnlyArray, "__array_wrap__", _plain_result)
+
+
+_install_operators()
 
 
 def read_only(array: _Base) -> _Base:
