@@ -1,6 +1,6 @@
 """Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
 ``nox -s pictures``, ``nox -s bench_editor``, ``nox -s releases``, ``nox -s install_matrix``,
-``nox -s docs``.
+``nox -s docs``, ``nox -s ray``.
 
 Every session runs on the first Python nox finds that the project supports (3.11 or newer);
 ``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
@@ -71,6 +71,16 @@ def docs(session: nox.Session) -> None:
                 "docs/_build/html", env={"MUJOCO_GL": "egl"})
     session.run("pytest", "-p", "no:cacheprovider", "-q", "tests/docs", *session.posargs,
                 env={"TYPED_MJCF_DOCS_SITE": "docs/_build/html"})
+
+
+@nox.session(python=PYTHON)
+def ray(session: nox.Session) -> None:
+    """Structural variants on a local Ray cluster the tests start (tests/variation/
+    test_ray.py; the optional ``ray`` extra, which ``nox -s tests`` does not install, so it
+    skips them there). Slow: Ray takes tens of seconds to start on two cores."""
+    session.install("-e", ".[dev,ray]")
+    session.run("pytest", "-p", "no:cacheprovider", "-n", "0", "-q", "-rs",
+                "tests/variation/test_ray.py", *session.posargs)
 
 
 @nox.session(python=PYTHON)
