@@ -6,14 +6,11 @@ from __future__ import annotations
 
 import importlib.util
 from collections.abc import Iterator
-from pathlib import Path
 
 import pytest
 
 from tests.variation.builders import failing_at_world_3, table_scene
 from typed_mjcf.variation import VariantError, generate
-
-ROOT = Path(__file__).resolve().parents[2]
 
 pytestmark = pytest.mark.skipif(importlib.util.find_spec("ray") is None,
                                 reason="Ray is not installed here (the `ray` extra): "
@@ -22,11 +19,10 @@ pytestmark = pytest.mark.skipif(importlib.util.find_spec("ray") is None,
 
 @pytest.fixture(scope="module")
 def cluster() -> Iterator[None]:
-    import ray  # noqa: PLC0415 (seconds to import: only where the tests run)
+    import ray  # (seconds to import: only where the tests run)
 
-    # workers import the build functions from this repository (tests.variation.builders)
-    ray.init(num_cpus=1, include_dashboard=False, log_to_driver=False,
-             runtime_env={"env_vars": {"PYTHONPATH": str(ROOT)}})
+    # (workers find the build functions, tests.variation.builders, on the driver's sys.path)
+    ray.init(num_cpus=1, include_dashboard=False, log_to_driver=False)
     try:
         yield
     finally:
