@@ -20,7 +20,8 @@ STRUCTURAL = 1
 
 def world_rng(seed: int, world: int, stream: int = PARAMETRIC) -> np.random.Generator:
     """World ``world``'s generator for ``seed``: the same wherever and with whatever else
-    it is made (``SeedSequence(seed).spawn`` keys it by the world's index)."""
+    it is made (a ``SeedSequence`` child keyed, as ``spawn`` keys them, by the world's index
+    and the stream)."""
     ...
 
 def check_worlds(seed: object, n: object, first: object) -> None:
