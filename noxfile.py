@@ -79,8 +79,12 @@ def ray(session: nox.Session) -> None:
     test_ray.py; the optional ``ray`` extra, which ``nox -s tests`` does not install, so it
     skips them there). Slow: Ray takes tens of seconds to start on two cores."""
     session.install("-e", ".[dev,ray]")
+    # Bytecode written (as in tests): each of Ray's processes (its node's agents, its
+    # workers) would otherwise compile every module it imports at each start, and on a
+    # loaded machine its node then misses its start deadlines (measured: 30 s, three tries)
     session.run("pytest", "-p", "no:cacheprovider", "-n", "0", "-q", "-rs",
-                "tests/variation/test_ray.py", *session.posargs)
+                "tests/variation/test_ray.py", *session.posargs,
+                env={"PYTHONDONTWRITEBYTECODE": None})
 
 
 @nox.session(python=PYTHON)
@@ -173,8 +177,11 @@ def bench(session: nox.Session) -> None:
     nox -s bench -- --json bench.json     # also save the raw numbers
     nox -s bench -- --only W1,W3 --libs typed,lxml
     """
-    session.install("-e", ".", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
-    session.run("python", "-m", "tests.bench", *session.posargs)
+    # Ray for the variation workload's structural variants on a local cluster; bytecode
+    # written, so that Ray's processes start in time (see the ray session)
+    session.install("-e", ".[ray]", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
+    session.run("python", "-m", "tests.bench", *session.posargs,
+                env={"PYTHONDONTWRITEBYTECODE": None})
 
 
 @nox.session(python=PYTHON)
