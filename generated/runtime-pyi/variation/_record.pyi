@@ -51,7 +51,7 @@ class Variation:
         ...
     def draw(self, seed: int, n: int, *, first: int = 0) -> Draws:
         """The values of worlds ``first`` to ``first + n - 1``, each from its own generator
-        (``world_rng(seed, i)``), checked as assignment checks them (the attribute's codec)
+        (``world_rng(seed, i)``, drawn from in the order the distributions were stated), checked as assignment checks them (the attribute's codec)
         and against the attribute's bounds (schema/facts.toml): a value out of them is an
         error naming the element, attribute, value and world, never clipped."""
         ...
