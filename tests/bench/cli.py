@@ -85,7 +85,7 @@ QUICK = Plan(
     memory_n=50,
     bind_joints=20,
     bind_repeats=3,
-    variation_worlds=(10, 4),
+    variation_worlds=(4, 4),  # and no Ray row (its start: tens of seconds)
     budget=Budget(per_case_size=5.0, max_run=10.0),
 )
 
@@ -452,7 +452,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         results.bind = bench_bind(plan.bind_joints, plan.bind_repeats)
     if "variation" in args.only and "typed" in adapters:
         log("variation")
-        results.variation = bench_variation(*plan.variation_worlds)
+        results.variation = bench_variation(*plan.variation_worlds, ray=not args.quick)
     if "import" in args.only:
         bench_imports(results, plan)
     if "memory" in args.only:

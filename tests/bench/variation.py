@@ -15,6 +15,7 @@ so the machine's load (in the report's header) matters.
 
 from __future__ import annotations
 
+import gc
 import time
 from pathlib import Path
 from typing import Any
@@ -48,9 +49,10 @@ def _robot() -> Any:
     return model, v
 
 
-def bench_variation(parametric: int = PARAMETRIC_WORLDS,
-                    structural: int = STRUCTURAL_WORLDS) -> list[dict[str, Any]]:
-    """The rows of the variation table: label, seconds, worlds, per second, how measured."""
+def bench_variation(parametric: int = PARAMETRIC_WORLDS, structural: int = STRUCTURAL_WORLDS,
+                    ray: bool = True) -> list[dict[str, Any]]:
+    """The rows of the variation table: label, seconds, worlds, per second, how measured
+    (``ray=False``: no Ray row, whose cluster takes tens of seconds to start)."""
     from typed_mjcf.variation import compile_worlds, generate
 
     model, v = _robot()
@@ -63,13 +65,16 @@ def bench_variation(parametric: int = PARAMETRIC_WORLDS,
     compiled = compile_worlds(model, draws)
     rows.append(_row("recompile per world (copy, assign, compile)",
                      time.process_time() - start, len(compiled), "CPU"))
+    del compiled, draws, model  # (a process forked with 1,000 compiled models costs more)
+    gc.collect()
     for processes in (1, 2):
         start = time.perf_counter()
         generate(scene, seed=0, n=structural, processes=processes, compile=True)
         rows.append(_row(f"structural variants, {processes} process"
                          f"{'es' if processes > 1 else ''}", time.perf_counter() - start,
                          structural, "wall"))
-    rows.append(_on_ray(structural))
+    if ray:
+        rows.append(_on_ray(structural))
     return rows
 
 
