@@ -170,8 +170,8 @@ def test_a_distribution_assigned_to_an_element_is_refused_leaving_it_unchanged()
             route()
         message = str(raised.value)
         assert message.startswith("worldbody/"), message
-        assert "invalid " in message and "uniform(" in message or "choice(" in message \
-            or "normal(" in message, message
+        assert "invalid " in message, message
+        assert any(f"{name}(" in message for name in ("uniform", "choice", "normal")), message
         assert "Variation().of(element).<attribute> = ..." in message, message
     assert model.to_xml_string() == before
 
