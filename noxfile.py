@@ -1,6 +1,6 @@
 """Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
 ``nox -s pictures``, ``nox -s bench_editor``, ``nox -s releases``, ``nox -s install_matrix``,
-``nox -s docs``.
+``nox -s docs``, ``nox -s ray``.
 
 Every session runs on the first Python nox finds that the project supports (3.11 or newer);
 ``nox -P 3.13 -s tests`` (or ``-P`` with an interpreter's path) picks one. With none
@@ -71,6 +71,20 @@ def docs(session: nox.Session) -> None:
                 "docs/_build/html", env={"MUJOCO_GL": "egl"})
     session.run("pytest", "-p", "no:cacheprovider", "-q", "tests/docs", *session.posargs,
                 env={"TYPED_MJCF_DOCS_SITE": "docs/_build/html"})
+
+
+@nox.session(python=PYTHON)
+def ray(session: nox.Session) -> None:
+    """Structural variants on a local Ray cluster the tests start (tests/variation/
+    test_ray.py; the optional ``ray`` extra, which ``nox -s tests`` does not install, so it
+    skips them there). Slow: Ray takes tens of seconds to start on two cores."""
+    session.install("-e", ".[dev,ray]")
+    # Bytecode written (as in tests): each of Ray's processes (its node's agents, its
+    # workers) would otherwise compile every module it imports at each start, and on a
+    # loaded machine its node then misses its start deadlines (measured: 30 s, three tries)
+    session.run("pytest", "-p", "no:cacheprovider", "-n", "0", "-q", "-rs",
+                "tests/variation/test_ray.py", *session.posargs,
+                env={"PYTHONDONTWRITEBYTECODE": None})
 
 
 @nox.session(python=PYTHON)
@@ -163,8 +177,11 @@ def bench(session: nox.Session) -> None:
     nox -s bench -- --json bench.json     # also save the raw numbers
     nox -s bench -- --only W1,W3 --libs typed,lxml
     """
-    session.install("-e", ".", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
-    session.run("python", "-m", "tests.bench", *session.posargs)
+    # Ray for the variation workload's structural variants on a local cluster; bytecode
+    # written, so that Ray's processes start in time (see the ray session)
+    session.install("-e", ".[ray]", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
+    session.run("python", "-m", "tests.bench", *session.posargs,
+                env={"PYTHONDONTWRITEBYTECODE": None})
 
 
 @nox.session(python=PYTHON)

@@ -58,6 +58,7 @@ SLOW = {
     "runtime/test_release_driven.py": "the release tests again, in a fresh interpreter per "
                                       "older release",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
+    "variation/test_ray.py": "starts a local Ray cluster (tens of seconds; nox -s ray)",
     "safety/test_fuzz.py": "thousands of mutated models",
     "safety/test_file_races.py::test_a_writer_swapping_links_in_a_loop_reads_nothing_outside":
         "reads for 4 seconds while a thread swaps links",

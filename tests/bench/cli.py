@@ -20,6 +20,7 @@ from tests.bench.bind import bench_bind
 from tests.bench.child import IMPORT_SNIPPET, importtime_breakdown
 from tests.bench.report import Results, render
 from tests.bench.timing import Budget, Case, SizeResult, predict, run_once, run_round_robin
+from tests.bench.variation import bench_variation
 from tests.bench.workloads import (
     ADAPTERS,
     ARM_LINKS,
@@ -30,7 +31,7 @@ from tests.bench.workloads import (
 )
 
 REPO = Path(__file__).resolve().parents[2]
-WORKLOADS = ("W1", "W2", "W3", "bind", "import", "memory")
+WORKLOADS = ("W1", "W2", "W3", "bind", "variation", "import", "memory")
 
 
 @dataclass(frozen=True)
@@ -50,6 +51,7 @@ class Plan:
     memory_n: int
     bind_joints: int = 1_000
     bind_repeats: int = 21
+    variation_worlds: tuple[int, int] = (1_000, 200)  # parametric, structural
     warm_n: int = 20
     warm_k: int = 2
     budget: Budget = field(default_factory=Budget)
@@ -83,6 +85,7 @@ QUICK = Plan(
     memory_n=50,
     bind_joints=20,
     bind_repeats=3,
+    variation_worlds=(4, 4),  # and no Ray row (its start: tens of seconds)
     budget=Budget(per_case_size=5.0, max_run=10.0),
 )
 
@@ -447,6 +450,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     if "bind" in args.only and "typed" in adapters:
         log("bind")
         results.bind = bench_bind(plan.bind_joints, plan.bind_repeats)
+    if "variation" in args.only and "typed" in adapters:
+        log("variation")
+        results.variation = bench_variation(*plan.variation_worlds, ray=not args.quick)
     if "import" in args.only:
         bench_imports(results, plan)
     if "memory" in args.only:

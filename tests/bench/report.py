@@ -9,6 +9,7 @@ from typing import Any
 
 from tests.bench.bind import render_bind
 from tests.bench.timing import Case, Sample, SizeResult, growth_exponent
+from tests.bench.variation import render_variation
 
 # Targets of the performance issue (ratios measured in one run).
 W1_TYPED_MAX = 2.5  # typed-mjcf add_<tag>() / lxml, N = 5,000 and 20,000, named and unnamed
@@ -30,6 +31,7 @@ class Results:
     memory: list[dict[str, Any]] = field(default_factory=list)
     validity: list[dict[str, Any]] = field(default_factory=list)
     bind: list[dict[str, Any]] = field(default_factory=list)
+    variation: list[dict[str, Any]] = field(default_factory=list)
 
     def as_json(self) -> dict[str, Any]:
         def cases(items: list[Case]) -> list[dict[str, Any]]:
@@ -41,6 +43,7 @@ class Results:
         return {"meta": self.meta, "W1": cases(self.w1), "W2": cases(self.w2),
                 "W3": cases(self.w3), "import": self.imports, "importtime": self.importtime,
                 "memory": self.memory, "validity": self.validity, "bind": self.bind,
+                "variation": self.variation,
                 "targets": [t.as_json() for t in targets(self)]}
 
 
@@ -67,7 +70,7 @@ class Results:
         return cls(meta=data["meta"], w1=cases(data["W1"]), w2=cases(data["W2"]),
                    w3=cases(data["W3"]), imports=data["import"], importtime=data["importtime"],
                    memory=data["memory"], validity=data["validity"],
-                   bind=data.get("bind", []))
+                   bind=data.get("bind", []), variation=data.get("variation", []))
 
 
 # ----------------------------------------------------------------------------- formatting
@@ -440,6 +443,7 @@ def render(results: Results) -> str:
         out.append("")
     found = targets(results)
     out += render_bind(results.bind)
+    out += render_variation(results.variation)
     if found:
         out += ["## Targets", ""]
         rows = [["met" if t.met else ("MISSED" if t.met is False else "n/a"), t.text, t.value]

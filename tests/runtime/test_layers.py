@@ -148,6 +148,7 @@ FLOORS: dict[str, int] = {
     "_base": 5, "_generated.elements": 5, "_generated.bindings": 5, "errors": 5, "io": 5,
     "physics": 5,
     "_dmcompat": 6,  # the compat room: dm_control.mjcf's modules over the API
+    "variation": 6,  # many worlds from one model: features over the API
     "__init__": 7,  # the package: everything users import
     "cli": 8, "__main__": 8,  # the command line: a tool over the package
 }

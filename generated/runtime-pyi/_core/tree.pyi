@@ -90,6 +90,10 @@ def value_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> st
 
 def grammar_facts() -> GrammarFacts: ...
 
+def short_repr(value: object) -> str:
+    """``repr(value)``, shortened as the messages of refused values shorten it."""
+    ...
+
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
@@ -462,6 +466,10 @@ def on_demand(spec: ElementSpec) -> bool:
 def check_arrays(model: ModelBase) -> None:
     """Check again every array of ``model`` (and the models attached to it) handed out for
     in-place edits: an edit that made it invalid raises the error assigning it would."""
+    ...
+
+def add_rejection_note(note: Callable[[object], str | None]) -> None:
+    """Have refusals of a value ask ``note`` what it says of that value (once per note)."""
     ...
 
 def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:

@@ -16,6 +16,7 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Literal, cast
 from typed_mjcf._core.errors import InvalidValueError, did_you_mean
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 Severity = Literal["error", "warning"]
 Rule = Literal[
@@ -65,10 +66,19 @@ def validate(model: ModelBase) -> list[Finding]:
     """Every finding in ``model``, in document order; empty when MuJoCo's rules hold."""
     ...
 
+def keeps(value: object, conditions: tuple[tuple[str, float], ...]) -> bool:
+    """Whether every number of ``value`` (a number or an array, as read) keeps all
+    ``conditions`` (an attribute's ``bounds`` or ``off``)."""
+    ...
+
 def ensure_no_crash(model: ModelBase) -> None:
     """Raise :class:`ValidationError` for what would crash MuJoCo (``child_needs``), in
     ``model`` and the models attached to it: for the routes that compile a model without
     validating it (a composed model's keyframes)."""
+    ...
+
+def expected_bounds(attribute: AttributeSpec) -> str:
+    """What ``attribute``'s bounds expect, e.g. "each value >= 0 (MuJoCo refuses others)"."""
     ...
 
 def element_in_model(model: ModelBase, target: Element) -> bool:

@@ -81,6 +81,9 @@ _UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given no
 _ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names the tag by
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
+# What a refused value may say of itself (a stand-in for values, such as a distribution of
+# typed_mjcf.variation, says where it goes): each gives a note or None; asked on refusal only.
+_REJECTION_NOTES: list[Callable[[object], str | None]] = []
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
 _new_blank = cast("Callable[[type[_Blank]], Element]", object.__new__)
 
@@ -159,6 +162,11 @@ def _public_name(attribute: AttributeSpec) -> str:
 def _short(value: object, limit: int = 60) -> str:
     text = repr(value)
     return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def short_repr(value: object) -> str:
+    """``repr(value)``, shortened as the messages of refused values shorten it."""
+    return _short(value)
 
 
 class _Layout:
@@ -360,10 +368,12 @@ class Element(_Layout):
             return rejected.error(
                 f"{self.path}: {_short(value)} for {attribute.py_name!r} of <{self.spec.tag}> "
                 f"{missing}; expected {rejected.expected}")
-        return rejected.error(
-            f"{self.path}: invalid {attribute.py_name}={_short(value)} on <{self.spec.tag}>: "
-            f"expected {rejected.expected}"
-        )
+        message = (f"{self.path}: invalid {attribute.py_name}={_short(value)} on "
+                   f"<{self.spec.tag}>: expected {rejected.expected}")
+        notes = [n for n in (note(value) for note in _REJECTION_NOTES) if n is not None]
+        if notes:  # a stand-in for values, not a value: a type the attribute cannot take
+            return InvalidTypeError("; ".join([message, *notes]))
+        return rejected.error(message)
 
     def _assign(self, attribute: AttributeSpec, value: object) -> None:
         """Set one attribute from a Python value (``None`` or ``""`` unsets it)."""
@@ -1902,6 +1912,12 @@ def check_arrays(model: ModelBase) -> None:
                 attribute.codec.accept(array)
             except Rejected as rejected:
                 raise element._reject(attribute, array, rejected) from None
+
+
+def add_rejection_note(note: Callable[[object], str | None]) -> None:
+    """Have refusals of a value ask ``note`` what it says of that value (once per note)."""
+    if note not in _REJECTION_NOTES:
+        _REJECTION_NOTES.append(note)
 
 
 def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:

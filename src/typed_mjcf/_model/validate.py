@@ -364,6 +364,12 @@ def _keeps(element: Element, attribute: AttributeSpec,
            conditions: tuple[tuple[str, float], ...]) -> bool:
     """Whether every number of the attribute's value keeps all ``conditions``."""
     value = _tree.read_value(element, attribute)
+    return keeps(value, conditions)
+
+
+def keeps(value: object, conditions: tuple[tuple[str, float], ...]) -> bool:
+    """Whether every number of ``value`` (a number or an array, as read) keeps all
+    ``conditions`` (an attribute's ``bounds`` or ``off``)."""
     numbers = (cast(list[float], value.tolist()) if isinstance(value, np.ndarray)
                else [cast(float, value)])
     return all(_KEEPS[op](float(x), limit) for x in numbers for op, limit in conditions)
@@ -441,10 +447,15 @@ def _check_bounds(state: _Pass, order: int, element: Element,
     numbers = (cast(list[float], value.tolist()) if isinstance(value, np.ndarray)
                else [cast(float, value)])
     text = " ".join(f"{float(x):g}" for x in numbers)
+    state.add(order, element, "range", f"<{element.spec.tag}> {attribute.name}=\"{text}\": "
+                                       f"expected {expected_bounds(attribute)}")
+
+
+def expected_bounds(attribute: AttributeSpec) -> str:
+    """What ``attribute``'s bounds expect, e.g. "each value >= 0 (MuJoCo refuses others)"."""
     each = "each value " if attribute.is_array else ""
     expected = " and ".join(f"{op} {limit:g}" for op, limit in attribute.bounds)
-    state.add(order, element, "range", f"<{element.spec.tag}> {attribute.name}=\"{text}\": "
-                                       f"expected {each}{expected} (MuJoCo refuses others)")
+    return f"{each}{expected} (MuJoCo refuses others)"
 
 
 def _set_names(bundles: Iterable[tuple[str, ...]], attrs: Mapping[str, object]) -> str:
