@@ -25,7 +25,7 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
-from tests.runtime.model_compare import model_differences
+from tests.support.compare import model_differences
 from typed_mjcf._core import tree as _tree
 from typed_mjcf.errors import ExportError
 

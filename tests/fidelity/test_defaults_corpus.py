@@ -14,9 +14,9 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from tests.cli import corpus
-from tests.runtime.model_compare import clear_asset_cache, model_differences
-from tests.runtime.test_corpus import corpus_files
+from tests.support import corpus
+from tests.support.compare import clear_asset_cache, model_differences
+from tests.support.corpus import corpus_files
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._model.defaults import resolve, resolve_all
 
