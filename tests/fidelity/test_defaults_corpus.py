@@ -23,7 +23,7 @@ from typed_mjcf._model.defaults import resolve, resolve_all
 
 @pytest.fixture(autouse=True)
 def _fresh_asset_cache() -> None:
-    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    """Each test's compiles read their own files (tests/support/compare.py's clear_asset_cache)."""
     clear_asset_cache()
 
 

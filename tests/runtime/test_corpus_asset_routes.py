@@ -36,7 +36,7 @@ SHARED_NAMES = ("dm_control/mjcf/test_assets/model_with_assets.xml",
 
 @pytest.fixture(autouse=True)
 def _fresh_asset_cache() -> None:
-    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    """Each test's compiles read their own files (tests/support/compare.py's clear_asset_cache)."""
     clear_asset_cache()
 
 
