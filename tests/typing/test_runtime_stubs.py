@@ -67,9 +67,9 @@ UNCHECKED = {
     r"typed_mjcf\.physics\.__all__": "`__all__ += _bindings.__all__`, as above",
     r"typed_mjcf\._dmcompat\.physics\..*": "a module `__getattr__` forwarding to "
                                            "typed_mjcf.physics (dm_control's module name)",
-    r"typed_mjcf\._tree\._Slice": "a type alias written as a string (runtime: a str)",
-    r"typed_mjcf\._export\.folder_attributes": "functools.cache's wrapper at run time",
-    r"typed_mjcf\.(types\.XmlElement|_parse\.XmlNode)\..*": "lxml's `_Element` (types-lxml "
+    r"typed_mjcf\._core\.tree\._Slice": "a type alias written as a string (runtime: a str)",
+    r"typed_mjcf\._text\.export\.folder_attributes": "functools.cache's wrapper at run time",
+    r"typed_mjcf\.(types\.XmlElement|_text\.parse\.XmlNode)\..*": "lxml's `_Element` (types-lxml "
                                                             "against lxml's extension type)",
     r"typed_mjcf\.physics\.(Data|Model)": "subclasses of MuJoCo's pybind11 classes: "
                                           "pybind11's metaclass",
