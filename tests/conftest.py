@@ -15,8 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.test_readme import UserCode, check_user_code, user_project
-from tests.typing.test_typecheck import Checker, Diagnostic, TypedCodeRun, run_typed_code
+from tests.support.typecheck import Checker, Diagnostic, TypedCodeRun, run_typed_code
+from tests.support.user_code import UserCode, check_user_code, user_project
 
 # MuJoCo picks its OpenGL back end when first imported: EGL renders without a display (on
 # Mesa's software EGL where there is no GPU), so the tests that render (the README's example,
@@ -143,7 +143,7 @@ def typed_code_run(tmp_path_factory: pytest.TempPathFactory) -> TypedCodeRun:
     """One mypy and one pyright run per session with the repository's configuration: the
     typed code, the negative cases, and to-python's code of the corpus (``GROUPS`` keeps
     the modules that read it on one worker)."""
-    from tests.cli.test_to_python_types import corpus_modules  # MuJoCo: not at collection
+    from tests.support.to_python_corpus import corpus_modules  # MuJoCo: not at collection
 
     modules = corpus_modules(tmp_path_factory.mktemp("to_python"))
     return TypedCodeRun.split(run_typed_code(tmp_path_factory.mktemp("mypy_cache"), modules),

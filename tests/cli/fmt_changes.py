@@ -63,7 +63,7 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     files: list[str] = args.files
     if not files:
-        from tests.cli.corpus import CORPUS
+        from tests.support.corpus import CORPUS
         files = [str(path) for _, path in CORPUS]
     found: dict[str, Change] = {}
     for file in files:

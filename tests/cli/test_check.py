@@ -12,11 +12,10 @@ import pytest
 from pytest import approx
 
 import typed_mjcf as mjcf
+from tests.support.ignored_attributes import MODEL as IGNORED
 from typed_mjcf._text.parse import ParseOptions, Problem, parse_path
 from typed_mjcf.cli import main
 from typed_mjcf.cli._common import Progress
-
-from ..runtime.test_ignored_attributes import MODEL as IGNORED
 
 MODEL = """\
 <mujoco>

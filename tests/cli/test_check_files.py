@@ -7,9 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from tests.support.meshes import box_stl
 from typed_mjcf.cli import main
-
-from ..runtime.test_io import box_stl
 
 
 def test_files_outside_the_folder_need_allow_files(tmp_path: Path,

@@ -9,12 +9,11 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.corpus import corpus_params
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._text.files import name_files
 from typed_mjcf.cli import main
 from typed_mjcf.cli.diff import diff_models
-
-from .corpus import corpus_params
 
 
 def _load(ident: str, path: Path) -> mjcf.RootElement:

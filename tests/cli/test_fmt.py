@@ -13,13 +13,13 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.compare import model_differences
+from tests.support.corpus import CORPUS, compiled, corpus_params, mirror
 from typed_mjcf.cli import main
 from typed_mjcf.cli._common import BadInput
 from typed_mjcf.cli._starttags import WIDTH
 from typed_mjcf.cli.fmt import format_model
 
-from ..runtime.model_compare import model_differences
-from .corpus import CORPUS, compiled, corpus_params, mirror
 from .fmt_changes import Change, changes
 
 MODES = {"default": [], "canonical": ["--canonical"]}

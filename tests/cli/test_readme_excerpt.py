@@ -7,9 +7,8 @@ import re
 from pathlib import Path
 
 import typed_mjcf as mjcf
+from tests.support.corpus import CORPUS
 from typed_mjcf.cli.to_python import to_python
-
-from .corpus import CORPUS
 
 PAGE = Path(__file__).resolve().parents[2] / "docs" / "guide" / "cli.md"
 

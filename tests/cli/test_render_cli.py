@@ -13,7 +13,7 @@ import typed_mjcf as mjcf
 from tests.render.scenes import box_scene, decode_png, red
 from typed_mjcf.cli import main
 
-from .test_cli import BAD, EXPECTED
+from .bad_inputs import BAD, EXPECTED
 
 
 @pytest.fixture(autouse=True)

@@ -13,16 +13,12 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.compare import file_differences, model_differences
+from tests.support.corpus import SEPARATORS, compiled, corpus_params, module_name
 from typed_mjcf.cli import _pycode, main
 from typed_mjcf.cli._common import BadInput
 from typed_mjcf.cli.diff import diff_models
 from typed_mjcf.cli.to_python import to_python
-
-from ..runtime.model_compare import file_differences, model_differences
-from .corpus import compiled, corpus_params, module_name
-
-SEPARATORS = "dm_control/mjcf/test_assets/model_with_separators.xml"  # names hold '/'
-
 
 
 def _build(code: str, file: Path) -> mjcf.RootElement:

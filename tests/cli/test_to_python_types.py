@@ -11,30 +11,9 @@ from pathlib import Path
 
 import pytest
 
-import typed_mjcf as mjcf
-from typed_mjcf.cli.to_python import to_python
-
-from ..typing.test_typecheck import Checker, Diagnostic, TypedCodeRun
-from .corpus import CORPUS, compiled, module_name
-from .test_to_python import SEPARATORS
+from tests.support.typecheck import Checker, Diagnostic, TypedCodeRun
 
 MINIMUM_SAMPLE = 20
-
-
-def corpus_modules(folder: Path) -> list[Path]:
-    """``to_python`` of every corpus model MuJoCo compiles, a module each in ``folder``."""
-    written: list[Path] = []
-    for ident, path in CORPUS:
-        if ident == SEPARATORS:
-            continue
-        try:
-            compiled(ident, path)
-        except pytest.skip.Exception:
-            continue
-        module = folder / module_name(ident)
-        module.write_text(to_python(mjcf.from_path(path), str(folder)), encoding="utf-8")
-        written.append(module)
-    return written
 
 
 @pytest.fixture(scope="module")

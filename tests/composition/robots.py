@@ -18,27 +18,7 @@ import zlib
 from pathlib import Path
 
 import typed_mjcf as mjcf
-
-
-def box_stl(size: float) -> bytes:
-    """A closed box as binary STL (12 triangles)."""
-    s = size
-    corners = [(x, y, z) for x in (-s, s) for y in (-s, s) for z in (-s, s)]
-    faces = [(0, 1, 3), (0, 3, 2), (4, 6, 7), (4, 7, 5), (0, 4, 5), (0, 5, 1),
-             (2, 3, 7), (2, 7, 6), (0, 2, 6), (0, 6, 4), (1, 5, 7), (1, 7, 3)]
-    data = b"\0" * 80 + struct.pack("<I", len(faces))
-    for face in faces:
-        data += struct.pack("<3f", 0, 0, 0)
-        for i in face:
-            data += struct.pack("<3f", *corners[i])
-        data += b"\0\0"
-    return data
-
-
-def tetra_obj(x: float, y: float, z: float) -> bytes:
-    """A tetrahedron as OBJ text."""
-    return (f"v 0 0 0\nv {x} 0 0\nv 0 {y} 0\nv 0 0 {z}\n"
-            "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n").encode()
+from tests.support.meshes import box_stl, tetra_obj
 
 
 def png(width: int, height: int, rgb: tuple[int, int, int]) -> bytes:
@@ -348,3 +328,31 @@ def body(model: mjcf.RootElement, name: str) -> mjcf.Body:
     found = model.find("body", name)
     assert isinstance(found, mjcf.Body), name
     return found
+
+
+def make_arm(name: str, links: int = 3) -> mjcf.RootElement:
+    """A chain of capsule links with hinge joints, a defaults class, a motor, a sensor and a
+    keyframe."""
+    arm = mjcf.RootElement(model=name)
+    arm.default.add_joint(damping=0.5, axis=(0, 1, 0))
+    link_class = arm.default.add_default(class_="link")
+    link_class.add_geom(type="capsule", size=(0.03,), rgba=(0.8, 0.2, 0.2, 1))
+    # a base at the worldbody level lands in the attachment frame, giving a free frame mass
+    arm.worldbody.add_geom(name="base", type="box", size=(0.05, 0.05, 0.02))
+    parent: mjcf.Worldbody | mjcf.Body = arm.worldbody
+    body: mjcf.Body | None = None
+    for i in range(links):
+        body = parent.add_body(name=f"link{i}", pos=(0, 0, 0.2 if i else 0))
+        body.add_joint(name=f"joint{i}")
+        body.add_geom(class_="link", fromto=(0, 0, 0, 0, 0, 0.2))
+        parent = body
+    assert body is not None
+    body.add_site(name="tip", pos=(0, 0, 0.2))
+    arm.actuator.add_motor(name="shoulder", joint="joint0")
+    arm.sensor.add_jointpos(name="elbow_angle", joint="joint1")
+    arm.keyframe.add_key(name="home", qpos=home(links))
+    return arm
+
+
+def home(links: int) -> list[float]:
+    return [0.1 * (i + 1) for i in range(links)]

@@ -15,10 +15,9 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from tests.runtime.model_compare import model_differences
+from tests.support.compare import model_differences
+from tests.support.meshes import box_stl, tetra_obj
 from typed_mjcf.errors import ExportError
-
-from .robots import box_stl, tetra_obj
 
 
 def write(folder: Path, files: dict[str, bytes], xml: str) -> Path:

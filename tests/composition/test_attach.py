@@ -10,33 +10,7 @@ import pytest
 
 import typed_mjcf as mjcf
 
-
-def make_arm(name: str, links: int = 3) -> mjcf.RootElement:
-    """A chain of capsule links with hinge joints, a defaults class, a motor, a sensor and a
-    keyframe."""
-    arm = mjcf.RootElement(model=name)
-    arm.default.add_joint(damping=0.5, axis=(0, 1, 0))
-    link_class = arm.default.add_default(class_="link")
-    link_class.add_geom(type="capsule", size=(0.03,), rgba=(0.8, 0.2, 0.2, 1))
-    # a base at the worldbody level lands in the attachment frame, giving a free frame mass
-    arm.worldbody.add_geom(name="base", type="box", size=(0.05, 0.05, 0.02))
-    parent: mjcf.Worldbody | mjcf.Body = arm.worldbody
-    body: mjcf.Body | None = None
-    for i in range(links):
-        body = parent.add_body(name=f"link{i}", pos=(0, 0, 0.2 if i else 0))
-        body.add_joint(name=f"joint{i}")
-        body.add_geom(class_="link", fromto=(0, 0, 0, 0, 0, 0.2))
-        parent = body
-    assert body is not None
-    body.add_site(name="tip", pos=(0, 0, 0.2))
-    arm.actuator.add_motor(name="shoulder", joint="joint0")
-    arm.sensor.add_jointpos(name="elbow_angle", joint="joint1")
-    arm.keyframe.add_key(name="home", qpos=home(links))
-    return arm
-
-
-def home(links: int) -> list[float]:
-    return [0.1 * (i + 1) for i in range(links)]
+from .robots import home, make_arm
 
 
 def make_world() -> mjcf.RootElement:

@@ -8,7 +8,7 @@ import mujoco
 import numpy as np
 
 import typed_mjcf as mjcf
-from tests.composition.test_attach import make_arm
+from tests.composition.robots import make_arm
 
 
 def test_frame_with_scale_resizes_its_contents() -> None:

@@ -8,7 +8,7 @@ two deep (gripper on arm on rover), and two arms with a gripper each. Every comp
 - compiles (``compile()``);
 - loads again as ``MjModel.from_xml_string(to_xml_string(), get_assets())`` and from the
   folder ``export_with_assets()`` writes, to the same compiled model, field by field
-  (:func:`tests.runtime.model_compare.model_differences`);
+  (:func:`tests.support.compare.model_differences`);
 - has the keyframes of MuJoCo's own compile of each part, each part's values at its joints
   and actuators (found by name), MuJoCo's defaults where a part has no key of that name.
 """
@@ -25,7 +25,7 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
-from tests.runtime.model_compare import model_differences
+from tests.support.compare import model_differences
 from typed_mjcf._core import tree as _tree
 from typed_mjcf.errors import ExportError
 

@@ -27,7 +27,6 @@ import pickle
 import sys
 import traceback
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -202,13 +201,31 @@ def build_all(typed: bool, text_only: bool = False) -> dict[str, Any]:
     return results
 
 
+def differences(ours: Any, theirs: Any) -> list[str]:
+    """What differs between two builders' results (text: the error raised)."""
+    if isinstance(theirs, str):
+        return [f"dm_control itself failed: {theirs}"]
+    if isinstance(ours, str):
+        return [f"typed-mjcf failed: {ours}"]
+    found: list[str] = []
+    for field in sorted(set(ours) | set(theirs)):
+        a, b = ours.get(field), theirs.get(field)
+        if a is None or b is None:
+            found.append(f"{field}: only in {'dm_control' if a is None else 'typed-mjcf'}")
+        elif isinstance(b, list):
+            if a != b:
+                found.append(f"{field}: {a[:6]} != {b[:6]}")
+        elif np.shape(a) != np.shape(b):
+            found.append(f"{field}: shape {np.shape(a)} != {np.shape(b)}")
+        elif not np.allclose(a, b, rtol=1e-6, atol=1e-9, equal_nan=True):
+            found.append(f"{field}: differs")
+    return found
+
+
 def compare(typed_path: str, text_path: str) -> None:
     """Print, per builder, what differs between typed-mjcf's compiled model and dm_control's
     XML (built elsewhere, with ``xml``) compiled by the installed MuJoCo."""
     import mujoco
-
-    sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-    from tests.dm_control.test_builders import differences
 
     with open(typed_path, "rb") as handle:
         ours = pickle.load(handle)

@@ -15,10 +15,10 @@ import sys
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 import pytest
 
 from . import harness
+from .builders import differences
 
 pytestmark = pytest.mark.skipif(harness.mjcf_folder() is None,
                                 reason="dm_control is not installed")
@@ -62,27 +62,6 @@ def built(which: str, folder: str) -> dict[str, Any]:
                    capture_output=True, timeout=900)
     with out.open("rb") as handle:
         return pickle.load(handle)
-
-
-def differences(ours: Any, theirs: Any) -> list[str]:
-    """What differs between two builders' results (text: the error raised)."""
-    if isinstance(theirs, str):
-        return [f"dm_control itself failed: {theirs}"]
-    if isinstance(ours, str):
-        return [f"typed-mjcf failed: {ours}"]
-    found: list[str] = []
-    for field in sorted(set(ours) | set(theirs)):
-        a, b = ours.get(field), theirs.get(field)
-        if a is None or b is None:
-            found.append(f"{field}: only in {'dm_control' if a is None else 'typed-mjcf'}")
-        elif isinstance(b, list):
-            if a != b:
-                found.append(f"{field}: {a[:6]} != {b[:6]}")
-        elif np.shape(a) != np.shape(b):
-            found.append(f"{field}: shape {np.shape(a)} != {np.shape(b)}")
-        elif not np.allclose(a, b, rtol=1e-6, atol=1e-9, equal_nan=True):
-            found.append(f"{field}: differs")
-    return found
 
 
 def test_builders_compile_to_dm_controls_models(tmp_path: Path) -> None:

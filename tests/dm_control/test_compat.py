@@ -17,10 +17,10 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf._core.behaviour import dm_control_behaviour
 from typed_mjcf._dmcompat import debugging, installed
 
-from ..runtime.test_io import box_stl
 from . import harness, references
 
 

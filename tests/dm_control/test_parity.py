@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 
-from ..runtime.test_io import box_stl
 from . import harness
 
 ASSETS = harness.mjcf_folder()

@@ -16,9 +16,7 @@ refusal's kind; ``test_refusal_fuzz.py`` runs a small seeded sample (more with
 from __future__ import annotations
 
 import functools
-import json
 import random
-import subprocess
 import sys
 import warnings
 from collections import Counter
@@ -29,57 +27,11 @@ from pathlib import Path
 from lxml import etree
 
 import typed_mjcf as mjcf
+from tests.support.compile_worker import MujocoWorker
+from tests.support.corpus import CORPUS, corpus_files
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
 from typed_mjcf._model.validate import validate
 from typed_mjcf.types import XmlElement
-
-from ..runtime.test_corpus import CORPUS, corpus_files
-
-_WORKER = r"""
-import json, os, sys
-import mujoco
-for line in sys.stdin:
-    xml, folder = json.loads(line)
-    os.chdir(folder)
-    try:
-        mujoco.MjModel.from_xml_string(xml)
-        answer, broken = "", False
-    except Exception as error:
-        answer = (str(error).strip() or type(error).__name__).splitlines()[0]
-        broken = not isinstance(error, ValueError)  # the next compile may hang
-    sys.stdout.write(json.dumps(answer) + "\n")
-    sys.stdout.flush()
-    if broken:
-        break
-"""
-
-
-class MujocoCompiler:
-    """MuJoCo compiling MJCF text in a child process; ``None``: it compiles, else its error."""
-
-    def __init__(self) -> None:
-        self.process: subprocess.Popen[str] | None = None
-
-    def __call__(self, xml: str, folder: Path) -> str | None:
-        if self.process is None or self.process.poll() is not None:
-            self.process = subprocess.Popen([sys.executable, "-c", _WORKER], text=True,
-                                            stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                            stderr=subprocess.DEVNULL)
-        assert self.process.stdin is not None and self.process.stdout is not None
-        self.process.stdin.write(json.dumps([xml, str(folder)]) + "\n")
-        self.process.stdin.flush()
-        line = self.process.stdout.readline()
-        if not line:
-            self.process = None
-            return "crash"
-        answer: str = json.loads(line)
-        return answer or None
-
-    def close(self) -> None:
-        if self.process is not None and self.process.stdin is not None:
-            self.process.stdin.close()
-            self.process.wait()
-            self.process = None
 
 
 def ours(ident: str, path: Path, xml: str) -> str | None:
@@ -231,7 +183,7 @@ def run(count: int, seed: int = 0, max_bytes: int | None = None) -> Counts:
     rng = random.Random(seed)
     files = [(ident, path) for ident, path in usable()
              if max_bytes is None or path.stat().st_size <= max_bytes]
-    compile_error = MujocoCompiler()
+    compile_error = MujocoWorker()
     counts = Counts()
     good: dict[str, bool] = {}
     make = mutants(rng, files)
@@ -241,13 +193,13 @@ def run(count: int, seed: int = 0, max_bytes: int | None = None) -> Counts:
             if mutant is None:
                 continue
             if mutant.ident not in good:  # the file itself: MuJoCo compiles it?
-                good[mutant.ident] = compile_error(mutant.path.read_text(),
+                good[mutant.ident] = compile_error.compile_text(mutant.path.read_text(),
                                                    mutant.path.parent) is None
             if not good[mutant.ident]:
                 continue
             counts.mutants += 1
             counts.files.add(mutant.ident)
-            if compile_error(mutant.xml, mutant.path.parent) is not None:
+            if compile_error.compile_text(mutant.xml, mutant.path.parent) is not None:
                 continue
             counts.compiled += 1
             why = ours(mutant.ident, mutant.path, mutant.xml)

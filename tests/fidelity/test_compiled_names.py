@@ -11,11 +11,10 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.tree import Element, grammar_facts
 from typed_mjcf._model.compiled_names import CompiledNames
-
-from ..runtime.test_io import box_stl
 
 # The MuJoCo object types of the namespaces checked here.
 OBJECTS = {

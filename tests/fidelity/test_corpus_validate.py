@@ -11,9 +11,8 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf
+from tests.support.corpus import CORPUS, XFAIL, skip_unless_mujoco_reads
 from typed_mjcf._model.validate import validate
-
-from ..runtime.test_corpus import CORPUS, XFAIL, skip_unless_mujoco_reads
 
 
 def _errors(model: typed_mjcf.RootElement) -> list[str]:

@@ -14,16 +14,16 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-from tests.cli import corpus
-from tests.runtime.model_compare import clear_asset_cache, model_differences
-from tests.runtime.test_corpus import corpus_files
+from tests.support import corpus
+from tests.support.compare import clear_asset_cache, model_differences
+from tests.support.corpus import corpus_files
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._model.defaults import resolve, resolve_all
 
 
 @pytest.fixture(autouse=True)
 def _fresh_asset_cache() -> None:
-    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    """Each test's compiles read their own files (tests/support/compare.py's clear_asset_cache)."""
     clear_asset_cache()
 
 

@@ -14,11 +14,10 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.compare import model_differences
 from typed_mjcf import Element
 from typed_mjcf._model.validate import validate
 from typed_mjcf._releases.facts import UNDERFLOWING_NUMBERS, has
-
-from ..runtime.model_compare import model_differences
 
 # The smallest positive double the installed MuJoCo reads: a subnormal from 4.0.0 on; the
 # older releases refuse numbers that underflow (schema/releases/behaviour.toml; their refusal is

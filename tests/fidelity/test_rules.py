@@ -2,14 +2,12 @@
 read from the grammar tables) MuJoCo refuses the model breaking it and the library does too,
 with that rule's finding; MuJoCo compiles the nearest legal variants (the "off" value, the
 attributes split between a class and the class below it, ...) and the library accepts them.
-MuJoCo compiles in a worker process (``MujocoWorker``): after some refusals ("Caught an
-unknown exception!", a <model> without a file) the next compile in that process hangs."""
+MuJoCo compiles in a worker process (``tests/support/compile_worker.py``): after some
+refusals ("Caught an unknown exception!", a <model> without a file) the next compile in that
+process hangs."""
 
 from __future__ import annotations
 
-import json
-import subprocess
-import sys
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
@@ -17,6 +15,7 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.compile_worker import MujocoWorker
 from typed_mjcf._model.validate import validate
 
 from .rule_cases import Rule, cases, rules
@@ -24,50 +23,6 @@ from .rule_cases import Rule, cases, rules
 # The rule kind -> the rule of validate()'s finding for it.
 FINDING_RULE = {"required": "required-attribute", "bounds": "range", "exclusive": "exclusive",
                 "together": "together", "requires": "requires", "oneof": "oneof"}
-
-_WORKER = r"""
-import json, sys
-import mujoco
-for line in sys.stdin:
-    try:
-        mujoco.MjModel.from_xml_path(json.loads(line))
-        answer, broken = "", False
-    except Exception as error:
-        answer = (str(error).strip() or type(error).__name__).splitlines()[0]
-        broken = isinstance(error, RuntimeError)  # the next compile may hang: start anew
-    sys.stdout.write(json.dumps(answer) + "\n")
-    sys.stdout.flush()
-    if broken:
-        break
-"""
-
-
-class MujocoWorker:
-    """MuJoCo compiling files in a child process, restarted whenever it ends."""
-
-    def __init__(self) -> None:
-        self.process: subprocess.Popen[str] | None = None
-
-    def __call__(self, path: Path) -> str | None:
-        """MuJoCo's error compiling ``path``, or None."""
-        if self.process is None or self.process.poll() is not None:
-            self.process = subprocess.Popen([sys.executable, "-c", _WORKER], text=True,
-                                            stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                            stderr=subprocess.DEVNULL)
-        assert self.process.stdin is not None and self.process.stdout is not None
-        self.process.stdin.write(json.dumps(str(path)) + "\n")
-        self.process.stdin.flush()
-        line = self.process.stdout.readline()
-        if not line:
-            self.process = None
-            return "crash"
-        answer: str = json.loads(line)
-        return answer or None
-
-    def close(self) -> None:
-        if self.process is not None and self.process.stdin is not None:
-            self.process.stdin.close()
-            self.process.wait()
 
 
 @pytest.fixture(scope="module")
@@ -113,7 +68,7 @@ def test_mujoco_and_the_library_refuse_what_the_rule_refuses(
     if case is None:
         pytest.skip("no context in rule_cases.ROWS (test_every_rule_has_cases fails)")
     path = _files(tmp_path, case.refused)
-    assert compile_error(path) is not None, f"MuJoCo compiles {case.refused}"
+    assert compile_error.compile_file(path) is not None, f"MuJoCo compiles {case.refused}"
     assert FINDING_RULE[rule.kind] in _library_errors(path), case.refused
 
 
@@ -126,5 +81,5 @@ def test_mujoco_and_the_library_accept_the_nearest_legal_variants(
     assert case.accepted
     for what, xml in case.accepted.items():
         path = _files(tmp_path, xml)
-        assert compile_error(path) is None, f"{what}: MuJoCo refuses {xml}"
+        assert compile_error.compile_file(path) is None, f"{what}: MuJoCo refuses {xml}"
         assert _library_errors(path) == [], f"{what}: the library refuses {xml}"

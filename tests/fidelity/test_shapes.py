@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.compare import model_differences
 
-from ..runtime.model_compare import model_differences
 from .shapes import BIMANUAL, FLAG, PARTICLES, SHAPES
 
 

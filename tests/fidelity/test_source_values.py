@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 from lxml import etree
 
 import typed_mjcf as mjcf
-from tests.runtime.test_corpus import CORPUS
+from tests.support.corpus import CORPUS
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.codecs import ArrayCodec, RealCodec
 from typed_mjcf._core.grammar import AttributeSpec

@@ -7,8 +7,7 @@ from __future__ import annotations
 import pytest
 
 import typed_mjcf as mjcf
-
-from .test_io import box_stl
+from tests.support.meshes import box_stl
 
 
 def compile_error(model: mjcf.RootElement) -> mjcf.CompileError:

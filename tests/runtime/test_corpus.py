@@ -27,90 +27,30 @@ strict, so a file that starts passing must be taken off the list.
 
 from __future__ import annotations
 
-import functools
-import importlib.util
 from pathlib import Path
 from typing import cast
 
 import mujoco
 import numpy as np
 import pytest
-from lxml import etree
 
 import typed_mjcf
-
-from .model_compare import Array, clear_asset_cache, file_differences, model_differences
-
-CORPUS_PACKAGES = ("dm_control", "mujoco")
-
-# Corpus files typed-mjcf cannot yet load or round-trip, with the reason (none today: names
-# with '/', like model_with_separators.xml's "left/cube", load as written).
-XFAIL: dict[str, tuple[str, type[Exception]]] = {}
-
-
-def _root_tag(path: Path) -> str | None:
-    try:
-        for _, node in etree.iterparse(str(path), events=("start",), resolve_entities=False,
-                                       no_network=True, load_dtd=False):
-            return str(node.tag)
-    except etree.XMLSyntaxError:
-        return None
-    return None
-
-
-def corpus() -> list[tuple[str, Path]]:
-    """``(id, path)`` of every MJCF model in the corpus packages, sorted by id."""
-    found: list[tuple[str, Path]] = []
-    for package in CORPUS_PACKAGES:
-        spec = importlib.util.find_spec(package)
-        if spec is None or spec.submodule_search_locations is None:
-            continue
-        for location in spec.submodule_search_locations:
-            base = Path(location)
-            for path in base.rglob("*.xml"):
-                if _root_tag(path) == "mujoco":
-                    found.append((f"{package}/{path.relative_to(base).as_posix()}", path))
-    return sorted(found)
-
-
-CORPUS = corpus()
-
-
-@functools.cache
-def _mujoco_compile(path: Path) -> mujoco.MjModel | str:
-    try:
-        return mujoco.MjModel.from_xml_path(str(path))
-    except ValueError as error:
-        return _one_line(error)
-
-
-def compiled(ident: str, path: Path) -> mujoco.MjModel:
-    """MuJoCo's own compile of a corpus file, made once per process (the corpus tests of
-    every module compare against it and only read it); the test is skipped when MuJoCo
-    refuses the file."""
-    found = _mujoco_compile(path)
-    if isinstance(found, str):
-        pytest.skip(f"{ident}: MuJoCo does not compile it by itself: {found}")
-    return found
+from tests.support.compare import Array, clear_asset_cache, file_differences, model_differences
+from tests.support.corpus import (
+    CORPUS,
+    CORPUS_PACKAGES,
+    OUTSIDE_FOLDER,
+    XFAIL,
+    compiled,
+    corpus_files,
+    skip_unless_mujoco_reads,
+)
 
 
 @pytest.fixture(autouse=True)
 def _fresh_asset_cache() -> None:
-    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    """Each test's compiles read their own files (tests/support/compare.py's clear_asset_cache)."""
     clear_asset_cache()
-
-
-# Corpus models that name files outside their own folder, which a model may read only when
-# its loader allows it (typed_mjcf.FileAccess): the folder they need, from the model's.
-OUTSIDE_FOLDER: dict[str, str] = {
-    "dm_control/locomotion/walkers/assets/dog_v2/dog.xml": "../../../../suite/dog_assets",
-}
-
-
-def corpus_files(ident: str, path: Path) -> typed_mjcf.FileAccess | None:
-    """What a corpus model may read: its folder, and the one it needs besides if listed."""
-    extra = OUTSIDE_FOLDER.get(ident)
-    return None if extra is None else typed_mjcf.FileAccess(roots=[path.parent / extra])
 
 
 def _params() -> list[object]:
@@ -122,46 +62,6 @@ def _params() -> list[object]:
             marks.append(pytest.mark.xfail(reason=reason, raises=raises, strict=True))
         params.append(pytest.param(ident, path, id=ident, marks=marks))
     return params
-
-
-def _one_line(error: Exception) -> str:
-    return " ".join(str(error).split())
-
-
-@functools.cache
-def _parser_checks_names() -> bool:
-    """Whether the installed MuJoCo's parser refuses a repeated name (3.3.7's parses two
-    bodies named alike and leaves the refusal to its compiler)."""
-    try:
-        mujoco.MjSpec.from_string(
-            '<mujoco><worldbody><body name="a"/><body name="a"/></worldbody></mujoco>')
-    except ValueError:
-        return True
-    return False
-
-
-def skip_unless_mujoco_reads(ident: str, path: Path) -> None:
-    """Skip the test unless MuJoCo reads ``path`` as a model: its parser accepts it (it reads
-    includes, not meshes or textures) and no name repeats. A parser leaving names to the
-    compiler (3.3.7) does not say the latter: there, a compile refusing a repeated name
-    skips too (dog_v2/scene.xml repeats the texture "grid" of the dog.xml it includes)."""
-    try:
-        mujoco.MjSpec.from_file(str(path))
-    except ValueError as error:
-        pytest.skip(f"{ident}: MuJoCo does not parse it by itself: {_one_line(error)}")
-    repeated = None if _parser_checks_names() else _repeated_name(path)
-    if repeated is not None:
-        pytest.skip(f"{ident}: MuJoCo refuses it when compiling: {repeated}")
-
-
-@functools.cache
-def _repeated_name(path: Path) -> str | None:
-    """MuJoCo's compile error for ``path`` if it is about a repeated name."""
-    try:
-        mujoco.MjSpec.from_file(str(path)).compile()
-    except ValueError as error:
-        return _one_line(error) if "repeated name" in str(error) else None
-    return None
 
 
 def test_corpus_is_found() -> None:

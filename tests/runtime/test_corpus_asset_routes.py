@@ -26,10 +26,8 @@ import mujoco
 import pytest
 
 import typed_mjcf
-from tests.cli.corpus import CORPUS, compiled, corpus_params, mirror
-
-from .model_compare import clear_asset_cache, model_differences
-from .test_corpus import corpus_files
+from tests.support.compare import clear_asset_cache, model_differences
+from tests.support.corpus import CORPUS, compiled, corpus_files, corpus_params, mirror
 
 SHARED_NAMES = ("dm_control/mjcf/test_assets/model_with_assets.xml",
                 "dm_control/mjcf/test_assets/model_with_assetdir.xml",
@@ -38,7 +36,7 @@ SHARED_NAMES = ("dm_control/mjcf/test_assets/model_with_assets.xml",
 
 @pytest.fixture(autouse=True)
 def _fresh_asset_cache() -> None:
-    """Each test's compiles read their own files (model_compare.clear_asset_cache)."""
+    """Each test's compiles read their own files (tests/support/compare.py's clear_asset_cache)."""
     clear_asset_cache()
 
 

@@ -11,20 +11,7 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
-
-MODEL = """\
-<mujoco>
-  <worldbody>
-    <replicate count="2" offset="1 0 0"
-               prefix="p_">
-      <geom name="g" size="0.1"/>
-    </replicate>
-    <frame pos="0 0 1" bogus="x">
-      <geom name="h" size="0.1"/>
-    </frame>
-  </worldbody>
-</mujoco>
-"""
+from tests.support.ignored_attributes import MODEL
 
 
 def test_an_attribute_mujoco_ignores_loads_with_a_warning_and_is_dropped(tmp_path: Path) -> None:

@@ -8,10 +8,12 @@ from __future__ import annotations
 
 import ast
 import os
+import re
 from pathlib import Path
 
 import typed_mjcf as mjcf
 from codegen import naming
+from typed_mjcf import tooling
 
 SRC = Path(mjcf.__file__).resolve().parent
 PACKAGE = "typed_mjcf"
@@ -146,7 +148,7 @@ FLOORS: dict[str, int] = {
     "_sim": 4,
     # the API: the element facade the generated classes subclass, and the public modules
     "_base": 5, "_generated.elements": 5, "_generated.bindings": 5, "errors": 5, "io": 5,
-    "physics": 5,
+    "physics": 5, "tooling": 5,  # tooling: the internal API of tools (the command line)
     "_dmcompat": 6,  # the compat room: dm_control.mjcf's modules over the API
     "variation": 6,  # many worlds from one model: features over the API
     "__init__": 7,  # the package: everything users import
@@ -199,6 +201,32 @@ def test_only_the_command_line_imports_the_command_line() -> None:
 
 def _in_cli(name: str) -> bool:
     return name in ("cli", "__main__") or name.startswith("cli.")
+
+
+def _is_private(name: str) -> bool:
+    return any(part.startswith("_") and part != "__init__" for part in name.split("."))
+
+
+def test_the_command_line_imports_only_public_modules_and_the_tooling_api() -> None:
+    """``cli/`` reaches the runtime through ``typed_mjcf``, its public modules and
+    ``typed_mjcf.tooling`` (stable for tools), never a private module of the runtime."""
+    graph, typing_only = _graphs()
+    private = sorted(f"{name} -> {target}" for name in graph if _in_cli(name)
+                     for target in graph[name] | typing_only[name]
+                     if _is_private(target) and not _in_cli(target))
+    assert not private, private
+
+
+def test_the_tooling_api_exports_what_the_command_line_imports() -> None:
+    """No more (a name no tool uses is not kept stable for nothing), no less."""
+    imported: set[str] = set()
+    for name, path in MODULES.items():
+        if _in_cli(name):
+            imported |= {alias.name for node in ast.walk(ast.parse(path.read_text("utf-8")))
+                         if isinstance(node, ast.ImportFrom) and node.module == "typed_mjcf.tooling"
+                         for alias in node.names}
+            imported |= set(re.findall(r"\btooling\.(\w+)", path.read_text("utf-8")))
+    assert imported == set(tooling.__all__), sorted(imported ^ set(tooling.__all__))
 
 
 # Imports for type checkers only that point up the floors (the module imported depends on

@@ -13,13 +13,12 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.compare import clear_asset_cache
 from typed_mjcf._generated.release_facts import SINCE
 from typed_mjcf._generated.releases import RELEASES
 from typed_mjcf._releases import facts as _release_facts
 from typed_mjcf._releases import gating as _releases
 from typed_mjcf._releases.facts import ASSET_CACHE_CHECKS_CONTENTS, UNDERFLOWING_NUMBERS, has
-
-from .model_compare import clear_asset_cache
 
 TETRAHEDRON = "v 0 0 0\nv {s} 0 0\nv 0 {s} 0\nv 0 0 {s}\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
 MESH_MODEL = ('<mujoco><asset><mesh name="m" file="m.obj"/></asset><worldbody><body>'

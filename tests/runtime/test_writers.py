@@ -15,13 +15,12 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
+from tests.support.corpus import CORPUS
 from typed_mjcf._core.codecs import Format
 from typed_mjcf._model.write import element_text
 from typed_mjcf._text.export import Writer
 from typed_mjcf._text.xmltext import serialize
 from typed_mjcf.errors import ExportError, ParseError
-
-from .test_corpus import CORPUS
 
 
 def _models() -> list[object]:

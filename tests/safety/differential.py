@@ -17,9 +17,8 @@ from collections import Counter
 from dataclasses import dataclass, field
 
 import typed_mjcf as mjcf
+from tests.support.mutations import MUTATIONS, SEEDS
 from typed_mjcf._model.validate import validate
-
-from .test_fuzz import MUTATIONS, SEEDS
 
 _WORKER = r"""
 import json, sys

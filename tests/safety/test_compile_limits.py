@@ -12,11 +12,10 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.corpus import CORPUS, compiled, corpus_files
 from typed_mjcf._model.resource_limits import check_compile, totals
 from typed_mjcf.cli import main
 from typed_mjcf.errors import InvalidTypeError
-
-from ..runtime.test_corpus import CORPUS, compiled, corpus_files
 
 
 def png(width: int, height: int, pixels: bool = True) -> bytes:

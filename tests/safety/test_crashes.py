@@ -13,10 +13,9 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf.cli import main
 from typed_mjcf.cli.check import compile_problem
-
-from ..runtime.test_io import box_stl
 
 _GRID = 'type="grid" count="2 2 1" spacing="1 1 1" dim="2" name="f"'
 # Each crashed MuJoCo 4.0.0 (measured: the child is killed by SIGSEGV), or made it raise

@@ -13,9 +13,8 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf._model import assets_io as _assets_io  # pyright: ignore[reportPrivateUsage]
-
-from ..runtime.test_io import box_stl
 
 UNSAFE_NAMES = ["../../escape", "/abs/olute", "a/b", "a\\b", "..", ".", ".hidden", "con",
                 "c:evil", "x" * 300, "tab\there", " ", "nul.txt"]

@@ -14,9 +14,8 @@ import mujoco
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf._core import tree as _tree  # pyright: ignore[reportPrivateUsage]
-
-from ..runtime.test_io import box_stl
 
 SECRET = b"secret contents outside the model's folder"
 

@@ -14,8 +14,7 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
-
-from ..runtime.test_io import box_stl
+from tests.support.meshes import box_stl
 
 SECRET = b"secret contents outside the model's folder"
 OUTSIDE_BODY = "<mujoco><worldbody><body name='outside'/></worldbody></mujoco>"

@@ -17,9 +17,8 @@ from pathlib import Path
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf._core import tree as _tree  # pyright: ignore[reportPrivateUsage]
-
-from ..runtime.test_io import box_stl
 
 MODEL = "<mujoco model='z'><asset><mesh name='b' file='b.stl'/></asset></mujoco>"
 

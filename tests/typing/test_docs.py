@@ -22,41 +22,11 @@ from types import FunctionType
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.pyright_docs import clean_and_split, pyright_parameter_doc
 from typed_mjcf._core.grammar import AttributeSpec
 from typed_mjcf._core.tree import DCLASS, Element, element_classes
 
 STUB = Path(mjcf.__file__).resolve().parent / "_generated" / "elements.pyi"
-
-
-def clean_and_split(doc: str) -> list[str]:
-    """pyright's ``cleanAndSplitDocString``: tabs expanded, the common indent of the lines
-    after the first removed, blank lines trimmed at both ends."""
-    lines = doc.replace("\r", "").replace("\t", " " * 8).split("\n")
-    indents = [len(line) - len(line.lstrip()) for i, line in enumerate(lines)
-               if (len(lines) <= 1 or i > 0) and line.strip()]
-    indent = min(indents, default=0)
-    cleaned = [line.strip() if i == 0 else line[indent:].rstrip()
-               for i, line in enumerate(lines)]
-    while cleaned and not cleaned[0]:
-        cleaned.pop(0)
-    while cleaned and not cleaned[-1]:
-        cleaned.pop()
-    return cleaned
-
-
-def pyright_parameter_doc(doc: str, name: str) -> str | None:
-    """The documentation pyright shows for parameter ``name`` (hover, signature help)."""
-    for line in clean_and_split(doc):
-        text = line.strip()
-        for prefix in ("@param ", ":param "):
-            at = text.find(prefix + name)
-            if at >= 0:
-                return text[at + 7:]
-        for suffix in (": ", " ("):
-            at = text.find(name + suffix)
-            if at >= 0:
-                return text[at:]
-    return None
 
 
 def adders() -> Iterator[tuple[str, ast.FunctionDef]]:

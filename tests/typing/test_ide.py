@@ -23,7 +23,7 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.lsp import JSON, LanguageServer
-from tests.typing.test_docs import pyright_parameter_doc
+from tests.support.pyright_docs import pyright_parameter_doc
 from typed_mjcf import Element
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 from codegen import mujoco_stubs
-from tests.typing.test_typecheck import (
+from tests.support.typecheck import (
     CHECKERS,
     ROOT,
     Checker,

@@ -43,13 +43,13 @@ import pytest
 
 from codegen import runtime_stubs
 from tests.lsp import LanguageServer
-from tests.test_readme import CANARY_LINES, UserCode, check_user_code
-from tests.typing.test_typecheck import (
+from tests.support.typecheck import (
     CHECKERS,
     NEGATIVE_FILES,
     Checker,
     Diagnostic,
 )
+from tests.support.user_code import CANARY_LINES, UserCode, check_user_code
 
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = "typed_mjcf"

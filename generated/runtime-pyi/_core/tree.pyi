@@ -88,7 +88,9 @@ def value_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> st
     """Why ``value`` is refused for ``attribute``, when a layer above knows (else None)."""
     ...
 
-def grammar_facts() -> GrammarFacts: ...
+def grammar_facts() -> GrammarFacts:
+    """The language facts of the loaded grammar (schema/facts.toml's ``[language]``)."""
+    ...
 
 def short_repr(value: object) -> str:
     """``repr(value)``, shortened as the messages of refused values shorten it."""

@@ -49,7 +49,9 @@ def render_png(model: ModelBase, path: str | os.PathLike[str], camera: object = 
     """Write :func:`render`'s picture to ``path`` as a PNG file."""
     ...
 
-def write_png(path: str | os.PathLike[str], picture: Image) -> None: ...
+def write_png(path: str | os.PathLike[str], picture: Image) -> None:
+    """Write ``picture`` as a PNG file; a path that cannot be written is a RenderError."""
+    ...
 
 def render_pair(a: ModelBase, b: ModelBase, width: int = 640, height: int = 480,
                 labels: tuple[str, str] = ("A", "B"), camera: str | FreeView | None = None,

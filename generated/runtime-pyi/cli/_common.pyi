@@ -4,11 +4,10 @@ from __future__ import annotations
 import sys
 from collections.abc import Iterable, Iterator
 from typing import Final, TextIO, TypeVar, cast
-from typed_mjcf._core.errors import IgnoredAttributeWarning, MjcfError, ParseError
-from typed_mjcf._core.tree import Element
-from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._text.parse import ParseOptions, Problem, parse_path
+from typed_mjcf import RootElement, tooling
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import FileAccess, from_path
+from typed_mjcf.tooling import DEFAULT_ACCESS, Element, ParseOptions, Problem, parse_path
 OK: Final = 0
 FOUND: Final = 1
 BAD_INPUT: Final = 2

@@ -7,7 +7,7 @@ MuJoCo's error, if any, on stdout; a child killed by a signal is a crash.
 """
 from __future__ import annotations
 from collections.abc import Mapping
-from typed_mjcf._core.errors import CompileError
+from typed_mjcf.errors import CompileError
 
 class MujocoCrashed(CompileError):
     """MuJoCo's compiler died (a signal, or an exit without an answer) on the model."""

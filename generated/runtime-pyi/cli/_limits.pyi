@@ -4,7 +4,7 @@ line, one way for every command that compiles (the names are the fields of
 :class:`~typed_mjcf.CompileLimits` and :class:`~typed_mjcf.RenderLimits`)."""
 from __future__ import annotations
 import argparse
-from typed_mjcf._model.resource_limits import DEFAULT_RENDER_LIMITS, CompileLimits, RenderLimits
+from typed_mjcf import CompileLimits, RenderLimits
 
 def _names(cls: type[CompileLimits | RenderLimits]) -> list[str]:
     """The whole-number fields of ``cls`` (RenderLimits' ``compile`` is a table of its own)."""

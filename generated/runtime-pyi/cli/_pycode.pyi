@@ -35,7 +35,7 @@ def string(text: str) -> str:
     ...
 
 def number(x: float) -> str:
-    """A float as a person would type it: MJCF's spelling (``_codecs.real_text``: ``1`` for
+    """A float as a person would type it: MJCF's spelling (``real_text``: ``1`` for
     1.0, ``0.1``) with a short exponent (``2e-6``); ``-0.0`` keeps its sign; infinities and
     NaN as ``math.inf`` and ``math.nan``. The export's precision does not apply: the code
     builds the model exactly."""

@@ -7,14 +7,12 @@ grammar spelling, flags in grammar order); names, references and file paths as w
 """
 from __future__ import annotations
 from typing import Final
-from typed_mjcf._core.codecs import Format
-from typed_mjcf._core.grammar import AttributeSpec
-from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
+from typed_mjcf.tooling import AttributeSpec, Element, Format, ModelBase, grammar_facts
 CANONICAL: Final = Format(canonical=True)
 
 def canonical_text(attribute: AttributeSpec, text: str) -> str | None:
     """Attribute text read from a file, in canonical form (``None`` for empty text, which
-    MuJoCo reads as absent); raises :class:`~typed_mjcf._core.codecs.Rejected`."""
+    MuJoCo reads as absent); raises :class:`~typed_mjcf.tooling.Rejected`."""
     ...
 
 def value_text(attribute: AttributeSpec, value: object) -> str | None:

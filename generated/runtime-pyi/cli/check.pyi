@@ -4,9 +4,16 @@ every finding at the file and line of the element it concerns."""
 from __future__ import annotations
 import argparse
 from dataclasses import asdict, dataclass
-from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
+from typed_mjcf import CompileLimits, RootElement
 from typed_mjcf.io import FileAccess
+from typed_mjcf.tooling import (
+    DEFAULT_COMPILE_LIMITS,
+    Element,
+    Problem,
+    check_compile,
+    iter_written,
+    vfs_text,
+)
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
 DESCRIPTION = """\

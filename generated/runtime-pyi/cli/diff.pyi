@@ -10,7 +10,7 @@ applied.
 """
 from __future__ import annotations
 import argparse
-from typed_mjcf._core.tree import Element
+from typed_mjcf.tooling import Element, iter_written, resolve_all, written_children
 NAME = "diff"
 HELP = "show how two models differ, element by element (exit 1 if they do)"
 DESCRIPTION = """\

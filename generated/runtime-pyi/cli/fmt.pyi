@@ -16,8 +16,16 @@ A model's included files are formatted with it, each in the context it is includ
 from __future__ import annotations
 import argparse
 from dataclasses import dataclass
-from typed_mjcf._core.grammar import ElementSpec
 from typed_mjcf.cli._starttags import WIDTH, StartTag, indent_unit, lay_out, start_tags
+from typed_mjcf.tooling import (
+    INCLUDE,
+    MAX_INDENT,
+    ElementSpec,
+    Rejected,
+    escape,
+    root_class,
+    start_line,
+)
 NAME = "fmt"
 HELP = ("lay MJCF files out consistently, keeping what was written (comments, spelling, "
         "order); --canonical rewrites them in the exporter's canonical form")

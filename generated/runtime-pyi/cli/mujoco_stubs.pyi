@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 from typing import Final
-from typed_mjcf._generated import MUJOCO_VERSION
+from typed_mjcf.tooling import MUJOCO_VERSION
 NAME = "mujoco-stubs"
 HELP = "copy the type stubs of `mujoco` into a project's stub folder (default typings/)"
 DESCRIPTION = f"""\

@@ -2,8 +2,8 @@
 """``typed-mjcf render``: a picture of a model as a PNG file (and ``diff --render``'s)."""
 from __future__ import annotations
 import argparse
-from typed_mjcf._core.tree import ModelBase
-from typed_mjcf._sim.preview import VIEWS, key_from_text, render, render_pair, write_png
+from typed_mjcf import VIEWS
+from typed_mjcf.tooling import ModelBase, key_from_text, render, render_pair, write_png
 NAME = "render"
 HELP = "render a model to a PNG picture (offscreen, no display needed)"
 DESCRIPTION = f"""\

@@ -18,7 +18,17 @@ they (and ``meshdir`` and the like) mean what they meant in the file.
 """
 from __future__ import annotations
 import argparse
-from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
+from typed_mjcf.tooling import (
+    ArrayCodec,
+    AttributeSpec,
+    Element,
+    KeywordCodec,
+    ModelBase,
+    grammar_facts,
+    iter_written,
+    make_codec,
+    to_float,
+)
 NAME = "to-python"
 HELP = "write typed-mjcf Python code that rebuilds a model"
 DESCRIPTION = """\

@@ -150,6 +150,7 @@ def value_note(spec: ElementSpec, attribute: AttributeSpec, value: object) -> st
 
 
 def grammar_facts() -> GrammarFacts:
+    """The language facts of the loaded grammar (schema/facts.toml's ``[language]``)."""
     return _FACTS[0]
 
 

@@ -117,6 +117,7 @@ def _check_path(path: object) -> None:
 
 
 def write_png(path: str | os.PathLike[str], picture: Image) -> None:
+    """Write ``picture`` as a PNG file; a path that cannot be written is a RenderError."""
     _check_path(path)
     try:
         with open(path, "wb") as file:

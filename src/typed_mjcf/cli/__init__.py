@@ -17,10 +17,10 @@ import sys
 from collections.abc import Callable, Sequence
 
 from typed_mjcf import __version__
-from typed_mjcf._core.errors import MjcfError
-from typed_mjcf._releases.gating import describe as describe_releases
 from typed_mjcf.cli import check, diff, fmt, mujoco_stubs, render, to_python
 from typed_mjcf.cli._common import BAD_INPUT
+from typed_mjcf.errors import MjcfError
+from typed_mjcf.tooling import describe_releases
 
 DESCRIPTION = """\
 Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.

@@ -8,13 +8,10 @@ import warnings
 from collections.abc import Iterable, Iterator
 from typing import Final, TextIO, TypeVar, cast
 
-from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.access import DEFAULT_ACCESS
-from typed_mjcf._core.errors import IgnoredAttributeWarning, MjcfError, ParseError
-from typed_mjcf._core.tree import Element
-from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._text.parse import ParseOptions, Problem, parse_path
+from typed_mjcf import RootElement, tooling
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import FileAccess, from_path
+from typed_mjcf.tooling import DEFAULT_ACCESS, Element, ParseOptions, Problem, parse_path
 
 OK: Final = 0
 FOUND: Final = 1  # findings, differences, files that would change
@@ -92,11 +89,11 @@ def load(path: str, ignored: list[IgnoredAttributeWarning] | None = None,
 
 def source_of(element: Element) -> tuple[str | None, int | None]:
     """The file and line the element was read from (the model's file, no line, if unknown)."""
-    found = _tree.source_of(element)
+    found = tooling.source_of(element)
     if found is not None:
         return found
-    model = _tree.model_of(element)
-    root_source = None if model is None else _tree.source_of(model)
+    model = tooling.model_of(element)
+    root_source = None if model is None else tooling.source_of(model)
     return (root_source[0], None) if root_source is not None else (None, None)
 
 

@@ -13,7 +13,7 @@ import subprocess
 import sys
 from collections.abc import Mapping
 
-from typed_mjcf._core.errors import CompileError
+from typed_mjcf.errors import CompileError
 
 _CHILD = """
 import pickle, sys

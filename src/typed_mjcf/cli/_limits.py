@@ -8,8 +8,9 @@ import argparse
 import dataclasses
 from collections.abc import Callable
 
-from typed_mjcf._model.resource_limits import DEFAULT_RENDER_LIMITS, CompileLimits, RenderLimits
+from typed_mjcf import CompileLimits, RenderLimits
 from typed_mjcf.errors import MjcfError
+from typed_mjcf.tooling import DEFAULT_RENDER_LIMITS
 
 
 def _names(cls: type[CompileLimits | RenderLimits]) -> list[str]:

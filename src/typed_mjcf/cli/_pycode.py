@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass
 from typing import Final
 
-from typed_mjcf._core import codecs as _codecs
+from typed_mjcf.tooling import real_text
 
 WIDTH: Final = 100
 INDENT: Final = "    "
@@ -58,7 +58,7 @@ def string(text: str) -> str:
 
 
 def number(x: float) -> str:
-    """A float as a person would type it: MJCF's spelling (``_codecs.real_text``: ``1`` for
+    """A float as a person would type it: MJCF's spelling (``real_text``: ``1`` for
     1.0, ``0.1``) with a short exponent (``2e-6``); ``-0.0`` keeps its sign; infinities and
     NaN as ``math.inf`` and ``math.nan``. The export's precision does not apply: the code
     builds the model exactly."""
@@ -68,7 +68,7 @@ def number(x: float) -> str:
         return "math.inf" if x > 0 else "-math.inf"
     if x == 0 and math.copysign(1.0, x) < 0:
         return "-0.0"
-    text = _codecs.real_text((x,))
+    text = real_text((x,))
     return _EXPONENT.sub(lambda m: f"e{'-' if m.group(1) == '-' else ''}{m.group(2)}", text)
 
 

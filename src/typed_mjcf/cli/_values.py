@@ -9,18 +9,16 @@ from __future__ import annotations
 
 from typing import Final
 
-from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.codecs import Format
-from typed_mjcf._core.grammar import AttributeSpec
-from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
+from typed_mjcf import tooling
 from typed_mjcf.assets import Asset
+from typed_mjcf.tooling import AttributeSpec, Element, Format, ModelBase, grammar_facts
 
 CANONICAL: Final = Format(canonical=True)
 
 
 def canonical_text(attribute: AttributeSpec, text: str) -> str | None:
     """Attribute text read from a file, in canonical form (``None`` for empty text, which
-    MuJoCo reads as absent); raises :class:`~typed_mjcf._core.codecs.Rejected`."""
+    MuJoCo reads as absent); raises :class:`~typed_mjcf.tooling.Rejected`."""
     if not text:
         return None
     if attribute.direct and attribute.kind != "file":
@@ -43,7 +41,7 @@ def value_text(attribute: AttributeSpec, value: object) -> str | None:
 
 def reference_name(target: Element) -> str:
     """The name a reference to ``target`` writes (a model's top default class: ``main``)."""
-    name = _tree.element_name(target)
+    name = tooling.element_name(target)
     if name is not None:
         return name
     if target.spec.compose == "nest" and isinstance(target.parent, ModelBase):
@@ -53,4 +51,4 @@ def reference_name(target: Element) -> str:
 
 def stored_text(element: Element, attribute: AttributeSpec) -> str | None:
     """The canonical text of one attribute as set on ``element``."""
-    return value_text(attribute, _tree.read_value(element, attribute))
+    return value_text(attribute, tooling.read_value(element, attribute))

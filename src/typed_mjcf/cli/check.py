@@ -12,13 +12,7 @@ from dataclasses import asdict, dataclass
 
 from lxml import etree
 
-from typed_mjcf._core.errors import IgnoredAttributeWarning, MjcfError, ParseError
-from typed_mjcf._core.tree import Element
-from typed_mjcf._generated.elements import RootElement
-from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
-from typed_mjcf._model.write import vfs_text
-from typed_mjcf._text.export import iter_written
-from typed_mjcf._text.parse import Problem
+from typed_mjcf import CompileLimits, RootElement
 from typed_mjcf.cli._common import (
     BAD_INPUT,
     FOUND,
@@ -33,7 +27,16 @@ from typed_mjcf.cli._common import (
 )
 from typed_mjcf.cli._isolated import MujocoCrashed, compile_in_child
 from typed_mjcf.cli._limits import add_limit_argument, limits
+from typed_mjcf.errors import IgnoredAttributeWarning, MjcfError, ParseError
 from typed_mjcf.io import FileAccess
+from typed_mjcf.tooling import (
+    DEFAULT_COMPILE_LIMITS,
+    Element,
+    Problem,
+    check_compile,
+    iter_written,
+    vfs_text,
+)
 
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"

@@ -16,14 +16,12 @@ import itertools
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
-from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.errors import MjcfError
-from typed_mjcf._core.tree import Element
-from typed_mjcf._model.defaults import resolve_all
-from typed_mjcf._text.export import iter_written, written_children
+from typed_mjcf import tooling
 from typed_mjcf.cli._common import BAD_INPUT, FOUND, OK, BadInput, error, load, shown, where
 from typed_mjcf.cli._values import stored_text, value_text
 from typed_mjcf.cli.render import size, write_diff_picture
+from typed_mjcf.errors import MjcfError
+from typed_mjcf.tooling import Element, iter_written, resolve_all, written_children
 
 NAME = "diff"
 HELP = "show how two models differ, element by element (exit 1 if they do)"
@@ -154,14 +152,14 @@ def _align(a: Element, b: Element) -> dict[Element, Element]:
 
 
 def _name_key(element: Element) -> tuple[str, str] | None:
-    name = _tree.element_name(element)
+    name = tooling.element_name(element)
     return None if name is None else (element.spec.tag, name)
 
 
 def _unnamed_children(element: Element, pairs: dict[Element, Element]) -> dict[str, list[Element]]:
     groups: dict[str, list[Element]] = {}
     for child in written_children(element):
-        if child not in pairs and _tree.element_name(child) is None:
+        if child not in pairs and tooling.element_name(child) is None:
             groups.setdefault(child.spec.tag, []).append(child)
     return groups
 
@@ -293,7 +291,7 @@ def _stored_texts(element: Element) -> dict[str, str | None]:
     """The attributes set on ``element``, as canonical text."""
     spec = element.spec
     return {name: stored_text(element, spec.by_name[name])
-            for name in sorted(_tree.values(element), key=spec.order.__getitem__)}
+            for name in sorted(tooling.values(element), key=spec.order.__getitem__)}
 
 
 def _resolved_texts(element: Element) -> dict[str, str | None]:
@@ -302,7 +300,7 @@ def _resolved_texts(element: Element) -> dict[str, str | None]:
     try:
         values = resolve_all(element)
     except MjcfError:  # a class that is not defined: compare what is set
-        values = {name: _tree.read_value(element, attribute)
+        values = {name: tooling.read_value(element, attribute)
                   for name, attribute in spec.attributes.items()}
     return {name: value_text(spec.attributes[name], value) for name, value in values.items()}
 

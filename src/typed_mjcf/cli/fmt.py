@@ -28,12 +28,7 @@ from dataclasses import dataclass
 
 from lxml import etree
 
-from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.codecs import Rejected
-from typed_mjcf._core.grammar import ElementSpec
-from typed_mjcf._core.sourcelines import start_line
-from typed_mjcf._text.parse import INCLUDE, root_class
-from typed_mjcf._text.xmltext import MAX_INDENT, escape
+from typed_mjcf import tooling
 from typed_mjcf.cli._common import (
     BAD_INPUT,
     FOUND,
@@ -47,6 +42,15 @@ from typed_mjcf.cli._common import (
 )
 from typed_mjcf.cli._starttags import WIDTH, StartTag, indent_unit, lay_out, start_tags
 from typed_mjcf.cli._values import canonical_text
+from typed_mjcf.tooling import (
+    INCLUDE,
+    MAX_INDENT,
+    ElementSpec,
+    Rejected,
+    escape,
+    root_class,
+    start_line,
+)
 from typed_mjcf.types import XmlElement
 
 NAME = "fmt"
@@ -205,7 +209,7 @@ def format_model(path: str, seen: set[str] | None = None, canonical: bool = Fals
     :class:`BadInput` if one cannot be read."""
     model = load(path, ignored=[])  # fmt keeps what MuJoCo ignores, as written
     seen = set() if seen is None else seen
-    sources = _tree.source_map(model)
+    sources = tooling.source_map(model)
     assert sources is not None
     main = os.path.abspath(path)
     # each file, and the row whose children its top-level elements are
@@ -393,7 +397,7 @@ class _Printer:
                    for inner in _inside(node))
 
 def _child_row(row: ElementSpec, tag: str) -> ElementSpec:
-    return _tree.element_class(row.children[tag].class_name).spec
+    return tooling.element_class(row.children[tag].class_name).spec
 
 
 _BLANK = "\n"  # a blank line the author left between two things (kept, one at most)

@@ -16,8 +16,8 @@ from pathlib import Path
 from typing import Final
 
 import typed_mjcf
-from typed_mjcf._generated import MUJOCO_VERSION
 from typed_mjcf.cli._common import BAD_INPUT, OK, error
+from typed_mjcf.tooling import MUJOCO_VERSION
 
 NAME = "mujoco-stubs"
 HELP = "copy the type stubs of `mujoco` into a project's stub folder (default typings/)"

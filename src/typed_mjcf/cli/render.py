@@ -5,11 +5,11 @@ from __future__ import annotations
 import argparse
 import re
 
-from typed_mjcf._core.errors import MjcfError
-from typed_mjcf._core.tree import ModelBase
-from typed_mjcf._sim.preview import VIEWS, key_from_text, render, render_pair, write_png
+from typed_mjcf import VIEWS
 from typed_mjcf.cli._common import BAD_INPUT, OK, BadInput, error, load, one_line, shown
 from typed_mjcf.cli._limits import add_limit_argument, limits
+from typed_mjcf.errors import MjcfError
+from typed_mjcf.tooling import ModelBase, key_from_text, render, render_pair, write_png
 
 NAME = "render"
 HELP = "render a model to a PNG picture (offscreen, no display needed)"

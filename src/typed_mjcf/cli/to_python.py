@@ -30,16 +30,23 @@ from typing import cast
 
 import numpy as np
 
-from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.codecs import ArrayCodec, KeywordCodec, make_codec, to_float
-from typed_mjcf._core.grammar import AttributeSpec
-from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
-from typed_mjcf._text.export import iter_written
+from typed_mjcf import tooling
 from typed_mjcf.assets import Asset
 from typed_mjcf.cli import _pycode
 from typed_mjcf.cli._common import BAD_INPUT, OK, BadInput, error, load, shown, where
 from typed_mjcf.cli._pycode import INDENT, Items, Value
 from typed_mjcf.cli._values import reference_name
+from typed_mjcf.tooling import (
+    ArrayCodec,
+    AttributeSpec,
+    Element,
+    KeywordCodec,
+    ModelBase,
+    grammar_facts,
+    iter_written,
+    make_codec,
+    to_float,
+)
 
 NAME = "to-python"
 HELP = "write typed-mjcf Python code that rebuilds a model"
@@ -124,7 +131,7 @@ class _Module:
     """Plans the functions of a model's module, then writes them."""
 
     def __init__(self, model: ModelBase, folder: str) -> None:
-        sources = _tree.source_map(model)
+        sources = tooling.source_map(model)
         if sources is None:
             raise BadInput("to-python needs a model read from a file")
         self.model = model
@@ -143,7 +150,7 @@ class _Module:
                 continue
             _refuse_slash(element)
             function = self.function(sources.lines[element][0])
-            if _is_single(element) and not _tree.values(element):
+            if _is_single(element) and not tooling.values(element):
                 continue  # reached through its property
             function.steps.append(element)
         for function in self.functions.values():
@@ -191,11 +198,11 @@ class _Module:
                 use(item.param, step)
                 continue
             use(cast(Element, item.parent), step)
-            stored = _tree.values(item)
+            stored = tooling.values(item)
             for attribute in item.spec.references:
                 target = stored.get(attribute.name)
                 if isinstance(target, Element) and target in made and (
-                        _tree.reference_namespace(item, attribute) == target.spec.namespace):
+                        tooling.reference_namespace(item, attribute) == target.spec.namespace):
                     function.links[(item, attribute.name)] = target
                     use(target, step)
             made.add(item)
@@ -239,7 +246,7 @@ class _Module:
         if element is self.model:
             return _MODEL
         tag = element.spec.tag
-        name = _tree.element_name(element)
+        name = tooling.element_name(element)
         if name is None:
             return _pycode.identifier(_child_name(element), tag)
         base = _pycode.identifier(name, tag)
@@ -269,7 +276,7 @@ class _Module:
         return "\n".join([*head, *body, *tail]) + "\n"
 
     def title(self) -> str:
-        name = _tree.scope_of(self.model).name
+        name = tooling.scope_of(self.model).name
         file = _doc(os.path.basename(self.main))
         if isinstance(name, str):
             return f'The MJCF model "{_doc(name)}" ({file}) as typed-mjcf code.'
@@ -305,7 +312,7 @@ class _Module:
                 section = None
                 continue
             if _section(item) is not section or (item in function.names and any(
-                    _tree.children(item))):
+                    tooling.children(item))):
                 lines += self.blank(lines)
             section = _section(item)
             parent = self.expression(function, cast(Element, item.parent))
@@ -336,7 +343,7 @@ class _Module:
 
     def arguments(self, function: _Function, element: Element) -> list[tuple[str | None, Value]]:
         spec = element.spec
-        stored = _tree.values(element)
+        stored = tooling.values(element)
         arguments: list[tuple[str | None, Value]] = []
         for name in sorted(stored, key=spec.order.__getitem__):
             attribute = spec.by_name[name]
@@ -443,7 +450,7 @@ class _Module:
     def uses_files(self) -> bool:
         """Whether an element of the model names a file (the model then needs its folder)."""
         return any(element.spec.by_name[name].kind == "file"
-                   for element in self.sources.lines for name in _tree.values(element))
+                   for element in self.sources.lines for name in tooling.values(element))
 
     def model_dir_argument(self) -> str:
         """``str(MODEL_DIR)``: the folder the model's relative paths start from."""
@@ -476,7 +483,7 @@ def _pieces(text: str) -> Iterator[list[str]]:
 
 
 def _refuse_slash(element: Element) -> None:
-    name = _tree.element_name(element)
+    name = tooling.element_name(element)
     if name is not None and "/" in name:
         raise BadInput(f"{where(element)}: <{element.spec.tag}> name {name!r} holds '/', which "
                        f"typed-mjcf's Python API keeps for the names of attached models; "
