@@ -21,11 +21,9 @@ from __future__ import annotations
 from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
-    TYPE_CHECKING,
     ClassVar,
     Final,
     Generic,
-    NoReturn,
     Protocol,
     Self,
     SupportsIndex,
@@ -35,6 +33,7 @@ from typing import (
     overload,
 )
 from typed_mjcf._access import ANYWHERE, Confinement
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._codecs import ArrayCodec, Rejected
 from typed_mjcf._errors import (
     ChildError,
@@ -72,6 +71,7 @@ def finish_grammar(facts: GrammarFacts) -> None:
 
 def grammar_facts() -> GrammarFacts: ...
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
@@ -93,6 +93,7 @@ def paths(elements: Iterable[Element]) -> list[str]:
     """The paths of ``elements`` (as :attr:`Element.path`), in time linear in their number."""
     ...
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
     spec: ClassVar[ElementSpec]
@@ -162,6 +163,7 @@ class Element(_Layout):
         their contents, whatever their names)."""
         ...
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
@@ -177,6 +179,7 @@ class ModelBase(Element):
         """An independent copy, with copies of the models attached to it."""
         ...
 
+@mypyc_attr(serializable=True)
 class SourceMap:
     """Where a parsed model's elements were read (for messages that point into the files).
 
@@ -213,6 +216,7 @@ def new_model(cls: type[ModelBase]) -> ModelBase:
     """An empty model of the generated root class (no attributes set)."""
     ...
 
+@mypyc_attr(native_class=False)
 class Attribute:
     """Reads and writes one attribute on elements of a generated class."""
     def __init__(self, spec: AttributeSpec) -> None:
@@ -230,6 +234,7 @@ class Attribute:
     def __delete__(self, obj: Element) -> None: ...
     def __repr__(self) -> str: ...
 
+@mypyc_attr(native_class=False)
 class SingleChild:
     """A once-only child, created on first access; ``del`` removes it."""
     def __init__(self, child: ChildSpec) -> None:
@@ -241,6 +246,7 @@ class SingleChild:
     def __set__(self, obj: Element, value: object) -> None: ...
     def __delete__(self, obj: Element) -> None: ...
 
+@mypyc_attr(native_class=False)
 class ChildList:
     """The children with one tag, as a live :class:`ElementList`."""
     def __init__(self, child: ChildSpec) -> None:
@@ -434,6 +440,16 @@ def remove_subtree(element: Element) -> None:
 def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
     """``top``'s subtree in the order the exported XML has it: attached models' bodies inside
     their frames, their other sections after ours (when ``attachments``)."""
+    ...
+
+def tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+    """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
+    ``element_name`` (taken out of the attributes)."""
+    ...
+
+def mjcf_alias(element: Element, name: str) -> str | None:
+    """The Python name of ``element``'s child or attribute that ``name`` spells as MJCF does
+    (``global``: ``global_``); ``None`` where the two are the same or there is none."""
     ...
 
 def on_demand(spec: ElementSpec) -> bool:

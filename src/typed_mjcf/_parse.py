@@ -43,6 +43,7 @@ from typed_mjcf._access import (
     confine,
     open_confined,
 )
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._codecs import Rejected
 from typed_mjcf._compat import dm_control_behaviour
 from typed_mjcf._errors import (
@@ -81,6 +82,9 @@ _MANY_ATTRIBUTES: Final = 64
 _SUGGESTED: Final = 100  # ignored attributes given a "did you mean" in one parse
 
 
+# an ordinary Python class when compiled: its checks (__post_init__) say what a bad limit
+# is, where a compiled __init__ would raise a bare TypeError first (ParseLimits(max_bytes=1.5))
+@mypyc_attr(native_class=False)
 @dataclass(frozen=True, slots=True)
 class ParseLimits:
     """Bounds on what reading one model may consume; pass a raised copy to read more.
@@ -417,7 +421,7 @@ def is_model_text(data: bytes) -> bool:
 # ----------------------------------------------------------------------------- entry points
 
 
-def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
+def parse_text(data: object, *, base_dir: str | None = None, source: str | None = None,
                limits: ParseLimits | None = None, options: ParseOptions = DEFAULT_OPTIONS,
                access: FileAccess | Confinement = DEFAULT_ACCESS) -> ModelBase:
     """Parse MJCF text into a model that reads files where ``access`` allows (by default in

@@ -30,11 +30,9 @@ import weakref
 from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
-    TYPE_CHECKING,
     ClassVar,
     Final,
     Generic,
-    NoReturn,
     Protocol,
     Self,
     SupportsIndex,
@@ -47,6 +45,7 @@ from typing import (
 import numpy as np
 
 from typed_mjcf._access import ANYWHERE, Confinement
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._codecs import ArrayCodec, Rejected
 from typed_mjcf._compat import STATE as _COMPAT
 from typed_mjcf._compat import dm_control_namespace
@@ -84,8 +83,7 @@ _UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given no
 _ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names the tag by
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
-# object.__new__ of a _Blank, seen as the Element it becomes (see _create)
-_new_blank = cast("Callable[[type[_Blank]], Element]", object.__new__)
+_new_blank = cast("Callable[[type[_Blank]], _Blank]", object.__new__)  # (see _create)
 
 
 def element_class(class_name: str) -> type[Element]:
@@ -138,6 +136,11 @@ def _short(value: object, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
+# Element classes stay ordinary Python classes when compiled (their methods compiled):
+# generated classes and users subclass them, elements change __class__ (_Blank), keep
+# __weakref__ and __slots__, pickle without __init__; and since the subclasses are not
+# compiled, compiled code must check an argument's class with isinstance (not `is`).
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
@@ -162,6 +165,7 @@ class _Layout:
     _attached: ModelBase | None  # on attachment frames: the model attached there
 
 
+@mypyc_attr(native_class=False)
 class _Blank(_Layout):
     """An element being made: the same layout as every element class, without
     :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
@@ -195,6 +199,7 @@ def paths(elements: Iterable[Element]) -> list[str]:
     return [element._path(numbers) for element in elements]
 
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
@@ -290,30 +295,8 @@ class Element(_Layout):
 
     # ------------------------------------------------------------------ attributes
 
-    if not TYPE_CHECKING:  # run time only: checkers should see unknown attributes as errors
-
-        def __getattr__(self, name: str) -> NoReturn:
-            # Only reached when normal lookup fails: an attribute the grammar doesn't have.
-            if name.startswith("__"):
-                raise AttributeError(name)
-            alias = _python_name(self.spec, name)
-            if alias is not None:  # dm_control's spelling: getattr(visual, "global")
-                return getattr(self, alias)
-            raise self._unknown_attribute(name)
-
-        def __setattr__(self, name: str, value: object) -> None:
-            # Properties and slots are found by the normal route; anything else is a name
-            # the grammar does not have. The tree writes its slots with _SLOTS' setters.
-            try:
-                object.__setattr__(self, name, value)
-            except AttributeError:
-                raise self._unknown_attribute(name, "can't set attribute") from None
-
-        def __delattr__(self, name: str) -> None:
-            try:
-                object.__delattr__(self, name)
-            except AttributeError:
-                raise self._unknown_attribute(name) from None
+    # __getattr__, __setattr__ and __delattr__: on typed_mjcf._base.Element (interpreted,
+    # since a compiled module cannot hide them from checkers behind `if not TYPE_CHECKING`)
 
     def _unknown_attribute(self, name: str, action: str | None = None) -> UnknownAttributeError:
         """``name`` is none of the row's attributes: the message says which are (reading,
@@ -466,15 +449,11 @@ class Element(_Layout):
 
     # ------------------------------------------------------------------ children
 
-    if TYPE_CHECKING:
-        def add(self, tag: str, /, **kwargs: object) -> Element:
-            """Add a child ``<tag>`` with the given attributes and return it."""
-            ...
-    else:  # dm_control's code also names the tag by keyword: add(element_name="geom", ...)
-        def add(self, tag=None, /, **kwargs):
-            """Add a child ``<tag>`` with the given attributes and return it."""
-            return self._add_child(self._new_child_spec(_tag_given(self, tag, kwargs)), None,
-                                   kwargs)
+    def add(self, tag: str, /, **kwargs: object) -> Element:
+        """Add a child ``<tag>`` with the given attributes and return it."""
+        # What runs is typed_mjcf._base.Element.add (interpreted): it also takes dm_control's
+        # add(element_name="geom", ...), which checkers should not offer.
+        return self._add_child(self._new_child_spec(tag_given(self, tag, kwargs)), None, kwargs)
 
     def insert(self, tag: str, /, position: int, **kwargs: object) -> Element:
         """Add a child ``<tag>`` at ``position`` among this element's children."""
@@ -659,6 +638,7 @@ def _unpickled(cls: type[Element]) -> Element:
     return element
 
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
@@ -714,6 +694,7 @@ def _init_model(model: ModelBase) -> None:
     model._sources = None
 
 
+@mypyc_attr(serializable=True)  # pickled and copied with its model (without __init__)
 class SourceMap:
     """Where a parsed model's elements were read (for messages that point into the files).
 
@@ -793,6 +774,9 @@ def new_model(cls: type[ModelBase]) -> ModelBase:
 # ---------------------------------------------------------------------------- descriptors
 
 
+# data descriptors (__set__, __delete__): a native class would lose them (mypyc gives it
+# __get__ only), and every assignment would then replace the descriptor
+@mypyc_attr(native_class=False)
 class Attribute:
     """Reads and writes one attribute on elements of a generated class."""
 
@@ -834,6 +818,7 @@ class Attribute:
         return repr(self.spec)
 
 
+@mypyc_attr(native_class=False)
 class SingleChild:
     """A once-only child, created on first access; ``del`` removes it."""
 
@@ -867,6 +852,7 @@ class SingleChild:
             existing.remove()
 
 
+@mypyc_attr(native_class=False)
 class ChildList:
     """The children with one tag, as a live :class:`ElementList`."""
 
@@ -1051,16 +1037,18 @@ def _create(cls: type[Element], parent: Element) -> Element:
     children), with no values."""
     # made as a _Blank (its slots written directly, past Element.__setattr__), then given
     # its class: about three times faster than writing each slot through its descriptor
-    element = _new_blank(_Blank)
-    element._values = {}
-    element._children = _NO_CHILDREN
-    element._parent = parent
-    element._root = parent._root
+    blank = _new_blank(_Blank)
+    blank._values = {}
+    blank._children = _NO_CHILDREN
+    blank._parent = parent
+    blank._root = parent._root
     attached = parent._attached
-    element._scope = parent._scope if attached is None else attached._scope
-    element._singles = None
-    element._attached = None
-    element.__class__ = cls
+    blank._scope = parent._scope if attached is None else attached._scope
+    blank._singles = None
+    blank._attached = None
+    object.__setattr__(blank, "__class__", cls)
+    # an Element now (typed so only from here: compiled code checks what a name holds)
+    element = cast(Element, blank)
     if _RECORDER[0] is not None:
         _RECORDER[0](element, None, True)
     return element
@@ -1809,7 +1797,7 @@ _Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
 _HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
 
 
-def _tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+def tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
     """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
     ``element_name`` (taken out of the attributes)."""
     if tag is None and _COMPAT[0] and _ELEMENT_NAME in kwargs:
@@ -1830,6 +1818,12 @@ def _python_name(spec: ElementSpec, name: str) -> str | None:
     if attribute is not None and attribute.py_name != name:
         return attribute.py_name
     return None
+
+
+def mjcf_alias(element: Element, name: str) -> str | None:
+    """The Python name of ``element``'s child or attribute that ``name`` spells as MJCF does
+    (``global``: ``global_``); ``None`` where the two are the same or there is none."""
+    return _python_name(element.spec, name)
 
 
 def on_demand(spec: ElementSpec) -> bool:
