@@ -17,6 +17,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 from typed_mjcf import __version__
+from typed_mjcf._build import describe as describe_build
 from typed_mjcf._errors import MjcfError
 from typed_mjcf._releases import describe as describe_releases
 from typed_mjcf.cli import check, diff, fmt, mujoco_stubs, render, to_python
@@ -43,7 +44,8 @@ def parser() -> argparse.ArgumentParser:
         prog="typed-mjcf", description=DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter)
     main_parser.add_argument("--version", action="version",
-                             version=f"typed-mjcf {__version__}\n{describe_releases()}")
+                             version=f"typed-mjcf {__version__} ({describe_build()})\n"
+                                     f"{describe_releases()}")
     commands = main_parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for module in (to_python, check, fmt, diff, render, mujoco_stubs):
         command = commands.add_parser(module.NAME, help=module.HELP,
