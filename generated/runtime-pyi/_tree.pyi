@@ -173,8 +173,8 @@ class ModelBase(Element):
     _frame: Element | None
     _files: dict[str, bytes]
     _sources: SourceMap | None
-    def __init__(self, model: str | None = None, *, model_dir: str | None = None,
-                 assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None: ...
+    def __init__(self, model: object = None, *, model_dir: object = None,
+                 assets: object = None, **kwargs: object) -> None: ...
     def __deepcopy__(self, memo: dict[int, object]) -> Self:
         """An independent copy, with copies of the models attached to it."""
         ...
@@ -442,9 +442,15 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
     their frames, their other sections after ours (when ``attachments``)."""
     ...
 
-def tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
     """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
-    ``element_name`` (taken out of the attributes)."""
+    ``element_name`` (taken out of the attributes). Takes any object (here and in
+    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
+    ...
+
+def insert_child(parent: Element, tag: object, position: object,
+                 kwargs: dict[str, object]) -> Element:
+    """``insert()``: a child ``<tag>`` at ``position``, each checked (a bool is no int)."""
     ...
 
 def mjcf_alias(element: Element, name: str) -> str | None:

@@ -86,6 +86,10 @@ class Element(_tree.Element):
             return self._add_child(self._new_child_spec(_tree.tag_given(self, tag, kwargs)),
                                    None, kwargs)
 
+        def insert(self, tag, /, position, **kwargs):
+            """Add a child ``<tag>`` at ``position`` among this element's children."""
+            return _tree.insert_child(self, tag, position, kwargs)
+
     # ------------------------------------------------------------------ where it is
 
     @property
@@ -310,8 +314,8 @@ class Element(_tree.Element):
         dm_control's signature and unused.
         """
         del debug_context
-        return element_text(self, Format(precision, zero_threshold, canonical), pretty_print,
-                            names_from=prefix_root, self_only=self_only)
+        return element_text(self, Format(precision, zero_threshold, canonical),
+                            bool(pretty_print), names_from=prefix_root, self_only=bool(self_only))
 
     def to_xml(self, prefix_root: NameScope | None = None, debug_context: object = None, *,
                precision: int | None = None, zero_threshold: float = 0.0,

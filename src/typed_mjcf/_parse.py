@@ -622,9 +622,10 @@ _PACKAGE_DIR: Final = os.path.dirname(os.path.abspath(__file__)) + os.sep
 def _outside_package() -> int:
     """The ``stacklevel`` of the first caller outside typed-mjcf (the user's ``from_path``
     line), for :func:`warnings.warn`."""
-    here = inspect.currentframe()
-    frame = None if here is None else here.f_back  # the function that warns
-    level = 1
+    frame = inspect.currentframe()
+    # Interpreted, this function's frame is first and stacklevel 1 is its caller; compiled,
+    # typed-mjcf's compiled functions have no frames and stacklevel 1 is the first there is.
+    level = 0 if frame is not None and frame.f_code.co_name == "_outside_package" else 1
     while frame is not None and frame.f_code.co_filename.startswith(_PACKAGE_DIR):
         frame = frame.f_back
         level += 1
@@ -911,7 +912,7 @@ class _Hierarchy:
         none: frozenset[_Key] = frozenset()
         inherited = (self.chains.get(id(parent), none)
                      if parent is not None and parent is not self.section else none)
-        chain = inherited | _element_defaults(hierarchy_class).keys()
+        chain = inherited.union(_element_defaults(hierarchy_class).keys())  # a frozenset
         self.chains[id(hierarchy_class)] = chain
         self.classes.append(hierarchy_class)
         for key in chain:

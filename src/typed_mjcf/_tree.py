@@ -457,10 +457,7 @@ class Element(_Layout):
 
     def insert(self, tag: str, /, position: int, **kwargs: object) -> Element:
         """Add a child ``<tag>`` at ``position`` among this element's children."""
-        if isinstance(position, bool) or not isinstance(position, int):  # pyright: ignore[reportUnnecessaryIsInstance]
-            raise InvalidTypeError(f"{self.path}: insert() position must be an int, "
-                                   f"got {position!r}")
-        return self._add_child(self._new_child_spec(tag), position, kwargs)
+        return insert_child(self, tag, position, kwargs)  # (run through _base.Element.insert)
 
     def _new_child_spec(self, tag: str) -> ChildSpec:
         """The child spec ``add(tag)`` adds; under dm_control's behaviour a once-only child
@@ -550,7 +547,7 @@ class Element(_Layout):
         return _unpickled, (type(self),), state
 
     def __setstate__(self, state: dict[str, object]) -> None:
-        tree = cast("list[tuple[Element, Element]]", state.pop(_TREE, ()))
+        tree = cast("list[tuple[Element, Element]]", state.pop(_TREE, []))
         state.pop(_TOP, None)
         for name, value in state.items():
             object.__setattr__(self, name, value)
@@ -652,15 +649,17 @@ class ModelBase(Element):
     _files: dict[str, bytes]  # file contents given with the model (by path as written)
     _sources: SourceMap | None  # filled by the parser; None for models built in Python
 
-    def __init__(self, model: str | None = None, *, model_dir: str | None = None,
-                 assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None:
+    # (object: a compiled signature would refuse RootElement(model=3) with a bare TypeError
+    # before the attribute's own check; elements.pyi gives checkers RootElement's signature)
+    def __init__(self, model: object = None, *, model_dir: object = None,
+                 assets: object = None, **kwargs: object) -> None:
         _init_model(self)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, None, True)
         if model_dir is not None:
-            self._base_dir = os.fspath(model_dir)
+            self._base_dir = os.fspath(cast(str, model_dir))
         if assets is not None:
-            self._files.update(assets)
+            self._files.update(cast("Mapping[str, bytes]", assets))
         scope_attribute = self.spec.scope_attribute
         if model is None and _COMPAT[0] and scope_attribute is not None and not kwargs.get(
                 scope_attribute.py_name):
@@ -1797,15 +1796,29 @@ _Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
 _HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
 
 
-def tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
     """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
-    ``element_name`` (taken out of the attributes)."""
+    ``element_name`` (taken out of the attributes). Takes any object (here and in
+    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
     if tag is None and _COMPAT[0] and _ELEMENT_NAME in kwargs:
-        return cast(str, kwargs.pop(_ELEMENT_NAME))
-    if tag is None:
+        tag = kwargs.pop(_ELEMENT_NAME)
+    elif tag is None:
         raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
                                f"add('<tag>', ...)")
+    if not isinstance(tag, str):
+        raise InvalidTypeError(f"{parent.path}: a child tag must be a string, got {tag!r}")
     return tag
+
+
+def insert_child(parent: Element, tag: object, position: object,
+                 kwargs: dict[str, object]) -> Element:
+    """``insert()``: a child ``<tag>`` at ``position``, each checked (a bool is no int)."""
+    if isinstance(position, bool) or not isinstance(position, int):
+        raise InvalidTypeError(f"{parent.path}: insert() position must be an int, "
+                               f"got {position!r}")
+    if not isinstance(tag, str):
+        raise InvalidTypeError(f"{parent.path}: a child tag must be a string, got {tag!r}")
+    return parent._add_child(parent._new_child_spec(tag), position, kwargs)
 
 
 def _python_name(spec: ElementSpec, name: str) -> str | None:
