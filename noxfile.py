@@ -1,4 +1,4 @@
-"""Developer tasks: ``nox -s tests``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
+"""Developer tasks: ``nox -s tests``, ``nox -s tests_compiled``, ``nox -s demo``, ``nox -s generate``, ``nox -s bench``,
 ``nox -s pictures``, ``nox -s bench_editor``, ``nox -s releases``, ``nox -s install_matrix``,
 ``nox -s docs``, ``nox -s ray``.
 
@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
 import tomllib
 from pathlib import Path
 
@@ -57,6 +58,41 @@ def tests(session: nox.Session) -> None:
     session.run("pytest", "-n", "auto", *session.posargs,
                 env={"PYTHONDONTWRITEBYTECODE": None})
     session.run("ruff", "check", ".")
+
+
+# The test modules the compiled build runs (tests_compiled): everything that exercises the
+# runtime through the installed package. Left out: what checks the repository rather than
+# the installed build (the type checks and stubs of src/, codegen/ and generated/ in sync,
+# the docs, the install matrix, the benchmark's own smoke test).
+COMPILED_TESTS = ["tests/runtime", "tests/composition", "tests/fidelity", "tests/safety",
+                  "tests/dm_control", "tests/cli", "tests/physics", "tests/render",
+                  "tests/test_generated_api.py", "tests/test_examples.py",
+                  # the type check of to-python's output is the repository's mypy run
+                  "--ignore", "tests/cli/test_to_python_types.py"]
+
+
+# a fresh environment each run: a reused one would keep the last wheel (same version number)
+@nox.session(python=PYTHON, reuse_venv=False)
+def tests_compiled(session: nox.Session) -> None:
+    """The suite on the compiled build: the wheel built with ``TYPED_MJCF_COMPILE=1`` (mypyc
+    over pyproject's list of hot modules; a C compiler and minutes of CPU), installed (not
+    editable) with the dev extra, then the runtime's tests against it
+    (``tests/runtime/test_build.py`` checks the compiled modules are the ones loaded).
+
+    nox -s tests_compiled                              # build, install, test
+    nox -s tests_compiled -- tests/runtime -x          # other pytest arguments
+    """
+    wheels = Path(session.create_tmp()) / "wheels"
+    shutil.rmtree(wheels, ignore_errors=True)
+    session.install("build[uv]")
+    session.run("python", "-m", "build", "--wheel", "--installer", "uv", "--outdir",
+                str(wheels), ".", env={"TYPED_MJCF_COMPILE": "1"})
+    (wheel,) = wheels.glob("typed_mjcf-*.whl")
+    session.install(f"{wheel}[dev]")
+    # the tests import typed_mjcf from site-packages (pytest puts the repository root on the
+    # path, where no typed_mjcf is); TYPED_MJCF_EXPECT_COMPILED makes test_build insist
+    session.run("pytest", "-n", "auto", *(session.posargs or COMPILED_TESTS),
+                env={"PYTHONDONTWRITEBYTECODE": None, "TYPED_MJCF_EXPECT_COMPILED": "1"})
 
 
 @nox.session(python=PYTHON)

@@ -63,6 +63,7 @@ from typed_mjcf import physics as physics
 from typed_mjcf.physics import Physics
 PREFIX_SEPARATOR: _Final[str] = "/"
 __all__ = [
+    "COMPILED",
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
@@ -113,5 +114,6 @@ __all__ = [
 __all__ += _elements.__all__
 from typed_mjcf._dmcompat import install as install_as_dm_control_mjcf
 __all__ += ["install_as_dm_control_mjcf"]
+COMPILED: _Final[tuple[str, ...]] = ...
 
 def __getattr__(name: str) -> object: ...

@@ -7,7 +7,7 @@ feature module.
 """
 from __future__ import annotations
 from collections.abc import Iterable, Iterator
-from typing import TYPE_CHECKING, Final, cast
+from typing import TYPE_CHECKING, Final, NoReturn, cast
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._core.names import NameScope

@@ -19,6 +19,7 @@ change inside the runtime's folders shows here and nowhere else.
 - versions: the MuJoCo release the tables describe, and those the runtime covers.
 """
 from __future__ import annotations
+from typed_mjcf._build import describe as describe_build
 from typed_mjcf._core.access import DEFAULT_ACCESS
 from typed_mjcf._core.codecs import (
     ArrayCodec,
@@ -63,7 +64,7 @@ __all__ = [
     "DEFAULT_ACCESS", "DEFAULT_COMPILE_LIMITS", "DEFAULT_RENDER_LIMITS", "INCLUDE",
     "MAX_INDENT", "MUJOCO_VERSION", "ArrayCodec", "AttributeSpec", "Element", "ElementSpec",
     "Format", "KeywordCodec", "ModelBase", "ParseOptions", "Problem", "Rejected",
-    "check_compile", "children", "describe_releases", "element_class", "element_name",
+    "check_compile", "children", "describe_build", "describe_releases", "element_class", "element_name",
     "escape", "grammar_facts", "iter_written", "key_from_text", "make_codec", "model_of",
     "parse_path", "read_value", "real_text", "reference_namespace", "render", "render_pair",
     "resolve_all", "root_class", "scope_of", "source_map", "source_of", "start_line",

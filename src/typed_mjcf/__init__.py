@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._build import compiled_modules as _compiled_modules
 from typed_mjcf._core.names import NameScope
 from typed_mjcf._core.tree import ElementList
 from typed_mjcf._generated import elements as _elements
@@ -70,6 +71,7 @@ if _TYPE_CHECKING:
 PREFIX_SEPARATOR: _Final[str] = "/"  # dm_control's name for the scope separator of attached models
 
 __all__ = [
+    "COMPILED",
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
@@ -122,6 +124,10 @@ __all__ += _elements.__all__
 from typed_mjcf._dmcompat import install as install_as_dm_control_mjcf
 
 __all__ += ["install_as_dm_control_mjcf"]
+
+# Which build runs: the modules mypyc compiled (pyproject's list, in a wheel built with
+# TYPED_MJCF_COMPILE=1), () in the pure-Python build. Every module compiled is imported by now.
+COMPILED: _Final[tuple[str, ...]] = _compiled_modules()
 
 # Simulation imports mujoco, the heaviest import there is: loaded when first used.
 _PHYSICS_NAMES: _Final = frozenset({"Physics", "physics"})

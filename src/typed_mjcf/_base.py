@@ -8,7 +8,7 @@ feature module.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from typing import TYPE_CHECKING, Final, cast
+from typing import TYPE_CHECKING, Final, NoReturn, cast
 
 from lxml import etree
 
@@ -50,6 +50,45 @@ class Element(_tree.Element):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
     __slots__ = ()
+
+    # ------------------------------------------------------------------ unknown attributes
+    # Here, not on typed_mjcf._core.tree.Element: that module may be compiled (mypyc drops code
+    # under `if not TYPE_CHECKING` and keeps no such methods on classes it compiles).
+
+    if not TYPE_CHECKING:  # run time only: checkers should see unknown attributes as errors
+
+        def __getattr__(self, name: str) -> NoReturn:
+            # Only reached when normal lookup fails: an attribute the grammar doesn't have.
+            if name.startswith("__"):
+                raise AttributeError(name)
+            alias = _tree.mjcf_alias(self, name)
+            if alias is not None:  # dm_control's spelling: getattr(visual, "global")
+                return getattr(self, alias)
+            raise self._unknown_attribute(name)
+
+        def __setattr__(self, name: str, value: object) -> None:
+            # Properties and slots are found by the normal route; anything else is a name
+            # the grammar does not have. The tree writes its slots with _SLOTS' setters.
+            try:
+                object.__setattr__(self, name, value)
+            except AttributeError:
+                raise self._unknown_attribute(name, "can't set attribute") from None
+
+        def __delattr__(self, name: str) -> None:
+            try:
+                object.__delattr__(self, name)
+            except AttributeError:
+                raise self._unknown_attribute(name) from None
+
+        # dm_control's code also names the tag by keyword: add(element_name="geom", ...)
+        def add(self, tag=None, /, **kwargs):
+            """Add a child ``<tag>`` with the given attributes and return it."""
+            return self._add_child(self._new_child_spec(_tree.tag_given(self, tag, kwargs)),
+                                   None, kwargs)
+
+        def insert(self, tag, /, position, **kwargs):
+            """Add a child ``<tag>`` at ``position`` among this element's children."""
+            return _tree.insert_child(self, tag, position, kwargs)
 
     # ------------------------------------------------------------------ where it is
 
@@ -275,8 +314,8 @@ class Element(_tree.Element):
         dm_control's signature and unused.
         """
         del debug_context
-        return element_text(self, Format(precision, zero_threshold, canonical), pretty_print,
-                            names_from=prefix_root, self_only=self_only)
+        return element_text(self, Format(precision, zero_threshold, canonical),
+                            bool(pretty_print), names_from=prefix_root, self_only=bool(self_only))
 
     def to_xml(self, prefix_root: NameScope | None = None, debug_context: object = None, *,
                precision: int | None = None, zero_threshold: float = 0.0,

@@ -5,7 +5,7 @@ from __future__ import annotations
 import mujoco
 import pytest
 
-from typed_mjcf import __version__
+from typed_mjcf import COMPILED, __version__
 from typed_mjcf._generated.releases import RELEASES
 from typed_mjcf.cli import main
 
@@ -16,6 +16,7 @@ def test_version_names_the_releases_covered_and_the_installed_one(
         main(["--version"])
     assert stopped.value.code == 0
     lines = capsys.readouterr().out.splitlines()
-    assert lines[0] == f"typed-mjcf {__version__}"
+    build = f"compiled by mypyc: {len(COMPILED)} modules" if COMPILED else "pure Python"
+    assert lines[0] == f"typed-mjcf {__version__} ({build})"
     assert lines[1].startswith(f"MuJoCo releases covered: {', '.join(RELEASES)}; ")
     assert f"installed: {mujoco.__version__}" in lines[1]

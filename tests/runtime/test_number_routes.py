@@ -18,6 +18,7 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
+from tests.compiled import patches
 from typed_mjcf._core import codecs as _codecs
 from typed_mjcf._core.tree import element_classes
 from typed_mjcf.cli import main
@@ -128,6 +129,7 @@ def _two_decimals(values: Sequence[float], single: bool = False,
     return " ".join(format(x, ".2f") for x in values)
 
 
+@patches("_core.codecs")
 def test_the_float_spelling_moves_every_route(
         tmp_path: Path, capsys: pytest.CaptureFixture[str],
         monkeypatch: pytest.MonkeyPatch) -> None:

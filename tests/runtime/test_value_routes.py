@@ -26,6 +26,7 @@ import pytest
 from lxml import etree
 
 import typed_mjcf as mjcf
+from tests.compiled import patches
 from typed_mjcf._core import codecs as _codecs
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.grammar import AttributeSpec
@@ -376,6 +377,7 @@ def test_by_default_every_route_writes_numbers_as_the_file_spells_them(
         assert not _numbers(text) & {"1.5", "0.02"}, (route, text)
 
 
+@patches("_core.codecs")
 def test_a_codec_that_rewrites_what_it_read_is_followed_by_every_route(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     for codec in (_codecs.RealCodec, _codecs.ArrayCodec):
@@ -390,6 +392,7 @@ def _shouted(codec: _codecs.Codec, stored: object, fmt: _codecs.Format) -> str:
     return str(stored).upper()
 
 
+@patches("_core.codecs")
 def test_a_name_codec_that_rewrites_names_is_followed_by_every_route(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Names and references are written by their codecs too (here: in capitals), in the
@@ -407,6 +410,7 @@ def test_a_name_codec_that_rewrites_names_is_followed_by_every_route(
         assert all(name == name.upper() for name in names), (route, names)
 
 
+@patches("_core.codecs")
 def test_a_number_codec_follows_its_declaration() -> None:
     """What the exporter's plan reads (``keeps_read_text``) is what ``write`` does: flipped,
     the number codecs rewrite a text they kept as read."""

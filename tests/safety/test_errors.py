@@ -11,6 +11,7 @@ from typing import IO
 import pytest
 
 import typed_mjcf as mjcf
+from tests.compiled import patches
 from typed_mjcf._text import parse as _parse  # pyright: ignore[reportPrivateUsage]
 
 from ..operations import growth
@@ -126,6 +127,7 @@ def test_from_file_errors_are_parse_errors() -> None:
         mjcf.from_xml_string("<mujoco/>", base_dir=3)  # type: ignore[arg-type]
 
 
+@patches("_text.parse")
 def test_unexpected_exceptions_become_parse_errors(monkeypatch: pytest.MonkeyPatch) -> None:
     """A bug (here a KeyError planted in the builder) still surfaces as the library's error,
     with the original exception as its cause."""

@@ -62,7 +62,7 @@ class Format:
     precision: int | None
     zero_threshold: float
     canonical: bool
-    def __init__(self, precision: int | None = None, zero_threshold: float = 0.0,
+    def __init__(self, precision: object = None, zero_threshold: object = 0.0,
                  canonical: bool = False) -> None: ...
     @property
     def digits(self) -> int | None:

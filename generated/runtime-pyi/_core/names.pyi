@@ -11,7 +11,8 @@ under a scope name that such a literal name starts with (the exported names woul
 """
 from __future__ import annotations
 from collections.abc import Iterator
-from typing import Protocol
+from typing import Protocol, TypeAlias
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.errors import ChildError, DuplicateIdentifierError
 SEPARATOR = "/"
 UNNAMED_MODEL = "unnamed_model"
@@ -20,10 +21,12 @@ class Named(Protocol):
     """What a scope needs of the elements it names (for messages)."""
     @property
     def path(self) -> str: ...
+_Model: TypeAlias = object
 
+@mypyc_attr(native_class=False)
 class NameScope:
     """The identifiers of one model and the scopes attached to it."""
-    model: object
+    model: _Model
     name: str | None
     parent: NameScope | None
     tables: dict[str, dict[str, Named]]

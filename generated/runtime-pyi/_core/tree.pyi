@@ -21,11 +21,9 @@ from __future__ import annotations
 from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
-    TYPE_CHECKING,
     ClassVar,
     Final,
     Generic,
-    NoReturn,
     Protocol,
     Self,
     SupportsIndex,
@@ -34,6 +32,7 @@ from typing import (
     cast,
     overload,
 )
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.access import ANYWHERE, Confinement
 from typed_mjcf._core.codecs import ArrayCodec, Rejected
 from typed_mjcf._core.errors import (
@@ -96,6 +95,7 @@ def short_repr(value: object) -> str:
     """``repr(value)``, shortened as the messages of refused values shorten it."""
     ...
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
@@ -117,6 +117,7 @@ def paths(elements: Iterable[Element]) -> list[str]:
     """The paths of ``elements`` (as :attr:`Element.path`), in time linear in their number."""
     ...
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
     spec: ClassVar[ElementSpec]
@@ -186,6 +187,7 @@ class Element(_Layout):
         their contents, whatever their names)."""
         ...
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
@@ -195,12 +197,13 @@ class ModelBase(Element):
     _frame: Element | None
     _files: dict[str, bytes]
     _sources: SourceMap | None
-    def __init__(self, model: str | None = None, *, model_dir: str | None = None,
-                 assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None: ...
+    def __init__(self, model: object = None, *, model_dir: object = None,
+                 assets: object = None, **kwargs: object) -> None: ...
     def __deepcopy__(self, memo: dict[int, object]) -> Self:
         """An independent copy, with copies of the models attached to it."""
         ...
 
+@mypyc_attr(serializable=True)
 class SourceMap:
     """Where a parsed model's elements were read (for messages that point into the files).
 
@@ -237,6 +240,7 @@ def new_model(cls: type[ModelBase]) -> ModelBase:
     """An empty model of the generated root class (no attributes set)."""
     ...
 
+@mypyc_attr(native_class=False)
 class Attribute:
     """Reads and writes one attribute on elements of a generated class."""
     def __init__(self, spec: AttributeSpec) -> None:
@@ -254,6 +258,7 @@ class Attribute:
     def __delete__(self, obj: Element) -> None: ...
     def __repr__(self) -> str: ...
 
+@mypyc_attr(native_class=False)
 class SingleChild:
     """A once-only child, created on first access; ``del`` removes it."""
     def __init__(self, child: ChildSpec) -> None:
@@ -265,6 +270,7 @@ class SingleChild:
     def __set__(self, obj: Element, value: object) -> None: ...
     def __delete__(self, obj: Element) -> None: ...
 
+@mypyc_attr(native_class=False)
 class ChildList:
     """The children with one tag, as a live :class:`ElementList`."""
     def __init__(self, child: ChildSpec) -> None:
@@ -458,6 +464,22 @@ def remove_subtree(element: Element) -> None:
 def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
     """``top``'s subtree in the order the exported XML has it: attached models' bodies inside
     their frames, their other sections after ours (when ``attachments``)."""
+    ...
+
+def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
+    """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
+    ``element_name`` (taken out of the attributes). Takes any object (here and in
+    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
+    ...
+
+def insert_child(parent: Element, tag: object, position: object,
+                 kwargs: dict[str, object]) -> Element:
+    """``insert()``: a child ``<tag>`` at ``position``, each checked (a bool is no int)."""
+    ...
+
+def mjcf_alias(element: Element, name: str) -> str | None:
+    """The Python name of ``element``'s child or attribute that ``name`` spells as MJCF does
+    (``global``: ``global_``); ``None`` where the two are the same or there is none."""
     ...
 
 def on_demand(spec: ElementSpec) -> bool:

@@ -33,6 +33,7 @@ from typed_mjcf._core.access import (
     confine,
     open_confined,
 )
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.errors import (
     DuplicateIdentifierError,
     FileAccessError,
@@ -48,6 +49,7 @@ from typed_mjcf.types import XmlElement
 INCLUDE = "include"
 XmlNode: TypeAlias = XmlElement
 
+@mypyc_attr(native_class=False)
 @dataclass(frozen=True, slots=True)
 class ParseLimits:
     """Bounds on what reading one model may consume; pass a raised copy to read more.
@@ -121,7 +123,7 @@ def is_model_text(data: bytes) -> bool:
     """Whether ``data`` is MJCF text: XML whose root element is the model's root."""
     ...
 
-def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
+def parse_text(data: object, *, base_dir: str | None = None, source: str | None = None,
                limits: ParseLimits | None = None, options: ParseOptions = DEFAULT_OPTIONS,
                access: FileAccess | Confinement = DEFAULT_ACCESS) -> ModelBase:
     """Parse MJCF text into a model that reads files where ``access`` allows (by default in

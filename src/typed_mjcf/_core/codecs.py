@@ -125,14 +125,16 @@ class Format:
     zero_threshold: float
     canonical: bool
 
-    def __init__(self, precision: int | None = None, zero_threshold: float = 0.0,
+    # (object: users pass these through to_xml_string(); the checks say what is expected,
+    # where a compiled signature would raise a bare TypeError first)
+    def __init__(self, precision: object = None, zero_threshold: object = 0.0,
                  canonical: bool = False) -> None:
         _check_option("precision", precision, lambda x: isinstance(x, int) and x >= 1,
                       "a positive int", allow_none=True)
         _check_option("zero_threshold", zero_threshold,
                       lambda x: isinstance(x, int | float) and x >= 0, "a non-negative number")
-        self.precision = precision
-        self.zero_threshold = float(zero_threshold)
+        self.precision = cast("int | None", precision)
+        self.zero_threshold = float(cast(float, zero_threshold))
         self.canonical = canonical
 
     @property

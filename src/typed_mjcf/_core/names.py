@@ -12,8 +12,9 @@ under a scope name that such a literal name starts with (the exported names woul
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Protocol
+from typing import Protocol, TypeAlias
 
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.errors import ChildError, DuplicateIdentifierError
 
 SEPARATOR = "/"
@@ -27,13 +28,19 @@ class Named(Protocol):
     def path(self) -> str: ...
 
 
+# a name, not `object`: a compiled class's annotations are loaded by name, and mypyc
+# finds no builtins.object among its names
+_Model: TypeAlias = object
+
+
+@mypyc_attr(native_class=False)  # keeps __weakref__ (a native class has none)
 class NameScope:
     """The identifiers of one model and the scopes attached to it."""
 
     __slots__ = ("__weakref__", "attached", "model", "name", "parent", "slash_heads", "tables",
                  "unnamed_targets", "waiting")
 
-    model: object  # the model whose scope this is
+    model: _Model  # the model whose scope this is
     name: str | None  # the model's name: its scope in the model it is attached to
     parent: NameScope | None  # the scope of the model this one is attached to
     tables: dict[str, dict[str, Named]]

@@ -30,11 +30,9 @@ import weakref
 from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
-    TYPE_CHECKING,
     ClassVar,
     Final,
     Generic,
-    NoReturn,
     Protocol,
     Self,
     SupportsIndex,
@@ -46,6 +44,7 @@ from typing import (
 
 import numpy as np
 
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.access import ANYWHERE, Confinement
 from typed_mjcf._core.behaviour import STATE as _COMPAT
 from typed_mjcf._core.behaviour import dm_control_namespace
@@ -84,8 +83,8 @@ _new_object = object.__new__
 # What a refused value may say of itself (a stand-in for values, such as a distribution of
 # typed_mjcf.variation, says where it goes): each gives a note or None; asked on refusal only.
 _REJECTION_NOTES: list[Callable[[object], str | None]] = []
-# object.__new__ of a _Blank, seen as the Element it becomes (see _create)
-_new_blank = cast("Callable[[type[_Blank]], Element]", object.__new__)
+# object.__new__ of a _Blank (see _create)
+_new_blank = cast("Callable[[type[_Blank]], _Blank]", object.__new__)
 
 
 def element_class(class_name: str) -> type[Element]:
@@ -170,6 +169,11 @@ def short_repr(value: object) -> str:
     return _short(value)
 
 
+# Element classes stay ordinary Python classes when compiled (their methods compiled):
+# generated classes and users subclass them, elements change __class__ (_Blank), keep
+# __weakref__ and __slots__, pickle without __init__; and since the subclasses are not
+# compiled, compiled code must check an argument's class with isinstance (not `is`).
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
@@ -194,6 +198,7 @@ class _Layout:
     _attached: ModelBase | None  # on attachment frames: the model attached there
 
 
+@mypyc_attr(native_class=False)
 class _Blank(_Layout):
     """An element being made: the same layout as every element class, without
     :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
@@ -227,6 +232,7 @@ def paths(elements: Iterable[Element]) -> list[str]:
     return [element._path(numbers) for element in elements]
 
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
@@ -322,30 +328,8 @@ class Element(_Layout):
 
     # ------------------------------------------------------------------ attributes
 
-    if not TYPE_CHECKING:  # run time only: checkers should see unknown attributes as errors
-
-        def __getattr__(self, name: str) -> NoReturn:
-            # Only reached when normal lookup fails: an attribute the grammar doesn't have.
-            if name.startswith("__"):
-                raise AttributeError(name)
-            alias = _python_name(self.spec, name)
-            if alias is not None:  # dm_control's spelling: getattr(visual, "global")
-                return getattr(self, alias)
-            raise self._unknown_attribute(name)
-
-        def __setattr__(self, name: str, value: object) -> None:
-            # Properties and slots are found by the normal route; anything else is a name
-            # the grammar does not have. The tree writes its slots with _SLOTS' setters.
-            try:
-                object.__setattr__(self, name, value)
-            except AttributeError:
-                raise self._unknown_attribute(name, "can't set attribute") from None
-
-        def __delattr__(self, name: str) -> None:
-            try:
-                object.__delattr__(self, name)
-            except AttributeError:
-                raise self._unknown_attribute(name) from None
+    # __getattr__, __setattr__ and __delattr__: on typed_mjcf._base.Element (interpreted,
+    # since a compiled module cannot hide them from checkers behind `if not TYPE_CHECKING`)
 
     def _unknown_attribute(self, name: str, action: str | None = None) -> UnknownAttributeError:
         """``name`` is none of the row's attributes: the message says which are (reading,
@@ -500,22 +484,15 @@ class Element(_Layout):
 
     # ------------------------------------------------------------------ children
 
-    if TYPE_CHECKING:
-        def add(self, tag: str, /, **kwargs: object) -> Element:
-            """Add a child ``<tag>`` with the given attributes and return it."""
-            ...
-    else:  # dm_control's code also names the tag by keyword: add(element_name="geom", ...)
-        def add(self, tag=None, /, **kwargs):
-            """Add a child ``<tag>`` with the given attributes and return it."""
-            return self._add_child(self._new_child_spec(_tag_given(self, tag, kwargs)), None,
-                                   kwargs)
+    def add(self, tag: str, /, **kwargs: object) -> Element:
+        """Add a child ``<tag>`` with the given attributes and return it."""
+        # What runs is typed_mjcf._base.Element.add (interpreted): it also takes dm_control's
+        # add(element_name="geom", ...), which checkers should not offer.
+        return self._add_child(self._new_child_spec(tag_given(self, tag, kwargs)), None, kwargs)
 
     def insert(self, tag: str, /, position: int, **kwargs: object) -> Element:
         """Add a child ``<tag>`` at ``position`` among this element's children."""
-        if isinstance(position, bool) or not isinstance(position, int):  # pyright: ignore[reportUnnecessaryIsInstance]
-            raise InvalidTypeError(f"{self.path}: insert() position must be an int, "
-                                   f"got {position!r}")
-        return self._add_child(self._new_child_spec(tag), position, kwargs)
+        return insert_child(self, tag, position, kwargs)  # (run through _base.Element.insert)
 
     def _new_child_spec(self, tag: str) -> ChildSpec:
         """The child spec ``add(tag)`` adds; under dm_control's behaviour a once-only child
@@ -605,7 +582,7 @@ class Element(_Layout):
         return _unpickled, (type(self),), state
 
     def __setstate__(self, state: dict[str, object]) -> None:
-        tree = cast("list[tuple[Element, Element]]", state.pop(_TREE, ()))
+        tree = cast("list[tuple[Element, Element]]", state.pop(_TREE, []))
         state.pop(_TOP, None)
         for name, value in state.items():
             object.__setattr__(self, name, value)
@@ -693,6 +670,7 @@ def _unpickled(cls: type[Element]) -> Element:
     return element
 
 
+@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
@@ -706,15 +684,17 @@ class ModelBase(Element):
     _files: dict[str, bytes]  # file contents given with the model (by path as written)
     _sources: SourceMap | None  # filled by the parser; None for models built in Python
 
-    def __init__(self, model: str | None = None, *, model_dir: str | None = None,
-                 assets: Mapping[str, bytes] | None = None, **kwargs: object) -> None:
+    # (object: a compiled signature would refuse RootElement(model=3) with a bare TypeError
+    # before the attribute's own check; elements.pyi gives checkers RootElement's signature)
+    def __init__(self, model: object = None, *, model_dir: object = None,
+                 assets: object = None, **kwargs: object) -> None:
         _init_model(self)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, None, True)
         if model_dir is not None:
-            self._base_dir = os.fspath(model_dir)
+            self._base_dir = os.fspath(cast(str, model_dir))
         if assets is not None:
-            self._files.update(assets)
+            self._files.update(cast("Mapping[str, bytes]", assets))
         scope_attribute = self.spec.scope_attribute
         if model is None and _COMPAT[0] and scope_attribute is not None and not kwargs.get(
                 scope_attribute.py_name):
@@ -748,6 +728,7 @@ def _init_model(model: ModelBase) -> None:
     model._sources = None
 
 
+@mypyc_attr(serializable=True)  # pickled and copied with its model (without __init__)
 class SourceMap:
     """Where a parsed model's elements were read (for messages that point into the files).
 
@@ -827,6 +808,9 @@ def new_model(cls: type[ModelBase]) -> ModelBase:
 # ---------------------------------------------------------------------------- descriptors
 
 
+# data descriptors (__set__, __delete__): a native class would lose them (mypyc gives it
+# __get__ only), and every assignment would then replace the descriptor
+@mypyc_attr(native_class=False)
 class Attribute:
     """Reads and writes one attribute on elements of a generated class."""
 
@@ -868,6 +852,7 @@ class Attribute:
         return repr(self.spec)
 
 
+@mypyc_attr(native_class=False)
 class SingleChild:
     """A once-only child, created on first access; ``del`` removes it."""
 
@@ -901,6 +886,7 @@ class SingleChild:
             existing.remove()
 
 
+@mypyc_attr(native_class=False)
 class ChildList:
     """The children with one tag, as a live :class:`ElementList`."""
 
@@ -1085,16 +1071,18 @@ def _create(cls: type[Element], parent: Element) -> Element:
     children), with no values."""
     # made as a _Blank (its slots written directly, past Element.__setattr__), then given
     # its class: about three times faster than writing each slot through its descriptor
-    element = _new_blank(_Blank)
-    element._values = {}
-    element._children = _NO_CHILDREN
-    element._parent = parent
-    element._root = parent._root
+    blank = _new_blank(_Blank)
+    blank._values = {}
+    blank._children = _NO_CHILDREN
+    blank._parent = parent
+    blank._root = parent._root
     attached = parent._attached
-    element._scope = parent._scope if attached is None else attached._scope
-    element._singles = None
-    element._attached = None
-    element.__class__ = cls
+    blank._scope = parent._scope if attached is None else attached._scope
+    blank._singles = None
+    blank._attached = None
+    object.__setattr__(blank, "__class__", cls)
+    # an Element now (typed so only from here: compiled code checks what a name holds)
+    element = cast(Element, blank)
     if _RECORDER[0] is not None:
         _RECORDER[0](element, None, True)
     return element
@@ -1843,15 +1831,29 @@ _Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
 _HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
 
 
-def _tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
     """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
-    ``element_name`` (taken out of the attributes)."""
+    ``element_name`` (taken out of the attributes). Takes any object (here and in
+    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
     if tag is None and _COMPAT[0] and _ELEMENT_NAME in kwargs:
-        return cast(str, kwargs.pop(_ELEMENT_NAME))
-    if tag is None:
+        tag = kwargs.pop(_ELEMENT_NAME)
+    elif tag is None:
         raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
                                f"add('<tag>', ...)")
+    if not isinstance(tag, str):
+        raise InvalidTypeError(f"{parent.path}: a child tag must be a string, got {tag!r}")
     return tag
+
+
+def insert_child(parent: Element, tag: object, position: object,
+                 kwargs: dict[str, object]) -> Element:
+    """``insert()``: a child ``<tag>`` at ``position``, each checked (a bool is no int)."""
+    if isinstance(position, bool) or not isinstance(position, int):
+        raise InvalidTypeError(f"{parent.path}: insert() position must be an int, "
+                               f"got {position!r}")
+    if not isinstance(tag, str):
+        raise InvalidTypeError(f"{parent.path}: a child tag must be a string, got {tag!r}")
+    return parent._add_child(parent._new_child_spec(tag), position, kwargs)
 
 
 def _python_name(spec: ElementSpec, name: str) -> str | None:
@@ -1864,6 +1866,12 @@ def _python_name(spec: ElementSpec, name: str) -> str | None:
     if attribute is not None and attribute.py_name != name:
         return attribute.py_name
     return None
+
+
+def mjcf_alias(element: Element, name: str) -> str | None:
+    """The Python name of ``element``'s child or attribute that ``name`` spells as MJCF does
+    (``global``: ``global_``); ``None`` where the two are the same or there is none."""
+    return _python_name(element.spec, name)
 
 
 def on_demand(spec: ElementSpec) -> bool:

@@ -32,6 +32,7 @@ from typing import Final, Protocol, TypeAlias, cast
 import numpy as np
 from lxml import etree
 
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.access import (
     ANYWHERE,
@@ -81,6 +82,9 @@ _MANY_ATTRIBUTES: Final = 64
 _SUGGESTED: Final = 100  # ignored attributes given a "did you mean" in one parse
 
 
+# an ordinary Python class when compiled: its checks (__post_init__) say what a bad limit
+# is, where a compiled __init__ would raise a bare TypeError first (ParseLimits(max_bytes=1.5))
+@mypyc_attr(native_class=False)
 @dataclass(frozen=True, slots=True)
 class ParseLimits:
     """Bounds on what reading one model may consume; pass a raised copy to read more.
@@ -417,7 +421,7 @@ def is_model_text(data: bytes) -> bool:
 # ----------------------------------------------------------------------------- entry points
 
 
-def parse_text(data: str | bytes, *, base_dir: str | None = None, source: str | None = None,
+def parse_text(data: object, *, base_dir: str | None = None, source: str | None = None,
                limits: ParseLimits | None = None, options: ParseOptions = DEFAULT_OPTIONS,
                access: FileAccess | Confinement = DEFAULT_ACCESS) -> ModelBase:
     """Parse MJCF text into a model that reads files where ``access`` allows (by default in
@@ -618,9 +622,10 @@ _PACKAGE_DIR: Final = PACKAGE_DIR + os.sep
 def _outside_package() -> int:
     """The ``stacklevel`` of the first caller outside typed-mjcf (the user's ``from_path``
     line), for :func:`warnings.warn`."""
-    here = inspect.currentframe()
-    frame = None if here is None else here.f_back  # the function that warns
-    level = 1
+    frame = inspect.currentframe()
+    # Interpreted, this function's frame is first and stacklevel 1 is its caller; compiled,
+    # typed-mjcf's compiled functions have no frames and stacklevel 1 is the first there is.
+    level = 0 if frame is not None and frame.f_code.co_name == "_outside_package" else 1
     while frame is not None and frame.f_code.co_filename.startswith(_PACKAGE_DIR):
         frame = frame.f_back
         level += 1
@@ -907,7 +912,7 @@ class _Hierarchy:
         none: frozenset[_Key] = frozenset()
         inherited = (self.chains.get(id(parent), none)
                      if parent is not None and parent is not self.section else none)
-        chain = inherited | _element_defaults(hierarchy_class).keys()
+        chain = inherited.union(_element_defaults(hierarchy_class).keys())  # a frozenset
         self.chains[id(hierarchy_class)] = chain
         self.classes.append(hierarchy_class)
         for key in chain:

@@ -20,7 +20,7 @@ from typed_mjcf import __version__
 from typed_mjcf.cli import check, diff, fmt, mujoco_stubs, render, to_python
 from typed_mjcf.cli._common import BAD_INPUT
 from typed_mjcf.errors import MjcfError
-from typed_mjcf.tooling import describe_releases
+from typed_mjcf.tooling import describe_build, describe_releases
 
 DESCRIPTION = """\
 Tools for MuJoCo's MJCF models, typed against MuJoCo's own grammar.
@@ -43,7 +43,8 @@ def parser() -> argparse.ArgumentParser:
         prog="typed-mjcf", description=DESCRIPTION,
         formatter_class=argparse.RawDescriptionHelpFormatter)
     main_parser.add_argument("--version", action="version",
-                             version=f"typed-mjcf {__version__}\n{describe_releases()}")
+                             version=f"typed-mjcf {__version__} ({describe_build()})\n"
+                                     f"{describe_releases()}")
     commands = main_parser.add_subparsers(title="commands", metavar="COMMAND", required=True)
     for module in (to_python, check, fmt, diff, render, mujoco_stubs):
         command = commands.add_parser(module.NAME, help=module.HELP,
