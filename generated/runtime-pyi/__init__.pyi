@@ -11,6 +11,7 @@
 __version__ = "0.1.0"
 from typing import Final as _Final
 from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._core.behaviour import Behaviour, behaviour, current_behaviour, set_behaviour
 from typed_mjcf._core.names import NameScope
 from typed_mjcf._core.tree import ElementList
 from typed_mjcf._generated import elements as _elements
@@ -66,6 +67,7 @@ __all__ = [
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
+    "Behaviour",
     "BindingError",
     "ChildError",
     "CompileError",
@@ -95,7 +97,9 @@ __all__ = [
     "RenderLimits",
     "UnknownAttributeError",
     "ValidationError",
+    "behaviour",
     "commit_defaults",
+    "current_behaviour",
     "encode_png",
     "export_with_assets",
     "export_with_assets_as_zip",
@@ -108,6 +112,7 @@ __all__ = [
     "get_frame_freejoint",
     "get_frame_joints",
     "get_freejoint",
+    "set_behaviour",
     "set_notebook_display",
 ]
 __all__ += _elements.__all__

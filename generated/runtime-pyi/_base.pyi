@@ -39,10 +39,10 @@ class Element(_tree.Element):
         attachment frame's include the attached model's bodies (and the rest of its world
         body); a top-level section of a composed model, the attached models' sections'.
 
-        With dm_control's behaviour on, a once-only child's tag gives that child itself
-        (``None`` if it does not exist), as dm_control's ``get_children`` does, and the
-        once-only children that are not on demand are among all children (dm_control makes
-        them with their parent)."""
+        With ``once_only_children_by_tag``, a once-only child's tag gives that child itself
+        (``None`` if it does not exist), as dm_control's ``get_children`` does; with
+        ``eager_children``, the once-only children that are not on demand are among all
+        children (dm_control makes them with their parent)."""
         ...
     def all_children(self) -> list[Element]:
         """dm_control's name for ``get_children()``."""

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._core.behaviour import Behaviour, behaviour, current_behaviour, set_behaviour
 from typed_mjcf._core.names import NameScope
 from typed_mjcf._core.tree import ElementList
 from typed_mjcf._generated import elements as _elements
@@ -73,6 +74,7 @@ __all__ = [
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
+    "Behaviour",
     "BindingError",
     "ChildError",
     "CompileError",
@@ -102,7 +104,9 @@ __all__ = [
     "RenderLimits",
     "UnknownAttributeError",
     "ValidationError",
+    "behaviour",
     "commit_defaults",
+    "current_behaviour",
     "encode_png",
     "export_with_assets",
     "export_with_assets_as_zip",
@@ -115,6 +119,7 @@ __all__ = [
     "get_frame_freejoint",
     "get_frame_joints",
     "get_freejoint",
+    "set_behaviour",
     "set_notebook_display",
 ]
 __all__ += _elements.__all__

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Final, cast
 from lxml import etree
 
 from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import Format
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._core.errors import InvalidTypeError, InvalidValueError, did_you_mean
@@ -72,19 +72,18 @@ class Element(_tree.Element):
         attachment frame's include the attached model's bodies (and the rest of its world
         body); a top-level section of a composed model, the attached models' sections'.
 
-        With dm_control's behaviour on, a once-only child's tag gives that child itself
-        (``None`` if it does not exist), as dm_control's ``get_children`` does, and the
-        once-only children that are not on demand are among all children (dm_control makes
-        them with their parent)."""
-        if dm_control_behaviour():
-            if tag is None:
-                for child_spec in self.spec.children.values():
-                    if child_spec.single and not child_spec.on_demand:
-                        getattr(self, child_spec.py_name)
-            else:
-                once = self.spec.children.get(tag)
-                if once is not None and once.single:
-                    return cast("list[Element]", getattr(self, once.py_name))
+        With ``once_only_children_by_tag``, a once-only child's tag gives that child itself
+        (``None`` if it does not exist), as dm_control's ``get_children`` does; with
+        ``eager_children``, the once-only children that are not on demand are among all
+        children (dm_control makes them with their parent)."""
+        if tag is None and FLAGS.eager_children:
+            for child_spec in self.spec.children.values():
+                if child_spec.single and not child_spec.on_demand:
+                    getattr(self, child_spec.py_name)
+        elif tag is not None and FLAGS.once_only_children_by_tag:
+            once = self.spec.children.get(tag)
+            if once is not None and once.single:
+                return cast("list[Element]", getattr(self, once.py_name))
         own = _tree.children_with_tag(self, tag)
         return cast("list[Element]", own + [e for e in attached_children(self)
                                             if tag is None or e.spec.tag == tag])
@@ -123,16 +122,16 @@ class Element(_tree.Element):
         if self.spec.holds_bodies and isinstance(self.parent, ModelRoot):  # the world body
             return prefix or grammar_facts().world_body
         name = _tree.element_name(self)
-        if name is None and dm_control_behaviour():
+        if name is None and FLAGS.unnamed_identifiers:
             parent = self.parent
             if self.spec.compose == "nest" and isinstance(parent, ModelRoot):
                 return prefix or "/"  # the model's own default class: dm_control names it so
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: the frame's name
                 return parent.prefixed_identifier(prefix_root)
-            unnamed = _tree.unnamed_identifier(self)
+            unnamed = _tree.COMPAT.unnamed_identifier(self)
             return None if unnamed is None else (prefix or "/") + unnamed
-        if name is not None and dm_control_behaviour():
+        if name is not None and FLAGS.frame_names_end_in_separator:
             parent = self.parent
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: dm_control's name

@@ -454,27 +454,48 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
     their frames, their other sections after ours (when ``attachments``)."""
     ...
 
-def on_demand(spec: ElementSpec) -> bool:
-    """Whether ``spec``'s once-only children exist only once added, as in dm_control (whose
-    schema marks them ``on_demand``): those of the rows that hold bodies (``<inertial>``)."""
+def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
+    """The error for ``name``, none of ``element``'s attributes."""
     ...
+
+def _not_filled(*_: object) -> NoReturn: ...
+
+def _nothing_handed_out(model: ModelBase) -> None:
+    """No array is handed out for in-place edits until the compat room lends its own."""
+    ...
+
+class CompatHooks:
+    """What the compat room lends the tree and the features, each called only while its
+    flag is on (:func:`check_arrays` always: it has nothing to do while none is handed out)."""
+    def __init__(self) -> None:
+        # arrays_in_place: the stored array itself, writable; values copied for a copy; the
+        # arrays handed out checked again before a model is written
+        self.writable_array: Callable[[Element, AttributeSpec, object], object] = _not_filled
+        self.copied_values: Callable[[Mapping[str, object]], dict[str, object]] = _not_filled
+        self.check_arrays: Callable[[ModelBase], None] = _nothing_handed_out
+        # named_after_files: one element (when unnamed), every element of a model
+        self.name_after_file: Callable[[Element], None] = _not_filled
+        self.name_after_files: Callable[[ModelBase], None] = _not_filled
+        # element_name_keyword: the tag ``add()``'s keywords name (taken out of them)
+        self.tag_by_keyword: Callable[[dict[str, object]], str | None] = _not_filled
+        # unnamed_model_name: a model's name when given none
+        self.unnamed_model: str = ""
+        # unnamed_identifiers: one element's identifier; every unnamed one of a model
+        self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
+        self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled
+COMPAT: Final = CompatHooks()
 
 def check_arrays(model: ModelBase) -> None:
     """Check again every array of ``model`` (and the models attached to it) handed out for
     in-place edits: an edit that made it invalid raises the error assigning it would."""
     ...
 
-def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
-    """The error for ``name``, none of ``element``'s attributes."""
+def keep_value(element: Element, attribute: AttributeSpec, value: object) -> None:
+    """Keep ``value`` as ``attribute``'s stored value as it is (an array handed out for
+    in-place edits, which is already the codec's)."""
     ...
 
-def unnamed_identifier(element: Element) -> str | None:
-    """dm_control's name for an unnamed element of a namespace: ``/unnamed_<namespace>_<i>``,
-    ``i`` its position among its model's elements of that namespace (attached models'
-    left out), to follow its scope's prefix (``/`` for the outermost model)."""
-    ...
-
-def name_after_files(model: ModelBase) -> None:
-    """Name every unnamed element of ``model`` that MuJoCo names after its file (see
-    :func:`_name_after_file`): dm_control's parser does."""
+def store_name(element: Element, attribute: AttributeSpec, name: str) -> None:
+    """Give ``element`` the name ``name`` (``attribute`` its id), as storing does: a name
+    given after a file."""
     ...

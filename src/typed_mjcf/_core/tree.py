@@ -26,7 +26,6 @@ from __future__ import annotations
 import copy
 import inspect
 import os
-import weakref
 from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
@@ -47,8 +46,7 @@ from typing import (
 import numpy as np
 
 from typed_mjcf._core.access import ANYWHERE, Confinement
-from typed_mjcf._core.behaviour import STATE as _COMPAT
-from typed_mjcf._core.behaviour import dm_control_namespace
+from typed_mjcf._core.behaviour import FLAGS as _FLAGS
 from typed_mjcf._core.codecs import ArrayCodec, Rejected
 from typed_mjcf._core.debuginfo import RECORDER as _RECORDER
 from typed_mjcf._core.doclines import DCLASS_DOC, adder_listing
@@ -77,8 +75,6 @@ _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
-_UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
-_ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names the tag by
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
@@ -381,8 +377,8 @@ class Element(_Layout):
             stored = attribute.codec.accept(value)
         except Rejected as rejected:
             raise self._reject(attribute, value, rejected) from None
-        if attribute.is_reference and isinstance(stored, str) and not _COMPAT[0]:
-            return _resolve(self, attribute, stored)  # dm_control: a name stays a name
+        if attribute.is_reference and isinstance(stored, str) and not _FLAGS.references_stay_names:
+            return _resolve(self, attribute, stored)  # (else a name stays a name)
         return stored
 
     def _unset(self, attribute: AttributeSpec) -> None:
@@ -484,8 +480,8 @@ class Element(_Layout):
                 store(self, attribute, stored, True)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
-        if _COMPAT[0]:
-            _name_after_file(self)  # (when not named)
+        if _FLAGS.named_after_files:
+            COMPAT.name_after_file(self)  # (when not named)
 
     # ------------------------------------------------------------------ children
 
@@ -507,10 +503,10 @@ class Element(_Layout):
         return self._add_child(self._new_child_spec(tag), position, kwargs)
 
     def _new_child_spec(self, tag: str) -> ChildSpec:
-        """The child spec ``add(tag)`` adds; under dm_control's behaviour a once-only child
-        that is not on demand exists with its parent there, so adding another is refused."""
+        """The child spec ``add(tag)`` adds; with ``eager_children`` a once-only child that
+        is not on demand exists with its parent there, so adding another is refused."""
         child_spec = self._child_spec(tag)
-        if _COMPAT[0] and child_spec.single and not child_spec.on_demand:
+        if _FLAGS.eager_children and child_spec.single and not child_spec.on_demand:
             getattr(self, child_spec.py_name)
         return child_spec
 
@@ -705,9 +701,9 @@ class ModelBase(Element):
         if assets is not None:
             self._files.update(assets)
         scope_attribute = self.spec.scope_attribute
-        if model is None and _COMPAT[0] and scope_attribute is not None and not kwargs.get(
-                scope_attribute.py_name):
-            model = _UNNAMED_MODEL  # dm_control names every model
+        if model is None and _FLAGS.unnamed_model_name and scope_attribute is not None and (
+                not kwargs.get(scope_attribute.py_name)):
+            model = COMPAT.unnamed_model
         if model is not None and scope_attribute is not None:
             kwargs = {scope_attribute.py_name: model, **kwargs}
         self._init_attributes(kwargs)
@@ -840,8 +836,8 @@ class Attribute:
         if stored is None:
             return None
         if self.lazy:  # numbers kept as read, arrays (read-only views)
-            if self.array and _COMPAT[0]:
-                return _writable_array(obj, self.spec, stored)
+            if self.array and _FLAGS.arrays_in_place:
+                return COMPAT.writable_array(obj, self.spec, stored)
             return self.codec.read(stored)
         if self.reference:
             return _read_reference(obj, self.spec, stored)
@@ -875,8 +871,8 @@ class SingleChild:
         existing = obj._single(self.child.tag)
         if existing is not None:
             return existing
-        if _COMPAT[0] and on_demand(obj.spec):
-            return None  # dm_control: a body's <inertial> is None until added
+        if self.child.on_demand:
+            return None  # a body's <inertial> is None until added
         return obj._add_child(self.child, None, {})
 
     def __set__(self, obj: Element, value: object) -> None:
@@ -906,7 +902,7 @@ class ChildList:
         if obj is None:
             return self
         tag = self.child.tag
-        if _COMPAT[0] and tag == grammar_facts().freejoint:  # dm_control: one, or None
+        if _FLAGS.single_freejoint and tag == grammar_facts().freejoint:  # one, or None
             return next((c for c in obj._children if c.spec.tag == tag), None)
         return ElementList[Element](obj, tag)
 
@@ -1324,9 +1320,9 @@ def _resolve(element: Element, attribute: AttributeSpec, name: str) -> object:
 
 def _wait(element: Element, attribute: AttributeSpec, name: str) -> None:
     """Link ``attribute`` when an element named ``name`` appears in the element's scope
-    (under dm_control's behaviour a name given stays that name: it links only on
+    (with ``references_stay_names`` a name given stays that name: it links only on
     ``resolve_references()``, which a parse ends with)."""
-    if _COMPAT[0]:
+    if _FLAGS.references_stay_names:
         return
     namespace = reference_namespace(element, attribute)
     if namespace is not None:
@@ -1425,7 +1421,7 @@ def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: N
         original, clone_parent, clone_scope = stack.pop()
         clone = _new_object(type(original))
         _set_values(clone, {key: value for key, value in original._values.items()}
-                    if not _COMPAT[0] else _copied_values(original._values))
+                    if not _FLAGS.arrays_in_place else COMPAT.copied_values(original._values))
         _set_children(clone, _NO_CHILDREN)
         _set_parent(clone, clone_parent)
         _set_root(clone, root)
@@ -1822,25 +1818,7 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
                 yield from walk(list(children(section)))
 
 
-# ---------------------------------------------------------------------------- dm_control's behaviour
-# What ``install_as_dm_control_mjcf()`` switches on (``_compat``): arrays read as writable
-# arrays, edited in place as dm_control's are, and checked again whenever the model is
-# written (:func:`check_arrays`), so an invalid value never goes unnoticed.
-
-# the arrays handed out for in-place edits: element -> {XML name: the stored array}
-_Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
-_HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
-
-
-def _tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
-    """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
-    ``element_name`` (taken out of the attributes)."""
-    if tag is None and _COMPAT[0] and _ELEMENT_NAME in kwargs:
-        return cast(str, kwargs.pop(_ELEMENT_NAME))
-    if tag is None:
-        raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
-                               f"add('<tag>', ...)")
-    return tag
+# ---------------------------------------------------------------------------- spellings
 
 
 def _python_name(spec: ElementSpec, name: str) -> str | None:
@@ -1855,104 +1833,79 @@ def _python_name(spec: ElementSpec, name: str) -> str | None:
     return None
 
 
-def on_demand(spec: ElementSpec) -> bool:
-    """Whether ``spec``'s once-only children exist only once added, as in dm_control (whose
-    schema marks them ``on_demand``): those of the rows that hold bodies (``<inertial>``)."""
-    return spec.holds_bodies
-
-
-def _writable_array(element: Element, attribute: AttributeSpec, stored: object) -> object:
-    """The stored array itself, writable: changes made in place are the element's."""
-    owned = _HANDED_OUT.get(element)
-    if owned is not None and owned.get(attribute.name) is stored:
-        return stored
-    array = np.array(attribute.codec.read(stored))  # a copy of its own, writable
-    element._values[attribute.name] = array
-    if owned is None:
-        _HANDED_OUT[element] = owned = {}
-    owned[attribute.name] = array
-    return array
-
-
-def _copied_values(values: dict[str, object]) -> dict[str, object]:
-    """An element's values for its copy: arrays copied, since they may be edited in place."""
-    return {key: value.copy() if type(value) is np.ndarray else value
-            for key, value in values.items()}
-
-
-def check_arrays(model: ModelBase) -> None:
-    """Check again every array of ``model`` (and the models attached to it) handed out for
-    in-place edits: an edit that made it invalid raises the error assigning it would."""
-    if not _HANDED_OUT:
-        return
-    models: set[int] = set()
-    pending: list[ModelBase] = [model]
-    while pending:
-        current = pending.pop()
-        models.add(id(current))
-        pending += attached_models(current)
-    for element, arrays in list(_HANDED_OUT.items()):
-        if element._root is None or id(element._root) not in models:
-            continue
-        for name, array in arrays.items():
-            if element._values.get(name) is not array:
-                continue
-            attribute = element.spec.by_name[name]
-            try:
-                attribute.codec.accept(array)
-            except Rejected as rejected:
-                raise element._reject(attribute, array, rejected) from None
-
-
 def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
     """The error for ``name``, none of ``element``'s attributes."""
     return element._unknown_attribute(name)
 
 
-def unnamed_identifier(element: Element) -> str | None:
-    """dm_control's name for an unnamed element of a namespace: ``/unnamed_<namespace>_<i>``,
-    ``i`` its position among its model's elements of that namespace (attached models'
-    left out), to follow its scope's prefix (``/`` for the outermost model)."""
-    namespace = element.spec.namespace
-    root = element._root
-    if namespace is None or element.spec.id_attribute is None or root is None:
-        return None
-    index = 0
-    kind = dm_control_namespace(namespace)
-    for other in iter_composed(root, False):
-        if other is element:
-            return f"/unnamed_{kind}_{index}"
-        parent = other._parent
-        if dm_control_namespace(other.spec.namespace or "") == kind and not isinstance(parent, ModelBase) and not (
-                parent is not None and parent._attached is not None
-                and other._scope is not parent._scope):  # a frame's own are not counted
-            index += 1
-    return None
+# ---------------------------------------------------------------------------- dm_control's behaviours
+# What the tree does differently under a flag of typed_mjcf._core.behaviour is read there
+# (``_FLAGS.<name>``); what only dm_control does lives in the compat room
+# (typed_mjcf._dmcompat.behaviours), which fills these hooks when the package is imported.
 
 
-def _name_after_file(element: Element) -> None:
-    """dm_control names an unnamed mesh (texture, ...) after its file's stem, as MuJoCo
-    does: the name is the element's, so references find it and ``mesh.name`` reads it."""
-    namespace = element.spec.namespace
-    attribute = grammar_facts().named_after_file.get(namespace or "")
-    id_attribute = element.spec.id_attribute
-    if attribute is None or id_attribute is None or id_attribute.name in element._values:
-        return
-    file = element._values.get(attribute)
-    stem = file if isinstance(file, str) else getattr(file, "name", None)
-    if not isinstance(stem, str) or not stem:
-        return
-    stem = os.path.basename(stem.replace("\\", "/"))
-    if "." in stem.lstrip("."):
-        stem = stem.rsplit(".", 1)[0]
-    if stem and element._root is not None and element._scope.lookup(
-            cast(str, id_attribute.namespace), stem) is None:
-        _store(element, id_attribute, stem, True)
+def _not_filled(*_: object) -> NoReturn:
+    raise MjcfError("dm_control's behaviours come from typed_mjcf._dmcompat, which is not "
+                    "imported (import typed_mjcf)")
 
 
-def name_after_files(model: ModelBase) -> None:
-    """Name every unnamed element of ``model`` that MuJoCo names after its file (see
-    :func:`_name_after_file`): dm_control's parser does."""
-    for element in model.iter_elements():
-        if element.spec.namespace in grammar_facts().named_after_file:
-            _name_after_file(element)
+def _nothing_handed_out(model: ModelBase) -> None:
+    """No array is handed out for in-place edits until the compat room lends its own."""
+
+
+class CompatHooks:
+    """What the compat room lends the tree and the features, each called only while its
+    flag is on (:func:`check_arrays` always: it has nothing to do while none is handed out)."""
+
+    __slots__ = ("check_arrays", "copied_values", "name_after_file", "name_after_files",
+                 "tag_by_keyword", "unnamed_identifier", "unnamed_model", "unnamed_names",
+                 "writable_array")
+
+    def __init__(self) -> None:
+        # arrays_in_place: the stored array itself, writable; values copied for a copy; the
+        # arrays handed out checked again before a model is written
+        self.writable_array: Callable[[Element, AttributeSpec, object], object] = _not_filled
+        self.copied_values: Callable[[Mapping[str, object]], dict[str, object]] = _not_filled
+        self.check_arrays: Callable[[ModelBase], None] = _nothing_handed_out
+        # named_after_files: one element (when unnamed), every element of a model
+        self.name_after_file: Callable[[Element], None] = _not_filled
+        self.name_after_files: Callable[[ModelBase], None] = _not_filled
+        # element_name_keyword: the tag ``add()``'s keywords name (taken out of them)
+        self.tag_by_keyword: Callable[[dict[str, object]], str | None] = _not_filled
+        # unnamed_model_name: a model's name when given none
+        self.unnamed_model: str = ""
+        # unnamed_identifiers: one element's identifier; every unnamed one of a model
+        self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
+        self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled
+
+
+COMPAT: Final = CompatHooks()
+
+
+def _tag_given(parent: Element, tag: str | None, kwargs: dict[str, object]) -> str:
+    """``add()``'s tag: the first argument, or (``element_name_keyword``) the keyword that
+    names it (taken out of the attributes)."""
+    if tag is None and _FLAGS.element_name_keyword:
+        tag = COMPAT.tag_by_keyword(kwargs)
+    if tag is None:
+        raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
+                               f"add('<tag>', ...)")
+    return tag
+
+
+def check_arrays(model: ModelBase) -> None:
+    """Check again every array of ``model`` (and the models attached to it) handed out for
+    in-place edits: an edit that made it invalid raises the error assigning it would."""
+    COMPAT.check_arrays(model)
+
+
+def keep_value(element: Element, attribute: AttributeSpec, value: object) -> None:
+    """Keep ``value`` as ``attribute``'s stored value as it is (an array handed out for
+    in-place edits, which is already the codec's)."""
+    element._values[attribute.name] = value
+
+
+def store_name(element: Element, attribute: AttributeSpec, name: str) -> None:
+    """Give ``element`` the name ``name`` (``attribute`` its id), as storing does: a name
+    given after a file."""
+    _store(element, attribute, name, True)

@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterator, Mapping
 from typing import Final, cast
 
 from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.behaviour import dm_control_behaviour, dm_control_namespace
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._core.errors import ExportError
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec, WritePlan
@@ -636,7 +636,7 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
             frame = _tree.frame_of(_tree.scope_model(scope))
             if frame is not None and _tree.element_name(frame) is None:
                 given[id(frame)] = f"{scope.name}/"
-    if dm_control_behaviour():
+    if FLAGS.unnamed_identifiers:
         _dm_control_names(top_scope, given)
         return given
     for scope in top_scope.scopes():
@@ -672,8 +672,8 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
 
 def _frame_child_suffix(element: Element) -> str:
     """dm_control's names of an attachment frame's own children end in ``/``
-    (``arm/root_x/``): with its behaviour on, ``/`` for them, else nothing."""
-    if not dm_control_behaviour():
+    (``arm/root_x/``): with ``frame_names_end_in_separator``, ``/`` for them, else nothing."""
+    if not FLAGS.frame_names_end_in_separator:
         return ""
     parent = element.parent
     if parent is None or _tree.attached_at(parent) is None or (
@@ -683,28 +683,13 @@ def _frame_child_suffix(element: Element) -> str:
 
 
 def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:
-    """dm_control's names for every unnamed element of a namespace: ``unnamed_<kind>_<i>``
-    after ``/`` (``//`` in the model written), ``i`` its position among its model's elements
-    of that kind; an attachment frame's own children take the frame's name."""
+    """dm_control's names for every unnamed element of a namespace (the compat room's
+    count): ``unnamed_<kind>_<i>`` after ``/`` (``//`` in the model written); an attachment
+    frame's own children take the frame's name, and a frame keeps its own (``arm/``)."""
     for scope in top_scope.scopes():
-        counts: dict[str, int] = {}
         lead = "/" if scope is top_scope else ""
-        for element in _tree.iter_composed(_tree.scope_model(scope), False):
-            namespace = element.spec.namespace
-            parent = element.parent
-            if (namespace is None or element.spec.id_attribute is None
-                    or isinstance(parent, ModelBase) or id(element) in given):
-                continue
-            if parent is not None and _tree.attached_at(parent) is not None and (
-                    _tree.scope_of(element) is not _tree.scope_of(parent)):
-                if _tree.element_name(element) is None:
-                    given[id(element)] = ""  # the attached scope's prefix: the frame's name
-                continue
-            namespace = dm_control_namespace(namespace)
-            index = counts.get(namespace, 0)
-            counts[namespace] = index + 1
-            if _tree.element_name(element) is None:
-                given[id(element)] = f"{lead}/unnamed_{namespace}_{index}"
+        for key, name in _tree.COMPAT.unnamed_names(_tree.scope_model(scope)).items():
+            given.setdefault(key, lead + name if name else "")
 
 
 def _file_names_of_attached(top_scope: NameScope) -> dict[int, str]:

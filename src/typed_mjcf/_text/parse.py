@@ -43,7 +43,7 @@ from typed_mjcf._core.access import (
     confine,
     open_confined,
 )
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import Rejected
 from typed_mjcf._core.debuginfo import PACKAGE_DIR
 from typed_mjcf._core.errors import (
@@ -497,10 +497,10 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
         _Builder(context, sources).run(model, node, source)
-        if dm_control_behaviour():  # as dm_control's parser: files name meshes..., then the
-            _tree.name_after_files(model)  # references are resolved (nothing waits for a name)
-            if context.options.resolve_references:
-                _tree.resolve_references(model)
+        if FLAGS.named_after_files:  # as dm_control's parser: files name meshes..., then
+            _tree.COMPAT.name_after_files(model)  # the references are resolved
+        if FLAGS.references_stay_names and context.options.resolve_references:
+            _tree.resolve_references(model)  # (nothing waits for a name)
     return model
 
 
