@@ -10,7 +10,7 @@ from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Final, cast
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._model.resource_limits import (
     DEFAULT_COMPILE_LIMITS,
     DEFAULT_RENDER_LIMITS,

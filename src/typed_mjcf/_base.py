@@ -17,7 +17,7 @@ from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import Format
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._core.errors import InvalidTypeError, InvalidValueError, did_you_mean
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import check_removable, grammar_facts
 from typed_mjcf._model.assets_io import get_assets
 from typed_mjcf._model.compose import attach, attached_children, detach, include_copy
@@ -125,12 +125,12 @@ class Element(_tree.Element):
         if name is None and FLAGS.unnamed_identifiers:
             parent = self.parent
             if self.spec.compose == "nest" and isinstance(parent, ModelRoot):
-                return prefix or "/"  # the model's own default class: dm_control names it so
+                return prefix or SEPARATOR  # the model's own default class: dm_control names it so
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: the frame's name
                 return parent.prefixed_identifier(prefix_root)
             unnamed = _tree.COMPAT.unnamed_identifier(self)
-            return None if unnamed is None else (prefix or "/") + unnamed
+            return None if unnamed is None else (prefix or SEPARATOR) + unnamed
         if name is not None and FLAGS.frame_names_end_in_separator:
             parent = self.parent
             if parent is not None and _tree.attached_at(parent) is not None and (
@@ -185,7 +185,7 @@ class Element(_tree.Element):
         """The model attached under ``scope`` (``"arm"``, or ``"arm/gripper/"`` for one
         attached inside it) in this element's scope, or ``None``."""
         current: NameScope | None = _tree.scope_of(self)
-        for part in (p for p in scope.split("/") if p):
+        for part in (p for p in scope.split(SEPARATOR) if p):
             current = None if current is None else current.attached.get(part)
         if current is None or current is _tree.scope_of(self):
             return None

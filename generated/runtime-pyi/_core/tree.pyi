@@ -49,7 +49,7 @@ from typed_mjcf._core.errors import (
 )
 from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._core.language import GrammarFacts
-from typed_mjcf._core.names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._core.names import SEPARATOR, UNNAMED_MODEL, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
 E = TypeVar("E", bound="Element")
 E_co = TypeVar("E_co", bound="Element", covariant=True)
@@ -322,8 +322,9 @@ def resolve_references(model: Element) -> None:
     """Link every reference held as a name that names an element now."""
     ...
 
-def same_value(a: object, b: object) -> bool:
-    """Equality of attribute values, arrays included."""
+def equal_read_values(a: object, b: object) -> bool:
+    """Whether two values as attributes read are equal: numbers by value, whatever holds
+    them (an array equals a tuple of the same numbers)."""
     ...
 
 def values(element: Element) -> Mapping[str, object]:
@@ -478,8 +479,6 @@ class CompatHooks:
         self.name_after_files: Callable[[ModelBase], None] = _not_filled
         # element_name_keyword: the tag ``add()``'s keywords name (taken out of them)
         self.tag_by_keyword: Callable[[dict[str, object]], str | None] = _not_filled
-        # unnamed_model_name: a model's name when given none
-        self.unnamed_model: str = ""
         # unnamed_identifiers: one element's identifier; every unnamed one of a model
         self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
         self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled

@@ -3,16 +3,16 @@
 called only while its flag of :class:`typed_mjcf._core.behaviour.Behaviour` is on.
 
 The one home of dm_control's naming rules: its count of unnamed elements
-(:func:`unnamed_names`), its kinds of names (:func:`dm_control_namespace`), a model given no
-name. An unnamed asset is named after its file by the rule the file namer and the compiled
-names share (:func:`typed_mjcf._text.files.element_file_stem`).
+(:func:`unnamed_names`) and its kinds of names (:func:`dm_control_namespace`). An unnamed
+asset is named after its file by the rule the file namer and the compiled names share
+(:func:`typed_mjcf._text.files.element_file_stem`); a model given no name is
+``names.UNNAMED_MODEL``, as an attached model without one is called.
 """
 from __future__ import annotations
 from collections.abc import Mapping
 from typing import Final, TypeAlias, cast
 from typed_mjcf._core.grammar import AttributeSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
-UNNAMED_MODEL: Final = "unnamed_model"
 ELEMENT_NAME: Final = "element_name"
 
 def dm_control_namespace(namespace: str) -> str:

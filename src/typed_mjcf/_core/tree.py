@@ -63,7 +63,7 @@ from typed_mjcf._core.errors import (
 )
 from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._core.language import GrammarFacts
-from typed_mjcf._core.names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._core.names import SEPARATOR, UNNAMED_MODEL, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
 
 E = TypeVar("E", bound="Element")
@@ -703,7 +703,7 @@ class ModelBase(Element):
         scope_attribute = self.spec.scope_attribute
         if model is None and _FLAGS.unnamed_model_name and scope_attribute is not None and (
                 not kwargs.get(scope_attribute.py_name)):
-            model = COMPAT.unnamed_model
+            model = UNNAMED_MODEL  # (the name an attached model without one is called)
         if model is not None and scope_attribute is not None:
             kwargs = {scope_attribute.py_name: model, **kwargs}
         self._init_attributes(kwargs)
@@ -1542,7 +1542,7 @@ def _same_values(a: Element, b: Element) -> bool:
         if isinstance(x, Element) or isinstance(y, Element):
             x = element_name(x) if isinstance(x, Element) else x
             y = element_name(y) if isinstance(y, Element) else y
-        if not same_value(x, y):
+        if not equal_read_values(x, y):
             return False
     return True
 
@@ -1551,8 +1551,9 @@ def _is_empty_array(stored: object) -> bool:
     return type(stored) is np.ndarray and not stored.size  # (narrowed: no typing.cast, a call)
 
 
-def same_value(a: object, b: object) -> bool:
-    """Equality of attribute values, arrays included."""
+def equal_read_values(a: object, b: object) -> bool:
+    """Whether two values as attributes read are equal: numbers by value, whatever holds
+    them (an array equals a tuple of the same numbers)."""
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         try:
             return bool(np.array_equal(np.asarray(a), np.asarray(b)))
@@ -1858,7 +1859,7 @@ class CompatHooks:
     flag is on (:func:`check_arrays` always: it has nothing to do while none is handed out)."""
 
     __slots__ = ("check_arrays", "copied_values", "name_after_file", "name_after_files",
-                 "tag_by_keyword", "unnamed_identifier", "unnamed_model", "unnamed_names",
+                 "tag_by_keyword", "unnamed_identifier", "unnamed_names",
                  "writable_array")
 
     def __init__(self) -> None:
@@ -1872,8 +1873,6 @@ class CompatHooks:
         self.name_after_files: Callable[[ModelBase], None] = _not_filled
         # element_name_keyword: the tag ``add()``'s keywords name (taken out of them)
         self.tag_by_keyword: Callable[[dict[str, object]], str | None] = _not_filled
-        # unnamed_model_name: a model's name when given none
-        self.unnamed_model: str = ""
         # unnamed_identifiers: one element's identifier; every unnamed one of a model
         self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
         self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled

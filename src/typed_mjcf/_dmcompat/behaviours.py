@@ -2,9 +2,10 @@
 called only while its flag of :class:`typed_mjcf._core.behaviour.Behaviour` is on.
 
 The one home of dm_control's naming rules: its count of unnamed elements
-(:func:`unnamed_names`), its kinds of names (:func:`dm_control_namespace`), a model given no
-name. An unnamed asset is named after its file by the rule the file namer and the compiled
-names share (:func:`typed_mjcf._text.files.element_file_stem`).
+(:func:`unnamed_names`) and its kinds of names (:func:`dm_control_namespace`). An unnamed
+asset is named after its file by the rule the file namer and the compiled names share
+(:func:`typed_mjcf._text.files.element_file_stem`); a model given no name is
+``names.UNNAMED_MODEL``, as an attached model without one is called.
 """
 
 from __future__ import annotations
@@ -18,10 +19,10 @@ import numpy as np
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.codecs import Rejected
 from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.names import SEPARATOR
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.files import element_file_stem
 
-UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
 ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names the tag by
 
 # dm_control's schema puts some kinds in one namespace of its own (its names for unnamed
@@ -115,7 +116,7 @@ def unnamed_names(model: ModelBase) -> dict[int, str]:
         index = counts.get(kind, 0)
         counts[kind] = index + 1
         if unnamed:
-            names[id(element)] = f"/unnamed_{kind}_{index}"
+            names[id(element)] = f"{SEPARATOR}unnamed_{kind}_{index}"
     return names
 
 
@@ -161,7 +162,6 @@ def _lend() -> None:
     hooks.name_after_file = name_after_file
     hooks.name_after_files = name_after_files
     hooks.tag_by_keyword = tag_by_keyword
-    hooks.unnamed_model = UNNAMED_MODEL
     hooks.unnamed_identifier = unnamed_identifier
     hooks.unnamed_names = unnamed_names
 

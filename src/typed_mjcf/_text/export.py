@@ -26,7 +26,7 @@ from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._core.errors import ExportError
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec, WritePlan
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._text.merge import combine, rule_of
@@ -125,19 +125,18 @@ class Writer:
     # --------------------------------------------------------------- names
 
     def prefix(self, scope: NameScope) -> str:
-        """The prefix of names in ``scope`` as seen from the model being written."""
+        """The prefix of names in ``scope`` as seen from the model being written
+        (:meth:`NameScope.prefix`, cached)."""
         found = self.prefixes.get(id(scope))
         if found is not None:
             return found
-        parts: list[str] = []
         current: NameScope | None = scope
         while current is not None and current is not self.top_scope:
-            parts.append(current.name or "")
             current = current.parent
         if current is None:
             raise ExportError(f"names of model {scope.name!r} cannot be written as part of "
                               f"this model: it is not attached into it")
-        text = "".join(part + "/" for part in reversed(parts))
+        text = scope.prefix(self.top_scope)
         self.prefixes[id(scope)] = text
         return text
 
@@ -561,7 +560,7 @@ class Writer:
                     rule, attribute.codec.read(attribute.codec.parse(mine)),
                     attribute.codec.read(attribute.codec.parse(text)))
                 if merged is None:
-                    scope = self.prefix(_tree.scope_of(section)).rstrip("/")
+                    scope = self.prefix(_tree.scope_of(section)).rstrip(SEPARATOR)
                     raise ExportError(
                         f"Conflicting values for attribute `{name}` of <{section.spec.tag}>: "
                         f"{text!r} in attached model {scope!r}, {mine!r} in the model it is "
@@ -679,7 +678,7 @@ def _frame_child_suffix(element: Element) -> str:
     if parent is None or _tree.attached_at(parent) is None or (
             _tree.scope_of(parent) is _tree.scope_of(element)):
         return ""
-    return "/"
+    return SEPARATOR
 
 
 def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:
@@ -687,7 +686,7 @@ def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:
     count): ``unnamed_<kind>_<i>`` after ``/`` (``//`` in the model written); an attachment
     frame's own children take the frame's name, and a frame keeps its own (``arm/``)."""
     for scope in top_scope.scopes():
-        lead = "/" if scope is top_scope else ""
+        lead = SEPARATOR if scope is top_scope else ""
         for key, name in _tree.COMPAT.unnamed_names(_tree.scope_model(scope)).items():
             given.setdefault(key, lead + name if name else "")
 

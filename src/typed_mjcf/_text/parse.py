@@ -813,7 +813,7 @@ class _Builder:
 
         def check() -> None:
             for key, value in _section_defaults(section).items():
-                if key in before and _same_value(before[key], value):
+                if key in before and _same_stored_value(before[key], value):
                     continue
                 hierarchy_class = hierarchy.uncovered(key)
                 if hierarchy_class is None:
@@ -946,7 +946,9 @@ def _element_defaults(level: Element) -> dict[_Key, object]:
     return found
 
 
-def _same_value(a: object, b: object) -> bool:
+def _same_stored_value(a: object, b: object) -> bool:
+    """Whether two values as the tree stores them are the same (an array equals only an
+    array of the same numbers: a value stored otherwise was set otherwise)."""
     if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
         return bool(np.array_equal(cast(_Array, a), cast(_Array, b)))
     return not isinstance(a, np.ndarray) and not isinstance(b, np.ndarray) and a == b
