@@ -42,7 +42,6 @@ from typed_mjcf._core.errors import (
     RenderError,
 )
 from typed_mjcf._core.tree import Element, ModelBase
-from typed_mjcf._dmcompat.debugging import explained
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
@@ -318,7 +317,7 @@ class Physics(Bind):
             if not FLAGS.compile_error_advice:
                 raise
             # dm_control's debug mode: where the elements named were made and set
-            raise explained(error, mjcf_model) from None
+            raise _tree.COMPAT.explained(error, mjcf_model) from None
         self._source = mjcf_model
         self._unnamed = compiled.unnamed
         self._reload_from_data(Data(_as_model(compiled.model)))

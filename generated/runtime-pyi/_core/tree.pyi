@@ -482,6 +482,8 @@ class CompatHooks:
         # unnamed_identifiers: one element's identifier; every unnamed one of a model
         self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
         self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled
+        # compile_error_advice: a refusal of a model for a physics, with dm_control's advice
+        self.explained: Callable[[ValueError, ModelBase], ValueError] = _not_filled
 COMPAT: Final = CompatHooks()
 
 def check_arrays(model: ModelBase) -> None:

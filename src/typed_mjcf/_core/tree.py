@@ -1858,7 +1858,7 @@ class CompatHooks:
     """What the compat room lends the tree and the features, each called only while its
     flag is on (:func:`check_arrays` always: it has nothing to do while none is handed out)."""
 
-    __slots__ = ("check_arrays", "copied_values", "name_after_file", "name_after_files",
+    __slots__ = ("check_arrays", "copied_values", "explained", "name_after_file", "name_after_files",
                  "tag_by_keyword", "unnamed_identifier", "unnamed_names",
                  "writable_array")
 
@@ -1876,6 +1876,8 @@ class CompatHooks:
         # unnamed_identifiers: one element's identifier; every unnamed one of a model
         self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
         self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled
+        # compile_error_advice: a refusal of a model for a physics, with dm_control's advice
+        self.explained: Callable[[ValueError, ModelBase], ValueError] = _not_filled
 
 
 COMPAT: Final = CompatHooks()
