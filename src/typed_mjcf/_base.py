@@ -106,7 +106,7 @@ class Element(_tree.Element):
     def full_identifier(self) -> str | None:
         """The name this element has in the outermost model it is part of (its scope's
         prefix and its name, ``arm/elbow``); ``None`` for an unnamed element (with
-        dm_control's behaviour on, dm_control's name for it: ``//unnamed_geom_0``)."""
+        ``Behaviour.unnamed_identifiers``, dm_control's name for it: ``//unnamed_geom_0``)."""
         return self.prefixed_identifier(None)
 
     def prefixed_identifier(self, prefix_root: NameScope | None) -> str | None:

@@ -1346,7 +1346,7 @@ def _link_waiting(scope: NameScope, namespace: str, name: str, target: Element) 
 def _read_reference(element: Element, attribute: AttributeSpec, stored: object) -> object:
     """A link reads as its element (``None`` once the element is removed), a name as the
     name (it links when an element of that name appears, or on ``resolve_references()``;
-    under dm_control's behaviour only on ``resolve_references()``)."""
+    with ``references_stay_names`` only on ``resolve_references()``)."""
     if isinstance(stored, Element):
         return None if stored._root is None else stored
     return stored
