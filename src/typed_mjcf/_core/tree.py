@@ -871,7 +871,7 @@ class SingleChild:
         existing = obj._single(self.child.tag)
         if existing is not None:
             return existing
-        if self.child.on_demand:
+        if _FLAGS.on_demand_children and self.child.on_demand:  # (the flag first: cheap)
             return None  # a body's <inertial> is None until added
         return obj._add_child(self.child, None, {})
 
