@@ -15,7 +15,7 @@ test_behaviours.py``.
 """
 from __future__ import annotations
 import contextlib
-from collections.abc import Iterator
+from collections.abc import Generator
 from dataclasses import dataclass, field
 from typing import Final
 
@@ -79,7 +79,7 @@ def set_behaviour(selected: Behaviour) -> Behaviour:
     ...
 
 @contextlib.contextmanager
-def behaviour(selected: Behaviour) -> Iterator[Behaviour]:
+def behaviour(selected: Behaviour) -> Generator[Behaviour]:
     """Select ``selected`` while the block runs, then the behaviour before it again."""
     ...
 

@@ -15,7 +15,6 @@ from typing import Final
 from typed_mjcf._dmcompat import (
     attribute,
     base,
-    behaviours,  # noqa: F401 - lends the tree what only dm_control does
     constants,
     copier,
     debugging,
@@ -28,6 +27,9 @@ from typed_mjcf._dmcompat import (
     physics,
     skin,
     traversal_utils,
+)
+from typed_mjcf._dmcompat import (
+    behaviours as behaviours,  # lends the tree what only dm_control does
 )
 PACKAGE: Final = "dm_control.mjcf"
 SUBMODULES: Final[dict[str, types.ModuleType]] = ...

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
-from collections.abc import Iterator
+from collections.abc import Generator
 from dataclasses import dataclass, field
 from typing import Final
 
@@ -99,7 +99,7 @@ def set_behaviour(selected: Behaviour) -> Behaviour:
 
 
 @contextlib.contextmanager
-def behaviour(selected: Behaviour) -> Iterator[Behaviour]:
+def behaviour(selected: Behaviour) -> Generator[Behaviour]:
     """Select ``selected`` while the block runs, then the behaviour before it again."""
     previous = set_behaviour(selected)
     try:

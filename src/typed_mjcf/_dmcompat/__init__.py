@@ -21,7 +21,6 @@ from typed_mjcf._core.behaviour import Behaviour, set_behaviour
 from typed_mjcf._dmcompat import (
     attribute,
     base,
-    behaviours,  # noqa: F401 - lends the tree what only dm_control does
     constants,
     copier,
     debugging,
@@ -34,6 +33,9 @@ from typed_mjcf._dmcompat import (
     physics,
     skin,
     traversal_utils,
+)
+from typed_mjcf._dmcompat import (
+    behaviours as behaviours,  # lends the tree what only dm_control does
 )
 
 PACKAGE: Final = "dm_control.mjcf"
