@@ -11,6 +11,7 @@
 __version__ = "0.1.0"
 from typing import Final as _Final
 from typed_mjcf._base import Element, ModelRoot
+from typed_mjcf._core.behaviour import Behaviour, behaviour, current_behaviour, set_behaviour
 from typed_mjcf._core.names import NameScope
 from typed_mjcf._core.tree import ElementList
 from typed_mjcf._generated import elements as _elements
@@ -67,6 +68,7 @@ __all__ = [
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
+    "Behaviour",
     "BindingError",
     "ChildError",
     "CompileError",
@@ -96,7 +98,9 @@ __all__ = [
     "RenderLimits",
     "UnknownAttributeError",
     "ValidationError",
+    "behaviour",
     "commit_defaults",
+    "current_behaviour",
     "encode_png",
     "export_with_assets",
     "export_with_assets_as_zip",
@@ -109,6 +113,7 @@ __all__ = [
     "get_frame_freejoint",
     "get_frame_joints",
     "get_freejoint",
+    "set_behaviour",
     "set_notebook_display",
 ]
 __all__ += _elements.__all__

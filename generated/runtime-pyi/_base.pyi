@@ -10,7 +10,7 @@ from collections.abc import Iterable, Iterator
 from typing import TYPE_CHECKING, Final, NoReturn, cast
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._model.resource_limits import (
     DEFAULT_COMPILE_LIMITS,
     DEFAULT_RENDER_LIMITS,
@@ -39,10 +39,10 @@ class Element(_tree.Element):
         attachment frame's include the attached model's bodies (and the rest of its world
         body); a top-level section of a composed model, the attached models' sections'.
 
-        With dm_control's behaviour on, a once-only child's tag gives that child itself
-        (``None`` if it does not exist), as dm_control's ``get_children`` does, and the
-        once-only children that are not on demand are among all children (dm_control makes
-        them with their parent)."""
+        With ``once_only_children_by_tag``, a once-only child's tag gives that child itself
+        (``None`` if it does not exist), as dm_control's ``get_children`` does; with
+        ``eager_children``, the once-only children that are not on demand are among all
+        children (dm_control makes them with their parent)."""
         ...
     def all_children(self) -> list[Element]:
         """dm_control's name for ``get_children()``."""
@@ -59,7 +59,7 @@ class Element(_tree.Element):
     def full_identifier(self) -> str | None:
         """The name this element has in the outermost model it is part of (its scope's
         prefix and its name, ``arm/elbow``); ``None`` for an unnamed element (with
-        dm_control's behaviour on, dm_control's name for it: ``//unnamed_geom_0``)."""
+        ``Behaviour.unnamed_identifiers``, dm_control's name for it: ``//unnamed_geom_0``)."""
         ...
     def prefixed_identifier(self, prefix_root: NameScope | None) -> str | None:
         """The element's name as seen from the model of scope ``prefix_root`` (the

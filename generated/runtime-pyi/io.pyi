@@ -10,7 +10,7 @@ import os
 from collections.abc import Mapping
 from typing import IO, TYPE_CHECKING, cast
 from typed_mjcf._core.access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
-from typed_mjcf._core.tree import ModelBase, name_after_files
+from typed_mjcf._core.tree import COMPAT, ModelBase
 from typed_mjcf._text.parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 import mujoco
 from typed_mjcf._generated.elements import RootElement

@@ -15,6 +15,7 @@ from typing import Final as _Final
 
 from typed_mjcf._base import Element, ModelRoot
 from typed_mjcf._build import compiled_modules as _compiled_modules
+from typed_mjcf._core.behaviour import Behaviour, behaviour, current_behaviour, set_behaviour
 from typed_mjcf._core.names import NameScope
 from typed_mjcf._core.tree import ElementList
 from typed_mjcf._generated import elements as _elements
@@ -75,6 +76,7 @@ __all__ = [
     "PREFIX_SEPARATOR",
     "VIEWS",
     "Asset",
+    "Behaviour",
     "BindingError",
     "ChildError",
     "CompileError",
@@ -104,7 +106,9 @@ __all__ = [
     "RenderLimits",
     "UnknownAttributeError",
     "ValidationError",
+    "behaviour",
     "commit_defaults",
+    "current_behaviour",
     "encode_png",
     "export_with_assets",
     "export_with_assets_as_zip",
@@ -117,6 +121,7 @@ __all__ = [
     "get_frame_freejoint",
     "get_frame_joints",
     "get_freejoint",
+    "set_behaviour",
     "set_notebook_display",
 ]
 __all__ += _elements.__all__

@@ -13,11 +13,11 @@ from typing import TYPE_CHECKING, Final, NoReturn, cast
 from lxml import etree
 
 from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import Format
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._core.errors import InvalidTypeError, InvalidValueError, did_you_mean
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import check_removable, grammar_facts
 from typed_mjcf._model.assets_io import get_assets
 from typed_mjcf._model.compose import attach, attached_children, detach, include_copy
@@ -111,19 +111,18 @@ class Element(_tree.Element):
         attachment frame's include the attached model's bodies (and the rest of its world
         body); a top-level section of a composed model, the attached models' sections'.
 
-        With dm_control's behaviour on, a once-only child's tag gives that child itself
-        (``None`` if it does not exist), as dm_control's ``get_children`` does, and the
-        once-only children that are not on demand are among all children (dm_control makes
-        them with their parent)."""
-        if dm_control_behaviour():
-            if tag is None:
-                for child_spec in self.spec.children.values():
-                    if child_spec.single and not child_spec.on_demand:
-                        getattr(self, child_spec.py_name)
-            else:
-                once = self.spec.children.get(tag)
-                if once is not None and once.single:
-                    return cast("list[Element]", getattr(self, once.py_name))
+        With ``once_only_children_by_tag``, a once-only child's tag gives that child itself
+        (``None`` if it does not exist), as dm_control's ``get_children`` does; with
+        ``eager_children``, the once-only children that are not on demand are among all
+        children (dm_control makes them with their parent)."""
+        if tag is None and FLAGS.eager_children:
+            for child_spec in self.spec.children.values():
+                if child_spec.single and not child_spec.on_demand:
+                    getattr(self, child_spec.py_name)
+        elif tag is not None and FLAGS.once_only_children_by_tag:
+            once = self.spec.children.get(tag)
+            if once is not None and once.single:
+                return cast("list[Element]", getattr(self, once.py_name))
         own = _tree.children_with_tag(self, tag)
         return cast("list[Element]", own + [e for e in attached_children(self)
                                             if tag is None or e.spec.tag == tag])
@@ -146,7 +145,7 @@ class Element(_tree.Element):
     def full_identifier(self) -> str | None:
         """The name this element has in the outermost model it is part of (its scope's
         prefix and its name, ``arm/elbow``); ``None`` for an unnamed element (with
-        dm_control's behaviour on, dm_control's name for it: ``//unnamed_geom_0``)."""
+        ``Behaviour.unnamed_identifiers``, dm_control's name for it: ``//unnamed_geom_0``)."""
         return self.prefixed_identifier(None)
 
     def prefixed_identifier(self, prefix_root: NameScope | None) -> str | None:
@@ -162,16 +161,16 @@ class Element(_tree.Element):
         if self.spec.holds_bodies and isinstance(self.parent, ModelRoot):  # the world body
             return prefix or grammar_facts().world_body
         name = _tree.element_name(self)
-        if name is None and dm_control_behaviour():
+        if name is None and FLAGS.unnamed_identifiers:
             parent = self.parent
             if self.spec.compose == "nest" and isinstance(parent, ModelRoot):
-                return prefix or "/"  # the model's own default class: dm_control names it so
+                return prefix or SEPARATOR  # the model's own default class: dm_control names it so
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: the frame's name
                 return parent.prefixed_identifier(prefix_root)
-            unnamed = _tree.unnamed_identifier(self)
-            return None if unnamed is None else (prefix or "/") + unnamed
-        if name is not None and dm_control_behaviour():
+            unnamed = _tree.COMPAT.unnamed_identifier(self)
+            return None if unnamed is None else (prefix or SEPARATOR) + unnamed
+        if name is not None and FLAGS.frame_names_end_in_separator:
             parent = self.parent
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: dm_control's name
@@ -225,7 +224,7 @@ class Element(_tree.Element):
         """The model attached under ``scope`` (``"arm"``, or ``"arm/gripper/"`` for one
         attached inside it) in this element's scope, or ``None``."""
         current: NameScope | None = _tree.scope_of(self)
-        for part in (p for p in scope.split("/") if p):
+        for part in (p for p in scope.split(SEPARATOR) if p):
             current = None if current is None else current.attached.get(part)
         if current is None or current is _tree.scope_of(self):
             return None

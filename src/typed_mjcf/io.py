@@ -12,9 +12,9 @@ from collections.abc import Mapping
 from typing import IO, TYPE_CHECKING, cast
 
 from typed_mjcf._core.access import ANYWHERE, DEFAULT_ACCESS, FileAccess, confine, only_given
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.errors import InvalidTypeError, ParseError
-from typed_mjcf._core.tree import ModelBase, name_after_files
+from typed_mjcf._core.tree import COMPAT, ModelBase
 from typed_mjcf._model.assets_io import export_with_assets as export
 from typed_mjcf._model.zip import read_zip, use_archive_files, write_zip
 from typed_mjcf._sim.bridge import spec_to_xml
@@ -27,8 +27,8 @@ if TYPE_CHECKING:
 
 
 def _typed(model: ModelBase) -> RootElement:
-    if dm_control_behaviour():
-        name_after_files(model)  # dm_control names unnamed meshes... after their files
+    if FLAGS.named_after_files:
+        COMPAT.name_after_files(model)  # dm_control names unnamed meshes... after their files
     return cast("RootElement", model)
 
 

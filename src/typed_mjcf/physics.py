@@ -31,7 +31,7 @@ import mujoco
 import numpy as np
 
 from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.behaviour import STATE
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.errors import (
     BindingError,
     FileReadError,
@@ -42,7 +42,6 @@ from typed_mjcf._core.errors import (
     RenderError,
 )
 from typed_mjcf._core.tree import Element, ModelBase
-from typed_mjcf._dmcompat.debugging import explained
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
 from typed_mjcf._generated.bindings import Bind, NamedData, NamedModel
@@ -89,7 +88,7 @@ def _physics_error_class() -> type[PhysicsError]:
     ``rl.control`` is imported, a subclass of it that is also dm_control's
     ``control.PhysicsError`` (composer catches that: a diverging episode ends, rather than
     the error escaping). dm_control is never imported here."""
-    control = sys.modules.get("dm_control.rl.control") if STATE[0] else None
+    control = sys.modules.get("dm_control.rl.control") if FLAGS.dm_control_physics_error else None
     theirs: object = getattr(control, "PhysicsError", None)
     if not isinstance(theirs, type) or not issubclass(theirs, BaseException):
         return PhysicsError
@@ -315,10 +314,10 @@ class Physics(Bind):
         try:
             compiled = compile_for_physics(mjcf_model, limits)
         except ValueError as error:
-            if not STATE[0]:
+            if not FLAGS.compile_error_advice:
                 raise
             # dm_control's debug mode: where the elements named were made and set
-            raise explained(error, mjcf_model) from None
+            raise _tree.COMPAT.explained(error, mjcf_model) from None
         self._source = mjcf_model
         self._unnamed = compiled.unnamed
         self._reload_from_data(Data(_as_model(compiled.model)))

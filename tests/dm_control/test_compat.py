@@ -18,7 +18,6 @@ import pytest
 
 import typed_mjcf as mjcf
 from tests.support.meshes import box_stl
-from typed_mjcf._core.behaviour import dm_control_behaviour
 from typed_mjcf._dmcompat import debugging, installed
 
 from . import harness, references
@@ -34,9 +33,9 @@ def dm() -> Iterator[None]:
 def test_installed_is_undone() -> None:
     before = {name: sys.modules.get(name) for name in ("dm_control", "dm_control.mjcf")}
     with installed():
-        assert dm_control_behaviour()
+        assert mjcf.current_behaviour() == mjcf.Behaviour.dm_control()
         assert sys.modules["dm_control.mjcf"].RootElement is mjcf.RootElement
-    assert not dm_control_behaviour()
+    assert mjcf.current_behaviour() == mjcf.Behaviour.typed()
     assert {name: sys.modules.get(name) for name in before} == before
 
 

@@ -159,8 +159,6 @@ FLOORS: dict[str, int] = {
 UPWARD = {
     ("_model.keyframes", "_sim.compile"): "export is not pure yet: writing a model with "
                                           "keyframes compiles their layout (issue 37)",
-    ("physics", "_dmcompat.debugging"): "dm_control's Physics explains a compile error "
-                                        "with the element's debug-mode stack",
 }
 
 

@@ -115,8 +115,8 @@ class ChildSpec:
         ...
     @property
     def on_demand(self) -> bool:
-        """Whether this once-only child exists only once added: under dm_control's
-        behaviour, those of the rows that hold bodies (``<inertial>``)."""
+        """Whether this once-only child exists only once added (``on_demand_children``, as
+        dm_control's schema marks them): those of the rows that hold bodies (``<inertial>``)."""
         ...
     @property
     def attributes(self) -> dict[str, AttributeSpec]: ...

@@ -24,6 +24,7 @@ from typing import (
     ClassVar,
     Final,
     Generic,
+    NoReturn,
     Protocol,
     Self,
     SupportsIndex,
@@ -48,7 +49,7 @@ from typed_mjcf._core.errors import (
 )
 from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._core.language import GrammarFacts
-from typed_mjcf._core.names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._core.names import SEPARATOR, UNNAMED_MODEL, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
 E = TypeVar("E", bound="Element")
 E_co = TypeVar("E_co", bound="Element", covariant=True)
@@ -334,8 +335,9 @@ def resolve_references(model: Element) -> None:
     """Link every reference held as a name that names an element now."""
     ...
 
-def same_value(a: object, b: object) -> bool:
-    """Equality of attribute values, arrays included."""
+def equal_read_values(a: object, b: object) -> bool:
+    """Whether two values as attributes read are equal: numbers by value, whatever holds
+    them (an array equals a tuple of the same numbers)."""
     ...
 
 def values(element: Element) -> Mapping[str, object]:
@@ -466,12 +468,6 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
     their frames, their other sections after ours (when ``attachments``)."""
     ...
 
-def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
-    """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
-    ``element_name`` (taken out of the attributes). Takes any object (here and in
-    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
-    ...
-
 def insert_child(parent: Element, tag: object, position: object,
                  kwargs: dict[str, object]) -> Element:
     """``insert()``: a child ``<tag>`` at ``position``, each checked (a bool is no int)."""
@@ -482,16 +478,6 @@ def mjcf_alias(element: Element, name: str) -> str | None:
     (``global``: ``global_``); ``None`` where the two are the same or there is none."""
     ...
 
-def on_demand(spec: ElementSpec) -> bool:
-    """Whether ``spec``'s once-only children exist only once added, as in dm_control (whose
-    schema marks them ``on_demand``): those of the rows that hold bodies (``<inertial>``)."""
-    ...
-
-def check_arrays(model: ModelBase) -> None:
-    """Check again every array of ``model`` (and the models attached to it) handed out for
-    in-place edits: an edit that made it invalid raises the error assigning it would."""
-    ...
-
 def add_rejection_note(note: Callable[[object], str | None]) -> None:
     """Have refusals of a value ask ``note`` what it says of that value (once per note)."""
     ...
@@ -500,13 +486,50 @@ def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
     """The error for ``name``, none of ``element``'s attributes."""
     ...
 
-def unnamed_identifier(element: Element) -> str | None:
-    """dm_control's name for an unnamed element of a namespace: ``/unnamed_<namespace>_<i>``,
-    ``i`` its position among its model's elements of that namespace (attached models'
-    left out), to follow its scope's prefix (``/`` for the outermost model)."""
+def _not_filled(*_: object) -> NoReturn: ...
+
+def _nothing_handed_out(model: ModelBase) -> None:
+    """No array is handed out for in-place edits until the compat room lends its own."""
     ...
 
-def name_after_files(model: ModelBase) -> None:
-    """Name every unnamed element of ``model`` that MuJoCo names after its file (see
-    :func:`_name_after_file`): dm_control's parser does."""
+class CompatHooks:
+    """What the compat room lends the tree and the features, each called only while its
+    flag is on (:func:`check_arrays` always: it has nothing to do while none is handed out)."""
+    def __init__(self) -> None:
+        # arrays_in_place: the stored array itself, writable; values copied for a copy; the
+        # arrays handed out checked again before a model is written
+        self.writable_array: Callable[[Element, AttributeSpec, object], object] = _not_filled
+        self.copied_values: Callable[[Mapping[str, object]], dict[str, object]] = _not_filled
+        self.check_arrays: Callable[[ModelBase], None] = _nothing_handed_out
+        # named_after_files: one element (when unnamed), every element of a model
+        self.name_after_file: Callable[[Element], None] = _not_filled
+        self.name_after_files: Callable[[ModelBase], None] = _not_filled
+        # element_name_keyword: the tag ``add()``'s keywords name (taken out of them)
+        self.tag_by_keyword: Callable[[dict[str, object]], str | None] = _not_filled
+        # unnamed_identifiers: one element's identifier; every unnamed one of a model
+        self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
+        self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled
+        # compile_error_advice: a refusal of a model for a physics, with dm_control's advice
+        self.explained: Callable[[ValueError, ModelBase], ValueError] = _not_filled
+COMPAT: Final = CompatHooks()
+
+def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
+    """``add()``'s tag: the first argument, or (``element_name_keyword``) the keyword that
+    names it (taken out of the attributes). Takes any object (here and in
+    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
+    ...
+
+def check_arrays(model: ModelBase) -> None:
+    """Check again every array of ``model`` (and the models attached to it) handed out for
+    in-place edits: an edit that made it invalid raises the error assigning it would."""
+    ...
+
+def keep_value(element: Element, attribute: AttributeSpec, value: object) -> None:
+    """Keep ``value`` as ``attribute``'s stored value as it is (an array handed out for
+    in-place edits, which is already the codec's)."""
+    ...
+
+def store_name(element: Element, attribute: AttributeSpec, name: str) -> None:
+    """Give ``element`` the name ``name`` (``attribute`` its id), as storing does: a name
+    given after a file."""
     ...

@@ -3,8 +3,9 @@
 
 After ``install()``, ``from dm_control import mjcf`` and ``import dm_control.mjcf.element``
 (and its other submodules) give these modules, whose names are typed-mjcf's objects, and
-the switch in ``_compat`` gives dm_control's observable behaviour (README "Coming from
-dm_control.mjcf"). Nothing of dm_control.mjcf itself is imported.
+the preset ``Behaviour.dm_control()`` gives dm_control's observable behaviour (docs/guide/
+dm-control.md); ``behaviours`` lends the tree what only dm_control does. Nothing of
+dm_control.mjcf itself is imported.
 """
 from __future__ import annotations
 import types
@@ -27,6 +28,9 @@ from typed_mjcf._dmcompat import (
     skin,
     traversal_utils,
 )
+from typed_mjcf._dmcompat import (
+    behaviours as behaviours,  # lends the tree what only dm_control does
+)
 PACKAGE: Final = "dm_control.mjcf"
 SUBMODULES: Final[dict[str, types.ModuleType]] = ...
 
@@ -36,8 +40,8 @@ def modules() -> dict[str, types.ModuleType]:
 
 def install() -> None:
     """Make ``dm_control.mjcf`` (and its submodules) typed-mjcf's, for this process, and
-    switch dm_control's behaviour on. Call it before anything imports ``dm_control.mjcf``:
-    a module that imported dm_control's own keeps it."""
+    select dm_control's behaviours (``Behaviour.dm_control()``). Call it before anything
+    imports ``dm_control.mjcf``: a module that imported dm_control's own keeps it."""
     ...
 
 @contextmanager

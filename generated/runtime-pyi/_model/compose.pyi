@@ -9,7 +9,7 @@ scope, and its sections join the parent's (see ``ElementSpec.compose``).
 """
 from __future__ import annotations
 from collections.abc import Mapping
-from typed_mjcf._core.tree import Element, ModelBase, grammar_facts, same_value
+from typed_mjcf._core.tree import Element, ModelBase, equal_read_values, grammar_facts
 
 def scope_name(model: ModelBase) -> str:
     """The model's name, which scopes its names where it is attached."""

@@ -22,7 +22,7 @@ from typing import Final, cast
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec, WritePlan
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.xmltext import MARKUP, MAX_INDENT, Chunk, Node, escape, indent
 FileNamer = Callable[[Element, AttributeSpec], str]
@@ -89,7 +89,8 @@ class Writer:
         if self.composed:
             self.given_names.update(_file_names_of_attached(scope))
     def prefix(self, scope: NameScope) -> str:
-        """The prefix of names in ``scope`` as seen from the model being written."""
+        """The prefix of names in ``scope`` as seen from the model being written
+        (:meth:`NameScope.prefix`, cached)."""
         ...
     def reference(self, element: Element, attribute: AttributeSpec, target: Element) -> str:
         """A reference to ``target``, scoped as seen from the model being written."""

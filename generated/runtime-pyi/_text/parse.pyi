@@ -23,6 +23,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Final, Protocol, TypeAlias, cast
+from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.access import (
     ANYWHERE,
     DEFAULT_ACCESS,
@@ -33,7 +34,6 @@ from typed_mjcf._core.access import (
     confine,
     open_confined,
 )
-from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.errors import (
     DuplicateIdentifierError,
     FileAccessError,

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Final, Literal
 
-from typed_mjcf._core.behaviour import STATE as _COMPAT
+from typed_mjcf._core.behaviour import FLAGS as _FLAGS
 from typed_mjcf._core.codecs import Codec, make_codec
 
 if TYPE_CHECKING:
@@ -243,9 +243,9 @@ class ChildSpec:
 
     @property
     def on_demand(self) -> bool:
-        """Whether this once-only child exists only once added: under dm_control's
-        behaviour, those of the rows that hold bodies (``<inertial>``)."""
-        return self.single and _COMPAT[0] and self.holder.holds_bodies
+        """Whether this once-only child exists only once added (``on_demand_children``, as
+        dm_control's schema marks them): those of the rows that hold bodies (``<inertial>``)."""
+        return self.single and _FLAGS.on_demand_children and self.holder.holds_bodies
 
     @property
     def attributes(self) -> dict[str, AttributeSpec]:

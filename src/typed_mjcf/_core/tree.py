@@ -26,13 +26,13 @@ from __future__ import annotations
 import copy
 import inspect
 import os
-import weakref
 from array import array as _array_of
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from typing import (
     ClassVar,
     Final,
     Generic,
+    NoReturn,
     Protocol,
     Self,
     SupportsIndex,
@@ -46,8 +46,7 @@ import numpy as np
 
 from typed_mjcf._build import mypyc_attr
 from typed_mjcf._core.access import ANYWHERE, Confinement
-from typed_mjcf._core.behaviour import STATE as _COMPAT
-from typed_mjcf._core.behaviour import dm_control_namespace
+from typed_mjcf._core.behaviour import FLAGS as _FLAGS
 from typed_mjcf._core.codecs import ArrayCodec, Rejected
 from typed_mjcf._core.debuginfo import RECORDER as _RECORDER
 from typed_mjcf._core.doclines import DCLASS_DOC, adder_listing
@@ -64,7 +63,7 @@ from typed_mjcf._core.errors import (
 )
 from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
 from typed_mjcf._core.language import GrammarFacts
-from typed_mjcf._core.names import SEPARATOR, NameScope, NameTaken
+from typed_mjcf._core.names import SEPARATOR, UNNAMED_MODEL, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
 
 E = TypeVar("E", bound="Element")
@@ -76,8 +75,6 @@ _CLASSES: dict[str, type[Element]] = {}
 _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
-_UNNAMED_MODEL: Final = "unnamed_model"  # dm_control's name of a model given none
-_ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names the tag by
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # What a refused value may say of itself (a stand-in for values, such as a distribution of
@@ -376,8 +373,8 @@ class Element(_Layout):
             stored = attribute.codec.accept(value)
         except Rejected as rejected:
             raise self._reject(attribute, value, rejected) from None
-        if attribute.is_reference and isinstance(stored, str) and not _COMPAT[0]:
-            return _resolve(self, attribute, stored)  # dm_control: a name stays a name
+        if attribute.is_reference and isinstance(stored, str) and not _FLAGS.references_stay_names:
+            return _resolve(self, attribute, stored)  # (else a name stays a name)
         return stored
 
     def _unset(self, attribute: AttributeSpec) -> None:
@@ -479,8 +476,8 @@ class Element(_Layout):
                 store(self, attribute, stored, True)
         if _RECORDER[0] is not None:
             _RECORDER[0](self, tuple(by_key[key].name for key in kwargs), True)
-        if _COMPAT[0]:
-            _name_after_file(self)  # (when not named)
+        if _FLAGS.named_after_files:
+            COMPAT.name_after_file(self)  # (when not named)
 
     # ------------------------------------------------------------------ children
 
@@ -495,10 +492,10 @@ class Element(_Layout):
         return insert_child(self, tag, position, kwargs)  # (run through _base.Element.insert)
 
     def _new_child_spec(self, tag: str) -> ChildSpec:
-        """The child spec ``add(tag)`` adds; under dm_control's behaviour a once-only child
-        that is not on demand exists with its parent there, so adding another is refused."""
+        """The child spec ``add(tag)`` adds; with ``eager_children`` a once-only child that
+        is not on demand exists with its parent there, so adding another is refused."""
         child_spec = self._child_spec(tag)
-        if _COMPAT[0] and child_spec.single and not child_spec.on_demand:
+        if _FLAGS.eager_children and child_spec.single and not child_spec.on_demand:
             getattr(self, child_spec.py_name)
         return child_spec
 
@@ -696,9 +693,9 @@ class ModelBase(Element):
         if assets is not None:
             self._files.update(cast("Mapping[str, bytes]", assets))
         scope_attribute = self.spec.scope_attribute
-        if model is None and _COMPAT[0] and scope_attribute is not None and not kwargs.get(
-                scope_attribute.py_name):
-            model = _UNNAMED_MODEL  # dm_control names every model
+        if model is None and _FLAGS.unnamed_model_name and scope_attribute is not None and (
+                not kwargs.get(scope_attribute.py_name)):
+            model = UNNAMED_MODEL  # (the name an attached model without one is called)
         if model is not None and scope_attribute is not None:
             kwargs = {scope_attribute.py_name: model, **kwargs}
         self._init_attributes(kwargs)
@@ -835,8 +832,8 @@ class Attribute:
         if stored is None:
             return None
         if self.lazy:  # numbers kept as read, arrays (read-only views)
-            if self.array and _COMPAT[0]:
-                return _writable_array(obj, self.spec, stored)
+            if self.array and _FLAGS.arrays_in_place:
+                return COMPAT.writable_array(obj, self.spec, stored)
             return self.codec.read(stored)
         if self.reference:
             return _read_reference(obj, self.spec, stored)
@@ -871,8 +868,8 @@ class SingleChild:
         existing = obj._single(self.child.tag)
         if existing is not None:
             return existing
-        if _COMPAT[0] and on_demand(obj.spec):
-            return None  # dm_control: a body's <inertial> is None until added
+        if _FLAGS.on_demand_children and self.child.on_demand:  # (the flag first: cheap)
+            return None  # a body's <inertial> is None until added
         return obj._add_child(self.child, None, {})
 
     def __set__(self, obj: Element, value: object) -> None:
@@ -903,7 +900,7 @@ class ChildList:
         if obj is None:
             return self
         tag = self.child.tag
-        if _COMPAT[0] and tag == grammar_facts().freejoint:  # dm_control: one, or None
+        if _FLAGS.single_freejoint and tag == grammar_facts().freejoint:  # one, or None
             return next((c for c in obj._children if c.spec.tag == tag), None)
         return ElementList[Element](obj, tag)
 
@@ -1323,9 +1320,9 @@ def _resolve(element: Element, attribute: AttributeSpec, name: str) -> object:
 
 def _wait(element: Element, attribute: AttributeSpec, name: str) -> None:
     """Link ``attribute`` when an element named ``name`` appears in the element's scope
-    (under dm_control's behaviour a name given stays that name: it links only on
+    (with ``references_stay_names`` a name given stays that name: it links only on
     ``resolve_references()``, which a parse ends with)."""
-    if _COMPAT[0]:
+    if _FLAGS.references_stay_names:
         return
     namespace = reference_namespace(element, attribute)
     if namespace is not None:
@@ -1349,7 +1346,7 @@ def _link_waiting(scope: NameScope, namespace: str, name: str, target: Element) 
 def _read_reference(element: Element, attribute: AttributeSpec, stored: object) -> object:
     """A link reads as its element (``None`` once the element is removed), a name as the
     name (it links when an element of that name appears, or on ``resolve_references()``;
-    under dm_control's behaviour only on ``resolve_references()``)."""
+    with ``references_stay_names`` only on ``resolve_references()``)."""
     if isinstance(stored, Element):
         return None if stored._root is None else stored
     return stored
@@ -1424,7 +1421,7 @@ def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: N
         original, clone_parent, clone_scope = stack.pop()
         clone = _new_object(type(original))
         _set_values(clone, {key: value for key, value in original._values.items()}
-                    if not _COMPAT[0] else _copied_values(original._values))
+                    if not _FLAGS.arrays_in_place else COMPAT.copied_values(original._values))
         _set_children(clone, _NO_CHILDREN)
         _set_parent(clone, clone_parent)
         _set_root(clone, root)
@@ -1545,7 +1542,7 @@ def _same_values(a: Element, b: Element) -> bool:
         if isinstance(x, Element) or isinstance(y, Element):
             x = element_name(x) if isinstance(x, Element) else x
             y = element_name(y) if isinstance(y, Element) else y
-        if not same_value(x, y):
+        if not equal_read_values(x, y):
             return False
     return True
 
@@ -1554,8 +1551,9 @@ def _is_empty_array(stored: object) -> bool:
     return type(stored) is np.ndarray and not stored.size  # (narrowed: no typing.cast, a call)
 
 
-def same_value(a: object, b: object) -> bool:
-    """Equality of attribute values, arrays included."""
+def equal_read_values(a: object, b: object) -> bool:
+    """Whether two values as attributes read are equal: numbers by value, whatever holds
+    them (an array equals a tuple of the same numbers)."""
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
         try:
             return bool(np.array_equal(np.asarray(a), np.asarray(b)))
@@ -1821,28 +1819,7 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
                 yield from walk(list(children(section)))
 
 
-# ---------------------------------------------------------------------------- dm_control's behaviour
-# What ``install_as_dm_control_mjcf()`` switches on (``_compat``): arrays read as writable
-# arrays, edited in place as dm_control's are, and checked again whenever the model is
-# written (:func:`check_arrays`), so an invalid value never goes unnoticed.
-
-# the arrays handed out for in-place edits: element -> {XML name: the stored array}
-_Array: TypeAlias = np.ndarray[tuple[int], np.dtype[np.generic]]
-_HANDED_OUT: weakref.WeakKeyDictionary[Element, dict[str, _Array]] = weakref.WeakKeyDictionary()
-
-
-def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
-    """``add()``'s tag: the first argument, or under dm_control's behaviour its keyword
-    ``element_name`` (taken out of the attributes). Takes any object (here and in
-    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
-    if tag is None and _COMPAT[0] and _ELEMENT_NAME in kwargs:
-        tag = kwargs.pop(_ELEMENT_NAME)
-    elif tag is None:
-        raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
-                               f"add('<tag>', ...)")
-    if not isinstance(tag, str):
-        raise InvalidTypeError(f"{parent.path}: a child tag must be a string, got {tag!r}")
-    return tag
+# ---------------------------------------------------------------------------- spellings
 
 
 def insert_child(parent: Element, tag: object, position: object,
@@ -1874,55 +1851,6 @@ def mjcf_alias(element: Element, name: str) -> str | None:
     return _python_name(element.spec, name)
 
 
-def on_demand(spec: ElementSpec) -> bool:
-    """Whether ``spec``'s once-only children exist only once added, as in dm_control (whose
-    schema marks them ``on_demand``): those of the rows that hold bodies (``<inertial>``)."""
-    return spec.holds_bodies
-
-
-def _writable_array(element: Element, attribute: AttributeSpec, stored: object) -> object:
-    """The stored array itself, writable: changes made in place are the element's."""
-    owned = _HANDED_OUT.get(element)
-    if owned is not None and owned.get(attribute.name) is stored:
-        return stored
-    array = np.array(attribute.codec.read(stored))  # a copy of its own, writable
-    element._values[attribute.name] = array
-    if owned is None:
-        _HANDED_OUT[element] = owned = {}
-    owned[attribute.name] = array
-    return array
-
-
-def _copied_values(values: dict[str, object]) -> dict[str, object]:
-    """An element's values for its copy: arrays copied, since they may be edited in place."""
-    return {key: value.copy() if type(value) is np.ndarray else value
-            for key, value in values.items()}
-
-
-def check_arrays(model: ModelBase) -> None:
-    """Check again every array of ``model`` (and the models attached to it) handed out for
-    in-place edits: an edit that made it invalid raises the error assigning it would."""
-    if not _HANDED_OUT:
-        return
-    models: set[int] = set()
-    pending: list[ModelBase] = [model]
-    while pending:
-        current = pending.pop()
-        models.add(id(current))
-        pending += attached_models(current)
-    for element, arrays in list(_HANDED_OUT.items()):
-        if element._root is None or id(element._root) not in models:
-            continue
-        for name, array in arrays.items():
-            if element._values.get(name) is not array:
-                continue
-            attribute = element.spec.by_name[name]
-            try:
-                attribute.codec.accept(array)
-            except Rejected as rejected:
-                raise element._reject(attribute, array, rejected) from None
-
-
 def add_rejection_note(note: Callable[[object], str | None]) -> None:
     """Have refusals of a value ask ``note`` what it says of that value (once per note)."""
     if note not in _REJECTION_NOTES:
@@ -1934,50 +1862,77 @@ def unknown_attribute(element: Element, name: str) -> UnknownAttributeError:
     return element._unknown_attribute(name)
 
 
-def unnamed_identifier(element: Element) -> str | None:
-    """dm_control's name for an unnamed element of a namespace: ``/unnamed_<namespace>_<i>``,
-    ``i`` its position among its model's elements of that namespace (attached models'
-    left out), to follow its scope's prefix (``/`` for the outermost model)."""
-    namespace = element.spec.namespace
-    root = element._root
-    if namespace is None or element.spec.id_attribute is None or root is None:
-        return None
-    index = 0
-    kind = dm_control_namespace(namespace)
-    for other in iter_composed(root, False):
-        if other is element:
-            return f"/unnamed_{kind}_{index}"
-        parent = other._parent
-        if dm_control_namespace(other.spec.namespace or "") == kind and not isinstance(parent, ModelBase) and not (
-                parent is not None and parent._attached is not None
-                and other._scope is not parent._scope):  # a frame's own are not counted
-            index += 1
-    return None
+# ---------------------------------------------------------------------------- dm_control's behaviours
+# What the tree does differently under a flag of typed_mjcf._core.behaviour is read there
+# (``_FLAGS.<name>``); what only dm_control does lives in the compat room
+# (typed_mjcf._dmcompat.behaviours), which fills these hooks when the package is imported.
 
 
-def _name_after_file(element: Element) -> None:
-    """dm_control names an unnamed mesh (texture, ...) after its file's stem, as MuJoCo
-    does: the name is the element's, so references find it and ``mesh.name`` reads it."""
-    namespace = element.spec.namespace
-    attribute = grammar_facts().named_after_file.get(namespace or "")
-    id_attribute = element.spec.id_attribute
-    if attribute is None or id_attribute is None or id_attribute.name in element._values:
-        return
-    file = element._values.get(attribute)
-    stem = file if isinstance(file, str) else getattr(file, "name", None)
-    if not isinstance(stem, str) or not stem:
-        return
-    stem = os.path.basename(stem.replace("\\", "/"))
-    if "." in stem.lstrip("."):
-        stem = stem.rsplit(".", 1)[0]
-    if stem and element._root is not None and element._scope.lookup(
-            cast(str, id_attribute.namespace), stem) is None:
-        _store(element, id_attribute, stem, True)
+def _not_filled(*_: object) -> NoReturn:
+    raise MjcfError("dm_control's behaviours come from typed_mjcf._dmcompat, which is not "
+                    "imported (import typed_mjcf)")
 
 
-def name_after_files(model: ModelBase) -> None:
-    """Name every unnamed element of ``model`` that MuJoCo names after its file (see
-    :func:`_name_after_file`): dm_control's parser does."""
-    for element in model.iter_elements():
-        if element.spec.namespace in grammar_facts().named_after_file:
-            _name_after_file(element)
+def _nothing_handed_out(model: ModelBase) -> None:
+    """No array is handed out for in-place edits until the compat room lends its own."""
+
+
+class CompatHooks:
+    """What the compat room lends the tree and the features, each called only while its
+    flag is on (:func:`check_arrays` always: it has nothing to do while none is handed out)."""
+
+    __slots__ = ("check_arrays", "copied_values", "explained", "name_after_file", "name_after_files",
+                 "tag_by_keyword", "unnamed_identifier", "unnamed_names",
+                 "writable_array")
+
+    def __init__(self) -> None:
+        # arrays_in_place: the stored array itself, writable; values copied for a copy; the
+        # arrays handed out checked again before a model is written
+        self.writable_array: Callable[[Element, AttributeSpec, object], object] = _not_filled
+        self.copied_values: Callable[[Mapping[str, object]], dict[str, object]] = _not_filled
+        self.check_arrays: Callable[[ModelBase], None] = _nothing_handed_out
+        # named_after_files: one element (when unnamed), every element of a model
+        self.name_after_file: Callable[[Element], None] = _not_filled
+        self.name_after_files: Callable[[ModelBase], None] = _not_filled
+        # element_name_keyword: the tag ``add()``'s keywords name (taken out of them)
+        self.tag_by_keyword: Callable[[dict[str, object]], str | None] = _not_filled
+        # unnamed_identifiers: one element's identifier; every unnamed one of a model
+        self.unnamed_identifier: Callable[[Element], str | None] = _not_filled
+        self.unnamed_names: Callable[[ModelBase], dict[int, str]] = _not_filled
+        # compile_error_advice: a refusal of a model for a physics, with dm_control's advice
+        self.explained: Callable[[ValueError, ModelBase], ValueError] = _not_filled
+
+
+COMPAT: Final = CompatHooks()
+
+
+def tag_given(parent: Element, tag: object, kwargs: dict[str, object]) -> str:
+    """``add()``'s tag: the first argument, or (``element_name_keyword``) the keyword that
+    names it (taken out of the attributes). Takes any object (here and in
+    :func:`insert_child`: the compiled build checks an annotation before the body can)."""
+    if tag is None and _FLAGS.element_name_keyword:
+        tag = COMPAT.tag_by_keyword(kwargs)
+    if tag is None:
+        raise InvalidTypeError(f"{parent.path}: add() takes the child's tag first, e.g. "
+                               f"add('<tag>', ...)")
+    if not isinstance(tag, str):
+        raise InvalidTypeError(f"{parent.path}: a child tag must be a string, got {tag!r}")
+    return tag
+
+
+def check_arrays(model: ModelBase) -> None:
+    """Check again every array of ``model`` (and the models attached to it) handed out for
+    in-place edits: an edit that made it invalid raises the error assigning it would."""
+    COMPAT.check_arrays(model)
+
+
+def keep_value(element: Element, attribute: AttributeSpec, value: object) -> None:
+    """Keep ``value`` as ``attribute``'s stored value as it is (an array handed out for
+    in-place edits, which is already the codec's)."""
+    element._values[attribute.name] = value
+
+
+def store_name(element: Element, attribute: AttributeSpec, name: str) -> None:
+    """Give ``element`` the name ``name`` (``attribute`` its id), as storing does: a name
+    given after a file."""
+    _store(element, attribute, name, True)

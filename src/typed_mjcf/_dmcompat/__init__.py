@@ -2,8 +2,9 @@
 
 After ``install()``, ``from dm_control import mjcf`` and ``import dm_control.mjcf.element``
 (and its other submodules) give these modules, whose names are typed-mjcf's objects, and
-the switch in ``_compat`` gives dm_control's observable behaviour (README "Coming from
-dm_control.mjcf"). Nothing of dm_control.mjcf itself is imported.
+the preset ``Behaviour.dm_control()`` gives dm_control's observable behaviour (docs/guide/
+dm-control.md); ``behaviours`` lends the tree what only dm_control does. Nothing of
+dm_control.mjcf itself is imported.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from collections.abc import Generator
 from contextlib import contextmanager
 from typing import Final
 
-from typed_mjcf._core.behaviour import set_dm_control_behaviour
+from typed_mjcf._core.behaviour import Behaviour, set_behaviour
 from typed_mjcf._dmcompat import (
     attribute,
     base,
@@ -32,6 +33,9 @@ from typed_mjcf._dmcompat import (
     physics,
     skin,
     traversal_utils,
+)
+from typed_mjcf._dmcompat import (
+    behaviours as behaviours,  # lends the tree what only dm_control does
 )
 
 PACKAGE: Final = "dm_control.mjcf"
@@ -53,15 +57,15 @@ def modules() -> dict[str, types.ModuleType]:
 
 def install() -> None:
     """Make ``dm_control.mjcf`` (and its submodules) typed-mjcf's, for this process, and
-    switch dm_control's behaviour on. Call it before anything imports ``dm_control.mjcf``:
-    a module that imported dm_control's own keeps it."""
+    select dm_control's behaviours (``Behaviour.dm_control()``). Call it before anything
+    imports ``dm_control.mjcf``: a module that imported dm_control's own keeps it."""
     sys.modules.update(modules())
     parent = sys.modules.get("dm_control")
     if parent is None:
         parent = _dm_control_package()
         sys.modules["dm_control"] = parent
     setattr(parent, "mjcf", mjcf)
-    set_dm_control_behaviour(True)
+    set_behaviour(Behaviour.dm_control())
     debugging.arm()  # --pymjcf_debug, read when the first element is made
 
 
@@ -72,12 +76,12 @@ def installed() -> Generator[None]:
     saved = {name: sys.modules.get(name) for name in modules()}
     saved_parent = sys.modules.get("dm_control")
     saved_attribute = getattr(saved_parent, "mjcf", None)
-    previous = set_dm_control_behaviour(True)
+    previous = set_behaviour(Behaviour.dm_control())
     try:
         install()
         yield
     finally:
-        set_dm_control_behaviour(previous)
+        set_behaviour(previous)
         for name, module in saved.items():
             if module is None:
                 sys.modules.pop(name, None)

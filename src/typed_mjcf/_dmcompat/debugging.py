@@ -283,3 +283,15 @@ __all__ = ["DEBUG_METADATA_PREFIX", "ElementDebugInfo", "StackTraceEntry", "debu
            "disable_debug_mode", "dump_full_debug_info", "enable_debug_mode",
            "freeze_current_stack_trace", "get_current_stack_trace", "get_full_dump_dir",
            "set_full_dump_dir"]
+
+
+def _explained(error: ValueError, model: _tree.ModelBase) -> ValueError:
+    """:func:`explained`, lent to ``Physics`` (``compile_error_advice``) through the tree."""
+    return explained(error, model) if isinstance(model, ModelRoot) else error
+
+
+def _lend() -> None:
+    _tree.COMPAT.explained = _explained
+
+
+_lend()

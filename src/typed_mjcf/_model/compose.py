@@ -19,7 +19,7 @@ from typed_mjcf._core.errors import (
     InvalidValueError,
 )
 from typed_mjcf._core.names import UNNAMED_MODEL
-from typed_mjcf._core.tree import Element, ModelBase, grammar_facts, same_value
+from typed_mjcf._core.tree import Element, ModelBase, equal_read_values, grammar_facts
 from typed_mjcf._text.export import folder_attributes
 from typed_mjcf._text.files import copied_files, rebase_files
 from typed_mjcf._text.merge import combine, rule_of
@@ -115,14 +115,14 @@ def _reconcile(parent: Element | None, child: Element, where: str, model: str,
         mine = None if parent is None else _tree.read_value(parent, attribute)
         if mine is None:
             plan.append((route, name, theirs))  # the parent leaves it unset: adopt it
-        elif not same_value(mine, theirs):
+        elif not equal_read_values(mine, theirs):
             rule = rule_of(child, name)
             merged = None if rule is None else combine(rule, mine, theirs)
             if merged is None:
                 problems.append(f"Conflicting values for attribute `{name}` of <{where}>: "
                                 f"{theirs!r} in the attached model {model!r}, {mine!r} in "
                                 f"the model it is attached to")
-            elif not same_value(merged, mine):
+            elif not equal_read_values(merged, mine):
                 plan.append((route, name, merged))
     for grandchild in _tree.children(child):
         if child.spec.children[grandchild.spec.tag].single:
@@ -220,7 +220,7 @@ def _merge_into(target: Element, source: Element, override: bool,
         mine = _tree.read_value(target, attribute) if attribute_name in stored else None
         if mine is None or override:
             _tree.assign(target, attribute, theirs)
-        elif not same_value(mine, theirs):
+        elif not equal_read_values(mine, theirs):
             problems.append(f"Conflicting values for attribute `{attribute_name}` of "
                             f"<{source.spec.tag}>: {theirs!r} in model {name!r}, {mine!r} here")
     if problems:

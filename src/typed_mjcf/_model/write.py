@@ -8,7 +8,7 @@ from collections.abc import Callable
 from typing import Final
 
 from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._core.gc import collector_paused
 from typed_mjcf._core.names import NameScope
@@ -37,7 +37,7 @@ def element_text(element: Element, fmt: Format = DEFAULT_FORMAT, pretty_print: b
     root = _tree.model_of(element)
     if root is not None:
         _tree.check_arrays(root)  # arrays edited in place (dm_control's behaviour)
-        if collected is None and not self_only and dm_control_behaviour():
+        if collected is None and not self_only and FLAGS.hashed_file_names:
             collected = collect(_tree.scope_model(_tree.scope_of(root).outermost()))
     file_namer: FileNamer | None = None if collected is None else collected.name_of
     skip = NO_ATTRIBUTES if collected is None else collected.directory_attributes

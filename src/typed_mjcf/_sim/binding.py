@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Final, Literal, Protocol, Self, TypeAlias, cas
 import numpy as np
 import numpy.typing as npt
 
-from typed_mjcf._core.behaviour import STATE
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.errors import BindingError, InvalidValueError, did_you_mean
 from typed_mjcf.types import Array, MuJoCoArray
 
@@ -371,7 +371,7 @@ class Binding:
             if name.startswith("__"):
                 raise AttributeError(name)
             found = self._get(name)
-            if found.ndim == 0 and STATE[0]:
+            if found.ndim == 0 and FLAGS.scalar_copies:
                 # dm_control gives a single element's value as a numpy scalar, a copy: its
                 # code saves values that way before writing (composer's prop placer saves
                 # a geom's contype, sets 0, restores it), so a view would restore the 0

@@ -22,11 +22,11 @@ from collections.abc import Callable, Iterator, Mapping
 from typing import Final, cast
 
 from typed_mjcf._core import tree as _tree
-from typed_mjcf._core.behaviour import dm_control_behaviour, dm_control_namespace
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._core.errors import ExportError
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec, WritePlan
-from typed_mjcf._core.names import NameScope
+from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._text.merge import combine, rule_of
@@ -125,19 +125,18 @@ class Writer:
     # --------------------------------------------------------------- names
 
     def prefix(self, scope: NameScope) -> str:
-        """The prefix of names in ``scope`` as seen from the model being written."""
+        """The prefix of names in ``scope`` as seen from the model being written
+        (:meth:`NameScope.prefix`, cached)."""
         found = self.prefixes.get(id(scope))
         if found is not None:
             return found
-        parts: list[str] = []
         current: NameScope | None = scope
         while current is not None and current is not self.top_scope:
-            parts.append(current.name or "")
             current = current.parent
         if current is None:
             raise ExportError(f"names of model {scope.name!r} cannot be written as part of "
                               f"this model: it is not attached into it")
-        text = "".join(part + "/" for part in reversed(parts))
+        text = scope.prefix(self.top_scope)
         self.prefixes[id(scope)] = text
         return text
 
@@ -561,7 +560,7 @@ class Writer:
                     rule, attribute.codec.read(attribute.codec.parse(mine)),
                     attribute.codec.read(attribute.codec.parse(text)))
                 if merged is None:
-                    scope = self.prefix(_tree.scope_of(section)).rstrip("/")
+                    scope = self.prefix(_tree.scope_of(section)).rstrip(SEPARATOR)
                     raise ExportError(
                         f"Conflicting values for attribute `{name}` of <{section.spec.tag}>: "
                         f"{text!r} in attached model {scope!r}, {mine!r} in the model it is "
@@ -636,7 +635,7 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
             frame = _tree.frame_of(_tree.scope_model(scope))
             if frame is not None and _tree.element_name(frame) is None:
                 given[id(frame)] = f"{scope.name}/"
-    if dm_control_behaviour():
+    if FLAGS.unnamed_identifiers:
         _dm_control_names(top_scope, given)
         return given
     for scope in top_scope.scopes():
@@ -672,39 +671,24 @@ def _names_to_give(top: Element, top_scope: NameScope) -> dict[int, str]:
 
 def _frame_child_suffix(element: Element) -> str:
     """dm_control's names of an attachment frame's own children end in ``/``
-    (``arm/root_x/``): with its behaviour on, ``/`` for them, else nothing."""
-    if not dm_control_behaviour():
+    (``arm/root_x/``): with ``frame_names_end_in_separator``, ``/`` for them, else nothing."""
+    if not FLAGS.frame_names_end_in_separator:
         return ""
     parent = element.parent
     if parent is None or _tree.attached_at(parent) is None or (
             _tree.scope_of(parent) is _tree.scope_of(element)):
         return ""
-    return "/"
+    return SEPARATOR
 
 
 def _dm_control_names(top_scope: NameScope, given: dict[int, str]) -> None:
-    """dm_control's names for every unnamed element of a namespace: ``unnamed_<kind>_<i>``
-    after ``/`` (``//`` in the model written), ``i`` its position among its model's elements
-    of that kind; an attachment frame's own children take the frame's name."""
+    """dm_control's names for every unnamed element of a namespace (the compat room's
+    count): ``unnamed_<kind>_<i>`` after ``/`` (``//`` in the model written); an attachment
+    frame's own children take the frame's name, and a frame keeps its own (``arm/``)."""
     for scope in top_scope.scopes():
-        counts: dict[str, int] = {}
-        lead = "/" if scope is top_scope else ""
-        for element in _tree.iter_composed(_tree.scope_model(scope), False):
-            namespace = element.spec.namespace
-            parent = element.parent
-            if (namespace is None or element.spec.id_attribute is None
-                    or isinstance(parent, ModelBase) or id(element) in given):
-                continue
-            if parent is not None and _tree.attached_at(parent) is not None and (
-                    _tree.scope_of(element) is not _tree.scope_of(parent)):
-                if _tree.element_name(element) is None:
-                    given[id(element)] = ""  # the attached scope's prefix: the frame's name
-                continue
-            namespace = dm_control_namespace(namespace)
-            index = counts.get(namespace, 0)
-            counts[namespace] = index + 1
-            if _tree.element_name(element) is None:
-                given[id(element)] = f"{lead}/unnamed_{namespace}_{index}"
+        lead = SEPARATOR if scope is top_scope else ""
+        for key, name in _tree.COMPAT.unnamed_names(_tree.scope_model(scope)).items():
+            given.setdefault(key, lead + name if name else "")
 
 
 def _file_names_of_attached(top_scope: NameScope) -> dict[int, str]:

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.access import Refused, read_file
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.errors import FileAccessError, InvalidValueError, MjcfError
 from typed_mjcf._core.grammar import AttributeSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
@@ -284,7 +284,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
             if value is None:
                 continue
             read: Callable[[], bytes] | None
-            if dm_control_behaviour():  # dm_control's names: <stem>-<sha1 of contents>
+            if FLAGS.hashed_file_names:  # dm_control's names: <stem>-<sha1 of contents>
                 name = _hashed_name(model, element, attribute, value, folders, collected)
                 key: object = name
                 read = None
@@ -320,7 +320,7 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
     suffix renames the mesh MuJoCo names after it): its path below the model's folder
     (what MuJoCo makes of the source's text), else its last folders as far as they tell it
     from the others."""
-    if dm_control_behaviour():
+    if FLAGS.hashed_file_names:
         return {}
     by_base: dict[str, dict[str, Callable[[], bytes]]] = {}
     models = [model]

@@ -44,7 +44,7 @@ from typed_mjcf._core.access import (
     confine,
     open_confined,
 )
-from typed_mjcf._core.behaviour import dm_control_behaviour
+from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.codecs import Rejected
 from typed_mjcf._core.debuginfo import PACKAGE_DIR
 from typed_mjcf._core.errors import (
@@ -501,10 +501,10 @@ def _build_model(node: XmlNode, context: _Context, source: str | None) -> ModelB
     with collector_paused():  # a parse creates only objects that live on
         _set_attributes(model, node, source, context)
         _Builder(context, sources).run(model, node, source)
-        if dm_control_behaviour():  # as dm_control's parser: files name meshes..., then the
-            _tree.name_after_files(model)  # references are resolved (nothing waits for a name)
-            if context.options.resolve_references:
-                _tree.resolve_references(model)
+        if FLAGS.named_after_files:  # as dm_control's parser: files name meshes..., then
+            _tree.COMPAT.name_after_files(model)  # the references are resolved
+        if FLAGS.references_stay_names and context.options.resolve_references:
+            _tree.resolve_references(model)  # (nothing waits for a name)
     return model
 
 
@@ -818,7 +818,7 @@ class _Builder:
 
         def check() -> None:
             for key, value in _section_defaults(section).items():
-                if key in before and _same_value(before[key], value):
+                if key in before and _same_stored_value(before[key], value):
                     continue
                 hierarchy_class = hierarchy.uncovered(key)
                 if hierarchy_class is None:
@@ -951,7 +951,9 @@ def _element_defaults(level: Element) -> dict[_Key, object]:
     return found
 
 
-def _same_value(a: object, b: object) -> bool:
+def _same_stored_value(a: object, b: object) -> bool:
+    """Whether two values as the tree stores them are the same (an array equals only an
+    array of the same numbers: a value stored otherwise was set otherwise)."""
     if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
         return bool(np.array_equal(cast(_Array, a), cast(_Array, b)))
     return not isinstance(a, np.ndarray) and not isinstance(b, np.ndarray) and a == b
