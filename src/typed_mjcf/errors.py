@@ -24,6 +24,7 @@ from typed_mjcf._errors import (
     InvalidTypeError,
     InvalidValueError,
     MjcfError,
+    NotParametricError,
     ParseError,
     PhysicsError,
     RenderError,
@@ -48,6 +49,7 @@ __all__ = [
     "InvalidTypeError",
     "InvalidValueError",
     "MjcfError",
+    "NotParametricError",
     "ParseError",
     "PhysicsError",
     "RenderError",
@@ -60,5 +62,6 @@ __all__ = [
 shown_as_public(__name__, BindingError, ChildError, CompileError, DuplicateIdentifierError,
                 ExportError, FileAccessError, FileReadError, Finding, IgnoredAttributeWarning,
                 IllegalChildError, InvalidReferenceError, InvalidTypeError, InvalidValueError,
-                MjcfError, ParseError, PhysicsError, RenderError, UnknownAttributeError,
+                MjcfError, NotParametricError, ParseError, PhysicsError, RenderError,
+                UnknownAttributeError,
                 ValidationError)
