@@ -23,8 +23,9 @@ from typing import TYPE_CHECKING, Final, TypeAlias, cast
 import numpy as np
 import numpy.typing as npt
 from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf.types import Array, MuJoCoArray
 import mujoco
-Draw: TypeAlias = Iterable[tuple[Element, str, npt.NDArray[np.generic]]]
+Draw: TypeAlias = Iterable[tuple[Element, str, MuJoCoArray]]
 RECOMPUTED_STATS: Final = ("meanmass", "meaninertia")
 VISUAL_STATS: Final = ("meansize", "extent", "center")
 
@@ -54,20 +55,20 @@ def changed_rows(before: mujoco.MjModel, after: mujoco.MjModel,
 def changed_stats(before: mujoco.MjModel, after: mujoco.MjModel) -> tuple[str, ...]: ...
 
 def attribute_values(element: Element, attribute: str, values: npt.ArrayLike,
-                     ) -> npt.NDArray[np.float64]:
+                     ) -> Array[np.float64]:
     """``values`` (one per world) as a 2-D array of numbers, each world's value checked as
     assigning it to the attribute checks it, against the attribute's bounds, and finite;
     the error names the element, the attribute, the value and the world."""
     ...
 
 def find_route(root: ModelBase, base: mujoco.MjModel, element: Element, attribute: str,
-               example: npt.NDArray[np.float64]) -> Route:
+               example: Array[np.float64]) -> Route:
     """Where ``element``'s ``attribute`` lives in ``base`` (``root`` compiled), learnt by
     compiling ``root`` with the attribute set to a value of ``example``'s length that
     differs in every number from both ``example`` and the current value (restored after)."""
     ...
 
-def write(model: mujoco.MjModel, route: Route, value: npt.NDArray[np.float64]) -> None:
+def write(model: mujoco.MjModel, route: Route, value: Array[np.float64]) -> None:
     """Write one world's ``value`` into ``route``'s rows of ``model`` (no derived field)."""
     ...
 
@@ -75,13 +76,13 @@ def finish(model: mujoco.MjModel, routes: Iterable[Route]) -> None:
     """Derive again what the compiler derives from the fields ``routes`` wrote."""
     ...
 
-def world_models(base: mujoco.MjModel, columns: Sequence[tuple[Route, npt.NDArray[np.float64]]],
+def world_models(base: mujoco.MjModel, columns: Sequence[tuple[Route, Array[np.float64]]],
                  nworld: int) -> list[mujoco.MjModel]:
     """``nworld`` copies of ``base``, world ``i`` with row ``i`` of each route's values."""
     ...
 
 def routes_for(root: ModelBase, base: mujoco.MjModel, draw: Draw,
                cache: dict[tuple[int, str, int], Route] | None = None,
-               ) -> tuple[list[tuple[Route, npt.NDArray[np.float64]]], int]:
+               ) -> tuple[list[tuple[Route, Array[np.float64]]], int]:
     """Each triple of ``draw`` checked and routed, and the number of worlds."""
     ...

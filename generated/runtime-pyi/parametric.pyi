@@ -15,7 +15,6 @@ from than ``mj_setConst`` derives again is refused with
 from __future__ import annotations
 import mujoco
 import numpy as np
-import numpy.typing as npt
 from typed_mjcf._parametric import (
     Draw,
     Route,
@@ -27,10 +26,11 @@ from typed_mjcf._parametric import (
 )
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.physics import Physics
+from typed_mjcf.types import Array
 __all__ = ["Draw", "parametric_models", "parametric_physics", "plan"]
 
 def plan(draw: Draw, model: mujoco.MjModel | Physics | None = None,
-         ) -> tuple[ModelBase, mujoco.MjModel, list[tuple[Route, npt.NDArray[np.float64]]],
+         ) -> tuple[ModelBase, mujoco.MjModel, list[tuple[Route, Array[np.float64]]],
                     int]:
     """The draw checked and routed: its model, the compiled model the values go into (a
     fresh compile when ``model`` is ``None``), each triple's route and values, and the

@@ -31,12 +31,13 @@ from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model
 from typed_mjcf._errors import InvalidValueError, MjcfError, NotParametricError
 from typed_mjcf._tree import Element, ModelBase
+from typed_mjcf.types import Array, MuJoCoArray
 
 if TYPE_CHECKING:
     import mujoco
 
 # A draw: (element, attribute's Python name, values with one row per world)
-Draw: TypeAlias = Iterable[tuple[Element, str, npt.NDArray[np.generic]]]
+Draw: TypeAlias = Iterable[tuple[Element, str, MuJoCoArray]]
 
 # the statistics the compiler derives that are computed again here (the others: drawing)
 RECOMPUTED_STATS: Final = ("meanmass", "meaninertia")
@@ -117,7 +118,7 @@ def changed_stats(before: mujoco.MjModel, after: mujoco.MjModel) -> tuple[str, .
 
 
 def attribute_values(element: Element, attribute: str, values: npt.ArrayLike,
-                     ) -> npt.NDArray[np.float64]:
+                     ) -> Array[np.float64]:
     """``values`` (one per world) as a 2-D array of numbers, each world's value checked as
     assigning it to the attribute checks it, against the attribute's bounds, and finite;
     the error names the element, the attribute, the value and the world."""
@@ -127,7 +128,7 @@ def attribute_values(element: Element, attribute: str, values: npt.ArrayLike,
         raise InvalidValueError(f"{element.path}: the values of {attribute!r} need one row "
                                 f"per world (a leading axis of at least 1), got "
                                 f"{_short(array)}")
-    rows: list[npt.NDArray[np.float64]] = []
+    rows: list[Array[np.float64]] = []
     for world, value in enumerate(array):
         item: object = value.tolist() if isinstance(value, np.ndarray) else value
         try:
@@ -168,7 +169,7 @@ def _short(value: object, limit: int = 60) -> str:
 
 
 def find_route(root: ModelBase, base: mujoco.MjModel, element: Element, attribute: str,
-               example: npt.NDArray[np.float64]) -> Route:
+               example: Array[np.float64]) -> Route:
     """Where ``element``'s ``attribute`` lives in ``base`` (``root`` compiled), learnt by
     compiling ``root`` with the attribute set to a value of ``example``'s length that
     differs in every number from both ``example`` and the current value (restored after)."""
@@ -215,8 +216,8 @@ def find_route(root: ModelBase, base: mujoco.MjModel, element: Element, attribut
         f"{', '.join(sorted(changed)) or 'none'}); compile one model per world instead")
 
 
-def _probe_value(example: npt.NDArray[np.float64], current: object,
-                 ) -> npt.NDArray[np.float64]:
+def _probe_value(example: Array[np.float64], current: object,
+                 ) -> Array[np.float64]:
     """A value like ``example`` with every number different from it and from
     ``current`` (so that every number the compile takes shows in the diff)."""
     now = np.atleast_1d(np.asarray(current, dtype=np.float64)) if current is not None else (
@@ -229,7 +230,7 @@ def _probe_value(example: npt.NDArray[np.float64], current: object,
 
 
 def _holds(model: mujoco.MjModel, name: str, rows: Sequence[int],
-           value: npt.NDArray[np.float64]) -> bool:
+           value: Array[np.float64]) -> bool:
     array = np.asarray(getattr(model, name))
     if array.dtype.kind != "f" or not rows:
         return False
@@ -248,7 +249,7 @@ def _stats_close(model: mujoco.MjModel, compiled: mujoco.MjModel) -> bool:
 # ---------------------------------------------------------------------------- writing
 
 
-def write(model: mujoco.MjModel, route: Route, value: npt.NDArray[np.float64]) -> None:
+def write(model: mujoco.MjModel, route: Route, value: Array[np.float64]) -> None:
     """Write one world's ``value`` into ``route``'s rows of ``model`` (no derived field)."""
     array = np.asarray(getattr(model, route.field))
     for row in route.rows:
@@ -280,7 +281,7 @@ def finish(model: mujoco.MjModel, routes: Iterable[Route]) -> None:
         model.stat.meaninertia = total / model.nv
 
 
-def world_models(base: mujoco.MjModel, columns: Sequence[tuple[Route, npt.NDArray[np.float64]]],
+def world_models(base: mujoco.MjModel, columns: Sequence[tuple[Route, Array[np.float64]]],
                  nworld: int) -> list[mujoco.MjModel]:
     """``nworld`` copies of ``base``, world ``i`` with row ``i`` of each route's values."""
     out: list[mujoco.MjModel] = []
@@ -296,9 +297,9 @@ def world_models(base: mujoco.MjModel, columns: Sequence[tuple[Route, npt.NDArra
 
 def routes_for(root: ModelBase, base: mujoco.MjModel, draw: Draw,
                cache: dict[tuple[int, str, int], Route] | None = None,
-               ) -> tuple[list[tuple[Route, npt.NDArray[np.float64]]], int]:
+               ) -> tuple[list[tuple[Route, Array[np.float64]]], int]:
     """Each triple of ``draw`` checked and routed, and the number of worlds."""
-    columns: list[tuple[Route, npt.NDArray[np.float64]]] = []
+    columns: list[tuple[Route, Array[np.float64]]] = []
     nworld: int | None = None
     cache = {} if cache is None else cache
     for element, attribute, values in draw:

@@ -18,7 +18,6 @@ from collections.abc import Sequence
 
 import mujoco
 import numpy as np
-import numpy.typing as npt
 
 from typed_mjcf import _tree
 from typed_mjcf._bridge import compile_model
@@ -34,12 +33,13 @@ from typed_mjcf._parametric import (
 )
 from typed_mjcf._tree import Element, ModelBase
 from typed_mjcf.physics import Physics
+from typed_mjcf.types import Array
 
 __all__ = ["Draw", "parametric_models", "parametric_physics", "plan"]
 
 
 def plan(draw: Draw, model: mujoco.MjModel | Physics | None = None,
-         ) -> tuple[ModelBase, mujoco.MjModel, list[tuple[Route, npt.NDArray[np.float64]]],
+         ) -> tuple[ModelBase, mujoco.MjModel, list[tuple[Route, Array[np.float64]]],
                     int]:
     """The draw checked and routed: its model, the compiled model the values go into (a
     fresh compile when ``model`` is ``None``), each triple's route and values, and the
