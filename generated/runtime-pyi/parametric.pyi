@@ -19,6 +19,7 @@ from typed_mjcf._parametric import (
     Draw,
     Route,
     changed_rows,
+    changed_stats,
     finish,
     routes_for,
     world_models,

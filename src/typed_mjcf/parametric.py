@@ -26,6 +26,7 @@ from typed_mjcf._parametric import (
     Draw,
     Route,
     changed_rows,
+    changed_stats,
     finish,
     routes_for,
     world_models,
@@ -55,8 +56,24 @@ def plan(draw: Draw, model: mujoco.MjModel | Physics | None = None,
                 f"the compiled model is not the draw's model as it is now (arrays that "
                 f"differ: {', '.join(sorted(stale)[:5])}); compile it again (Physics."
                 f"reload_from_mjcf_model) before writing values into it")
-    columns, nworld = routes_for(root, fresh, triples)
+    columns, nworld = routes_for(root, fresh, triples, _route_cache(root, fresh))
     return root, fresh, columns, nworld
+
+
+# the routes learnt for the last model, while it compiles to the same arrays: a new draw for
+# the same model (an episode of training) costs one compile, not one per attribute
+_ROUTES: list[tuple[ModelBase, mujoco.MjModel, dict[tuple[int, str, int], Route]]] = []
+
+
+def _route_cache(root: ModelBase, fresh: mujoco.MjModel) -> dict[tuple[int, str, int], Route]:
+    if _ROUTES:
+        cached_root, cached_model, routes = _ROUTES[0]
+        if cached_root is root and not changed_rows(cached_model, fresh) and not (
+                changed_stats(cached_model, fresh)):
+            return routes
+    learnt: dict[tuple[int, str, int], Route] = {}
+    _ROUTES[:] = [(root, fresh, learnt)]
+    return learnt
 
 
 def parametric_models(draw: Draw, model: mujoco.MjModel | Physics | None = None,

@@ -10,6 +10,8 @@ import numpy.typing as npt
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf import _parametric, parametric
+from typed_mjcf._bridge import compile_model
 from typed_mjcf._parametric import RECOMPUTED_STATS, changed_rows
 from typed_mjcf.errors import InvalidValueError, NotParametricError
 from typed_mjcf.parametric import parametric_models, parametric_physics
@@ -145,3 +147,25 @@ def test_a_stale_physics_is_refused() -> None:
     parts.sphere.friction = (2, 0.005, 0.0001)
     with pytest.raises(InvalidValueError, match="not the draw's model as it is now"):
         parametric_physics(physics, _draw(parts))
+
+
+def test_a_new_draw_for_the_same_model_compiles_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The routes are learnt once per model (one probe compile per attribute), then reused
+    while the model compiles to the same arrays; a change to the model learns them again."""
+    _, parts = _scene()
+    compiles: list[int] = []
+    real = compile_model
+
+    def counted(root: mjcf.RootElement) -> object:
+        compiles.append(1)
+        return real(root)
+
+    monkeypatch.setattr(parametric, "compile_model", counted)
+    monkeypatch.setattr(_parametric, "compile_model", counted)
+    parametric_models(_draw(parts, seed=1))
+    assert len(compiles) == 1 + 5  # the model, then each attribute of the draw probed
+    parametric_models(_draw(parts, seed=2))
+    assert len(compiles) == 1 + 5 + 1
+    parts.hinge.damping = 0.5  # the model changed: the routes are learnt again
+    parametric_models(_draw(parts, seed=3))
+    assert len(compiles) == 1 + 5 + 1 + 1 + 5
