@@ -10,7 +10,7 @@ import numpy.typing as npt
 import pytest
 
 import typed_mjcf as mjcf
-from typed_mjcf.errors import BindingError
+from typed_mjcf.errors import BindingError, InvalidValueError
 from typed_mjcf.warp import UnbatchedWarning, Worlds, put_worlds
 
 N = 4
@@ -130,3 +130,29 @@ def test_writing_through_bind_sets_each_world(stepped: tuple[
     np.testing.assert_allclose(worlds.bind(scene.sphere).friction, new, rtol=1e-6)
     with pytest.raises(BindingError, match="not batched"):
         binding.rgba = np.ones((N, 4))
+
+
+def test_a_new_draw_is_written_into_the_same_worlds(stepped: tuple[
+        Scene, list[tuple[mjcf.Element, str, npt.NDArray[np.float64]]], Worlds,
+        list[mujoco.MjData]]) -> None:
+    """An episode's new values, without putting the model again: the batched fields equal
+    a fresh put_worlds of the same draw's; a draw varying a field these worlds share is
+    refused."""
+    scene, draw, worlds, _ = stepped
+    for element, attribute, _ in draw:  # the fixture left the last world's values
+        setattr(element, attribute, None if attribute == "friction" else {
+            "mass": 1.0, "size": (0.1,) if element is scene.sphere else (0.1, 0.1, 0.1)}[
+                attribute])
+    rng = np.random.default_rng(7)
+    new = [(element, attribute, rng.permutation(values)) for element, attribute, values in draw]
+    with pytest.warns(UnbatchedWarning):
+        worlds.write(new)
+    with pytest.warns(UnbatchedWarning):
+        fresh = put_worlds(scene.model, new, device="cpu")
+    assert fresh.batched == worlds.batched
+    for name in worlds.batched:
+        np.testing.assert_array_equal(getattr(worlds.warp_model, name).numpy(),
+                                      getattr(fresh.warp_model, name).numpy(), err_msg=name)
+    np.testing.assert_allclose(worlds.bind(scene.sphere).friction, new[0][2], rtol=1e-6)
+    with pytest.raises(InvalidValueError, match=r"MjModel\.geom_rgba"):
+        worlds.write([(scene.sphere, "rgba", np.full((N, 4), 0.5))])

@@ -68,6 +68,11 @@ class Worlds(Bind):
     def step(self, nstep: int = 1) -> None:
         """Step every world ``nstep`` times."""
         ...
+    def write(self, draw: Draw) -> None:
+        """Write a new draw's values into these worlds (an episode's randomisation), without
+        putting the model again: every field the new values change must be one these worlds
+        batch (:attr:`batched`; else put_worlds again with such a draw)."""
+        ...
     def arrays(self, struct: str, field: str) -> tuple[_WarpArray, tuple[int, ...]]:
         """The Warp array of ``struct.field`` and its CPU array's shape."""
         ...

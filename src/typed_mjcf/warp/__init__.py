@@ -136,6 +136,26 @@ class Worlds(Bind):
         cls = _warp_class(binding_tables().kinds[kind].binding)
         return new_binding(cls, cast("Physics", self), kind, ids, single, label)
 
+    def write(self, draw: Draw) -> None:
+        """Write a new draw's values into these worlds (an episode's randomisation), without
+        putting the model again: every field the new values change must be one these worlds
+        batch (:attr:`batched`; else put_worlds again with such a draw)."""
+        _, mjw = warp_modules()
+        _, _, columns, count = plan(draw, self._physics)
+        if count != self.nworld:
+            raise InvalidValueError(f"the draw has values for {count} worlds; these are "
+                                    f"{self.nworld}")
+        base = self._physics.model
+        models = world_models(base, columns, count)
+        changed = _differing(base, models, _batchable(mjw))
+        unbatched = sorted(set(changed) - set(self.batched))
+        if unbatched:
+            raise InvalidValueError(f"the draw changes MjModel.{', '.join(unbatched)}, which "
+                                    f"these worlds hold once for all: put_worlds with a draw "
+                                    f"that varies them")
+        for name in self.batched:
+            _fill(self.warp_model, name, models if models else [base] * count, base)
+
     def arrays(self, struct: str, field: str) -> tuple[_WarpArray, tuple[int, ...]]:
         """The Warp array of ``struct.field`` and its CPU array's shape."""
         holder = self.warp_model if struct == "MjModel" else self.warp_data
@@ -225,7 +245,7 @@ def put_worlds(model: ModelRoot | Physics, draw: Draw = (), *, nworld: int | Non
     with wp.ScopedDevice(device):
         warp_model = mjw.put_model(base, batch_sizes={name: nworld for name in batched})
         for name in batched:
-            _fill(warp_model, name, models, base)
+            _fill(warp_model, name, models, base, fresh=True)
         warp_data = mjw.put_data(base, mujoco.MjData(base), nworld=nworld)
     return Worlds(physics, warp_model, warp_data, nworld, batched, device)
 
@@ -268,12 +288,13 @@ def _differing(base: mujoco.MjModel, models: Sequence[mujoco.MjModel],
 
 
 def _fill(warp_model: object, name: str, models: Sequence[mujoco.MjModel],
-          base: mujoco.MjModel) -> None:
-    """Write each world's ``name`` into the batched Warp array (checking first that Warp
-    holds MuJoCo's numbers as they are)."""
+          base: mujoco.MjModel, fresh: bool = False) -> None:
+    """Write each world's ``name`` into the batched Warp array (``fresh``: as put_model
+    made it, every world ``base``'s: checking first that Warp holds MuJoCo's numbers as
+    they are)."""
     array = cast(_WarpArray, getattr(warp_model, name))
     host = array.numpy()
-    if not np.array_equal(host[0].reshape(-1), np.asarray(getattr(base, name)).reshape(-1)
+    if fresh and not np.array_equal(host[0].reshape(-1), np.asarray(getattr(base, name)).reshape(-1)
                           .astype(host.dtype)):
         raise InvalidValueError(f"MuJoCo Warp holds MjModel.{name} otherwise than MuJoCo "
                                 f"does: its per-world values cannot be written")
