@@ -46,6 +46,7 @@ from typed_mjcf.errors import (
     ParseError,
     PhysicsError,
     RenderError,
+    UnbatchedWarning,
     UnknownAttributeError,
     ValidationError,
 )
@@ -95,6 +96,7 @@ __all__ = [
     "PhysicsError",
     "RenderError",
     "RenderLimits",
+    "UnbatchedWarning",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",

@@ -49,6 +49,7 @@ from typed_mjcf.errors import (
     ParseError,
     PhysicsError,
     RenderError,
+    UnbatchedWarning,
     UnknownAttributeError,
     ValidationError,
 )
@@ -102,6 +103,7 @@ __all__ = [
     "PhysicsError",
     "RenderError",
     "RenderLimits",
+    "UnbatchedWarning",
     "UnknownAttributeError",
     "ValidationError",
     "commit_defaults",

@@ -28,6 +28,7 @@ from typed_mjcf._errors import (
     ParseError,
     PhysicsError,
     RenderError,
+    UnbatchedWarning,
     UnknownAttributeError,
     did_you_mean,
     shown_as_public,
@@ -53,6 +54,7 @@ __all__ = [
     "ParseError",
     "PhysicsError",
     "RenderError",
+    "UnbatchedWarning",
     "UnknownAttributeError",
     "ValidationError",
     "did_you_mean",
@@ -63,5 +65,5 @@ shown_as_public(__name__, BindingError, ChildError, CompileError, DuplicateIdent
                 ExportError, FileAccessError, FileReadError, Finding, IgnoredAttributeWarning,
                 IllegalChildError, InvalidReferenceError, InvalidTypeError, InvalidValueError,
                 MjcfError, NotParametricError, ParseError, PhysicsError, RenderError,
-                UnknownAttributeError,
+                UnbatchedWarning, UnknownAttributeError,
                 ValidationError)

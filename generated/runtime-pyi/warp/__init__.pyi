@@ -21,6 +21,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING, Protocol, cast
 import mujoco
+from typed_mjcf._errors import BindingError, InvalidValueError, UnbatchedWarning
 from typed_mjcf._generated.bindings import Bind
 from typed_mjcf._parametric import Draw, world_models
 from typed_mjcf._warp_backend import Refusal, WarpMissingError, warp_modules, warp_refusals
@@ -29,9 +30,6 @@ from typed_mjcf.types import MuJoCoArray
 from typed_mjcf._base import ModelRoot
 __all__ = ["Refusal", "UnbatchedWarning", "WarpMissingError", "Worlds", "put_worlds",
            "warp_modules", "warp_refusals"]
-
-class UnbatchedWarning(UserWarning):
-    """The worlds differ in a field MuJoCo Warp holds once for all worlds."""
 
 class _WarpArray(Protocol):
     shape: tuple[int, ...]

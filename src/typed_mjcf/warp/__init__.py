@@ -30,7 +30,7 @@ import numpy as np
 import numpy.typing as npt
 
 from typed_mjcf._binding import Binding, binding_parts, binding_tables, new_binding
-from typed_mjcf._errors import BindingError, InvalidValueError
+from typed_mjcf._errors import BindingError, InvalidValueError, UnbatchedWarning
 from typed_mjcf._generated.bindings import Bind
 from typed_mjcf._ids import kind_of
 from typed_mjcf._parametric import Draw, world_models
@@ -46,10 +46,6 @@ if TYPE_CHECKING:
 
 __all__ = ["Refusal", "UnbatchedWarning", "WarpMissingError", "Worlds", "put_worlds",
            "warp_modules", "warp_refusals"]
-
-class UnbatchedWarning(UserWarning):
-    """The worlds differ in a field MuJoCo Warp holds once for all worlds."""
-
 
 class _WarpArray(Protocol):
     shape: tuple[int, ...]
