@@ -124,6 +124,16 @@ def ray(session: nox.Session) -> None:
 
 
 @nox.session(python=PYTHON)
+def warp(session: nox.Session) -> None:
+    """The MuJoCo Warp tests (the ``warp`` extra; tests/warp, which ``nox -s tests`` does not
+    collect): batched worlds on Warp's CPU device against MuJoCo, and what Warp refuses. The
+    first run builds Warp's kernels (minutes of CPU; cached in ~/.cache/warp after)."""
+    session.install("-e", ".[dev,warp]")
+    session.run("pytest", "-n", "0", "-p", "no:cacheprovider", "tests/warp", *session.posargs,
+                env={"WARP_TEST_SESSION": "1"})
+
+
+@nox.session(python=PYTHON)
 def demo(session: nox.Session) -> None:
     """Build a small robot with the typed API, compile it, simulate one second."""
     session.install("-e", ".")

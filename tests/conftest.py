@@ -59,6 +59,8 @@ SLOW = {
                                       "older release",
     "bench/test_bench_smoke.py": "the benchmark suite, tiny sizes",
     "variation/test_ray.py": "starts a local Ray cluster (tens of seconds; nox -s ray)",
+    "warp/test_worlds.py": "MuJoCo Warp's kernels (built, then stepped on the CPU device)",
+    "warp/test_refusals.py": "MuJoCo Warp's put_model, once per element taken out",
     "safety/test_fuzz.py": "thousands of mutated models",
     "safety/test_file_races.py::test_a_writer_swapping_links_in_a_loop_reads_nothing_outside":
         "reads for 4 seconds while a thread swaps links",

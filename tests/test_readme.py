@@ -17,6 +17,7 @@ The examples' behaviour when run is tested in ``test_examples.py``.
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import io
 import re
 from collections.abc import Mapping
@@ -32,6 +33,19 @@ from tests.support.user_code import CANARY_LINES, MISTAKES, MISTAKES_FIRST_LINE,
 @pytest.mark.parametrize("block", BLOCKS, ids=[b.name for b in BLOCKS])
 def test_documented_example_runs(block: Block, tmp_path: Path,
                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    if needs_warp(block) and importlib.util.find_spec("mujoco_warp") is None:
+        pytest.skip("needs MuJoCo Warp (the warp extra): nox -s warp runs it "
+                    "(tests/warp/test_docs.py)")
+    run_block(block, tmp_path, monkeypatch)
+
+
+def needs_warp(block: Block) -> bool:
+    """Whether the block uses MuJoCo Warp (the ``warp`` extra)."""
+    return "typed_mjcf.warp" in block.code
+
+
+def run_block(block: Block, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Run the block; each of its ``# `` lines must be in what it prints."""
     monkeypatch.chdir(tmp_path)  # what an example writes (an image) lands there
     expected = [line[2:] for line in block.code.splitlines() if line.startswith("# ")]
     out = io.StringIO()

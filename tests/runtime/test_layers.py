@@ -149,9 +149,9 @@ FLOORS: dict[str, int] = {
     "_sim": 4,
     # the API: the element facade the generated classes subclass, and the public modules
     "_base": 5, "_generated.elements": 5, "_generated.bindings": 5, "errors": 5, "io": 5,
-    "physics": 5, "tooling": 5,  # tooling: the internal API of tools (the command line)
+    "physics": 5, "parametric": 5, "tooling": 5,  # tooling: the internal API of tools (the command line)
     "_dmcompat": 6,  # the compat room: dm_control.mjcf's modules over the API
-    "variation": 6,  # many worlds from one model: features over the API
+    "variation": 6, "warp": 6,  # many worlds from one model: features over the API
     "__init__": 7,  # the package: everything users import
     "cli": 8, "__main__": 8,  # the command line: a tool over the package
 }

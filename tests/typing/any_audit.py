@@ -71,7 +71,7 @@ from mypy.types import (
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("typed_mjcf",)
 PUBLIC_MODULES = ("typed_mjcf", "typed_mjcf.types", "typed_mjcf.errors", "typed_mjcf.io",
-                  "typed_mjcf.assets")
+                  "typed_mjcf.assets", "typed_mjcf.parametric", "typed_mjcf.warp")
 # Where Any is by design; none so far (the generic ``add(tag: str, **kwargs: object)``
 # fallback takes ``object``, not ``Any``).
 ALLOWED: frozenset[str] = frozenset()

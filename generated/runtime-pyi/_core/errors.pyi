@@ -85,3 +85,11 @@ def did_you_mean(word: str, candidates: Iterable[str]) -> str:
 def shown_as_public(module: str, *classes: type) -> None:
     """Name ``classes`` after ``module`` (their ``__module__``), where users import them."""
     ...
+
+class NotParametricError(MjcfError, ValueError):
+    """An attribute that cannot be written into a compiled model per world (the compiler
+    derives from it what writing it cannot): compile one model per world instead."""
+
+class UnbatchedWarning(UserWarning):
+    """Batched worlds (MuJoCo Warp) differ in a field the back end holds once for all
+    worlds: every world keeps the compiled model's value."""

@@ -433,6 +433,19 @@ def assign(element: Element, attribute: AttributeSpec, value: object) -> None:
     """Set ``attribute`` from a Python value, as assignment does."""
     ...
 
+def convert(element: Element, attribute: AttributeSpec, value: object) -> object:
+    """``value`` as assigning it to ``attribute`` would store it (checked; nothing stored)."""
+    ...
+
+def attribute_of(element: Element, key: str) -> AttributeSpec:
+    """The attribute ``key`` (Python or XML name) of ``element``; the element's error if
+    it has none."""
+    ...
+
+def snapshot(element: Element) -> Callable[[], None]:
+    """What puts ``element``'s values and name back as they are now."""
+    ...
+
 def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True,
                  link: bool = True
                  ) -> list[tuple[str, AttributeSpec | None, str, Exception | None]] | None:

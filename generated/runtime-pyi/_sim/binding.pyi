@@ -10,7 +10,7 @@ writes its changes back (several elements). Writing an input of the simulation (
 (``xpos``, ``sensordata``) runs ``mj_forward`` first, as dm_control's bindings do.
 """
 from __future__ import annotations
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from types import EllipsisType
 from typing import TYPE_CHECKING, Final, Literal, Protocol, Self, TypeAlias, cast
@@ -154,4 +154,10 @@ class EmptyBinding(Binding):
 
 def column_key(struct: str, field_name: str, columns: object) -> object:
     """A column index with names (``"z"``, ``["x", "z"]``) made numeric for ``field``."""
+    ...
+
+def binding_parts(binding: Binding, name: str) -> tuple[Bound, str, str,
+                                                        npt.NDArray[np.intp] | int, str]:
+    """For a back end of its own (MuJoCo Warp's batched worlds): ``binding``'s physics, the
+    struct and field ``name`` binds, its rows there, and the binding's label."""
     ...

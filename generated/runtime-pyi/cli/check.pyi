@@ -10,9 +10,13 @@ from typed_mjcf.tooling import (
     DEFAULT_COMPILE_LIMITS,
     Element,
     Problem,
+    Refusal,
+    WarpMissingError,
     check_compile,
     iter_written,
     vfs_text,
+    warp_modules,
+    warp_refusals,
 )
 NAME = "check"
 HELP = "validate models against MuJoCo's grammar (and compile them with --compile)"
@@ -30,7 +34,8 @@ with "(warning)" after the rule for warnings (legal, but probably not meant), th
 line. An attribute MuJoCo's reader ignores (on <frame> and <replicate>, which accept any) is
 an ignored-attribute warning. --compile also compiles each model that has no errors with
 MuJoCo, first refusing what would make MuJoCo allocate past a limit (--limit NAME=VALUE
-raises one, e.g. --limit max_texture_pixels=200000000).
+raises one, e.g. --limit max_texture_pixels=200000000). --backend warp also lists, element
+by element, what the installed MuJoCo Warp refuses (rule "warp"), learnt from Warp itself.
 
 exit status: 0 no errors (warnings allowed, unless --strict), 1 errors found, 2 a file
 cannot be read as MJCF at all (not XML, not a model, a missing include: its one-line error
@@ -56,10 +61,11 @@ def run(args: argparse.Namespace) -> int: ...
 def _count(n: int, noun: str) -> str: ...
 
 def check_file(path: str, compile_model: bool = False, files: FileAccess | None = None,
-               limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> list[Report]:
+               limits: CompileLimits = DEFAULT_COMPILE_LIMITS, backend: str = "mujoco",
+               ) -> list[Report]:
     """The findings for one model file (reading files where ``files`` allows: by default in
-    its folder; compiling within ``limits``); raises :class:`BadInput` if it cannot be
-    read."""
+    its folder; compiling within ``limits``; ``backend="warp"``: with what MuJoCo Warp
+    refuses); raises :class:`BadInput` if it cannot be read."""
     ...
 
 def compile_problem(model: RootElement, file: str,

@@ -129,3 +129,13 @@ def shown_as_public(module: str, *classes: type) -> None:
     """Name ``classes`` after ``module`` (their ``__module__``), where users import them."""
     for cls in classes:
         cls.__module__ = module
+
+
+class NotParametricError(MjcfError, ValueError):
+    """An attribute that cannot be written into a compiled model per world (the compiler
+    derives from it what writing it cannot): compile one model per world instead."""
+
+
+class UnbatchedWarning(UserWarning):
+    """Batched worlds (MuJoCo Warp) differ in a field the back end holds once for all
+    worlds: every world keeps the compiled model's value."""

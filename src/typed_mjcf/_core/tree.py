@@ -1715,6 +1715,22 @@ def assign(element: Element, attribute: AttributeSpec, value: object) -> None:
     element._assign(attribute, value)
 
 
+def convert(element: Element, attribute: AttributeSpec, value: object) -> object:
+    """``value`` as assigning it to ``attribute`` would store it (checked; nothing stored)."""
+    return element._convert(attribute, value)
+
+
+def attribute_of(element: Element, key: str) -> AttributeSpec:
+    """The attribute ``key`` (Python or XML name) of ``element``; the element's error if
+    it has none."""
+    return element._attribute(key)
+
+
+def snapshot(element: Element) -> Callable[[], None]:
+    """What puts ``element``'s values and name back as they are now."""
+    return _Snapshot(element).restore
+
+
 def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool = True,
                  link: bool = True
                  ) -> list[tuple[str, AttributeSpec | None, str, Exception | None]] | None:

@@ -11,7 +11,7 @@ writes its changes back (several elements). Writing an input of the simulation (
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from types import EllipsisType
 from typing import TYPE_CHECKING, Final, Literal, Protocol, Self, TypeAlias, cast
@@ -471,3 +471,17 @@ def column_key(struct: str, field_name: str, columns: object) -> object:
     if isinstance(columns, list | tuple | np.ndarray):
         return [one(item) for item in cast("Sequence[object]", columns)]
     return one(columns)
+
+
+
+def binding_parts(binding: Binding, name: str) -> tuple[Bound, str, str,
+                                                        npt.NDArray[np.intp] | int, str]:
+    """For a back end of its own (MuJoCo Warp's batched worlds): ``binding``'s physics, the
+    struct and field ``name`` binds, its rows there, and the binding's label."""
+    # the slots are read by name, as new_binding writes them
+    where = cast("Callable[[str], tuple[str, str]]", object.__getattribute__(binding, "_where"))
+    index = cast("Callable[[str, str, str], npt.NDArray[np.intp] | int]",
+                 object.__getattribute__(binding, "_index"))
+    struct, field_name = where(name)
+    return (cast(Bound, object.__getattribute__(binding, "_physics")), struct, field_name,
+            index(name, struct, field_name), cast(str, object.__getattribute__(binding, "_label")))

@@ -33,9 +33,13 @@ from typed_mjcf.tooling import (
     DEFAULT_COMPILE_LIMITS,
     Element,
     Problem,
+    Refusal,
+    WarpMissingError,
     check_compile,
     iter_written,
     vfs_text,
+    warp_modules,
+    warp_refusals,
 )
 
 NAME = "check"
@@ -54,7 +58,8 @@ with "(warning)" after the rule for warnings (legal, but probably not meant), th
 line. An attribute MuJoCo's reader ignores (on <frame> and <replicate>, which accept any) is
 an ignored-attribute warning. --compile also compiles each model that has no errors with
 MuJoCo, first refusing what would make MuJoCo allocate past a limit (--limit NAME=VALUE
-raises one, e.g. --limit max_texture_pixels=200000000).
+raises one, e.g. --limit max_texture_pixels=200000000). --backend warp also lists, element
+by element, what the installed MuJoCo Warp refuses (rule "warp"), learnt from Warp itself.
 
 exit status: 0 no errors (warnings allowed, unless --strict), 1 errors found, 2 a file
 cannot be read as MJCF at all (not XML, not a model, a missing include: its one-line error
@@ -74,6 +79,10 @@ def arguments(parser: argparse.ArgumentParser) -> None:
                         help="text (default): one line per finding; json: one JSON document "
                              "with every finding and the summary")
     parser.add_argument("--strict", action="store_true", help="exit 1 on warnings too")
+    parser.add_argument("--backend", choices=("mujoco", "warp"), default="mujoco",
+                        help="warp: also list what the installed MuJoCo Warp refuses in each "
+                             "model without errors (asking Warp itself; needs the warp "
+                             "extra)")
     add_limit_argument(parser, render=False)  # for --compile
     parser.add_argument("--allow-files", action="append", default=[], metavar="FOLDER",
                         help="a folder outside the model's own whose files it may read "
@@ -111,11 +120,17 @@ def run(args: argparse.Namespace) -> int:
     except MjcfError as problem:  # e.g. --allow-files "": bad input, not a crash
         error(NAME, f"--allow-files: {one_line(str(problem))}")
         return BAD_INPUT
+    if args.backend == "warp":
+        try:
+            warp_modules()
+        except WarpMissingError as problem:
+            error(NAME, str(problem))
+            return BAD_INPUT
     progress = Progress(len(files), args.progress)
     for file in progress.each(files, "checking"):
         try:
             found = check_file(file, compile_model=args.compile, files=access,
-                               limits=limits(args.limit).compile)
+                               limits=limits(args.limit).compile, backend=args.backend)
         except BadInput as problem:
             progress.clear()
             unreadable.append(str(problem))
@@ -158,10 +173,11 @@ def _count(n: int, noun: str) -> str:
 
 
 def check_file(path: str, compile_model: bool = False, files: FileAccess | None = None,
-               limits: CompileLimits = DEFAULT_COMPILE_LIMITS) -> list[Report]:
+               limits: CompileLimits = DEFAULT_COMPILE_LIMITS, backend: str = "mujoco",
+               ) -> list[Report]:
     """The findings for one model file (reading files where ``files`` allows: by default in
-    its folder; compiling within ``limits``); raises :class:`BadInput` if it cannot be
-    read."""
+    its folder; compiling within ``limits``; ``backend="warp"``: with what MuJoCo Warp
+    refuses); raises :class:`BadInput` if it cannot be read."""
     ignored: list[IgnoredAttributeWarning] = []
     problems: list[Problem] = []
     model = load(path, ignored, problems, files)
@@ -174,7 +190,22 @@ def check_file(path: str, compile_model: bool = False, files: FileAccess | None 
         problem = compile_problem(model, path, limits)
         if problem is not None:
             reports.append(problem)
+    if backend == "warp" and not any(r.severity == "error" for r in reports):
+        try:
+            refusals = warp_refusals(model)
+        except MjcfError as problem:  # MuJoCo's compile refused it: Warp is not asked
+            reports.append(_report(model, "compile", "error", model.path,
+                                   str(problem), path))
+            refusals = []
+        reports += [_report(_element_at_path(model, refusal.path) or model, "warp", "error",
+                            refusal.path, _warp_message(refusal), path)
+                    for refusal in refusals]
     return reports
+
+
+def _warp_message(refusal: Refusal) -> str:
+    where = f"{refusal.attribute}: " if refusal.attribute else ""
+    return f"{where}MuJoCo Warp refuses it ({refusal.message})"
 
 
 def _problem_report(problem: Problem, file: str) -> Report:
