@@ -162,6 +162,7 @@ def bench(session: nox.Session) -> None:
     nox -s bench -- --quick               # tiny sizes, a few seconds
     nox -s bench -- --json bench.json     # also save the raw numbers
     nox -s bench -- --only W1,W3 --libs typed,lxml
+    nox -s bench -- --build compiled=PATH/bin/python   # a compiled build's rows beside these
     """
     session.install("-e", ".", f"mujoco=={MUJOCO_VERSION}", "dm_control>=1.0.50")
     session.run("python", "-m", "tests.bench", *session.posargs)
