@@ -698,6 +698,8 @@ class Physics(Bind):
             if first is None:
                 first = kind
             elif kind != first:
+                for other in elements:  # an element that cannot be bound is named first
+                    self._kind(other)
                 raise BindingError(f"Cannot bind to a collection containing multiple element "
                                    f"types ({first!r} != {kind!r}).")
         assert first is not None  # elements is not empty
