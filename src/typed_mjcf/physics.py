@@ -224,7 +224,7 @@ class Physics(Bind):
     legacy_step: bool = True  # step as dm_control does: positions stay in step with qpos
 
     _data: Data
-    _named: Named
+    _named: Named | None  # made on first use of .named (a tenth of a model's load)
     _dirty: bool
     _source: ModelBase | None
     _unnamed: Mapping[int, tuple[Element, tuple[int, ...]]]
@@ -340,9 +340,7 @@ class Physics(Bind):
             self.after_reset()
         except PhysicsError as error:
             warnings.warn(str(error), RuntimeWarning, stacklevel=3)
-        axes = make_axes(self.model)
-        model_indexers, data_indexers = struct_indexers(self.model, self._data, axes)
-        self._named = Named(model=NamedModel(model_indexers), data=NamedData(data_indexers))
+        self._named = None
 
     # ------------------------------------------------------------------ model and data
 
@@ -359,6 +357,11 @@ class Physics(Bind):
     @property
     def named(self) -> Named:
         """MuJoCo's arrays indexed by names: ``physics.named.data.qpos["arm/elbow"]``."""
+        if self._named is None:
+            axes = make_axes(self.model)
+            model_indexers, data_indexers = struct_indexers(self.model, self._data, axes)
+            self._named = Named(model=NamedModel(model_indexers),
+                                data=NamedData(data_indexers))
         return self._named
 
     # ------------------------------------------------------------------ simulating
