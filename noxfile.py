@@ -222,6 +222,7 @@ def bench(session: nox.Session) -> None:
     nox -s bench -- --quick               # tiny sizes, a few seconds
     nox -s bench -- --json bench.json     # also save the raw numbers
     nox -s bench -- --only W1,W3 --libs typed,lxml
+    nox -s bench -- --build compiled=PATH/bin/python   # a compiled build's rows beside these
     """
     # Ray for the variation workload's structural variants on a local cluster; bytecode
     # written, so that Ray's processes start in time (see the ray session)

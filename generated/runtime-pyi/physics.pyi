@@ -95,7 +95,7 @@ class Physics(Bind):
     """A MuJoCo simulation of a model, with its elements bound to MuJoCo's arrays."""
     legacy_step: bool = True
     _data: Data
-    _named: Named
+    _named: Named | None
     _dirty: bool
     _source: ModelBase | None
     _unnamed: Mapping[int, tuple[Element, tuple[int, ...]]]

@@ -63,6 +63,7 @@ from typed_mjcf._sim.compile import compile_from_memory
 from typed_mjcf._sim.gl import ensure_gl_backend, gl_error
 from typed_mjcf._sim.ids import compile_for_physics, ids_for_text, kind_of
 from typed_mjcf._sim.model_state import model_state
+from typed_mjcf._sim.name_table import name_ids
 from typed_mjcf._sim.named import make_axes, struct_indexers
 from typed_mjcf.types import Array, ArrayValues
 
@@ -222,7 +223,7 @@ class Physics(Bind):
     legacy_step: bool = True  # step as dm_control does: positions stay in step with qpos
 
     _data: Data
-    _named: Named
+    _named: Named | None  # made on first use of .named (a tenth of a model's load)
     _dirty: bool
     _source: ModelBase | None
     _unnamed: Mapping[int, tuple[Element, tuple[int, ...]]]
@@ -338,9 +339,7 @@ class Physics(Bind):
             self.after_reset()
         except PhysicsError as error:
             warnings.warn(str(error), RuntimeWarning, stacklevel=3)
-        axes = make_axes(self.model)
-        model_indexers, data_indexers = struct_indexers(self.model, self._data, axes)
-        self._named = Named(model=NamedModel(model_indexers), data=NamedData(data_indexers))
+        self._named = None
 
     # ------------------------------------------------------------------ model and data
 
@@ -357,6 +356,11 @@ class Physics(Bind):
     @property
     def named(self) -> Named:
         """MuJoCo's arrays indexed by names: ``physics.named.data.qpos["arm/elbow"]``."""
+        if self._named is None:
+            axes = make_axes(self.model)
+            model_indexers, data_indexers = struct_indexers(self.model, self._data, axes)
+            self._named = Named(model=NamedModel(model_indexers),
+                                data=NamedData(data_indexers))
         return self._named
 
     # ------------------------------------------------------------------ simulating
@@ -672,12 +676,7 @@ class Physics(Bind):
         single = isinstance(mjcf_elements, Element)
         if not elements:
             return self._bindings[()]
-        kinds = [self._kind(element) for element in elements]
-        if len(set(kinds)) > 1:
-            raise BindingError(f"Cannot bind to a collection containing multiple element "
-                               f"types ({kinds[0]!r} != "
-                               f"{next(k for k in kinds if k != kinds[0])!r}).")
-        kind = kinds[0]
+        kind = self._kind_of_all(elements)
         ids = self._ids_of(elements, kind)
         label = elements[0].path if single else f"{len(elements)} <{kind}> elements"
         binding = new_binding(binding_tables().kinds[kind].binding, self, kind, ids,
@@ -685,6 +684,28 @@ class Physics(Bind):
         if key is not None:
             self._bindings[key] = binding
         return binding
+
+    def _kind_of_all(self, elements: list[Element]) -> str:
+        """The one kind of ``elements`` (found once per row: the kind of an element whose
+        row has a namespace is that namespace's)."""
+        first: str | None = None
+        known: dict[int, str] = {}  # id(spec) -> kind
+        for element in elements:
+            spec = element.spec if isinstance(cast(object, element), Element) else None
+            kind = None if spec is None else known.get(id(spec))
+            if kind is None:
+                kind = self._kind(element)
+                if spec is not None and spec.namespace is not None:
+                    known[id(spec)] = kind
+            if first is None:
+                first = kind
+            elif kind != first:
+                for other in elements:  # an element that cannot be bound is named first
+                    self._kind(other)
+                raise BindingError(f"Cannot bind to a collection containing multiple element "
+                                   f"types ({first!r} != {kind!r}).")
+        assert first is not None  # elements is not empty
+        return first
 
     def _kind(self, element: object) -> str:
         if not isinstance(element, Element):
@@ -700,11 +721,20 @@ class Physics(Bind):
         """The compiled ids of ``elements`` (of ``kind``), in order (a replicated element:
         one per copy)."""
         model, unnamed = self.model, self._unnamed
-        objtype = getattr(mujoco.mjtObj, binding_tables().kinds[kind].objtype)
+        compiled = binding_tables().kinds[kind]
+        objtype = getattr(mujoco.mjtObj, compiled.objtype)
         name2id = mujoco.mj_name2id
+        # a batch of more than an eighth of the kind: every name read at once is cheaper
+        table = (name_ids(model, compiled.size)
+                 if len(elements) * 8 >= int(getattr(model, compiled.size)) else None)
         prefixes: dict[int, str] = {}  # each name scope's prefix, computed once
         out: list[int] = []
-        for element in elements:
+        for element, own in zip(elements, _tree.own_scoped_names(elements), strict=True):
+            if own is not None and id(element) not in unnamed:  # the common case, at once
+                found = name2id(model, objtype, own) if table is None else table.get(own, -1)
+                if found >= 0:
+                    out.append(found)
+                    continue
             if element.is_removed:
                 raise BindingError(f"{element.path}: the element was removed from its model, "
                                    f"so it cannot be bound (bind the elements of the model as "
@@ -724,7 +754,7 @@ class Physics(Bind):
                     continue
             if name is None:
                 raise BindingError(self._unbound(element, "it has no name, and "))
-            found = name2id(model, objtype, name)
+            found = name2id(model, objtype, name) if table is None else table.get(name, -1)
             if found < 0:
                 raise BindingError(self._unbound(element, f"the compiled model has no {kind} "
                                                           f"named {name!r}: "))

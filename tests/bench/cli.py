@@ -17,6 +17,7 @@ from typing import Any
 
 from tests.bench import timing
 from tests.bench.bind import bench_bind
+from tests.bench.builds import RemoteTyped, build_of
 from tests.bench.child import IMPORT_SNIPPET, importtime_breakdown
 from tests.bench.report import Results, render
 from tests.bench.timing import Budget, Case, SizeResult, predict, run_once, run_round_robin
@@ -299,14 +300,19 @@ def _child_env(bytecode: bool) -> dict[str, str]:
     return env
 
 
-def bench_imports(results: Results, plan: Plan) -> None:
+def bench_imports(results: Results, plan: Plan, builds: Sequence[RemoteTyped] = (),
+                  local: str = "") -> None:
     log("import time")
     env = _child_env(bytecode=True)
-    for module in plan.import_modules:
-        command = [sys.executable, "-c", IMPORT_SNIPPET.format(module=module)]
+    runs = [(module, sys.executable, f"{module} [{local}]" if local and module == "typed_mjcf"
+             else module) for module in plan.import_modules]
+    runs += [("typed_mjcf", b.python, b.title.replace("typed-mjcf", "typed_mjcf")) for b in builds
+             if "typed_mjcf" in plan.import_modules]
+    for module, python, label in runs:
+        command = [python, "-c", IMPORT_SNIPPET.format(module=module)]
         walls: list[float] = []
         cpus: list[float] = []
-        entry: dict[str, Any] = {"module": module, "wall": walls, "cpu": cpus}
+        entry: dict[str, Any] = {"module": label, "wall": walls, "cpu": cpus}
         try:
             subprocess.run(command, env=env, cwd=REPO, check=True, capture_output=True)  # warm-up
             for _ in range(plan.import_repeats):
@@ -322,7 +328,7 @@ def bench_imports(results: Results, plan: Plan) -> None:
         entry["median_wall"] = statistics.median(walls) if walls else None
         entry["median_cpu"] = statistics.median(cpus) if cpus else None
         if walls:
-            log(f"  {module:<20} CPU {entry['median_cpu']:.3f} s, "
+            log(f"  {label:<20} CPU {entry['median_cpu']:.3f} s, "
                 f"wall {entry['median_wall']:.3f} s")
         results.imports.append(entry)
     try:
@@ -335,7 +341,9 @@ def bench_imports(results: Results, plan: Plan) -> None:
 def bench_memory(results: Results, adapters: dict[str, Adapter], plan: Plan) -> None:
     log(f"peak memory, W1 N={plan.memory_n:,}")
     for key, adapter in adapters.items():
-        command = [sys.executable, "-m", "tests.bench.child", "memory", key, str(plan.memory_n)]
+        python = adapter.python if isinstance(adapter, RemoteTyped) else sys.executable
+        library = "typed" if isinstance(adapter, RemoteTyped) else key
+        command = [python, "-m", "tests.bench.child", "memory", library, str(plan.memory_n)]
         try:
             out = subprocess.run(command, env=_child_env(bytecode=False), cwd=REPO, check=True,
                                  capture_output=True, text=True, timeout=900)
@@ -370,6 +378,15 @@ def _git_state() -> str:
     return head + (" + uncommitted changes in src/ or generated/" if dirty.strip() else "")
 
 
+def _bind_rows(rows: list[dict[str, Any]], title: str) -> list[dict[str, Any]]:
+    """The bind rows of one build: its own rows named by ``title``, the floor measured in
+    the same process named as such."""
+    for row in rows:
+        row["label"] = (row["label"].replace("typed-mjcf", title) if "typed-mjcf" in row["label"]
+                        else f"{row['label']}, in the process of {title}")
+    return rows
+
+
 def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
     parser = argparse.ArgumentParser(
         prog="python -m tests.bench",
@@ -386,6 +403,10 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
                         help="seconds a case may spend at one size before it stops repeating")
     parser.add_argument("--max-run", type=float, default=None,
                         help="skip a size whose single run is predicted to take longer (s)")
+    parser.add_argument("--build", action="append", default=[], metavar="NAME=PYTHON",
+                        help="also run typed-mjcf's workloads with the typed-mjcf of another "
+                             "interpreter (e.g. compiled=.venv-mypyc/bin/python), in a child "
+                             "process, round robin with the others; repeatable")
     parser.add_argument("--clock", choices=timing.CLOCKS, default=timing.CLOCK,
                         help="what the tables report: process CPU time (default; robust on "
                              "a shared machine) or wall-clock time; the JSON has both")
@@ -396,6 +417,13 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
         if unknown:
             parser.error(f"--{name}: unknown {', '.join(unknown)}; choose from {', '.join(valid)}")
         setattr(args, name, chosen)
+    builds = []
+    for item in args.build:
+        name, _, python = item.partition("=")
+        if not name or not python:
+            parser.error(f"--build: {item!r} is not NAME=PYTHON")
+        builds.append((name, python))
+    args.build = builds
     return args
 
 
@@ -425,6 +453,24 @@ def main(argv: Sequence[str] | None = None) -> int:
     if "lxml" in args.libs and "lxml" not in adapters:
         log("lxml is needed for the floor")
         return 2
+    local_build = ""
+    if "typed" in adapters:  # every row says which build it measured
+        import typed_mjcf
+
+        local_build = build_of(typed_mjcf)
+        adapters["typed"].title = f"typed-mjcf [{local_build}]"
+    builds: list[RemoteTyped] = []
+    for name, python in args.build:
+        remote = RemoteTyped(name, python)
+        why = remote.available()
+        if why is None:
+            builds.append(remote)
+        else:
+            unavailable[remote.key] = why
+    if builds:  # the builds' rows side by side, before the peers'
+        order = [*(["typed"] if "typed" in adapters else []), *(b.key for b in builds)]
+        adapters = {**{b.key: b for b in builds}, **adapters}
+        adapters = {**{k: adapters[k] for k in order}, **adapters}
     results.meta = {
         "mode": plan.mode,
         "date": datetime.datetime.now().isoformat(timespec="seconds"),
@@ -434,6 +480,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         "cpus": os.cpu_count(),
         "load_start": _load_average(),
         "versions": {a.title: a.version() for a in adapters.values()},
+        "builds": {"typed": local_build, **{b.key: b.info.get("build", "?") for b in builds}},
         "unavailable": unavailable,
         "chain": CHAIN,
         "plan": {k: (v if not isinstance(v, Budget) else v.__dict__)
@@ -449,15 +496,21 @@ def main(argv: Sequence[str] | None = None) -> int:
         bench_w3(results, adapters, plan)
     if "bind" in args.only and "typed" in adapters:
         log("bind")
-        results.bind = bench_bind(plan.bind_joints, plan.bind_repeats)
+        results.bind = _bind_rows(bench_bind(plan.bind_joints, plan.bind_repeats),
+                                  adapters["typed"].title)
+        for remote in builds:
+            results.bind += _bind_rows(remote.bind(plan.bind_joints, plan.bind_repeats),
+                                       remote.title)
     if "variation" in args.only and "typed" in adapters:
         log("variation")
         results.variation = bench_variation(*plan.variation_worlds, ray=not args.quick)
     if "import" in args.only:
-        bench_imports(results, plan)
+        bench_imports(results, plan, builds, local_build)
     if "memory" in args.only:
         bench_memory(results, adapters, plan)
     results.meta["load_end"] = _load_average()
+    for remote in builds:
+        remote.close()
     report = render(results)
     print(report)
     if args.json:

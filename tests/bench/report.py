@@ -262,8 +262,23 @@ class Target:
         return {"target": self.text, "value": self.value, "met": self.met}
 
 
-def _w1_ratio(results: Results, api: str, naming: str, n: int) -> float | None:
-    case = next((c for c in results.w1 if c.library == "typed" and c.api == api
+def is_typed(case: Case) -> bool:
+    """A row of typed-mjcf, of whichever build (``typed``, ``typed@compiled``)."""
+    return case.library == "typed" or case.library.startswith("typed@")
+
+
+def typed_titles(results: Results) -> list[tuple[str, str]]:
+    """(library key, title) of every typed-mjcf build measured, in order."""
+    seen: dict[str, str] = {}
+    for case in [*results.w1, *results.w2, *results.w3]:
+        if is_typed(case):
+            seen.setdefault(case.library, case.title)
+    return list(seen.items())
+
+
+def _w1_ratio(results: Results, api: str, naming: str, n: int,
+              library: str = "typed") -> float | None:
+    case = next((c for c in results.w1 if c.library == library and c.api == api
                  and c.naming == naming), None)
     if case is None:
         return None
@@ -280,41 +295,42 @@ def targets(results: Results) -> list[Target]:
     found: list[Target] = []
     sizes = sorted(results.meta.get("w1_sizes", []))
     big = sizes[-2:] if len(sizes) >= 2 else sizes
-    for api, limit in (("add_<tag>()", W1_TYPED_MAX), ('add("<tag>")', W1_GENERIC_MAX)):
-        for naming in ("named", "unnamed"):
-            for n in big:
-                r = _w1_ratio(results, api, naming, n)
-                if r is None and not results.w1:
-                    continue
-                found.append(Target(f"W1 typed-mjcf {api} {naming}, N={n:,}: <= {limit}x lxml",
-                                    times(r), None if r is None else r <= limit))
+    for library, title in typed_titles(results) or [("typed", "typed-mjcf")]:
+        for api, limit in (("add_<tag>()", W1_TYPED_MAX), ('add("<tag>")', W1_GENERIC_MAX)):
+            for naming in ("named", "unnamed"):
+                for n in big:
+                    r = _w1_ratio(results, api, naming, n, library)
+                    if r is None and not results.w1:
+                        continue
+                    found.append(Target(f"W1 {title} {api} {naming}, N={n:,}: <= {limit}x lxml",
+                                        times(r), None if r is None else r <= limit))
     for case in results.w1:
-        if case.library == "typed" and len(sizes) >= 2:
+        if is_typed(case) and len(sizes) >= 2:
             g, _ = growth(case, sizes)
             found.append(Target(
-                f"W1 growth typed-mjcf {case.api} {case.naming}: "
+                f"W1 growth {case.title} {case.api} {case.naming}: "
                 f"t({sizes[-1]:,})/t({sizes[-2]:,}) <= {W1_GROWTH_MAX}",
                 "-" if g is None else f"{g:.2f}", None if g is None else g <= W1_GROWTH_MAX))
     k_sizes = sorted(results.meta.get("w3_sizes", []))
     for case in results.w3:
-        if case.library == "typed" and len(k_sizes) >= 2:
+        if is_typed(case) and len(k_sizes) >= 2:
             g, _ = growth(case, k_sizes)
             found.append(Target(
-                f"W3 growth typed-mjcf: t(K={k_sizes[-1]:,})/t(K={k_sizes[-2]:,}) "
+                f"W3 growth {case.title}: t(K={k_sizes[-1]:,})/t(K={k_sizes[-2]:,}) "
                 f"<= {W3_GROWTH_MAX} (linear: {k_sizes[-1] / k_sizes[-2]:.1f})",
                 "-" if g is None else f"{g:.2f}", None if g is None else g <= W3_GROWTH_MAX))
     for case in results.w2:
-        if case.library == "typed":
+        if is_typed(case):
             floor = floor_case(results.w2, case)
             a = next(iter(case.sizes.values()), None)
             b = None if floor is None else next(iter(floor.sizes.values()), None)
             r = ratio(None if a is None else a.median(), None if b is None else b.median())
-            found.append(Target(f"W2 typed-mjcf {case.source}: <= {W2_MAX}x lxml parse+serialise",
+            found.append(Target(f"W2 {case.title} {case.source}: <= {W2_MAX}x lxml parse+serialise",
                                 times(r), None if r is None else r <= W2_MAX))
     for entry in results.imports:
-        if entry["module"] == "typed_mjcf":
+        if entry["module"].startswith("typed_mjcf"):
             median = entry.get("median")
-            found.append(Target(f"import typed_mjcf < {IMPORT_MAX} s ({entry_clock(results)})",
+            found.append(Target(f"import {entry['module']} < {IMPORT_MAX} s ({entry_clock(results)})",
                                 "-" if median is None else f"{median:.3f} s",
                                 None if median is None else median < IMPORT_MAX))
     return found

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
 
 import pytest
@@ -46,3 +47,22 @@ def test_scaling_report_runs(capsys: pytest.CaptureFixture[str]) -> None:
     report = capsys.readouterr().out
     assert "| validate(), bodies | 100 | 800 |" in report
     assert "| parse, repeated <default> sections | 37 | 300 |" in report
+
+
+def test_another_build_runs_in_its_own_process_beside_this_one(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """--build NAME=PYTHON: that interpreter's typed-mjcf in a child process, round robin
+    with the rest, every row naming its build (here the same interpreter, named "other")."""
+    out = tmp_path / "bench.json"
+    assert main(["--quick", "--libs", "typed,lxml", "--only", "W2,bind", "--build",
+                 f"other={sys.executable}", "--json", str(out)]) == 0
+    report = capsys.readouterr().out
+    assert "| typed-mjcf [pure] " in report and "| typed-mjcf [pure: other] " in report
+    data = json.loads(out.read_text())
+    other = [c for c in data["W2"] if c["library"] == "typed@other"]
+    assert other and all(r["samples"] and r["valid"] for c in other for r in c["sizes"])
+    assert data["meta"]["builds"] == {"typed": "pure", "typed@other": "pure"}
+    assert any(r["label"].startswith("typed-mjcf [pure: other] physics.bind")
+               for r in data["bind"])
+    assert any(t["target"].startswith("W2 typed-mjcf [pure: other] humanoid_CMU.xml")
+               for t in data["targets"])

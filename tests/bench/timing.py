@@ -128,8 +128,12 @@ class CollectorClock:
             self.full_collections += 1
 
 
-def run_once(workload: Workload) -> tuple[Sample, str]:
-    """Time ``make`` then ``export``; return the sample and the text written."""
+def run_once(workload: Workload, text: bool = True) -> tuple[Sample, str]:
+    """Time ``make`` then ``export``; return the sample and the text written (``""`` from a
+    remote workload unless ``text``)."""
+    if workload.remote is not None:
+        fields, written = workload.remote(text)
+        return Sample(**fields), written
     gc.collect()
     with CollectorClock() as collector:
         c0, t0 = time.process_time(), time.perf_counter()
@@ -193,7 +197,7 @@ def run_round_robin(
             if result.samples and spent[id(case)] >= budget.per_case_size:
                 continue
             try:
-                sample, _ = run_once(workload)
+                sample, _ = run_once(workload, text=False)
             except Exception as error:  # noqa: BLE001 - a library failing is a result
                 result.error = f"{type(error).__name__}: {error}"[:300]
                 continue

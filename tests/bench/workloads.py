@@ -79,6 +79,9 @@ class Workload:
 
     make: Make
     export: Export
+    # a workload run elsewhere (another build's child process, tests/bench/builds.py):
+    # remote(text wanted) -> (the run's Sample fields, timed there; the text written)
+    remote: Callable[[bool], tuple[dict[str, float], str]] | None = None
 
 
 class Adapter:

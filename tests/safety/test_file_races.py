@@ -47,6 +47,21 @@ def swap(path: Path, target: Path) -> None:
     os.replace(link, path)
 
 
+def swap_before_opening(monkeypatch: pytest.MonkeyPatch, name: str,
+                        swap_now: Callable[[], object]) -> None:
+    """Run ``swap_now`` just before the name ``name`` is opened in a folder (``dir_fd``): a
+    reader that opens a path without resolving it first meets the swap there."""
+    real_open = os.open
+
+    def open_after_swap(path: str, flags: int, mode: int = 0o777, *,
+                        dir_fd: int | None = None) -> int:
+        if path == name and dir_fd is not None:
+            swap_now()
+        return real_open(path, flags, mode, dir_fd=dir_fd)
+
+    monkeypatch.setattr(os, "open", open_after_swap)
+
+
 def test_a_file_swapped_for_a_link_after_the_check_is_not_read(
         layout: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """The swap made exactly between resolving the path and opening it (the race, made
@@ -63,6 +78,8 @@ def test_a_file_swapped_for_a_link_after_the_check_is_not_read(
         return resolved
 
     monkeypatch.setattr(os.path, "realpath", resolve_then_swap)
+    swap_before_opening(monkeypatch, "mesh.stl",
+                        lambda: resolve_then_swap(str(model_folder / "mesh.stl")))
     with pytest.raises(mjcf.FileAccessError, match=r"mesh.stl \(really .*outside/mesh.stl\) "
                                                    r"is outside the model's folder"):
         model.get_assets()
@@ -82,6 +99,8 @@ def test_a_folder_swapped_for_a_link_after_the_check_is_not_read(
         return resolved
 
     monkeypatch.setattr(os.path, "realpath", resolve_then_swap)
+    swap_before_opening(monkeypatch, "d",
+                        lambda: resolve_then_swap(str(model_folder / "d" / "inc.xml")))
     with pytest.raises(mjcf.FileAccessError, match=r"d/inc.xml \(really .*outside/inc.xml\) "
                                                    r"is outside the model's folder"):
         mjcf.from_path(model_folder / "main.xml")

@@ -327,6 +327,12 @@ def element_name(element: Element) -> str | None:
     """The element's own name (not scoped), if it has one."""
     ...
 
+def own_scoped_names(elements: Iterable[Element]) -> list[str | None]:
+    """Each element's own name with its scope's prefix (``full_identifier``), each prefix
+    computed once: ``None`` for an element without its own name, removed, or an attachment
+    frame (asked one by one). For binding many elements at once."""
+    ...
+
 def reference_namespace(element: Element, attribute: AttributeSpec) -> str | None:
     """The one namespace a reference names now, if it is known."""
     ...

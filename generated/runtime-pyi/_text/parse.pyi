@@ -48,6 +48,7 @@ from typed_mjcf._core.tree import Element, ModelBase, name_note
 from typed_mjcf.types import XmlElement
 INCLUDE = "include"
 XmlNode: TypeAlias = XmlElement
+_LONG_STRETCH: Final = 4096
 
 @mypyc_attr(native_class=False)
 @dataclass(frozen=True, slots=True)
@@ -112,6 +113,13 @@ def source_line(node: XmlNode) -> int | None:
 
 def root_class() -> type[ModelBase]:
     """The generated class of the root row (``<mujoco>``)."""
+    ...
+
+def has_long_stretch(data: bytes, length: int = _LONG_STRETCH) -> bool:
+    """Whether a "<" in ``data`` is followed by ``length`` bytes without one. Each window
+    after a "<" is searched from its end (the last "<" in it starts the next window), so a
+    text is crossed in about ``len(data) / length`` searches: a regular expression tried
+    every "<" (a tenth of the time of reading a small model)."""
     ...
 
 def read_bounded(read: Callable[[int], bytes], limit: int, expected: int = 0) -> bytes:

@@ -1285,6 +1285,27 @@ def element_name(element: Element) -> str | None:
     return name if isinstance(name, str) else None
 
 
+def own_scoped_names(elements: Iterable[Element]) -> list[str | None]:
+    """Each element's own name with its scope's prefix (``full_identifier``), each prefix
+    computed once: ``None`` for an element without its own name, removed, or an attachment
+    frame (asked one by one). For binding many elements at once."""
+    prefixes: dict[int, str] = {}
+    out: list[str | None] = []
+    for element in elements:
+        attribute = element.spec.id_attribute
+        name = (None if attribute is None or element._root is None
+                or element._attached is not None else element._values.get(attribute.name))
+        if not isinstance(name, str):
+            out.append(None)
+            continue
+        scope = element._scope
+        prefix = prefixes.get(id(scope))
+        if prefix is None:
+            prefix = prefixes[id(scope)] = scope.prefix()
+        out.append(prefix + name)
+    return out
+
+
 # ---------------------------------------------------------------------------- links
 
 

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import inspect
 import os
-import re
 import warnings
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -77,7 +76,7 @@ _CHUNK: Final = 1 << 16  # bytes fed to the streaming parser at a time
 # their number (100,000 took minutes). A text whose every stretch without "<" is shorter than
 # this holds no start tag with more than a few hundred attributes (a "<" never appears in a
 # tag); others are read through attributes_of().
-_LONG_TAG: Final = re.compile(rb"<[^<]{4096}")
+_LONG_STRETCH: Final = 4096
 _MANY_ATTRIBUTES: Final = 64
 _SUGGESTED: Final = 100  # ignored attributes given a "did you mean" in one parse
 
@@ -181,7 +180,16 @@ class _Include:
 
     path: str
     by: str | None  # the including file (None: text given in memory)
-    line: int | None
+    at: int | None  # the line libxml2 gives the <include> (where its start tag ends)
+    text: SourceText | None = None  # the including file's text
+
+    @property
+    def line(self) -> int | None:
+        """The line the ``<include>`` start tag begins on, found when a message asks (it
+        indexes the including file's lines: work a model read without errors never needs)."""
+        if self.at is None or self.text is None:
+            return self.at
+        return self.text.start_line(self.at, INCLUDE)
 
 
 @dataclass
@@ -260,6 +268,20 @@ def _refuse_entity_declarations(data: bytes, source: str | None, context: _Conte
             "and MuJoCo does not expand them", source, line)
 
 
+def has_long_stretch(data: bytes, length: int = _LONG_STRETCH) -> bool:
+    """Whether a "<" in ``data`` is followed by ``length`` bytes without one. Each window
+    after a "<" is searched from its end (the last "<" in it starts the next window), so a
+    text is crossed in about ``len(data) / length`` searches: a regular expression tried
+    every "<" (a tenth of the time of reading a small model)."""
+    at = data.find(b"<")
+    while 0 <= at and at + length < len(data):
+        last = data.rfind(b"<", at + 1, at + 1 + length)
+        if last < 0:
+            return True
+        at = last
+    return False
+
+
 def _name(name: object, limit: int = 60) -> str:
     """A tag or attribute name for a message, shortened if (absurdly) long."""
     text = str(name)
@@ -296,7 +318,7 @@ def _read_xml(data: bytes, source: str | None, context: _Context, *,
             "max_bytes"), source, None)
     context.bytes_read += len(data)
     context.texts[source] = SourceText(data)
-    if not context.long_tags and _LONG_TAG.search(data) is not None:
+    if not context.long_tags and has_long_stretch(data):
         context.long_tags = True
     _refuse_entity_declarations(data, source, context)
     depth_limit = min(limits.max_depth, _XML_READER_DEPTH)
@@ -383,20 +405,20 @@ def read_bounded(read: Callable[[int], bytes], limit: int, expected: int = 0) ->
 
 
 def _read_file(path: str, context: _Context, what: str, where: str | None,
-               line: int | None, confinement: Confinement = ANYWHERE) -> bytes:
+               by: _Include | None, confinement: Confinement = ANYWHERE) -> bytes:
     """A file's bytes, refusing what ``confinement`` does not allow, what is not a regular
-    file and what passes ``max_bytes``."""
+    file and what passes ``max_bytes``; a message names the line of the include ``by``."""
     try:
         remaining = max(context.limits.max_bytes - context.bytes_read, 0)
         with open_confined(path, confinement) as f:
             return read_bounded(f.read, remaining, os.fstat(f.fileno()).st_size)
     except Refused as refused:
-        raise context.error(f"cannot read {what}: {refused}", where, line,
-                            FileAccessError) from None
+        raise context.error(f"cannot read {what}: {refused}", where,
+                            None if by is None else by.line, FileAccessError) from None
     except OSError as error:
         reason = error.strerror or str(error)
-        raise context.error(f"cannot read {what}: {reason}", where, line,
-                            FileReadError) from None
+        raise context.error(f"cannot read {what}: {reason}", where,
+                            None if by is None else by.line, FileReadError) from None
 
 
 def _encode(text: str, source: str | None, context: _Context) -> bytes:
@@ -842,36 +864,36 @@ class _Builder:
     def include(self, frame: _Frame, node: XmlNode) -> None:
         parent, _, source, depth, top, _ = frame
         context = self.context
-        line = context.line(node, source)
         file = node.get("file")
         if not file:
-            raise context.error("<include> needs a file attribute", source, line)
+            raise context.error("<include> needs a file attribute", source,
+                                context.line(node, source))
         unexpected = [str(key) for key in node.attrib if key != "file"]
         if unexpected or len(node):
             what = f"attribute {_name(unexpected[0])!r}" if unexpected else "children"
             raise context.error(f"<include> takes only a file attribute, not {what}",
-                                source, line)
+                                source, context.line(node, source))
         base = context.base_dir or os.getcwd()  # MuJoCo: relative to the main file's folder
         path = os.path.abspath(os.path.join(base, file))
+        level = _Include(path, source, source_line(node), context.texts.get(source))
         chain = [level.path for level in context.nesting]
         if context.main is not None:
             chain.insert(0, context.main)
         if path in chain:
             shown = " -> ".join(context.shown(p) for p in [*chain, path])
             raise context.error(f"include cycle: {context.shown(source)} includes {file!r}, "
-                                f"which is already being read: {shown}", source, line)
+                                f"which is already being read: {shown}", source, level.line)
         first = context.included.get(path)
         if first is not None:
             where = ("is the main model file" if first.by is None else
                      f"was already included by {context.shown(first.by)}"
                      + (f":{first.line}" if first.line is not None else ""))
             raise context.error(f"{file!r} ({context.shown(path)}) {where}; MuJoCo includes "
-                                f"a file at most once per model", source, line)
+                                f"a file at most once per model", source, level.line)
         given = context.options.asset(file)
         data = given if given is not None else _read_file(
-            path, context, f"included file {file!r} ({context.shown(path)})", source, line,
+            path, context, f"included file {file!r} ({context.shown(path)})", source, level,
             context.confinement)
-        level = _Include(path, source, line)
         context.included[path] = level
         self.sources.includes[path] = (source, parent)
         context.nesting.append(level)
