@@ -16,7 +16,7 @@ import pytest
 
 import typed_mjcf as mjcf
 
-MESHES = 30  # and the model's XML: 31 renames
+from .export_signals_model import MESHES, model
 
 CHILD = """
 import os, signal, sys
@@ -24,7 +24,7 @@ import os, signal, sys
 # pytest-xdist worker may inherit SIGINT ignored, and then the export rightly goes on)
 signal.signal(signal.SIGINT, signal.default_int_handler)
 sys.path[:0] = [{tests!r}]
-from test_export_signals import model
+from export_signals_model import model  # not the test module: no pytest to import
 import typed_mjcf as mjcf
 from typed_mjcf._model import assets_io as _assets_io
 
@@ -50,15 +50,6 @@ except KeyboardInterrupt:
     sys.exit(130)
 print("finished", flush=True)
 """
-
-
-def model(version: str) -> mjcf.RootElement:
-    root = mjcf.RootElement(model="m")
-    root.option.timestep = 0.002 if version == "old" else 0.001  # the XML differs too
-    for i in range(MESHES):
-        root.asset.add_mesh(name=f"m{i}", file=mjcf.Asset(f"{version} {i}\n" * 100, ".obj",
-                                                          f"m{i}"))
-    return root
 
 
 def _versions(folder: Path) -> set[str]:

@@ -13,6 +13,7 @@ required. ``help()`` shows the same docstring: one generator writes both.
 from __future__ import annotations
 
 import ast
+import functools
 import inspect
 import re
 from collections.abc import Iterator
@@ -29,16 +30,42 @@ from typed_mjcf._core.tree import DCLASS, Element, element_classes
 STUB = Path(mjcf.__file__).resolve().parent / "_generated" / "elements.pyi"
 
 
+@functools.cache
+def stub_tree() -> ast.Module:
+    """The stub parsed, once per process and at run time (0.7 s of CPU: not at collection,
+    which every pytest process does)."""
+    return ast.parse(STUB.read_text(encoding="utf-8"))
+
+
 def adders() -> Iterator[tuple[str, ast.FunctionDef]]:
-    tree = ast.parse(STUB.read_text(encoding="utf-8"))
-    for node in tree.body:
+    for node in stub_tree().body:
         if isinstance(node, ast.ClassDef):
             for item in node.body:
                 if isinstance(item, ast.FunctionDef) and item.name.startswith("add_"):
                     yield node.name, item
 
 
-ADDERS = list(adders())
+@functools.cache
+def adder_node(class_name: str, name: str) -> ast.FunctionDef:
+    return next(f for c, f in adders() if c == class_name and f.name == name)
+
+
+def adder_names() -> list[tuple[str, str]]:
+    """``(class, add_<tag>)`` of each adder in the stub, read line by line for the parameters
+    (test_the_stub_has_adders holds it to the parse: ``adders()``)."""
+    found: list[tuple[str, str]] = []
+    class_name = None
+    for line in STUB.read_text(encoding="utf-8").splitlines():
+        if line.startswith("class "):
+            class_name = re.split(r"[(:]", line[len("class "):], maxsplit=1)[0]
+        elif line[:1] not in ("", " ", "@", "#", ")"):
+            class_name = None  # a top-level statement ends the class
+        elif class_name is not None and line.startswith("    def add_"):
+            found.append((class_name, line[len("    def "):].partition("(")[0]))
+    return found
+
+
+ADDERS = adder_names()
 
 
 def child_spec(class_name: str, adder: str) -> type[Element]:
@@ -72,12 +99,12 @@ def expected_facts(spec: AttributeSpec) -> list[str]:
 
 def test_the_stub_has_adders() -> None:
     assert len(ADDERS) > 150
+    assert ADDERS == [(c, f.name) for c, f in adders()]
 
 
-@pytest.mark.parametrize(("class_name", "adder"), [(c, f.name) for c, f in ADDERS],
-                         ids=[f"{c}.{f.name}" for c, f in ADDERS])
+@pytest.mark.parametrize(("class_name", "adder"), ADDERS, ids=[f"{c}.{n}" for c, n in ADDERS])
 def test_each_keyword_shows_its_own_facts(class_name: str, adder: str) -> None:
-    function = next(f for c, f in ADDERS if c == class_name and f.name == adder)
+    function = adder_node(class_name, adder)
     doc = ast.get_docstring(function, clean=False)
     assert doc is not None
     cls = child_spec(class_name, adder)
@@ -111,7 +138,7 @@ def test_no_note_speaks_of_mujocos_code() -> None:
 
 def test_help_shows_what_the_editor_shows() -> None:
     """``help(body.add_geom)`` and the editor's docstring are one text."""
-    for class_name, function in ADDERS:
+    for class_name, function in adders():
         stub = ast.get_docstring(function)
         runtime = inspect.getdoc(getattr(element_classes()[class_name], function.name))
         assert runtime == stub, f"{class_name}.{function.name}"
@@ -130,7 +157,7 @@ def attribute_docs(node: ast.ClassDef) -> Iterator[tuple[str, str | None]]:
 
 def test_property_hover_starts_with_the_facts() -> None:
     """An attribute's docstring: its first line is the attribute's line."""
-    tree = ast.parse(STUB.read_text(encoding="utf-8"))
+    tree = stub_tree()
     checked = 0
     for node in tree.body:
         if not isinstance(node, ast.ClassDef) or node.name not in element_classes():
