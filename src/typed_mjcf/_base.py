@@ -30,10 +30,11 @@ from typed_mjcf._model.resource_limits import (
 )
 from typed_mjcf._model.traversal import commit_defaults
 from typed_mjcf._model.validate import Finding, validate
-from typed_mjcf._model.write import attribute_text, element_text
+from typed_mjcf._model.write import attribute_text
 from typed_mjcf._sim.bridge import compile_model, to_spec
 from typed_mjcf._sim.notebook import repr_mimebundle, repr_png
 from typed_mjcf._sim.preview import FreeView, render, render_png
+from typed_mjcf._sim.text import model_text
 from typed_mjcf._text.files import copied_files, file_stem, rebase_files
 from typed_mjcf.assets import Asset
 
@@ -275,8 +276,8 @@ class Element(_tree.Element):
         dm_control's signature and unused.
         """
         del debug_context
-        return element_text(self, Format(precision, zero_threshold, canonical), pretty_print,
-                            names_from=prefix_root, self_only=self_only)
+        return model_text(self, Format(precision, zero_threshold, canonical), pretty_print,
+                          names_from=prefix_root, self_only=self_only)
 
     def to_xml(self, prefix_root: NameScope | None = None, debug_context: object = None, *,
                precision: int | None = None, zero_threshold: float = 0.0,

@@ -153,8 +153,6 @@ FLOORS: dict[str, int] = {
 }
 # Imports that point up the floors, each with why (and the issue that removes it).
 UPWARD = {
-    ("_model.keyframes", "_sim.compile"): "export is not pure yet: writing a model with "
-                                          "keyframes compiles their layout (issue 37)",
     ("physics", "_dmcompat.debugging"): "dm_control's Physics explains a compile error "
                                         "with the element's debug-mode stack",
 }

@@ -16,7 +16,7 @@ from typed_mjcf._core.errors import IgnoredAttributeWarning, MjcfError, ParseErr
 from typed_mjcf._core.tree import Element
 from typed_mjcf._generated.elements import RootElement
 from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
-from typed_mjcf._model.write import vfs_text
+from typed_mjcf._sim.text import vfs_text
 from typed_mjcf._text.export import iter_written
 from typed_mjcf._text.parse import Problem
 from typed_mjcf.cli._common import (
