@@ -240,10 +240,11 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
                                   c.single, child_params, docs.adder_doc(typer, child, entries)))
     is_root = el.name == schema.root
     bases = "ModelRoot" if is_root else "Element"
-    stub_bases = "_Typed, _ModelRoot" if is_root else "_Typed"
+    # the root's pictures take its Camera and Key (ModelRoot's type parameters)
+    stub_bases = "_Typed, _ModelRoot[Camera, Key]" if is_root else "_Typed"
     if el.attachable:
         bases += ", Attachable"
-        stub_bases += ", _Attachable"
+        stub_bases += ", _Attach"
     resolves = _resolves(typer, el)
     child_tags = sorted({schema.elements[c.element].tag for c in el.children})
     return ClassView(
@@ -345,6 +346,8 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
                             "Namespace",
                             *(f"{c.class_name}Attributes" for c in classes)]),
         "namespaces": namespaces,
+        "frame_tag": schema.facts().body,
+        "frame_class": body.class_name if body is not None else "_Element",
         "namespace_literals": ", ".join(f'"{ns.name}"' for ns in namespaces),
         "tag_literals": ", ".join(f'"{tag}"' for tag in sorted(
             {el.tag for el in schema.elements.values()})),

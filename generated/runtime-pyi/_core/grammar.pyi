@@ -11,10 +11,9 @@ attribute the codec of its kind.
 from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Final, Literal
+from typing import ClassVar, Final, Literal, Protocol
 from typed_mjcf._core.codecs import Codec, make_codec
 from typed_mjcf._core.rows import AttributeRow
-from typed_mjcf._core.tree import Element
 DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 Compose = Literal["attributes", "nest", "keyframes"]
 
@@ -66,6 +65,11 @@ class AttributeSpec(AttributeRow):
     def __repr__(self) -> str: ...
 WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
 
+class RowClass(Protocol):
+    """A row's generated class, as the grammar sees it: its row (the tree's elements are
+    such classes; the grammar, below the tree, knows them by this alone)."""
+    spec: ClassVar[ElementSpec]
+
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once.
 
@@ -80,7 +84,7 @@ class ChildSpec:
     card: str
     once: bool
     index: int
-    cls: type[Element]
+    cls: type[RowClass]
     holder: ElementSpec
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
                  py_name: str | None = None) -> None: ...

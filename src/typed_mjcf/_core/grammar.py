@@ -12,14 +12,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Final, Literal
+from typing import ClassVar, Final, Literal, Protocol
 
 from typed_mjcf._core.behaviour import STATE as _COMPAT
 from typed_mjcf._core.codecs import Codec, make_codec
 from typed_mjcf._core.rows import AttributeRow
-
-if TYPE_CHECKING:
-    from typed_mjcf._core.tree import Element
 
 DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 
@@ -109,6 +106,13 @@ class AttributeSpec(AttributeRow):
 WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
 
 
+class RowClass(Protocol):
+    """A row's generated class, as the grammar sees it: its row (the tree's elements are
+    such classes; the grammar, below the tree, knows them by this alone)."""
+
+    spec: ClassVar[ElementSpec]
+
+
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once.
 
@@ -127,7 +131,7 @@ class ChildSpec:
     card: str
     once: bool
     index: int
-    cls: type[Element]  # the generated class, set once every class exists
+    cls: type[RowClass]  # the generated class, set once every class exists
     holder: ElementSpec  # the row this is a child of, set once every class exists
 
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",

@@ -63,7 +63,7 @@ from typed_mjcf._core.errors import (
     UnknownAttributeError,
     did_you_mean,
 )
-from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec, RowClass
 from typed_mjcf._core.language import GrammarFacts
 from typed_mjcf._core.names import SEPARATOR, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
@@ -82,7 +82,7 @@ _ELEMENT_NAME: Final = "element_name"  # the keyword dm_control's add() names th
 _NO_CHILDREN: tuple[()] = ()
 _new_object = object.__new__
 # object.__new__ of a _Blank, seen as the Element it becomes (see _create)
-_new_blank = cast("Callable[[type[_Blank]], Element]", object.__new__)
+_new_blank = cast("Callable[[type[_Blank]], _Made]", object.__new__)
 
 
 def element_class(class_name: str) -> type[Element]:
@@ -190,7 +190,6 @@ class _Blank(_Layout):
     :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
 
     __slots__ = ()
-
 
 
 class SiblingNumbers:
@@ -1069,7 +1068,18 @@ _set_singles = _slot_writer("_singles")
 _set_attached = _slot_writer("_attached")
 
 
-def _create(cls: type[Element], parent: Element) -> Element:
+if TYPE_CHECKING:
+    class _Made(Element):
+        """A :class:`_Blank` seen as the element it becomes once given its class, a row's
+        generated class (which the grammar types as a :class:`RowClass`)."""
+
+        @property
+        def __class__(self) -> type[Self]: ...
+        @__class__.setter
+        def __class__(self, cls: type[object], /) -> None: ...
+
+
+def _create(cls: type[RowClass], parent: Element) -> Element:
     """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
     children), with no values."""
     # made as a _Blank (its slots written directly, past Element.__setattr__), then given
