@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import cast
 
-from codegen import ir
+from codegen import ir, rows
 from codegen.errors import FactsError
 from codegen.facts import AttributeOverride, Facts, attribute_entry
 
@@ -31,9 +31,9 @@ RELEASES_DIR = ir.SCHEMA_DIR / "releases"
 RELEASE_FACTS = RELEASES_DIR / "facts.toml"
 
 Releases = tuple[str, ...]
-# An attribute's type in one release: AttributeSpec's keyword arguments (kind, dtype, arity,
-# keywords, numbers, default, namespace; those unset left out). Bounds and ``required`` are not here:
-# the probe does not measure them, so the newest's stand for every release.
+# An attribute's type in one release: the fields of typed_mjcf._core.rows.ReleaseType (those
+# at their default left out). Bounds and ``required`` are not among them: the probe does not
+# measure them, so the newest's stand for every release.
 TypeFields = dict[str, object]
 
 
@@ -123,35 +123,19 @@ class Gates:
 
 
 def _keywords(schema: ir.Schema, a: ir.AttributeDef) -> tuple[str, ...]:
-    if a.enum is None or a.enum not in schema.enums:
-        return ()
-    return tuple(schema.enums[a.enum].keywords)
+    return rows.keywords(schema, a)
 
 
 def type_fields(schema: ir.Schema, a: ir.AttributeDef) -> TypeFields:
     """What the runtime's AttributeSpec is built from, for ``a`` as ``schema`` types it."""
-    found: TypeFields = {"kind": a.kind}
-    if a.dtype is not None and a.dtype != ("int" if a.kind == "int" else "double"):
-        found["dtype"] = a.dtype
-    if a.arity is not None:
-        found["arity"] = tuple(a.arity)
-    words = _keywords(schema, a)
-    if words:
-        found["keywords"] = words
-    if a.numbers:
-        found["numbers"] = tuple(a.numbers.items())
-    if a.default is not None:
-        found["default"] = a.default
-    if a.namespace is not None:
-        found["namespace"] = a.namespace
-    return found
+    return rows.release_values(schema, a)
 
 
-def type_row(fields: TypeFields) -> tuple[object, ...]:
-    """``fields`` as the generated table holds them (``typed_mjcf._releases.gating.TypeRow``)."""
-    arity = fields.get("arity")
-    return (fields["kind"], fields.get("dtype"), arity, fields.get("keywords", ()),
-            fields.get("numbers", ()), fields.get("default"), fields.get("namespace"))
+def type_row(fields: TypeFields) -> rows.ReleaseType:
+    """``fields`` as the generated table holds them (``typed_mjcf._core.rows.ReleaseType``)."""
+    defaults = rows.ReleaseType._field_defaults
+    return rows.ReleaseType._make(fields.get(name, defaults.get(name))
+                                  for name in rows.ReleaseType._fields)
 
 
 def _differs(newest: TypeFields, old: TypeFields) -> bool:
@@ -231,6 +215,8 @@ def render_table(result: Gates, newest: str) -> str:
         "",
         "from typing import Final",
         "",
+        "from typed_mjcf._core.rows import ReleaseType",
+        "",
         block("RELEASES", "every release covered, oldest first; the last is the typing surface",
               "tuple[str, ...]", result.releases),
         block("ATTRIBUTES", "row -> attribute -> the releases that have it (where some lack it)",
@@ -242,13 +228,11 @@ def render_table(result: Gates, newest: str) -> str:
         block("REMOVED", "row -> child tag -> the older releases where the row takes it, "
               "for rows only older releases have (no class: refused)",
               "dict[str, dict[str, tuple[str, ...]]]", result.removed),
-        block("TYPES", "row -> attribute -> release -> its type (kind, number type, value "
-              "count, keywords, numbers read as keywords, default, namespace), where more "
-              "than the keywords differ",
-              "dict[str, dict[str, dict[str, tuple[str, str | None, tuple[int, int | None] "
-              "| None, tuple[str, ...], tuple[tuple[str, int], ...], str | None, "
-              "str | None]]]]",
-              {row: {name: {version: type_row(fields) for version, fields in by.items()}
+        block("TYPES", "row -> attribute -> release -> its type, where more than the "
+              "keywords differ",
+              "dict[str, dict[str, dict[str, ReleaseType]]]",
+              {row: {name: {version: rows.Source(rows.call("ReleaseType", rows.RELEASE, fields))
+                            for version, fields in by.items()}
                      for name, by in attrs.items()} for row, attrs in result.types.items()}),
     ])
 

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import jinja2
 
-from codegen import bindings, docs, ir, language, release_facts, releases
+from codegen import bindings, docs, ir, language, release_facts, releases, rows
 from codegen.naming import RESERVED, py_name
 from codegen.typing_names import Alias, Typer
 
@@ -99,47 +99,36 @@ def child_py_name(tag: str) -> str:
 
 def _attribute_spec(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
                     a: ir.AttributeDef, notes: releases.Notes) -> str:
-    args = [repr(a.name), repr(a.kind)]
-    if a.py_name != a.name:
-        args.append(f"py_name={a.py_name!r}")
-    if a.dtype is not None and a.dtype != ("int" if a.kind == "int" else "double"):
-        args.append(f"dtype={a.dtype!r}")
-    if a.arity is not None:
-        args.append(f"arity={a.arity!r}")
+    """``A(...)``: the attribute's row (``typed_mjcf._core.rows.AttributeRow``), keywords and
+    their maps named by the module's aliases."""
+    values: dict[str, object] = {**rows.release_values(schema, a), "name": a.name,
+                                 "py_name": a.py_name if a.py_name != a.name else ""}
     if a.enum is not None:
-        args.append(f"keywords=get_args({typer.keyword_type(a)})")
-    if a.numbers:
-        args.append(f"numbers={tuple(a.numbers.items())!r}")
+        values["keywords"] = rows.Source(f"get_args({typer.keyword_type(a)})")
     alone = typer.alone_type(a)
     if alone is not None:
-        args.append(f"alone=get_args({alone})")
-    if a.ordered:
-        args.append("ordered=True")
-    if a.namespace is not None:
-        args.append(f"namespace={a.namespace!r}")
+        values["alone"] = rows.Source(f"get_args({alone})")
+    values["ordered"] = a.ordered
     if a.namespace_from is not None:
-        args.append(f"namespace_from=({a.namespace_from!r}, {typed_map_name(typer, a)})")
-    if a.default is not None:
-        args.append(f"default={a.default!r}")
-    if a.required:
-        args.append("required=True")
-    if a.computed is not None:
-        args.append("computed=True")
-    if a.pattern is not None:
-        args.append(f"pattern={a.pattern!r}")
-    if a.bounds:
-        args.append(f"bounds={tuple((op, float(limit)) for op, limit in map(str.split, a.bounds))!r}")
-    if a.off:
-        args.append(f"off={tuple((op, float(limit)) for op, limit in map(str.split, a.off))!r}")
-    if a.directory:
-        args.append(f"directory={tuple(a.directory)!r}")
+        values["namespace_from"] = rows.Source(
+            f"({a.namespace_from!r}, {typed_map_name(typer, a)})")
+    values["required"] = a.required
+    values["computed"] = a.computed is not None
+    values["pattern"] = a.pattern
+    values["bounds"] = _bounds(a.bounds)
+    values["off"] = _bounds(a.off)
+    values["directory"] = tuple(a.directory or ())
     expected_anchor = f"{el.anchor}-{a.name}" if el.anchor else None
-    if a.anchor is not None and a.anchor != expected_anchor:
-        args.append(f"anchor={a.anchor!r}")
-    args.append(f"doc={docs.attribute_doc(typer, a, notes.get(el.name, {}).get(a.name))!r}")
-    if el.name == schema.root and a.name == schema.facts().model_name:
-        args.append("scope=True")
-    return "A(" + ", ".join(args) + ")"
+    if a.anchor != expected_anchor:
+        values["anchor"] = a.anchor
+    values["doc"] = docs.attribute_doc(typer, a, notes.get(el.name, {}).get(a.name))
+    values["scope"] = el.name == schema.root and a.name == schema.facts().model_name
+    return rows.call("A", rows.ROW, values)
+
+
+def _bounds(texts: list[str] | None) -> tuple[tuple[str, float], ...]:
+    """``["> 0"]`` as the row holds it: ``((">", 0.0),)``."""
+    return tuple((op, float(limit)) for op, limit in map(str.split, texts or ()))
 
 
 def typed_map_name(typer: Typer, a: ir.AttributeDef) -> str:
@@ -251,10 +240,11 @@ def class_view(schema: ir.Schema, typer: Typer, el: ir.ElementDef,
                                   c.single, child_params, docs.adder_doc(typer, child, entries)))
     is_root = el.name == schema.root
     bases = "ModelRoot" if is_root else "Element"
-    stub_bases = "_Typed, _ModelRoot" if is_root else "_Typed"
+    # the root's pictures take its Camera and Key (ModelRoot's type parameters)
+    stub_bases = "_Typed, _ModelRoot[Camera, Key]" if is_root else "_Typed"
     if el.attachable:
         bases += ", Attachable"
-        stub_bases += ", _Attachable"
+        stub_bases += ", _Attach"
     resolves = _resolves(typer, el)
     child_tags = sorted({schema.elements[c.element].tag for c in el.children})
     return ClassView(
@@ -356,6 +346,8 @@ def render(schema: ir.Schema, binding_table: dict[str, object] | None = None,
                             "Namespace",
                             *(f"{c.class_name}Attributes" for c in classes)]),
         "namespaces": namespaces,
+        "frame_tag": schema.facts().body,
+        "frame_class": body.class_name if body is not None else "_Element",
         "namespace_literals": ", ".join(f'"{ns.name}"' for ns in namespaces),
         "tag_literals": ", ".join(f'"{tag}"' for tag in sorted(
             {el.tag for el in schema.elements.values()})),

@@ -7,7 +7,7 @@ feature module.
 """
 from __future__ import annotations
 from collections.abc import Iterable, Iterator
-from typing import TYPE_CHECKING, Final, NoReturn, cast
+from typing import TYPE_CHECKING, Final, Generic, Never, NoReturn, Self, TypeVar, cast
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.debuginfo import StackTraceEntry, attribute_stacks, init_stack
 from typed_mjcf._core.names import SEPARATOR, NameScope
@@ -21,7 +21,8 @@ from typed_mjcf._model.validate import Finding, validate
 from typed_mjcf._sim.preview import FreeView, render, render_png
 import os
 import mujoco
-from typed_mjcf._generated.elements import Body, Camera, Key, Namespace, RootElement
+from typing_extensions import TypeVar as _TypeVar
+from typed_mjcf._generated import Namespace
 from typed_mjcf.types import RgbImage, XmlElement
 
 class Element(_tree.Element):
@@ -144,18 +145,20 @@ class Element(_tree.Element):
 
 class Attachable(_tree.Element):
     """What elements a model can be attached at have (bodies, the world, sites, the root)."""
-    def attach(self, model: ModelRoot) -> Body:
+    def attach(self, model: ModelRoot) -> Element:
         """Attach ``model`` here; return its attachment frame (a ``<body>``).
 
         Args:
             model: the model to attach; it stays its own object, its names scoped ``<its name>/...`` here (``find("joint", "arm/elbow")``) and in the exported XML; its ``detach()`` undoes the attachment.
         """
         ...
-    def attach_model(self, model: ModelRoot) -> Body:
+    def attach_model(self, model: ModelRoot) -> Element:
         """Another name for :meth:`attach`."""
         ...
+_Camera_contra = _TypeVar("_Camera_contra", bound=_tree.Element, contravariant=True, default=Never)
+_Key_contra = _TypeVar("_Key_contra", bound=_tree.Element, contravariant=True, default=Never)
 
-class ModelRoot(Element, _tree.ModelBase):
+class ModelRoot(Element, _tree.ModelBase, Generic[_Camera_contra, _Key_contra]):
     """Behaviour of ``<mujoco>``, the root of a model. Use ``typed_mjcf.RootElement``."""
     @property
     def namespaces(self) -> frozenset[str]:
@@ -225,8 +228,8 @@ class ModelRoot(Element, _tree.ModelBase):
         """This model as a ``mujoco.MjSpec``; ``CompileError`` naming the element that takes
         what MuJoCo would allocate past ``limits`` (as :meth:`compile`)."""
         ...
-    def render(self, camera: str | Camera | FreeView | None = None, *, width: int = 640,
-               height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
+    def render(self, camera: str | _Camera_contra | FreeView | None = None, *, width: int = 640,
+               height: int = 480, time: float = 0.0, keyframe: str | int | _Key_contra | None = None,
                views: tuple[str, ...] | list[str] | None = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
@@ -247,13 +250,13 @@ class ModelRoot(Element, _tree.ModelBase):
         """
         ...
     def render_png(self, path: str | os.PathLike[str],
-                   camera: str | Camera | FreeView | None = None, *, width: int = 640,
-                   height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
+                   camera: str | _Camera_contra | FreeView | None = None, *, width: int = 640,
+                   height: int = 480, time: float = 0.0, keyframe: str | int | _Key_contra | None = None,
                    views: tuple[str, ...] | list[str] | None = None,
                    limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
         """Write ``render()``'s picture to ``path`` as a PNG file (the size by keyword)."""
         ...
-    def __copy__(self) -> RootElement: ...
+    def __copy__(self) -> Self: ...
 ATTACHMENT_FRAME: Final = "attachment_frame"
 
 def named_after_file(element: _tree.Element, namespace: str, name: str) -> _tree.Element | None:

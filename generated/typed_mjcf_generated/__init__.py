@@ -2,5 +2,10 @@
 # Do not edit: change schema/ or codegen/ and run `nox -s generate`.
 """The generated classes of the MJCF grammar. Import them from ``typed_mjcf``."""
 
+from typing import Literal, TypeAlias
+
 MUJOCO_VERSION = "4.0.0"
 GENERATOR_VERSION = "2"
+
+Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple", "attachment_frame"]
+"""The identifier namespaces (``find()``'s first argument)."""

@@ -18,6 +18,7 @@ from typed_mjcf._core.grammar import ChildSpec as C
 from typed_mjcf._core.grammar import ElementSpec as S
 from typed_mjcf._core.language import Allocation, AttachFacts, ChildNeeds, FlexcompFacts, GeneratedShape, GrammarFacts, KeyframeFacts
 from typed_mjcf._core.tree import finish_grammar
+from typed_mjcf._generated import Namespace
 from typed_mjcf._releases import follow_installed_release
 
 __all__ = [
@@ -4825,9 +4826,6 @@ AnyTarget: TypeAlias = _builtins.str | AnyActuator | Body | Camera | Default | A
 
 FrameobjTarget: TypeAlias = _builtins.str | Body | Camera | Geom | Site
 """A reference: a name, or the element itself."""
-
-Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple", "attachment_frame"]
-"""The identifier namespaces (``find()``'s first argument)."""
 
 
 class RootElementAttributes(TypedDict, total=False):

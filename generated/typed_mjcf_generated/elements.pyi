@@ -15,6 +15,7 @@ from typed_mjcf._base import Element as _Element
 from typed_mjcf._base import ModelRoot as _ModelRoot
 from typed_mjcf._core.grammar import ElementSpec as _S
 from typed_mjcf._core.tree import ElementList as _List
+from typed_mjcf._generated import Namespace
 
 __all__ = [
     "Accelerometer",
@@ -632,9 +633,6 @@ AnyTarget: TypeAlias = _builtins.str | AnyActuator | Body | Camera | Default | A
 FrameobjTarget: TypeAlias = _builtins.str | Body | Camera | Geom | Site
 """A reference: a name, or the element itself."""
 
-Namespace: TypeAlias = Literal["actuator", "body", "camera", "default", "equality", "exclude", "flex", "frame", "geom", "hfield", "instance", "joint", "key", "light", "material", "mesh", "model", "numeric", "pair", "sensor", "site", "skin", "tendon", "text", "texture", "tuple", "attachment_frame"]
-"""The identifier namespaces (``find()``'s first argument)."""
-
 _Get = TypeVar("_Get")
 _Set = TypeVar("_Set")
 
@@ -767,7 +765,14 @@ class _Typed(_Element):
     def find_all(self, namespace: Namespace, immediate_children_only: _builtins.bool = ..., exclude_attachments: _builtins.bool = ...) -> _builtins.list[_Element]: ...
 
 
-class RootElement(_Typed, _ModelRoot, _Attachable):
+class _Attach(_Attachable):
+    """Where a model can be attached: its attachment frame is a ``<body>``."""
+
+    def attach(self, model: _ModelRoot) -> Body: ...
+    def attach_model(self, model: _ModelRoot) -> Body: ...
+
+
+class RootElement(_Typed, _ModelRoot[Camera, Key], _Attach):
     """``<mujoco>``.
 
     Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#mujoco
@@ -3561,7 +3566,7 @@ class Ballquat(_Typed):
     def resolve(self, name: Literal["joint"]) -> _builtins.str | AnyJoint | None: ...
 
 
-class Body(_Typed, _Attachable):
+class Body(_Typed, _Attach):
     """``<body>``.
 
     Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body
@@ -12814,7 +12819,7 @@ class Force(_Typed):
     def resolve(self, name: Literal["site"]) -> _builtins.str | Site | None: ...
 
 
-class Frame(_Typed, _Attachable):
+class Frame(_Typed, _Attach):
     """``<frame>``.
 
     Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-frame
@@ -19607,7 +19612,7 @@ class Rangefinder(_Typed):
     def resolve(self, name: Literal["data"]) -> tuple[RayData, ...]: ...
 
 
-class Replicate(_Typed, _Attachable):
+class Replicate(_Typed, _Attach):
     """``<replicate>``.
 
     Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#replicate
@@ -22780,7 +22785,7 @@ class SensorPlugin(_Typed):
     def resolve(self, name: Literal["user"]) -> _t.Float64Array | None: ...
 
 
-class Site(_Typed, _Attachable):
+class Site(_Typed, _Attach):
     """``<site>``.
 
     Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body-site
@@ -25821,7 +25826,7 @@ class Weld(_Typed):
     def resolve(self, name: Literal["torquescale"]) -> _builtins.float: ...
 
 
-class Worldbody(_Typed, _Attachable):
+class Worldbody(_Typed, _Attach):
     """``<worldbody>``.
 
     Reference: https://mujoco.readthedocs.io/en/stable/XMLreference.html#body

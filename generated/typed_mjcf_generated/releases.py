@@ -4,6 +4,8 @@
 
 from typing import Final
 
+from typed_mjcf._core.rows import ReleaseType
+
 # every release covered, oldest first; the last is the typing surface
 RELEASES: Final[tuple[str, ...]] = ('3.3.7', '3.17.0', '4.0.0')
 
@@ -19,5 +21,5 @@ KEYWORDS: Final[dict[str, dict[str, dict[str, tuple[str, ...]]]]] = {'actuator_p
 # row -> child tag -> the older releases where the row takes it, for rows only older releases have (no class: refused)
 REMOVED: Final[dict[str, dict[str, tuple[str, ...]]]] = {'body': {'composite': ('3.3.7', '3.17.0')}, 'frame': {'composite': ('3.3.7', '3.17.0')}, 'replicate': {'composite': ('3.3.7', '3.17.0')}, 'worldbody': {'composite': ('3.3.7', '3.17.0')}, 'equality': {'flexvert': ('3.17.0',)}}
 
-# row -> attribute -> release -> its type (kind, number type, value count, keywords, numbers read as keywords, default, namespace), where more than the keywords differ
-TYPES: Final[dict[str, dict[str, dict[str, tuple[str, str | None, tuple[int, int | None] | None, tuple[str, ...], tuple[tuple[str, int], ...], str | None, str | None]]]]] = {'flex': {'material': {'3.3.7': ('ref', None, None, (), (), None, 'material'), '3.17.0': ('ref', None, None, (), (), None, 'material')}}, 'flexcomp': {'material': {'3.3.7': ('ref', None, None, (), (), None, 'material'), '3.17.0': ('ref', None, None, (), (), None, 'material')}}, 'headlight': {'active': {'3.3.7': ('int', None, None, (), (), '1', None), '3.17.0': ('int', None, None, (), (), '1', None)}}}
+# row -> attribute -> release -> its type, where more than the keywords differ
+TYPES: Final[dict[str, dict[str, dict[str, ReleaseType]]]] = {'flex': {'material': {'3.3.7': ReleaseType('ref', namespace='material'), '3.17.0': ReleaseType('ref', namespace='material')}}, 'flexcomp': {'material': {'3.3.7': ReleaseType('ref', namespace='material'), '3.17.0': ReleaseType('ref', namespace='material')}}, 'headlight': {'active': {'3.3.7': ReleaseType('int', default='1'), '3.17.0': ReleaseType('int', default='1')}}}

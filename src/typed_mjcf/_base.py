@@ -8,7 +8,7 @@ feature module.
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
-from typing import TYPE_CHECKING, Final, NoReturn, cast
+from typing import TYPE_CHECKING, Final, Generic, Never, NoReturn, Self, TypeVar, cast
 
 from lxml import etree
 
@@ -30,10 +30,11 @@ from typed_mjcf._model.resource_limits import (
 )
 from typed_mjcf._model.traversal import commit_defaults
 from typed_mjcf._model.validate import Finding, validate
-from typed_mjcf._model.write import attribute_text, element_text
+from typed_mjcf._model.write import attribute_text
 from typed_mjcf._sim.bridge import compile_model, to_spec
 from typed_mjcf._sim.notebook import repr_mimebundle, repr_png
 from typed_mjcf._sim.preview import FreeView, render, render_png
+from typed_mjcf._sim.text import model_text
 from typed_mjcf._text.files import copied_files, file_stem, rebase_files
 from typed_mjcf.assets import Asset
 
@@ -41,8 +42,9 @@ if TYPE_CHECKING:
     import os
 
     import mujoco
+    from typing_extensions import TypeVar as _TypeVar  # with a default (PEP 696)
 
-    from typed_mjcf._generated.elements import Body, Camera, Key, Namespace, RootElement
+    from typed_mjcf._generated import Namespace
     from typed_mjcf.types import RgbImage, XmlElement
 
 
@@ -153,7 +155,7 @@ class Element(_tree.Element):
         outermost model when ``None``), as :attr:`full_identifier` gives it."""
         scope = _tree.scope_of(self)
         prefix = scope.prefix(prefix_root)
-        if isinstance(self, ModelRoot) and _tree.model_of(self) is self:
+        if isinstance(self, _tree.ModelBase) and _tree.model_of(self) is self:
             return prefix
         attached = _tree.attached_at(self)
         if attached is not None:
@@ -163,7 +165,7 @@ class Element(_tree.Element):
         name = _tree.element_name(self)
         if name is None and FLAGS.unnamed_identifiers:
             parent = self.parent
-            if self.spec.compose == "nest" and isinstance(parent, ModelRoot):
+            if self.spec.compose == "nest" and isinstance(parent, _tree.ModelBase):
                 return prefix or SEPARATOR  # the model's own default class: dm_control names it so
             if parent is not None and _tree.attached_at(parent) is not None and (
                     _tree.scope_of(parent) is not scope):  # a frame's own: the frame's name
@@ -216,7 +218,7 @@ class Element(_tree.Element):
                 found = named_after_file(self, namespace, identifier)
         if not isinstance(found, Element) or found.is_removed:
             return None
-        if isinstance(self, ModelRoot) and _tree.model_of(self) is self:
+        if isinstance(self, _tree.ModelBase) and _tree.model_of(self) is self:
             return found
         return found if _is_inside(found, self) else None
 
@@ -313,8 +315,8 @@ class Element(_tree.Element):
         dm_control's signature and unused.
         """
         del debug_context
-        return element_text(self, Format(precision, zero_threshold, canonical),
-                            bool(pretty_print), names_from=prefix_root, self_only=bool(self_only))
+        return model_text(self, Format(precision, zero_threshold, canonical), bool(pretty_print),
+                          names_from=prefix_root, self_only=bool(self_only))
 
     def to_xml(self, prefix_root: NameScope | None = None, debug_context: object = None, *,
                precision: int | None = None, zero_threshold: float = 0.0,
@@ -352,20 +354,31 @@ class Attachable(_tree.Element):
 
     __slots__ = ()
 
-    def attach(self, model: ModelRoot) -> Body:
+    def attach(self, model: ModelRoot) -> Element:
         """Attach ``model`` here; return its attachment frame (a ``<body>``).
 
         Args:
             model: the model to attach; it stays its own object, its names scoped ``<its name>/...`` here (``find("joint", "arm/elbow")``) and in the exported XML; its ``detach()`` undoes the attachment.
         """
-        return cast("Body", attach(self, model))
+        return cast("Element", attach(self, model))  # the generated classes say: a Body
 
-    def attach_model(self, model: ModelRoot) -> Body:
+    def attach_model(self, model: ModelRoot) -> Element:
         """Another name for :meth:`attach`."""
         return self.attach(model)
 
 
-class ModelRoot(Element, _tree.ModelBase):
+# What a model's pictures take as its camera and its keyframe: the generated root class says
+# (its Camera and Key). Taken, never given: a root is a bare ModelRoot, which takes them by
+# name only.
+if TYPE_CHECKING:
+    _Camera_contra = _TypeVar("_Camera_contra", bound=_tree.Element, contravariant=True, default=Never)
+    _Key_contra = _TypeVar("_Key_contra", bound=_tree.Element, contravariant=True, default=Never)
+else:
+    _Camera_contra = TypeVar("_Camera_contra", bound=_tree.Element, contravariant=True)
+    _Key_contra = TypeVar("_Key_contra", bound=_tree.Element, contravariant=True)
+
+
+class ModelRoot(Element, _tree.ModelBase, Generic[_Camera_contra, _Key_contra]):
     """Behaviour of ``<mujoco>``, the root of a model. Use ``typed_mjcf.RootElement``."""
 
     __slots__ = ()
@@ -455,8 +468,8 @@ class ModelRoot(Element, _tree.ModelBase):
 
     # ------------------------------------------------------------------ pictures
 
-    def render(self, camera: str | Camera | FreeView | None = None, *, width: int = 640,
-               height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
+    def render(self, camera: str | _Camera_contra | FreeView | None = None, *, width: int = 640,
+               height: int = 480, time: float = 0.0, keyframe: str | int | _Key_contra | None = None,
                views: tuple[str, ...] | list[str] | None = None,
                limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> RgbImage:
         """A picture of the model: a ``height`` x ``width`` x 3 array of ``uint8`` RGB.
@@ -479,8 +492,8 @@ class ModelRoot(Element, _tree.ModelBase):
                                        keyframe=keyframe, views=views, limits=limits))
 
     def render_png(self, path: str | os.PathLike[str],
-                   camera: str | Camera | FreeView | None = None, *, width: int = 640,
-                   height: int = 480, time: float = 0.0, keyframe: str | int | Key | None = None,
+                   camera: str | _Camera_contra | FreeView | None = None, *, width: int = 640,
+                   height: int = 480, time: float = 0.0, keyframe: str | int | _Key_contra | None = None,
                    views: tuple[str, ...] | list[str] | None = None,
                    limits: RenderLimits = DEFAULT_RENDER_LIMITS) -> None:
         """Write ``render()``'s picture to ``path`` as a PNG file (the size by keyword)."""
@@ -499,7 +512,7 @@ class ModelRoot(Element, _tree.ModelBase):
         return repr_mimebundle(self)
 
     if TYPE_CHECKING:
-        def __copy__(self) -> RootElement: ...
+        def __copy__(self) -> Self: ...
 
 
 # ---------------------------------------------------------------------------- helpers

@@ -18,6 +18,7 @@ from typed_mjcf._core.tree import COMPAT, ModelBase
 from typed_mjcf._model.assets_io import export_with_assets as export
 from typed_mjcf._model.zip import read_zip, use_archive_files, write_zip
 from typed_mjcf._sim.bridge import spec_to_xml
+from typed_mjcf._sim.text import vfs_text
 from typed_mjcf._text.parse import DEFAULT_LIMITS, ParseLimits, ParseOptions, parse_path, parse_text
 
 if TYPE_CHECKING:
@@ -236,7 +237,8 @@ def exported(mjcf_model: object, out_dir: object, out_file_name: object, overwri
         raise InvalidTypeError(f"out_file_name must be a str, got {type(out_file_name).__name__}")
     if not isinstance(overwrite, bool):
         raise InvalidTypeError(f"overwrite must be a bool, got {type(overwrite).__name__}")
-    return export(_model(mjcf_model), folder, out_file_name, overwrite=overwrite,
+    model = _model(mjcf_model)
+    return export(model, vfs_text(model), folder, out_file_name, overwrite=overwrite,
                   after_source=after_source)
 
 
@@ -256,7 +258,8 @@ def export_with_assets_as_zip(mjcf_model: ModelBase, out_dir: str | os.PathLike[
         raise InvalidTypeError(f"model_name must be a str, got {type(model_name).__name__}")
     if not isinstance(overwrite, bool):  # pyright: ignore[reportUnnecessaryIsInstance]
         raise InvalidTypeError(f"overwrite must be a bool, got {type(overwrite).__name__}")
-    return write_zip(_model(mjcf_model), folder, model_name, overwrite=overwrite)
+    model = _model(mjcf_model)
+    return write_zip(model, vfs_text(model), folder, model_name, overwrite=overwrite)
 
 
 __all__ = ["FileAccess", "ParseLimits", "export_with_assets", "export_with_assets_as_zip", "from_file",

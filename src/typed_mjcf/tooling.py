@@ -55,9 +55,9 @@ from typed_mjcf._model.resource_limits import (
     DEFAULT_RENDER_LIMITS,
     check_compile,
 )
-from typed_mjcf._model.write import vfs_text
 from typed_mjcf._releases.gating import describe as describe_releases
 from typed_mjcf._sim.preview import key_from_text, render, render_pair, write_png
+from typed_mjcf._sim.text import vfs_text
 from typed_mjcf._sim.warp_refusals import Refusal, WarpMissingError, warp_modules, warp_refusals
 from typed_mjcf._text.export import iter_written, written_children
 from typed_mjcf._text.parse import INCLUDE, ParseOptions, Problem, parse_path, root_class

@@ -11,6 +11,7 @@ import pytest
 from codegen import ir, releases, render
 from codegen.errors import FactsError
 from codegen.facts import load_facts
+from codegen.rows import ReleaseType
 
 
 def _older(newest: ir.Schema, version: str) -> ir.Schema:
@@ -89,8 +90,8 @@ def test_gates_list_each_release_s_type_where_more_than_keywords_differ() -> Non
     assert gates.keywords == {} and gates.attributes == {}
     namespace: dict[str, object] = {}
     exec(releases.render_table(gates, newest.mujoco_version), namespace)  # noqa: S102
-    assert namespace["TYPES"] == {"joint": {"damping": {"3.0.0": (
-        "int", None, (1, 2), (), (), "3", None)}}}  # typed_mjcf._releases.gating.TypeRow
+    assert namespace["TYPES"] == {"joint": {"damping": {"3.0.0": ReleaseType(
+        "int", arity=(1, 2), default="3")}}}
     notes = releases.notes(gates)
     assert notes["joint"]["damping"] == 'MuJoCo 3.0.0: int[1..2], default "3"'
 
@@ -109,7 +110,7 @@ def test_gates_list_a_release_reading_no_numbers_for_keywords() -> None:
         'MuJoCo 3.0.0: keyword false|true|auto, default "auto"')
     row = releases.type_row(releases.type_fields(newest, newest.elements["headlight"]
                                                  .attribute("active")))
-    assert row[4] == (("false", 0), ("true", 1), ("auto", 2))
+    assert row.numbers == (("false", 0), ("true", 1), ("auto", 2))
 
 
 def test_gates_list_the_children_only_older_releases_have() -> None:

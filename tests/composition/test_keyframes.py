@@ -8,7 +8,12 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from typed_mjcf._core.codecs import DEFAULT_FORMAT
 from typed_mjcf._core.tree import element_classes, grammar_facts
+from typed_mjcf._model import write
+from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS
+from typed_mjcf._sim import compile as compile_module
+from typed_mjcf._sim import text
 
 from .robots import site
 
@@ -145,3 +150,48 @@ def test_the_rows_counted_as_joints_are_the_joint_namespace() -> None:
     assert grammar_facts().joints == joint_rows
     assert {spec.row for spec in rows.values() if spec.tag == "joint"} - joint_rows == {
         "equality_joint", "fixed_joint", "default_joint"}
+
+
+# Export is a pure write (issue 37): what it needs compiled (a composed model's keyframe
+# layout) is resolved before the writer starts; the writer neither parses nor compiles.
+
+
+def test_the_writer_compiles_nothing_given_the_layout(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A composed model whose keyframes combine: the layout compiled first, the write then
+    gives the same text as ``to_xml_string()`` with MuJoCo out of reach."""
+    model = arm()
+    site(model, "tip").attach(gripper())
+    expected = model.to_xml_string()
+    assert write.needs_layout(model)
+    layout = text.keyframe_layout(model, DEFAULT_FORMAT, True, None, None,
+                                  DEFAULT_COMPILE_LIMITS)
+
+    def refuse(*args: object, **kwargs: object) -> object:
+        raise AssertionError("the writer compiled")
+
+    monkeypatch.setattr(compile_module, "compile_from_memory", refuse)
+    monkeypatch.setattr(text, "compile_from_memory", refuse)
+    assert write.element_text(model, layout=layout) == expected
+    assert 'qpos="1 2 0 0"' in expected
+
+
+def test_a_layout_is_needed_only_to_combine_keyframes() -> None:
+    model = arm()
+    assert not write.needs_layout(model)  # nothing attached: its keys are written as they are
+    site(model, "tip").attach(gripper())
+    assert write.needs_layout(model)
+    assert not write.needs_layout(model, self_only=True)
+    assert not write.needs_layout(model.worldbody)
+    bare = arm(key="")
+    site(bare, "tip").attach(gripper())
+    assert not write.needs_layout(bare)  # no part has a key
+    bare = arm(key="")
+    site(bare, "tip").attach(gripper('<key qpos="1 2"/>'))
+    assert write.needs_layout(bare)  # an attached part's key
+
+
+def test_without_the_layout_the_writer_says_so() -> None:
+    model = arm()
+    site(model, "tip").attach(gripper())
+    with pytest.raises(AssertionError, match="needs the compiled layout"):
+        write.element_text(model)

@@ -20,6 +20,7 @@ from tests.runtime.release_driver import RELEASE_VARIABLE
 from typed_mjcf._core import codecs as _codecs
 from typed_mjcf._core.codecs import Rejected
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core.rows import ReleaseType
 from typed_mjcf._core.tree import Element, element_classes
 from typed_mjcf._generated.releases import KEYWORDS, RELEASES, REMOVED, TYPES
 from typed_mjcf._releases import gating as _releases
@@ -53,11 +54,14 @@ def test_the_table_types_only_what_differs_and_only_for_older_releases() -> None
 @pytest.mark.parametrize(("row", "name", "by_release"), RETYPED,
                          ids=[f"{row}@{name}" for row, name, _ in RETYPED])
 def test_an_attribute_has_the_type_of_the_release_in_use(
-        row: str, name: str, by_release: dict[str, _releases.TypeRow]) -> None:
+        row: str, name: str, by_release: dict[str, ReleaseType]) -> None:
     cls = CLASSES[row]
     attribute = cls.spec.by_name[name]
     if _releases.RELEASE in by_release:
-        kind, dtype, arity, words, numbers, default, namespace = by_release[_releases.RELEASE]
+        typed = by_release[_releases.RELEASE]
+        kind, dtype, arity, words, numbers = (typed.kind, typed.dtype, typed.arity,
+                                              typed.keywords, typed.numbers)
+        default, namespace = typed.default, typed.namespace
         assert _releases.newest_type(cls.spec, attribute) is not attribute
         assert attribute.kind == kind and attribute.default == default
         assert attribute.namespace == namespace and attribute.keywords == words
@@ -67,8 +71,8 @@ def test_an_attribute_has_the_type_of_the_release_in_use(
         assert attribute.is_reference == (kind == "ref")
     else:  # the newest's type, untouched
         assert _releases.newest_type(cls.spec, attribute) is attribute
-        assert all(attribute.kind != typed[0] or attribute.default != typed[5]
-                   or attribute.namespace != typed[6] or attribute.numbers != typed[4]
+        assert all(attribute.kind != typed.kind or attribute.default != typed.default
+                   or attribute.namespace != typed.namespace or attribute.numbers != typed.numbers
                    for typed in by_release.values())
     assert (attribute in cls.spec.references) == attribute.is_reference
     prop = vars(cls)[attribute.py_name]
@@ -109,18 +113,18 @@ def _element(model: Element, row: str) -> Element:
     return element
 
 
-def _values(by_release: dict[str, _releases.TypeRow], spec: ElementSpec,
+def _values(by_release: dict[str, ReleaseType], spec: ElementSpec,
             attribute: AttributeSpec) -> list[str]:
     """Each release's default of the attribute: texts some release takes."""
     newest = _releases.newest_type(spec, attribute)
-    found = [default for *_, default, _ in by_release.values() if default is not None]
+    found = [typed.default for typed in by_release.values() if typed.default is not None]
     return found + ([newest.default] if newest.default is not None else [])
 
 
 @pytest.mark.parametrize(("row", "name", "by_release"), RETYPED,
                          ids=[f"{row}@{name}" for row, name, _ in RETYPED])
 def test_a_value_of_another_release_is_refused_naming_it_and_its_own_kept(
-        row: str, name: str, by_release: dict[str, _releases.TypeRow]) -> None:
+        row: str, name: str, by_release: dict[str, ReleaseType]) -> None:
     spec = CLASSES[row].spec
     attribute = spec.by_name[name]
     values = _values(by_release, spec, attribute)

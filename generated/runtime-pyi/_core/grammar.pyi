@@ -9,72 +9,48 @@ and a :class:`ChildSpec` per legal child; the facts that concern the language as
 attribute the codec of its kind.
 """
 from __future__ import annotations
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Final, Literal
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import ClassVar, Final, Literal, Protocol
 from typed_mjcf._core.codecs import Codec, make_codec
-from typed_mjcf._core.tree import Element
+from typed_mjcf._core.rows import AttributeRow
 DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
-Kind = Literal["string", "file", "chars", "bool", "int", "real", "keyword", "flags", "id", "ref"]
 Compose = Literal["attributes", "nest", "keyframes"]
 
-class AttributeSpec:
-    """One attribute of one grammar row."""
-    name: str
-    py_name: str
-    kind: Kind
-    dtype: str | None
-    lo: int
-    hi: int | None
-    is_array: bool
-    keywords: tuple[str, ...]
-    numbers: tuple[tuple[str, int], ...]
-    alone: tuple[str, ...]
-    ordered: bool
-    namespace: str | None
-    namespace_from: tuple[str, Mapping[str, str]] | None
-    default: str | None
-    computed: bool
-    required: bool
-    pattern: str | None
-    bounds: tuple[tuple[str, float], ...]
-    off: tuple[tuple[str, float], ...]
-    directory: tuple[str, ...]
-    anchor: str | None
-    doc: str
-    scope: bool
-    index: int
-    codec: Codec
-    is_reference: bool
-    direct: bool
-    codec_only: bool
-    bare: bool
-    name_list: str | None
-    as_is: bool
-    def __init__(
-        self,
-        name: str,
-        kind: Kind,
-        *,
-        py_name: str | None = None,
-        dtype: str | None = None,
-        arity: tuple[int, int | None] | None = None,
-        keywords: Sequence[str] = (),
-        numbers: Sequence[tuple[str, int]] = (),
-        alone: Sequence[str] = (),
-        ordered: bool = False,
-        namespace: str | None = None,
-        namespace_from: tuple[str, Mapping[str, str]] | None = None,
-        default: str | None = None,
-        computed: bool = False,
-        required: bool = False,
-        pattern: str | None = None,
-        bounds: Sequence[tuple[str, float]] = (),
-        off: Sequence[tuple[str, float]] = (),
-        directory: Sequence[str] = (),
-        anchor: str | None = None,
-        doc: str = "",
-        scope: bool = False,
-    ) -> None: ...
+@dataclass(slots=True, eq=False, repr=False)
+class AttributeSpec(AttributeRow):
+    """One attribute of one grammar row: its row (:class:`AttributeRow`, the generated
+    ``A(...)`` call's fields) and what the runtime derives from it."""
+    lo: int = field(init=False)
+    hi: int | None = field(init=False)
+    is_array: bool = field(init=False)
+    index: int = field(init=False)
+    codec: Codec = field(init=False)
+    is_reference: bool = field(init=False)
+    direct: bool = field(init=False)
+    codec_only: bool = field(init=False)
+    bare: bool = field(init=False)
+    name_list: str | None = field(init=False)
+    as_is: bool = field(init=False)
+    def __post_init__(self) -> None:
+        kind = self.kind
+        if not self.py_name:
+            self.py_name = self.name
+        if self.dtype is None and kind in ("int", "real"):
+            self.dtype = "int" if kind == "int" else "double"
+        arity = self.arity
+        self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
+        self.lo, self.hi = arity if arity is not None else (1, 1)
+        self.index = 0
+        self.is_reference = kind == "ref" or self.namespace_from is not None
+        self.direct = not self.is_reference and kind != "id" and not self.scope
+        self.codec_only = self.direct and kind != "file"
+        self.bare = self.direct and not (self.is_array and self.lo == 0)
+        self.name_list = None  # set by the language's facts (see mark_name_list)
+        self.as_is = self.codec_only or kind == "id" or self.is_reference
+        self.codec = make_codec(kind, dtype=self.dtype, is_array=self.is_array, lo=self.lo,
+                                hi=self.hi, keywords=self.keywords, pattern=self.pattern,
+                                alone=self.alone, ordered=self.ordered, numbers=self.numbers)
     def mark_name_list(self, namespace: str) -> None:
         """This text lists names of ``namespace``: an attached model's are scoped when
         written, so it is not written by its codec alone."""
@@ -88,6 +64,11 @@ class AttributeSpec:
         ...
     def __repr__(self) -> str: ...
 WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
+
+class RowClass(Protocol):
+    """A row's generated class, as the grammar sees it: its row (the tree's elements are
+    such classes; the grammar, below the tree, knows them by this alone)."""
+    spec: ClassVar[ElementSpec]
 
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once.
@@ -103,7 +84,7 @@ class ChildSpec:
     card: str
     once: bool
     index: int
-    cls: type[Element]
+    cls: type[RowClass]
     holder: ElementSpec
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",
                  py_name: str | None = None) -> None: ...

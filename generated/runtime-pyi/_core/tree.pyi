@@ -47,7 +47,7 @@ from typed_mjcf._core.errors import (
     UnknownAttributeError,
     did_you_mean,
 )
-from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec, RowClass
 from typed_mjcf._core.language import GrammarFacts
 from typed_mjcf._core.names import SEPARATOR, UNNAMED_MODEL, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line

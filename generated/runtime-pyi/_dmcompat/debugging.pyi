@@ -14,7 +14,7 @@ there as ``model.xml``, every element's line ending in ``<!--pymjcfdebug:<id>-->
 from __future__ import annotations
 import contextlib
 from collections.abc import Generator, Iterator
-from typing import Final, NamedTuple
+from typing import Final, NamedTuple, cast
 from typed_mjcf._base import Element, ModelRoot
 from typed_mjcf._core.debuginfo import StackTraceEntry
 DEBUG_METADATA_PREFIX: Final = "pymjcfdebug"

@@ -7,10 +7,19 @@ replace a different file of the same name unless asked to. File names are flat a
 """
 from __future__ import annotations
 from typed_mjcf._core.tree import ModelBase
+from typed_mjcf._text.files import (
+    CollectedFiles,
+    is_plain_file_name,
+    safe_file_name,
+    split_name,
+    unique_name,
+)
+Written = tuple[str, CollectedFiles]
 
-def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str, bytes]:
-    """The files a folder export writes: the model's XML (named ``model_filename``, else
-    after the model) last, after every file it uses."""
+def model_files(model: ModelBase, written: Written,
+                model_filename: str | None = None) -> dict[str, bytes]:
+    """The files a folder export writes: the model's XML (``written``, named
+    ``model_filename``, else after the model) last, after every file it uses."""
     ...
 
 def get_assets(model: ModelBase, *, flat: bool = False) -> dict[str, bytes]:
@@ -24,9 +33,10 @@ def get_assets(model: ModelBase, *, flat: bool = False) -> dict[str, bytes]:
     the model has such a pair."""
     ...
 
-def export_with_assets(model: ModelBase, directory: str, model_filename: str | None = None,
-                       *, overwrite: bool = False, after_source: bool = True) -> str:
-    """Write the XML and its files into ``directory``; return the XML's path.
+def export_with_assets(model: ModelBase, written: Written, directory: str,
+                       model_filename: str | None = None, *, overwrite: bool = False,
+                       after_source: bool = True) -> str:
+    """Write the XML and its files (``written``) into ``directory``; return the XML's path.
 
     Without ``model_filename`` the XML is named after the file the model was read from
     (``after_source``), else after the model (``model=``), as dm_control names it.

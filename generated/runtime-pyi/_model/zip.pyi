@@ -13,6 +13,7 @@ import os
 from typing import IO, TypeVar, cast, overload
 from typed_mjcf._core.access import Confinement
 from typed_mjcf._core.tree import ModelBase
+from typed_mjcf._model.assets_io import Written, model_files, write_files
 from typed_mjcf._text.parse import ParseLimits, read_bounded
 _T = TypeVar("_T")
 
@@ -48,9 +49,9 @@ def use_archive_files(model: ModelBase, files: ArchiveFiles) -> None:
     """Let ``model`` read its files from the archive (on demand) rather than a copy."""
     ...
 
-def write_zip(model: ModelBase, directory: str, model_name: str | None = None, *,
-              overwrite: bool = False) -> str:
-    """Write ``model`` and its files into ``directory/<name>.zip``, each under ``<name>/``
+def write_zip(model: ModelBase, written: Written, directory: str,
+              model_name: str | None = None, *, overwrite: bool = False) -> str:
+    """Write ``model`` and its files (``written``) into ``directory/<name>.zip``, each under ``<name>/``
     (as dm_control writes it); return the archive's path. Written as the folder export
     writes a file: atomically, never through a link, never over a different file unless
     ``overwrite``."""

@@ -16,7 +16,7 @@ from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Final, cast
 from typed_mjcf._core.codecs import Codec, Rejected
 from typed_mjcf._core.grammar import AttributeSpec
-from typed_mjcf._core.grammar import ElementSpec, Kind
+from typed_mjcf._core.grammar import ElementSpec
 from typed_mjcf._core.tree import Element
 
 def version_key(version: str) -> tuple[int, ...]: ...
@@ -61,8 +61,6 @@ def newest_type(spec: ElementSpec, attribute: AttributeSpec) -> AttributeSpec:
 def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, ...]:
     """``attribute``'s keywords in the newest release (the typing surface's)."""
     ...
-TypeRow = tuple[str, "str | None", "tuple[int, int | None] | None", tuple[str, ...],
-                tuple[tuple[str, int], ...], "str | None", "str | None"]
 
 def release_codec(spec: ElementSpec, newest: AttributeSpec, release: str) -> Codec:
     """The codec of ``newest`` (an attribute as the newest types it) in ``release``."""

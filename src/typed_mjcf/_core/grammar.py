@@ -10,157 +10,64 @@ attribute the codec of its kind.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING, Final, Literal
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import ClassVar, Final, Literal, Protocol
 
 from typed_mjcf._core.behaviour import FLAGS as _FLAGS
 from typed_mjcf._core.codecs import Codec, make_codec
-
-if TYPE_CHECKING:
-    from typed_mjcf._core.tree import Element
+from typed_mjcf._core.rows import AttributeRow
 
 DOCS_URL: Final = "https://mujoco.readthedocs.io/en/stable/XMLreference.html"
 
-Kind = Literal["string", "file", "chars", "bool", "int", "real", "keyword", "flags", "id", "ref"]
 Compose = Literal["attributes", "nest", "keyframes"]
 
 
-class AttributeSpec:
-    """One attribute of one grammar row."""
+@dataclass(slots=True, eq=False, repr=False)
+class AttributeSpec(AttributeRow):
+    """One attribute of one grammar row: its row (:class:`AttributeRow`, the generated
+    ``A(...)`` call's fields) and what the runtime derives from it."""
 
-    __slots__ = (
-        "alone",
-        "anchor",
-        "as_is",
-        "bare",
-        "bounds",
-        "codec",
-        "codec_only",
-        "computed",
-        "default",
-        "direct",
-        "directory",
-        "doc",
-        "dtype",
-        "hi",
-        "index",
-        "is_array",
-        "is_reference",
-        "keywords",
-        "kind",
-        "lo",
-        "name",
-        "name_list",
-        "namespace",
-        "namespace_from",
-        "numbers",
-        "off",
-        "ordered",
-        "pattern",
-        "py_name",
-        "required",
-        "scope",
-    )
+    lo: int = field(init=False)
+    hi: int | None = field(init=False)
+    is_array: bool = field(init=False)
+    index: int = field(init=False)  # position in the row, set by ElementSpec
+    codec: Codec = field(init=False)
+    # names another element (a fixed or an attribute-given namespace)
+    is_reference: bool = field(init=False)
+    # stored as its codec gives it: no name, link or scope bookkeeping
+    direct: bool = field(init=False)
+    codec_only: bool = field(init=False)  # direct, and written by its codec alone (not a
+    # file, nor names)
+    bare: bool = field(init=False)  # direct, and never empty (not a list that may hold no
+    # numbers): storing it is the dict write alone (``_tree._store``'s first case; the loops
+    # of add() and parsing test this flag, so what storing does is still decided there)
+    # a text listing names of this namespace (a <flex>'s bodies; see mark_name_list)
+    name_list: str | None = field(init=False)
+    # a text stored for it is written unchanged by the exporter (verbatim output, names of
+    # the model written), if its codec writes read texts as read (the write plan asks:
+    # Codec.keeps_read_text)
+    as_is: bool = field(init=False)
 
-    name: str
-    py_name: str
-    kind: Kind
-    dtype: str | None
-    lo: int
-    hi: int | None
-    is_array: bool
-    keywords: tuple[str, ...]
-    numbers: tuple[tuple[str, int], ...]  # keywords: the integer MuJoCo also reads for each
-    alone: tuple[str, ...]  # flags: keywords also taken, one alone in place of the flags
-    ordered: bool  # flags: read from files only in the order of ``keywords``
-    namespace: str | None
-    namespace_from: tuple[str, Mapping[str, str]] | None
-    default: str | None
-    computed: bool  # no default: MuJoCo computes the value when the attribute is absent
-    required: bool
-    pattern: str | None
-    bounds: tuple[tuple[str, float], ...]  # numbers: (">", 0.0), (">=", -1.0), ...
-    off: tuple[tuple[str, float], ...]  # numbers: a value keeping these counts as not set
-    directory: tuple[str, ...]
-    anchor: str | None
-    doc: str
-    scope: bool
-    index: int
-    codec: Codec
-    is_reference: bool  # names another element (a fixed or an attribute-given namespace)
-    direct: bool  # stored as its codec gives it: no name, link or scope bookkeeping
-    codec_only: bool  # direct, and written by its codec alone (not a file, nor names)
-    bare: bool  # direct, and never empty (not a list that may hold no numbers): storing it
-    # is the dict write alone (``_tree._store``'s first case; the loops of add() and parsing
-    # test this flag, so what storing does is still decided there)
-    name_list: str | None  # a text listing names of this namespace (a <flex>'s bodies)
-    as_is: bool
-
-    def __init__(
-        self,
-        name: str,
-        kind: Kind,
-        *,
-        py_name: str | None = None,
-        dtype: str | None = None,
-        arity: tuple[int, int | None] | None = None,
-        keywords: Sequence[str] = (),
-        numbers: Sequence[tuple[str, int]] = (),
-        alone: Sequence[str] = (),
-        ordered: bool = False,
-        namespace: str | None = None,
-        namespace_from: tuple[str, Mapping[str, str]] | None = None,
-        default: str | None = None,
-        computed: bool = False,
-        required: bool = False,
-        pattern: str | None = None,
-        bounds: Sequence[tuple[str, float]] = (),
-        off: Sequence[tuple[str, float]] = (),
-        directory: Sequence[str] = (),
-        anchor: str | None = None,
-        doc: str = "",
-        scope: bool = False,
-    ) -> None:
-        self.name = name
-        self.py_name = name if py_name is None else py_name
-        self.kind = kind
-        if dtype is None and kind in ("int", "real"):
-            dtype = "int" if kind == "int" else "double"
-        self.dtype = dtype
+    def __post_init__(self) -> None:
+        kind = self.kind
+        if not self.py_name:
+            self.py_name = self.name
+        if self.dtype is None and kind in ("int", "real"):
+            self.dtype = "int" if kind == "int" else "double"
+        arity = self.arity
         self.is_array = arity is not None and kind != "chars"  # chars: arity counts characters
         self.lo, self.hi = arity if arity is not None else (1, 1)
-        self.keywords = tuple(keywords)
-        self.numbers = tuple(numbers)
-        self.alone = tuple(alone)
-        self.ordered = ordered
-        self.namespace = namespace
-        # objname-like references: the namespace is named by another attribute's keyword
-        self.namespace_from = namespace_from
-        self.default = default
-        self.computed = computed
-        self.required = required
-        self.pattern = pattern
-        # every value keeps these, or MuJoCo refuses the model (validate() checks them)
-        self.bounds = tuple(bounds)
-        # a value keeping all of these is "off": presence constraints take it as not set
-        self.off = tuple(off)
-        self.directory = tuple(directory)  # <compiler> attributes naming the folder of files
-        self.anchor = anchor
-        self.doc = doc
-        self.scope = scope  # the root's model name: the scope of the model when attached
-        self.index = 0  # position in the row, set by ElementSpec
-        self.is_reference = kind == "ref" or namespace_from is not None
-        self.direct = not self.is_reference and kind != "id" and not scope
+        self.index = 0
+        self.is_reference = kind == "ref" or self.namespace_from is not None
+        self.direct = not self.is_reference and kind != "id" and not self.scope
         self.codec_only = self.direct and kind != "file"
         self.bare = self.direct and not (self.is_array and self.lo == 0)
         self.name_list = None  # set by the language's facts (see mark_name_list)
-        # a text stored for it is written unchanged by the exporter (verbatim output, names
-        # of the model written), if its codec writes read texts as read (the write plan
-        # asks: Codec.keeps_read_text)
         self.as_is = self.codec_only or kind == "id" or self.is_reference
-        self.codec = make_codec(kind, dtype=dtype, is_array=self.is_array, lo=self.lo,
-                                hi=self.hi, keywords=self.keywords, pattern=pattern,
-                                alone=self.alone, ordered=ordered, numbers=self.numbers)
+        self.codec = make_codec(kind, dtype=self.dtype, is_array=self.is_array, lo=self.lo,
+                                hi=self.hi, keywords=self.keywords, pattern=self.pattern,
+                                alone=self.alone, ordered=self.ordered, numbers=self.numbers)
 
     def mark_name_list(self, namespace: str) -> None:
         """This text lists names of ``namespace``: an attached model's are scoped when
@@ -199,6 +106,13 @@ class AttributeSpec:
 WritePlan = tuple[tuple[str, ...], tuple[tuple[str, AttributeSpec, bool], ...], str]
 
 
+class RowClass(Protocol):
+    """A row's generated class, as the grammar sees it: its row (the tree's elements are
+    such classes; the grammar, below the tree, knows them by this alone)."""
+
+    spec: ClassVar[ElementSpec]
+
+
 class ChildSpec:
     """A legal child of a row: its tag, Python class name and whether it appears once.
 
@@ -217,7 +131,7 @@ class ChildSpec:
     card: str
     once: bool
     index: int
-    cls: type[Element]  # the generated class, set once every class exists
+    cls: type[RowClass]  # the generated class, set once every class exists
     holder: ElementSpec  # the row this is a child of, set once every class exists
 
     def __init__(self, tag: str, class_name: str, *, single: bool = False, card: str = "*",

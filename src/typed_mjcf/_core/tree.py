@@ -61,7 +61,7 @@ from typed_mjcf._core.errors import (
     UnknownAttributeError,
     did_you_mean,
 )
-from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec
+from typed_mjcf._core.grammar import AttributeSpec, ChildSpec, ElementSpec, RowClass
 from typed_mjcf._core.language import GrammarFacts
 from typed_mjcf._core.names import SEPARATOR, UNNAMED_MODEL, NameScope, NameTaken
 from typed_mjcf._core.sourcelines import SourceText, file_start_line
@@ -201,7 +201,6 @@ class _Blank(_Layout):
     :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
 
     __slots__ = ()
-
 
 
 class SiblingNumbers:
@@ -1063,7 +1062,7 @@ _set_singles = _slot_writer("_singles")
 _set_attached = _slot_writer("_attached")
 
 
-def _create(cls: type[Element], parent: Element) -> Element:
+def _create(cls: type[RowClass], parent: Element) -> Element:
     """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
     children), with no values."""
     # made as a _Blank (its slots written directly, past Element.__setattr__), then given

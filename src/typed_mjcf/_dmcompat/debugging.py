@@ -19,7 +19,7 @@ import importlib
 import os
 import re
 from collections.abc import Generator, Iterator
-from typing import Final, NamedTuple
+from typing import Final, NamedTuple, cast
 
 from lxml import etree
 
@@ -287,7 +287,10 @@ __all__ = ["DEBUG_METADATA_PREFIX", "ElementDebugInfo", "StackTraceEntry", "debu
 
 def _explained(error: ValueError, model: _tree.ModelBase) -> ValueError:
     """:func:`explained`, lent to ``Physics`` (``compile_error_advice``) through the tree."""
-    return explained(error, model) if isinstance(model, ModelRoot) else error
+    if not isinstance(model, ModelRoot):
+        return error
+    # (its camera and key types play no part here)
+    return explained(error, cast("ModelRoot[_tree.Element, _tree.Element]", model))
 
 
 def _lend() -> None:

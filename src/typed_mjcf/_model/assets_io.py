@@ -18,7 +18,7 @@ from typed_mjcf._core.errors import ExportError
 from typed_mjcf._core.names import UNNAMED_MODEL
 from typed_mjcf._core.signals import HeldSignals
 from typed_mjcf._core.tree import ModelBase
-from typed_mjcf._model.write import collect, vfs_text
+from typed_mjcf._model.write import collect
 from typed_mjcf._text.files import (
     CollectedFiles,
     is_plain_file_name,
@@ -27,11 +27,16 @@ from typed_mjcf._text.files import (
     unique_name,
 )
 
+# A model's text for a folder of its own and the files it uses, written before the export
+# (typed_mjcf._sim.text.vfs_text: what writing it needs is resolved in a layer above)
+Written = tuple[str, CollectedFiles]
 
-def model_files(model: ModelBase, model_filename: str | None = None) -> dict[str, bytes]:
-    """The files a folder export writes: the model's XML (named ``model_filename``, else
-    after the model) last, after every file it uses."""
-    xml, collected = vfs_text(model)
+
+def model_files(model: ModelBase, written: Written,
+                model_filename: str | None = None) -> dict[str, bytes]:
+    """The files a folder export writes: the model's XML (``written``, named
+    ``model_filename``, else after the model) last, after every file it uses."""
+    xml, collected = written
     data = xml.encode("utf-8")
     if model_filename is None:
         stem = _tree.scope_of(model).name or UNNAMED_MODEL
@@ -74,9 +79,10 @@ def _source_file(model: ModelBase) -> str | None:
     return name if name.lower().endswith(".xml") and len(name) > len(".xml") else None
 
 
-def export_with_assets(model: ModelBase, directory: str, model_filename: str | None = None,
-                       *, overwrite: bool = False, after_source: bool = True) -> str:
-    """Write the XML and its files into ``directory``; return the XML's path.
+def export_with_assets(model: ModelBase, written: Written, directory: str,
+                       model_filename: str | None = None, *, overwrite: bool = False,
+                       after_source: bool = True) -> str:
+    """Write the XML and its files (``written``) into ``directory``; return the XML's path.
 
     Without ``model_filename`` the XML is named after the file the model was read from
     (``after_source``), else after the model (``model=``), as dm_control names it.
@@ -88,7 +94,7 @@ def export_with_assets(model: ModelBase, directory: str, model_filename: str | N
     is written to a temporary file in ``directory`` and renamed over its name, so a reader
     never sees half a file; the model's XML is written last.
     """
-    xml, collected = vfs_text(model)
+    xml, collected = written
     if model_filename is None:
         source = _source_file(model) if after_source else None
         stem = (source[: -len(".xml")] if source is not None

@@ -5,7 +5,7 @@ for its own joints, actuators and mocap bodies. Keys with the same name combine 
 of the whole model: each part's values go to the addresses its joints (actuators, mocap
 bodies) have in the composed model, and what no part gives keeps MuJoCo's default (``qpos0``,
 zero velocities and controls). The layout comes from compiling the composed model once
-without keyframes.
+without keyframes, before it is written (:mod:`typed_mjcf._sim.text`).
 """
 
 from __future__ import annotations
@@ -18,7 +18,6 @@ import numpy as np
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.errors import ExportError
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
-from typed_mjcf._sim.compile import compile_from_memory
 from typed_mjcf._text.export import Writer
 from typed_mjcf._text.xmltext import Node
 
@@ -44,14 +43,6 @@ class LayoutError(ExportError):
         super().__init__(f"combining the keyframes of the attached models needs the composed "
                          f"model to compile, and MuJoCo refused it: {mujoco_message}")
         self.mujoco_message = mujoco_message
-
-
-def compile_layout(xml: str, files: dict[str, bytes]) -> mujoco.MjModel:
-    """The composed model compiled without keyframes: where each part's values go."""
-    try:
-        return compile_from_memory(xml, files)
-    except ValueError as error:
-        raise LayoutError(str(error)) from None
 
 
 class _Key:

@@ -21,7 +21,7 @@ from typed_mjcf._core.access import Confinement
 from typed_mjcf._core.errors import FileAccessError, FileReadError, InvalidTypeError, ParseError
 from typed_mjcf._core.names import UNNAMED_MODEL
 from typed_mjcf._core.tree import ModelBase
-from typed_mjcf._model.assets_io import model_files, write_files
+from typed_mjcf._model.assets_io import Written, model_files, write_files
 from typed_mjcf._text.files import safe_file_name
 from typed_mjcf._text.parse import ParseLimits, read_bounded
 
@@ -151,15 +151,15 @@ def use_archive_files(model: ModelBase, files: ArchiveFiles) -> None:
     _tree.set_memory_files(model, files)
 
 
-def write_zip(model: ModelBase, directory: str, model_name: str | None = None, *,
-              overwrite: bool = False) -> str:
-    """Write ``model`` and its files into ``directory/<name>.zip``, each under ``<name>/``
+def write_zip(model: ModelBase, written: Written, directory: str,
+              model_name: str | None = None, *, overwrite: bool = False) -> str:
+    """Write ``model`` and its files (``written``) into ``directory/<name>.zip``, each under ``<name>/``
     (as dm_control writes it); return the archive's path. Written as the folder export
     writes a file: atomically, never through a link, never over a different file unless
     ``overwrite``."""
     name = model_name or _tree.scope_of(model).name or UNNAMED_MODEL
     stem = safe_file_name(name)
-    files = model_files(model, f"{stem}.xml")
+    files = model_files(model, written, f"{stem}.xml")
     buffer = io.BytesIO()
     # Fixed dates, so the same model makes the same archive (and an export can tell).
     with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:

@@ -14,6 +14,7 @@ installed 3.17.0") and :func:`value_note` why a value is refused.
 from __future__ import annotations
 
 import copy
+import dataclasses
 import os
 import re
 from collections.abc import Callable, Mapping
@@ -22,6 +23,7 @@ from typing import TYPE_CHECKING, Final, cast
 
 from typed_mjcf._core.codecs import Codec, Rejected
 from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.rows import ReleaseType, release_type
 from typed_mjcf._generated.releases import (
     ATTRIBUTES,
     CHILDREN,
@@ -32,7 +34,7 @@ from typed_mjcf._generated.releases import (
 )
 
 if TYPE_CHECKING:
-    from typed_mjcf._core.grammar import ElementSpec, Kind
+    from typed_mjcf._core.grammar import ElementSpec
     from typed_mjcf._core.tree import Element
 
 # the distributions that install the `mujoco` module: MuJoCo 4's engine comes as
@@ -169,49 +171,31 @@ def newest_keywords(spec: ElementSpec, attribute: AttributeSpec) -> tuple[str, .
     return newest_type(spec, attribute).keywords
 
 
-# One release's type of an attribute, as the generated TYPES table writes it: kind, number
-# type, value count (None: one value), keywords, numbers read as keywords, default, namespace
-TypeRow = tuple[str, "str | None", "tuple[int, int | None] | None", tuple[str, ...],
-                tuple[tuple[str, int], ...], "str | None", "str | None"]
-
-
 def release_codec(spec: ElementSpec, newest: AttributeSpec, release: str) -> Codec:
     """The codec of ``newest`` (an attribute as the newest types it) in ``release``."""
     return _typed(newest, _release_type(spec, newest, release)).codec
 
 
-def _release_type(spec: ElementSpec, newest: AttributeSpec, release: str) -> TypeRow:
+def _release_type(spec: ElementSpec, newest: AttributeSpec, release: str) -> ReleaseType:
     """``release``'s type of ``newest`` (an attribute as the newest types it)."""
     found = TYPES.get(spec.row, {}).get(newest.name, {}).get(release)
     if found is not None:
         return found
-    kind, dtype, arity, words, numbers, default, namespace = _type_of(newest)
-    words = KEYWORDS.get(spec.row, {}).get(newest.name, {}).get(release, words)
-    return kind, dtype, arity, words, numbers, default, namespace
+    own = release_type(newest)
+    words = KEYWORDS.get(spec.row, {}).get(newest.name, {}).get(release)
+    return own if words is None else own._replace(keywords=words)
 
 
-def _type_of(attribute: AttributeSpec) -> TypeRow:
-    arity = (attribute.lo, attribute.hi) if attribute.is_array or attribute.kind == "chars" \
-        else None
-    return (attribute.kind, attribute.dtype, arity, attribute.keywords, attribute.numbers,
-            attribute.default, attribute.namespace)
-
-
-def _typed(newest: AttributeSpec, typed_as: TypeRow) -> AttributeSpec:
+def _typed(newest: AttributeSpec, typed_as: ReleaseType) -> AttributeSpec:
     """A copy of ``newest`` typed as ``typed_as`` says (what the kind does not fix, such as a
     keyword's words taken alone or a number's bounds, kept when the kind is the newest's)."""
-    kind, dtype, arity, words, numbers, default, namespace = typed_as
-    same = kind == newest.kind
-    typed = AttributeSpec(
-        newest.name, cast("Kind", kind), py_name=newest.py_name, dtype=dtype, arity=arity,
-        keywords=words, numbers=numbers, alone=newest.alone if same else (),
-        ordered=newest.ordered and same,
-        namespace=namespace, namespace_from=newest.namespace_from if same else None,
-        default=default, computed=newest.computed and default is None,
-        required=newest.required, pattern=newest.pattern if same else None,
-        bounds=newest.bounds if same else (), off=newest.off if same else (),
-        directory=newest.directory, anchor=newest.anchor,
-        doc=newest.doc, scope=newest.scope)
+    same = typed_as.kind == newest.kind
+    typed = dataclasses.replace(
+        newest, **typed_as._asdict(), computed=newest.computed and typed_as.default is None,
+        alone=newest.alone if same else (), ordered=newest.ordered and same,
+        namespace_from=newest.namespace_from if same else None,
+        pattern=newest.pattern if same else None, bounds=newest.bounds if same else (),
+        off=newest.off if same else ())
     typed.index = newest.index
     if newest.name_list is not None and same:
         typed.mark_name_list(newest.name_list)
@@ -271,7 +255,7 @@ def _retype(cls: type[Element], spec: ElementSpec, attribute: AttributeSpec,
             typed: AttributeSpec) -> None:
     """Make ``attribute`` (the object every table of the row holds) ``typed``, and the
     property reading it follow (it keeps its own copies of the codec and the kind)."""
-    for slot in type(attribute).__slots__:
+    for slot in (f.name for f in dataclasses.fields(typed)):  # the row and what it derives
         setattr(attribute, slot, getattr(typed, slot))
     spec.references = tuple(a for a in spec.attributes.values() if a.is_reference)
     spec.plans.clear()

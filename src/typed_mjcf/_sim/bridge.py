@@ -14,9 +14,10 @@ from typed_mjcf._core.tree import ModelBase
 from typed_mjcf._model.keyframes import LayoutError
 from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._model.validate import ensure_valid
-from typed_mjcf._model.write import collect, vfs_text
+from typed_mjcf._model.write import collect
 from typed_mjcf._sim.compile import compile_from_memory, spec_from_memory
 from typed_mjcf._sim.locate import locate
+from typed_mjcf._sim.text import vfs_text
 from typed_mjcf._text.files import CollectedFiles
 
 if TYPE_CHECKING:

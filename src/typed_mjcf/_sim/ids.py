@@ -22,10 +22,10 @@ from typed_mjcf._core.errors import CompileError
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._model.validate import ensure_valid
-from typed_mjcf._model.write import element_text, vfs_text
 from typed_mjcf._sim.binding import binding_tables
 from typed_mjcf._sim.bridge import compile_model
 from typed_mjcf._sim.compile import compile_from_memory
+from typed_mjcf._sim.text import model_text, vfs_text
 from typed_mjcf._text.export import Writer
 from typed_mjcf._text.files import element_file_stem
 
@@ -82,7 +82,7 @@ def ids_for_text(model: ModelBase, text: str, files: Mapping[str, bytes],
     the same text with markers; ``None`` if ``text`` is not ``model.to_xml_string()``."""
     marks: list[Element] = []
     written: dict[int, tuple[Element, str]] = {}
-    marked = element_text(model, namer=_namer(model, marks, written))
+    marked = model_text(model, namer=_namer(model, marks, written))
     if _UNMARK.sub("", marked) != text:
         return None
     try:

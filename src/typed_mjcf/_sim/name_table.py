@@ -8,9 +8,10 @@ made only when the names are laid out so (checked against ``name_<kind>adr``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
+import numpy.typing as npt
 
 if TYPE_CHECKING:
     import mujoco
@@ -21,10 +22,11 @@ def name_ids(model: mujoco.MjModel, size: str) -> dict[str, int] | None:
     (``"njnt"``), the first of a repeated name as ``mj_name2id`` gives; ``None`` where the
     model does not lay the names out as expected (then ask ``mj_name2id``)."""
     count: object = getattr(model, size, None)
-    addresses: object = getattr(model, f"name_{size[1:]}adr", None)
-    if not isinstance(count, int) or count < 1 or not isinstance(addresses, np.ndarray):
+    found: object = getattr(model, f"name_{size[1:]}adr", None)
+    if not isinstance(count, int) or count < 1 or not isinstance(found, np.ndarray):
         return None
-    text: object = model.names
+    addresses = cast("npt.NDArray[np.int64]", found).astype(np.int64)  # int32 in MuJoCo
+    text = cast(object, model.names)
     if not isinstance(text, bytes) or len(addresses) != count:
         return None
     start, last = int(addresses[0]), int(addresses[-1])
@@ -38,7 +40,7 @@ def name_ids(model: mujoco.MjModel, size: str) -> dict[str, int] | None:
     if len(names) != count:
         return None
     lengths = np.fromiter(map(len, text[start:end].split(b"\0")), np.int64, count)
-    if not np.array_equal(np.diff(addresses.astype(np.int64)), lengths[:-1] + 1):
+    if not np.array_equal(np.diff(addresses), lengths[:-1] + 1):
         return None
     table = dict(zip(reversed(names), range(count - 1, -1, -1), strict=True))
     table.pop("", None)  # unnamed objects: no name finds them

@@ -10,9 +10,9 @@ from typing import Literal, cast
 
 from typed_mjcf._core.errors import InvalidValueError, MjcfError
 from typed_mjcf._core.tree import ModelBase
-from typed_mjcf._model.write import element_text
 from typed_mjcf._sim.png import encode_png
 from typed_mjcf._sim.preview import render
+from typed_mjcf._sim.text import model_text
 
 Display = Literal["picture", "xml"]
 
@@ -57,7 +57,7 @@ def repr_mimebundle(model: ModelBase) -> dict[str, str | bytes]:
     """What IPython shows, rendered once: the picture (PNG, and HTML with the MJCF under a
     ``<details>`` click), or the MJCF alone in XML mode or when there is no picture."""
     try:
-        xml = element_text(model)
+        xml = model_text(model)
     except MjcfError as error:  # a model that cannot be written yet: say so, don't raise
         xml = f"<!-- the model cannot be written as MJCF: {error} -->"
     code = f"<pre>{html.escape(xml)}</pre>"
