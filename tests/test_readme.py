@@ -16,16 +16,23 @@ The examples' behaviour when run is tested in ``test_examples.py``.
 
 from __future__ import annotations
 
-import contextlib
 import importlib.util
-import io
 import re
 from collections.abc import Mapping
 from pathlib import Path
 
 import pytest
 
-from tests.support.doc_blocks import BLOCKS, EXAMPLES, MISTAKES_PAGE, README, Block, page_blocks
+from tests.support.doc_blocks import (
+    BLOCKS,
+    EXAMPLES,
+    MISTAKES_PAGE,
+    README,
+    Block,
+    needs_warp,
+    page_blocks,
+    run_block,
+)
 from tests.support.typecheck import CHECKERS, NEGATIVE_FILES, Checker, Diagnostic
 from tests.support.user_code import CANARY_LINES, MISTAKES, MISTAKES_FIRST_LINE, UserCode
 
@@ -37,22 +44,6 @@ def test_documented_example_runs(block: Block, tmp_path: Path,
         pytest.skip("needs MuJoCo Warp (the warp extra): nox -s warp runs it "
                     "(tests/warp/test_docs.py)")
     run_block(block, tmp_path, monkeypatch)
-
-
-def needs_warp(block: Block) -> bool:
-    """Whether the block uses MuJoCo Warp (the ``warp`` extra)."""
-    return "typed_mjcf.warp" in block.code
-
-
-def run_block(block: Block, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Run the block; each of its ``# `` lines must be in what it prints."""
-    monkeypatch.chdir(tmp_path)  # what an example writes (an image) lands there
-    expected = [line[2:] for line in block.code.splitlines() if line.startswith("# ")]
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out):
-        exec(compile("\n" * (block.line - 1) + block.code, str(block.source), "exec"), {})
-    for line in expected:
-        assert line in out.getvalue()
 
 
 def test_the_pages_have_examples() -> None:

@@ -105,7 +105,7 @@ def test_a_new_fact_goes_from_facts_toml_to_the_runtime(tmp_path: Path) -> None:
         shutil.copytree(root / part, copy / part)
     shutil.copytree(root / "src", copy / "src", symlinks=True)
     shutil.copy(root / "pyproject.toml", copy / "pyproject.toml")  # the pins generate checks
-    declaration = copy / "src" / "typed_mjcf" / "_language.py"
+    declaration = copy / "src" / "typed_mjcf" / "_core" / "language.py"
     text = declaration.read_text(encoding="utf-8")
     declaration.write_text(text.replace(
         "    keyframe: KeyframeFacts\n",

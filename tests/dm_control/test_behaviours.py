@@ -17,9 +17,8 @@ import numpy as np
 import pytest
 
 import typed_mjcf as mjcf
+from tests.support.meshes import box_stl
 from typed_mjcf._core.behaviour import listing
-
-from ..runtime.test_io import box_stl
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "guide" / "dm-control.md"
 FLAGS = [flag.name for flag in dataclasses.fields(mjcf.Behaviour)]

@@ -19,6 +19,7 @@ from lxml import etree
 
 import typed_mjcf as mjcf
 from tests.compiled import patches
+from typed_mjcf import tooling
 from typed_mjcf._core import codecs as _codecs
 from typed_mjcf._core.tree import element_classes
 from typed_mjcf.cli import main
@@ -133,7 +134,10 @@ def _two_decimals(values: Sequence[float], single: bool = False,
 def test_the_float_spelling_moves_every_route(
         tmp_path: Path, capsys: pytest.CaptureFixture[str],
         monkeypatch: pytest.MonkeyPatch) -> None:
+    # the command line's spelling is the codec's (through typed_mjcf.tooling, the same function)
+    assert tooling.real_text is _codecs.real_text
     monkeypatch.setattr(_codecs, "real_text", _two_decimals)
+    monkeypatch.setattr(tooling, "real_text", _two_decimals)
     written = routes(tmp_path, capsys)
     assert {name for name, text in written.items() if not _token(text, "0.99")} == set()
     # a text read from a file and not asked to be reformatted is written as it was read

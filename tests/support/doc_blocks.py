@@ -1,11 +1,16 @@
 """The documentation's Python blocks (the README's and the hand-written pages of ``docs/``),
-the generated MJCF reference's examples as one module, and the scripts of ``examples/``."""
+the generated MJCF reference's examples as one module, and the scripts of ``examples/``;
+running a block as a test does."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import re
 from dataclasses import dataclass
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 README = ROOT / "README.md"
@@ -39,6 +44,22 @@ def page_blocks(path: Path) -> list[Block]:
 
 
 BLOCKS = [block for page in PAGES for block in page_blocks(page)]
+
+
+def needs_warp(block: Block) -> bool:
+    """Whether the block uses MuJoCo Warp (the ``warp`` extra)."""
+    return "typed_mjcf.warp" in block.code
+
+
+def run_block(block: Block, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Run the block; each of its ``# `` lines must be in what it prints."""
+    monkeypatch.chdir(tmp_path)  # what an example writes (an image) lands there
+    expected = [line[2:] for line in block.code.splitlines() if line.startswith("# ")]
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        exec(compile("\n" * (block.line - 1) + block.code, str(block.source), "exec"), {})
+    for line in expected:
+        assert line in out.getvalue()
 
 
 def reference_examples() -> str:

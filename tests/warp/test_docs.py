@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.test_readme import BLOCKS, Block, needs_warp, run_block
+from tests.support.doc_blocks import BLOCKS, Block, needs_warp, run_block
 
 WARP_BLOCKS = [block for block in BLOCKS if needs_warp(block)]
 

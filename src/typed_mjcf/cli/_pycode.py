@@ -16,7 +16,7 @@ import re
 from dataclasses import dataclass
 from typing import Final
 
-from typed_mjcf.tooling import real_text
+from typed_mjcf import tooling
 
 WIDTH: Final = 100
 INDENT: Final = "    "
@@ -68,7 +68,7 @@ def number(x: float) -> str:
         return "math.inf" if x > 0 else "-math.inf"
     if x == 0 and math.copysign(1.0, x) < 0:
         return "-0.0"
-    text = real_text((x,))
+    text = tooling.real_text((x,))  # looked up at each call: one spelling, the codec's
     return _EXPONENT.sub(lambda m: f"e{'-' if m.group(1) == '-' else ''}{m.group(2)}", text)
 
 
