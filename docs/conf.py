@@ -49,7 +49,9 @@ suppress_warnings = ["myst.xref_missing"] if os.environ.get("DOCS_LOOSE") else [
 nitpicky = True
 # Names of other packages: no inventory of theirs is reachable from the build (no network),
 # so they are shown as written. Every typed_mjcf name must resolve.
-nitpick_ignore = [("py:obj", "typed_mjcf.types._S")]  # a private type variable of Array
+# private type variables: Array's, and the root's camera and key (render's parameters)
+nitpick_ignore = [("py:obj", "typed_mjcf.types._S"), ("py:class", "_Camera_contra"),
+                  ("py:class", "_Key_contra")]
 nitpick_ignore_regex = [
     (r"py:.*", (r"(numpy|np|npt|lxml|mujoco|collections|typing|typing_extensions|os|pathlib"
                r"|zipfile|io|builtins|types|_typeshed|enum|dataclasses)(\..*)?")),

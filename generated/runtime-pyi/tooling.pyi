@@ -2,13 +2,13 @@
 """The internal API for tools built on typed-mjcf, its own command line first.
 
 Stable within a minor release (``0.1.x``), not the user API: user code imports
-``typed_mjcf`` (and :mod:`typed_mjcf.io`, :mod:`typed_mjcf.errors`, ...). The command line
+``typed_mjcf`` (and ``typed_mjcf.io``, ``typed_mjcf.errors``, ...). The command line
 imports only those and this module; what it needs of the runtime is named here once, so a
 change inside the runtime's folders shows here and nowhere else.
 
 - the tree: the base element class, the root's, and functions reading an element's slots
   (its children, stored values, name, scope, model, where it was read from);
-- the grammar: rows and attributes (:class:`ElementSpec`, :class:`AttributeSpec`), the
+- the grammar: rows and attributes (``ElementSpec``, ``AttributeSpec``), the
   language facts, the generated class of a row;
 - values: the codecs' export format, their refusal, the two codec kinds the code writer
   spells, one codec per attribute signature, and the one spelling of reals;
