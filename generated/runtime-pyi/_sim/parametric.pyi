@@ -17,7 +17,7 @@ moving bodies' masses; the mean diagonal of the inertia matrix at ``qpos0``); ``
 ``extent`` and ``center`` only scale what a viewer draws, and keep the compiled model's.
 """
 from __future__ import annotations
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Final, TypeAlias, cast
 import numpy as np

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import copy
 import math
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Final, TypeAlias, cast
 
@@ -30,6 +30,7 @@ import numpy.typing as npt
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.errors import InvalidValueError, MjcfError, NotParametricError
 from typed_mjcf._core.tree import Element, ModelBase
+from typed_mjcf._model.validate import keeps
 from typed_mjcf._sim.bridge import compile_model
 from typed_mjcf.types import Array, MuJoCoArray
 
@@ -42,10 +43,6 @@ Draw: TypeAlias = Iterable[tuple[Element, str, MuJoCoArray]]
 # the statistics the compiler derives that are computed again here (the others: drawing)
 RECOMPUTED_STATS: Final = ("meanmass", "meaninertia")
 VISUAL_STATS: Final = ("meansize", "extent", "center")
-_KEEPS: Final[dict[str, Callable[[float, float], bool]]] = {
-    ">": lambda x, y: x > y, ">=": lambda x, y: x >= y,
-    "<": lambda x, y: x < y, "<=": lambda x, y: x <= y,
-}
 
 
 @dataclass(frozen=True, slots=True)
@@ -143,9 +140,7 @@ def attribute_values(element: Element, attribute: str, values: npt.ArrayLike,
                 f"{element.path}: {attribute!r} of <{element.spec.tag}> is not a number "
                 f"(world {world}: {_short(item)}); only numbers are written into a compiled "
                 f"model: compile one model per world") from None
-        bad = [x for x in numbers.tolist() if not math.isfinite(x) or not all(
-            _KEEPS[op](x, limit) for op, limit in spec.bounds)]
-        if bad:
+        if not np.isfinite(numbers).all() or not keeps(numbers, spec.bounds):
             expected = " and ".join(["finite", *(f"{op} {limit:g}" for op, limit in
                                                  spec.bounds)])
             raise InvalidValueError(f"{element.path}: world {world}: invalid {attribute}="
