@@ -2,7 +2,6 @@
 tests that exist."""
 
 import ast
-import gc
 
 from tests.conftest import FIRST, GROUPS, SLOW, SPREAD, TESTS
 
@@ -26,9 +25,3 @@ def test_every_scheduling_entry_exists() -> None:
     """SPREAD, GROUPS and FIRST (tests/conftest.py) name test modules that exist."""
     named = {*SPREAD, *GROUPS, *GROUPS.values(), *FIRST}
     assert sorted(m for m in named if not (TESTS / m).is_file()) == []
-
-
-def test_the_collected_heap_is_frozen() -> None:
-    """tests/conftest.py freezes what collection made (gc.freeze): full collections during the
-    tests do not rescan it (CONTRIBUTING.md, "Keeping the suite fast")."""
-    assert gc.get_freeze_count() > 1000
