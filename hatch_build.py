@@ -54,6 +54,26 @@ class CompileHook(BuildHookInterface):
             shutil.rmtree(built, ignore_errors=True)
 
 
+# What the compiled copy of a module changes, in every compiled module: mypyc gives a class
+# a fixed layout of its own and refuses a dataclass's ``slots=True``, which the pure build
+# keeps (an attribute row without it carries a __dict__: 2.3 MB more at import).
+_COMPILED_EDITS: tuple[tuple[str, str], ...] = (("@dataclass(slots=True, ", "@dataclass("),)
+
+
+def _stage(root: Path, sources: list[str], stage: Path) -> Path:
+    """A copy of ``src/`` (links followed) and pyproject.toml under ``stage``, with
+    ``_COMPILED_EDITS`` made in the ``sources``: what mypyc compiles."""
+    shutil.copytree(root / "src", stage / "src", symlinks=False, dirs_exist_ok=True)
+    shutil.copy2(root / "pyproject.toml", stage / "pyproject.toml")
+    for source in sources:
+        path = stage / source
+        text = path.read_text(encoding="utf-8")
+        for old, new in _COMPILED_EDITS:
+            text = text.replace(old, new)
+        path.write_text(text, encoding="utf-8")
+    return stage
+
+
 def _compile(root: Path, sources: list[str], out: Path, *, separate: bool = False,
              ) -> list[tuple[Path, str]]:
     """mypyc over ``sources`` (paths under ``root``) into extension modules under ``out``:
@@ -67,8 +87,9 @@ def _compile(root: Path, sources: list[str], out: Path, *, separate: bool = Fals
     # (which the editable install puts on the path) are given as a `mujoco` stub folder.
     stubs = out / "stubs"
     shutil.copytree(root / "generated" / "mujoco-stubs", stubs / "mujoco", dirs_exist_ok=True)
+    stage = _stage(root, sources, out / "stage")
     here, mypypath = Path.cwd(), os.environ.get("MYPYPATH")
-    os.chdir(root)  # mypy names a module from its path: src/typed_mjcf/_core/tree.py -> typed_mjcf._core.tree
+    os.chdir(stage)  # mypy names a module from its path: src/typed_mjcf/_core/tree.py -> typed_mjcf._core.tree
     os.environ["MYPYPATH"] = str(stubs)
     try:
         version = f"{sys.version_info.major}.{sys.version_info.minor}"  # the wheel's Python

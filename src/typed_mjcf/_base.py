@@ -51,7 +51,7 @@ if TYPE_CHECKING:
 class Element(_tree.Element):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
-    __slots__ = ()
+    __slots__ = _tree.WEAKREF_SLOTS  # (the compiled build's native base keeps none)
 
     # ------------------------------------------------------------------ unknown attributes
     # Here, not on typed_mjcf._core.tree.Element: that module may be compiled (mypyc drops code

@@ -96,7 +96,7 @@ def short_repr(value: object) -> str:
     """``repr(value)``, shortened as the messages of refused values shorten it."""
     ...
 
-@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
+@mypyc_attr(allow_interpreted_subclasses=True, serializable=True)
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
@@ -107,6 +107,8 @@ class _Layout:
     _scope: NameScope
     _singles: dict[str, Element] | None
     _attached: ModelBase | None
+NATIVE_LAYOUT: Final = "__slots__" not in vars(_Layout)
+WEAKREF_SLOTS: Final[tuple[str, ...]] = ...
 
 class SiblingNumbers:
     """Each child's place among its parent's children of its tag, counted once per parent:
@@ -118,7 +120,7 @@ def paths(elements: Iterable[Element]) -> list[str]:
     """The paths of ``elements`` (as :attr:`Element.path`), in time linear in their number."""
     ...
 
-@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
+@mypyc_attr(allow_interpreted_subclasses=True, serializable=True)
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
     spec: ClassVar[ElementSpec]
@@ -188,7 +190,7 @@ class Element(_Layout):
         their contents, whatever their names)."""
         ...
 
-@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
+@mypyc_attr(allow_interpreted_subclasses=True, serializable=True)
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's

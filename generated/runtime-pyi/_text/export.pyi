@@ -24,7 +24,7 @@ from typed_mjcf._core.codecs import DEFAULT_FORMAT, Format
 from typed_mjcf._core.grammar import AttributeSpec, ElementSpec, WritePlan
 from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
-from typed_mjcf._text.xmltext import MARKUP, MAX_INDENT, Chunk, Node, escape, indent
+from typed_mjcf._text.xmltext import MAX_INDENT, Chunk, Node, escape, has_markup, indent
 FileNamer = Callable[[Element, AttributeSpec], str]
 
 def is_empty_single(parent: Element, child: Element) -> bool:

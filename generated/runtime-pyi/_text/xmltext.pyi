@@ -7,9 +7,13 @@ objects with the few operations composition needs, written out in one iterative 
 models do not hit Python's recursion limit).
 """
 from __future__ import annotations
-import re
 from collections.abc import Callable, Iterator
-MARKUP = re.compile("[&<>\n\r\t]")
+
+def has_markup(text: str) -> bool:
+    """Whether escaping would change ``text`` other than in its double quotes. Six scans of
+    one character each (memchr speed) cost a fraction of a regular expression's character
+    class matched at every position: this check runs once per exported element."""
+    ...
 
 class Chunk:
     """A subtree written straight to text when serialised, at the depth it lands at."""

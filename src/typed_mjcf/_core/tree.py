@@ -76,10 +76,12 @@ _FACTS: list[GrammarFacts] = []
 DCLASS: Final = "dclass"  # dm_control's Python name of the class attribute (also ours)
 _RESERVED_NAMES: set[str] = set()  # names a body may not take (the world body's)
 _NO_CHILDREN: tuple[()] = ()
-_new_object = object.__new__
 # What a refused value may say of itself (a stand-in for values, such as a distribution of
 # typed_mjcf.variation, says where it goes): each gives a note or None; asked on refusal only.
 _REJECTION_NOTES: list[Callable[[object], str | None]] = []
+# object.__setattr__, called as a function (mypyc's own translation of object.__setattr__
+# does not handle the slots of native classes)
+_write_attribute: Final[Callable[[object, str, object], None]] = object.__setattr__
 # object.__new__ of a _Blank (see _create)
 _new_blank = cast("Callable[[type[_Blank]], _Blank]", object.__new__)
 
@@ -166,25 +168,25 @@ def short_repr(value: object) -> str:
     return _short(value)
 
 
-# Element classes stay ordinary Python classes when compiled (their methods compiled):
-# generated classes and users subclass them, elements change __class__ (_Blank), keep
-# __weakref__ and __slots__, pickle without __init__; and since the subclasses are not
-# compiled, compiled code must check an argument's class with isinstance (not `is`).
-@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
+# The element classes are native classes when compiled (mypyc): their slots are C struct
+# fields, so the compiled tree reads and writes them directly, past the Python-level
+# lookups (and _base.Element's __getattr__ hook) an ordinary class costs on every access.
+# Generated classes and users' subclasses are interpreted subclasses of them; compiled code
+# checks an argument's class with isinstance (not `is`). What differs between the builds:
+# a native class keeps no __slots__ (the fields are declared by the annotations) and no
+# weak references of its own (_base.Element adds the slot: WEAKREF_SLOTS), and a native
+# instance cannot change its class (_create makes elements another way).
+_LAYOUT_SLOTS: Final = ("__weakref__", "_attached", "_children", "_parent", "_root", "_scope",
+                        "_singles", "_values")
+_MODEL_SLOTS: Final = ("_access", "_base_dir", "_files", "_frame", "_sources")
+
+
+@mypyc_attr(allow_interpreted_subclasses=True, serializable=True)
 class _Layout:
     """What every element stores (see :class:`Element`), in a class of its own so that
     elements can be made as a :class:`_Blank` and given their class once filled in."""
 
-    __slots__ = (
-        "__weakref__",
-        "_attached",
-        "_children",
-        "_parent",
-        "_root",
-        "_scope",
-        "_singles",
-        "_values",
-    )
+    __slots__ = _LAYOUT_SLOTS
 
     _values: dict[str, object]
     _children: list[Element] | tuple[()]  # () until the first child: fewer objects for the GC
@@ -195,12 +197,18 @@ class _Layout:
     _attached: ModelBase | None  # on attachment frames: the model attached there
 
 
-@mypyc_attr(native_class=False)
+@mypyc_attr(serializable=True)
 class _Blank(_Layout):
-    """An element being made: the same layout as every element class, without
-    :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
+    """An element being made (pure Python build): the same layout as every element class,
+    without :class:`Element`'s ``__setattr__``, so its slots are written at full speed."""
 
     __slots__ = ()
+
+
+# Whether the element classes are native (the compiled build): mypyc keeps no __slots__.
+NATIVE_LAYOUT: Final = "__slots__" not in vars(_Layout)
+# The slot _base.Element adds: weak references, which a native class does not support itself.
+WEAKREF_SLOTS: Final[tuple[str, ...]] = ("__weakref__",) if NATIVE_LAYOUT else ()
 
 
 class SiblingNumbers:
@@ -228,7 +236,7 @@ def paths(elements: Iterable[Element]) -> list[str]:
     return [element._path(numbers) for element in elements]
 
 
-@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
+@mypyc_attr(allow_interpreted_subclasses=True, serializable=True)
 class Element(_Layout):
     """An MJCF element. Use the generated subclasses (``typed_mjcf.Body``, ...)."""
 
@@ -239,7 +247,7 @@ class Element(_Layout):
 
     def __init_subclass__(cls, **kwargs: object) -> None:
         super().__init_subclass__(**kwargs)
-        spec: ElementSpec | None = cls.__dict__.get("spec")
+        spec: ElementSpec | None = vars(cls).get("spec")
         if spec is None:
             return
         _CLASSES[cls.__name__] = cls
@@ -581,12 +589,12 @@ class Element(_Layout):
         tree = cast("list[tuple[Element, Element]]", state.pop(_TREE, []))
         state.pop(_TOP, None)
         for name, value in state.items():
-            object.__setattr__(self, name, value)
+            _write_attribute(self, name, value)
         for element, parent in tree:
             if not parent._children:
-                object.__setattr__(parent, "_children", [])
+                _set_children(parent, [])
             cast(list[Element], parent._children).append(element)
-            object.__setattr__(element, "_parent", parent)
+            _set_parent(element, parent)
 
     def __copy__(self) -> Self:
         return self.__deepcopy__({})
@@ -655,24 +663,24 @@ class Element(_Layout):
 _TREE: Final = "tree"  # in a pickled top element's state: (element, parent) below it
 _TOP: Final = "top"  # in a pickled removed element's state: the top of its subtree
 # what a pickled element's state holds: every slot but the tree's links
-_PICKLED: Final = tuple(sorted(set(_Layout.__slots__) - {"__weakref__", "_children", "_parent"}))
+_PICKLED: Final = tuple(sorted(set(_LAYOUT_SLOTS) - {"__weakref__", "_children", "_parent"}))
 
 
 def _unpickled(cls: type[Element]) -> Element:
     """A blank element of ``cls``, for pickle to fill in (its links come from the top)."""
     element = cls.__new__(cls)
-    object.__setattr__(element, "_children", ())
-    object.__setattr__(element, "_parent", None)
+    _set_children(element, ())
+    _set_parent(element, None)
     return element
 
 
-@mypyc_attr(native_class=False, allow_interpreted_subclasses=True)
+@mypyc_attr(allow_interpreted_subclasses=True, serializable=True)
 class ModelBase(Element):
     """The root of a model: its name scope, the folder its files are relative to, where it
     is attached, the file contents it was given in memory, and where a parsed model's
     elements were read."""
 
-    __slots__ = ("_access", "_base_dir", "_files", "_frame", "_sources")
+    __slots__ = _MODEL_SLOTS
 
     _access: Confinement  # the files it may read (a model built in Python: any)
     _base_dir: str | None
@@ -706,7 +714,7 @@ class ModelBase(Element):
         return clone
 
 
-_PICKLED_MODEL: Final = _PICKLED + ModelBase.__slots__
+_PICKLED_MODEL: Final = _PICKLED + _MODEL_SLOTS
 
 
 def _init_model(model: ModelBase) -> None:
@@ -796,7 +804,7 @@ class _Lines(Mapping[Element, tuple[str | None, int | None]]):
 
 def new_model(cls: type[ModelBase]) -> ModelBase:
     """An empty model of the generated root class (no attributes set)."""
-    model = _new_object(cls)
+    model = cls.__new__(cls)  # (not object.__new__: a native class makes its own)
     _init_model(model)
     return model
 
@@ -1050,7 +1058,7 @@ class _Slot(Protocol):
 def _slot_writer(name: str) -> Callable[[Element, object], None]:
     """Writes one of Element's slots past Element.__setattr__ (which exists to turn unknown
     names into helpful errors, and would slow every write of the tree)."""
-    return cast(_Slot, _Layout.__dict__[name]).__set__
+    return cast(_Slot, vars(_Layout)[name]).__set__
 
 
 _set_values = _slot_writer("_values")
@@ -1065,20 +1073,30 @@ _set_attached = _slot_writer("_attached")
 def _create(cls: type[RowClass], parent: Element) -> Element:
     """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
     children), with no values."""
-    # made as a _Blank (its slots written directly, past Element.__setattr__), then given
-    # its class: about three times faster than writing each slot through its descriptor
-    blank = _new_blank(_Blank)
-    blank._values = {}
-    blank._children = _NO_CHILDREN
-    blank._parent = parent
-    blank._root = parent._root
     attached = parent._attached
-    blank._scope = parent._scope if attached is None else attached._scope
-    blank._singles = None
-    blank._attached = None
-    object.__setattr__(blank, "__class__", cls)
-    # an Element now (typed so only from here: compiled code checks what a name holds)
-    element = cast(Element, blank)
+    if NATIVE_LAYOUT:  # compiled: the fields are written directly
+        element = cast(Element, cls.__new__(cls))
+        element._values = {}
+        element._children = _NO_CHILDREN
+        element._parent = parent
+        element._root = parent._root
+        element._scope = parent._scope if attached is None else attached._scope
+        element._singles = None
+        element._attached = None
+    else:
+        # made as a _Blank (its slots written directly, past Element.__setattr__), then given
+        # its class: about three times faster than writing each slot through its descriptor
+        blank = _new_blank(_Blank)
+        blank._values = {}
+        blank._children = _NO_CHILDREN
+        blank._parent = parent
+        blank._root = parent._root
+        blank._scope = parent._scope if attached is None else attached._scope
+        blank._singles = None
+        blank._attached = None
+        _write_attribute(blank, "__class__", cls)
+        # an Element now (typed so only from here: compiled code checks what a name holds)
+        element = cast(Element, blank)
     if _RECORDER[0] is not None:
         _RECORDER[0](element, None, True)
     return element
@@ -1439,7 +1457,8 @@ def _clone_tree(top: E, parent: Element | None, root: ModelBase | None, scope: N
     stack: list[tuple[Element, Element | None, NameScope]] = [(top, parent, scope)]
     while stack:
         original, clone_parent, clone_scope = stack.pop()
-        clone = _new_object(type(original))
+        cls = type(original)
+        clone = cls.__new__(cls)
         _set_values(clone, {key: value for key, value in original._values.items()}
                     if not _FLAGS.arrays_in_place else COMPAT.copied_values(original._values))
         _set_children(clone, _NO_CHILDREN)

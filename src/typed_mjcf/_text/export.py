@@ -30,7 +30,7 @@ from typed_mjcf._core.names import SEPARATOR, NameScope
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.files import absolute_file, element_file_stem, is_skin_file, name_files
 from typed_mjcf._text.merge import combine, rule_of
-from typed_mjcf._text.xmltext import MARKUP, MAX_INDENT, Chunk, Node, escape, indent
+from typed_mjcf._text.xmltext import MAX_INDENT, Chunk, Node, escape, has_markup, indent
 from typed_mjcf.assets import Asset
 
 # The text of a file attribute when the files are renamed (for a virtual file system).
@@ -231,7 +231,7 @@ class Writer:
                     return self.escaped_attribute_text(element, stored, plan)
                 append(text)
         out = plan[2] % tuple(texts)
-        if out.count('"') != 2 * len(texts) or MARKUP.search(out) is not None:
+        if out.count('"') != 2 * len(texts) or has_markup(out):
             return self.escaped_attribute_text(element, stored, plan)
         return out
 

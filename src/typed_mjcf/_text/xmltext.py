@@ -12,9 +12,16 @@ import re
 from collections.abc import Callable, Iterator
 
 _SPECIAL = re.compile('[&<>"\n\r\t]')
-MARKUP = re.compile("[&<>\n\r\t]")  # what escaping changes, but the double quote
 _ESCAPES = str.maketrans({"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;",
                           "\n": "&#10;", "\r": "&#13;", "\t": "&#9;"})
+
+
+def has_markup(text: str) -> bool:
+    """Whether escaping would change ``text`` other than in its double quotes. Six scans of
+    one character each (memchr speed) cost a fraction of a regular expression's character
+    class matched at every position: this check runs once per exported element."""
+    return ("&" in text or "<" in text or ">" in text or "\n" in text or "\r" in text
+            or "\t" in text)
 
 
 class Chunk:
