@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import re
 import shutil
+import tempfile
 import tomllib
 from pathlib import Path
 
@@ -82,13 +83,19 @@ def tests_compiled(session: nox.Session) -> None:
     nox -s tests_compiled                              # build, install, test
     nox -s tests_compiled -- tests/runtime -x          # other pytest arguments
     """
-    wheels = Path(session.create_tmp()) / "wheels"
-    shutil.rmtree(wheels, ignore_errors=True)
-    session.install("build[uv]")
-    session.run("python", "-m", "build", "--wheel", "--installer", "uv", "--outdir",
-                str(wheels), ".", env={"TYPED_MJCF_COMPILE": "1"})
-    (wheel,) = wheels.glob("typed_mjcf-*.whl")
-    session.install(f"{wheel}[dev]")
+    # The wheel goes to a folder of its own outside the clone, not session.create_tmp(): that
+    # sets TMPDIR to .nox/tests_compiled/tmp for every later command, so the tests' tmp_path
+    # would lie inside the working directory, where the library names files relative to it
+    # (fmt's messages, an attached model's files), unlike in `nox -s tests`.
+    wheels = Path(tempfile.mkdtemp(prefix="typed-mjcf-wheels-"))
+    try:
+        session.install("build[uv]")
+        session.run("python", "-m", "build", "--wheel", "--installer", "uv", "--outdir",
+                    str(wheels), ".", env={"TYPED_MJCF_COMPILE": "1"})
+        (wheel,) = wheels.glob("typed_mjcf-*.whl")
+        session.install(f"{wheel}[dev]")
+    finally:
+        shutil.rmtree(wheels, ignore_errors=True)
     # the tests import typed_mjcf from site-packages (pytest puts the repository root on the
     # path, where no typed_mjcf is); TYPED_MJCF_EXPECT_COMPILED makes test_build insist
     session.run("pytest", "-n", "auto", *(session.posargs or COMPILED_TESTS),
