@@ -1290,6 +1290,8 @@ def own_scoped_names(elements: Iterable[Element]) -> list[str | None]:
     frame (asked one by one). For binding many elements at once."""
     prefixes: dict[int, str] = {}
     out: list[str | None] = []
+    last: NameScope | None = None  # the scope of the element before, and its prefix
+    prefix = ""
     for element in elements:
         attribute = element.spec.id_attribute
         name = (None if attribute is None or element._root is None
@@ -1298,9 +1300,11 @@ def own_scoped_names(elements: Iterable[Element]) -> list[str | None]:
             out.append(None)
             continue
         scope = element._scope
-        prefix = prefixes.get(id(scope))
-        if prefix is None:
-            prefix = prefixes[id(scope)] = scope.prefix()
+        if scope is not last:
+            found = prefixes.get(id(scope))
+            if found is None:
+                found = prefixes[id(scope)] = scope.prefix()
+            last, prefix = scope, found
         out.append(prefix + name)
     return out
 
