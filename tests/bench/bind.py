@@ -4,7 +4,8 @@ typed-mjcf: ``mjcf.Physics.from_mjcf_model(model)`` made outside the timing, the
 ``physics.bind(joints).qpos`` (a first bind: names resolved, rows computed) and the same read
 again (the binding is cached). The floor is what a MuJoCo user writes by hand: ``mj_name2id``
 for each scoped name, ``jnt_qposadr`` for the rows, ``data.qpos[rows]``. Both read the same
-values (checked). Times are medians of process CPU time.
+values (checked). Times are medians of process CPU time, each case run round robin with its
+floor.
 """
 
 from __future__ import annotations
@@ -28,13 +29,16 @@ def _model(n: int) -> Any:
     return model
 
 
-def _median(run: Callable[[], object], repeats: int) -> float:
-    samples: list[float] = []
+def _medians(runs: list[Callable[[], object]], repeats: int) -> list[float]:
+    """The median CPU time of each of ``runs``, run round robin (a case and its floor share
+    the machine's load as it changes)."""
+    samples: list[list[float]] = [[] for _ in runs]
     for _ in range(repeats):
-        start = time.process_time()
-        run()
-        samples.append(time.process_time() - start)
-    return statistics.median(samples)
+        for run, times in zip(runs, samples, strict=True):
+            start = time.process_time()
+            run()
+            times.append(time.process_time() - start)
+    return [statistics.median(times) for times in samples]
 
 
 def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
@@ -65,16 +69,14 @@ def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
     np.testing.assert_array_equal(np.asarray(first_bind()), np.asarray(by_hand()))
     text = model.to_xml_string()
     compiles = max(3, repeats // 4)  # a compile of the model takes tens of ms
-    floor = _median(by_hand, repeats)
-    compiled = _median(lambda: mujoco.MjModel.from_xml_string(text), compiles)
+    floor, first, again = _medians([by_hand, first_bind, cached], repeats)
+    compiled, physics_made = _medians([lambda: mujoco.MjModel.from_xml_string(text),
+                                       lambda: mjcf.Physics.from_mjcf_model(model)], compiles)
     rows = [("mj_name2id + data.qpos[jnt_qposadr[ids]] (floor)", floor, floor),
-            ("typed-mjcf physics.bind(joints).qpos, first bind", _median(first_bind, repeats),
-             floor),
-            ("typed-mjcf physics.bind(joints).qpos, cached binding", _median(cached, repeats),
-             floor),
+            ("typed-mjcf physics.bind(joints).qpos, first bind", first, floor),
+            ("typed-mjcf physics.bind(joints).qpos, cached binding", again, floor),
             ("mujoco.MjModel.from_xml_string(the model's text) (floor)", compiled, compiled),
-            ("typed-mjcf Physics.from_mjcf_model(model)",
-             _median(lambda: mjcf.Physics.from_mjcf_model(model), compiles), compiled)]
+            ("typed-mjcf Physics.from_mjcf_model(model)", physics_made, compiled)]
     return [{"label": label, "median": t, "ratio": t / base, "n": n}
             for label, t, base in rows]
 
