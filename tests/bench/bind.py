@@ -68,7 +68,7 @@ def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
 
     np.testing.assert_array_equal(np.asarray(first_bind()), np.asarray(by_hand()))
     text = model.to_xml_string()
-    compiles = max(3, repeats // 4)  # a compile of the model takes tens of ms
+    compiles = max(3, (repeats + 1) // 2)  # tens of ms each: fewer runs, as many as noise needs
     floor, first, again = _medians([by_hand, first_bind, cached], repeats)
     compiled, physics_made = _medians([lambda: mujoco.MjModel.from_xml_string(text),
                                        lambda: mjcf.Physics.from_mjcf_model(model)], compiles)
