@@ -1842,13 +1842,15 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
         while stack:
             element = stack.pop()
             yield element
-            inside = list(children(element))
-            attached = attached_at(element)
-            if attached is not None and attachments:
-                for section in children(attached):
-                    if section.spec.holds_bodies:
-                        inside += children(section)
-                pending.append(attached)
+            attached = element._attached if attachments else None
+            if attached is None:  # (extend reads the children at once: no copy needed)
+                stack.extend(reversed(element._children))
+                continue
+            inside = list(element._children)
+            for section in attached._children:
+                if section.spec.holds_bodies:
+                    inside += section._children
+            pending.append(attached)
             stack.extend(reversed(inside))
 
     yield from walk([top])
