@@ -41,8 +41,18 @@ def _medians(runs: list[Callable[[], object]], repeats: int) -> list[float]:
     return [statistics.median(times) for times in samples]
 
 
-def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
-    """The rows of the bind table: label, median seconds, ratio to the mj_name2id floor."""
+# the cases, in order: the bind floor, a first bind, a cached bind; the compile floor, and
+# the physics made from the model
+LABELS = ("mj_name2id + data.qpos[jnt_qposadr[ids]] (floor)",
+          "typed-mjcf physics.bind(joints).qpos, first bind",
+          "typed-mjcf physics.bind(joints).qpos, cached binding",
+          "mujoco.MjModel.from_xml_string(the model's text) (floor)",
+          "typed-mjcf Physics.from_mjcf_model(model)")
+
+
+def bind_cases(n: int = JOINTS) -> list[Callable[[], object]]:
+    """The cases of :data:`LABELS` on a model of ``n`` joints (also counted by
+    ``python -m tests.bench.instructions --bind``)."""
     import mujoco
     import numpy as np
 
@@ -68,17 +78,20 @@ def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
 
     np.testing.assert_array_equal(np.asarray(first_bind()), np.asarray(by_hand()))
     text = model.to_xml_string()
+    return [by_hand, first_bind, cached, lambda: mujoco.MjModel.from_xml_string(text),
+            lambda: mjcf.Physics.from_mjcf_model(model)]
+
+
+def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
+    """The rows of the bind table: label, median seconds, ratio to the mj_name2id floor."""
+    by_hand, first_bind, cached, compile_text, from_model = bind_cases(n)
     compiles = max(3, (repeats + 1) // 2)  # tens of ms each: fewer runs, as many as noise needs
     floor, first, again = _medians([by_hand, first_bind, cached], repeats)
-    compiled, physics_made = _medians([lambda: mujoco.MjModel.from_xml_string(text),
-                                       lambda: mjcf.Physics.from_mjcf_model(model)], compiles)
-    rows = [("mj_name2id + data.qpos[jnt_qposadr[ids]] (floor)", floor, floor),
-            ("typed-mjcf physics.bind(joints).qpos, first bind", first, floor),
-            ("typed-mjcf physics.bind(joints).qpos, cached binding", again, floor),
-            ("mujoco.MjModel.from_xml_string(the model's text) (floor)", compiled, compiled),
-            ("typed-mjcf Physics.from_mjcf_model(model)", physics_made, compiled)]
+    compiled, physics_made = _medians([compile_text, from_model], compiles)
+    times = [floor, first, again, compiled, physics_made]
+    bases = [floor, floor, floor, compiled, compiled]
     return [{"label": label, "median": t, "ratio": t / base, "n": n}
-            for label, t, base in rows]
+            for label, t, base in zip(LABELS, times, bases, strict=True)]
 
 
 def render_bind(rows: list[dict[str, Any]]) -> list[str]:
