@@ -41,6 +41,7 @@ from typed_mjcf._core.errors import (
     PhysicsError,
     RenderError,
 )
+from typed_mjcf._core.grammar import ElementSpec
 from typed_mjcf._core.tree import Element, ModelBase
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
@@ -688,6 +689,12 @@ class Physics(Bind):
     def _kind_of_all(self, elements: list[Element]) -> str:
         """The one kind of ``elements`` (found once per row: the kind of an element whose
         row has a namespace is that namespace's)."""
+        # one class per row: elements of rows with one namespace MuJoCo binds are of that
+        # kind (the world body, errors and mixed kinds: element by element, below)
+        kinds = {_row_kind(cls) for cls in set(map(type, elements))}
+        kind = kinds.pop() if len(kinds) == 1 else None
+        if kind is not None:
+            return kind
         first: str | None = None
         known: dict[int, str] = {}  # id(spec) -> kind
         for element in elements:
@@ -727,9 +734,16 @@ class Physics(Bind):
         # a batch of more than an eighth of the kind: every name read at once is cheaper
         table = (name_ids(model, compiled.size)
                  if len(elements) * 8 >= int(getattr(model, compiled.size)) else None)
+        owns = _tree.own_scoped_names(elements)
+        if table is not None and unnamed.keys().isdisjoint(map(id, elements)):
+            # every element found by its own name at once (no name: "", which none has);
+            # any other case, element by element below
+            numbers = [table.get(own or "", -1) for own in owns]
+            if min(numbers) >= 0:
+                return np.asarray(numbers, dtype=np.intp)
         prefixes: dict[int, str] = {}  # each name scope's prefix, computed once
         out: list[int] = []
-        for element, own in zip(elements, _tree.own_scoped_names(elements), strict=True):
+        for element, own in zip(elements, owns, strict=True):
             if own is not None and id(element) not in unnamed:  # the common case, at once
                 found = name2id(model, objtype, own) if table is None else table.get(own, -1)
                 if found >= 0:
@@ -795,6 +809,13 @@ class Physics(Bind):
     def __del__(self) -> None:
         with contextlib.suppress(Exception):
             self._free_renderers()
+
+
+def _row_kind(cls: type) -> str | None:
+    """The kind of every element of class ``cls``: its row's namespace, if MuJoCo binds it."""
+    spec = getattr(cls, "spec", None) if issubclass(cls, Element) else None
+    namespace = spec.namespace if isinstance(spec, ElementSpec) else None
+    return namespace if namespace in binding_tables().kinds else None
 
 
 def _scoped_name(element: Element, prefixes: dict[int, str]) -> str | None:

@@ -4,7 +4,8 @@ typed-mjcf: ``mjcf.Physics.from_mjcf_model(model)`` made outside the timing, the
 ``physics.bind(joints).qpos`` (a first bind: names resolved, rows computed) and the same read
 again (the binding is cached). The floor is what a MuJoCo user writes by hand: ``mj_name2id``
 for each scoped name, ``jnt_qposadr`` for the rows, ``data.qpos[rows]``. Both read the same
-values (checked). Times are medians of process CPU time.
+values (checked). Times are medians of process CPU time, each case run round robin with its
+floor.
 """
 
 from __future__ import annotations
@@ -28,17 +29,30 @@ def _model(n: int) -> Any:
     return model
 
 
-def _median(run: Callable[[], object], repeats: int) -> float:
-    samples: list[float] = []
+def _medians(runs: list[Callable[[], object]], repeats: int) -> list[float]:
+    """The median CPU time of each of ``runs``, run round robin (a case and its floor share
+    the machine's load as it changes)."""
+    samples: list[list[float]] = [[] for _ in runs]
     for _ in range(repeats):
-        start = time.process_time()
-        run()
-        samples.append(time.process_time() - start)
-    return statistics.median(samples)
+        for run, times in zip(runs, samples, strict=True):
+            start = time.process_time()
+            run()
+            times.append(time.process_time() - start)
+    return [statistics.median(times) for times in samples]
 
 
-def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
-    """The rows of the bind table: label, median seconds, ratio to the mj_name2id floor."""
+# the cases, in order: the bind floor, a first bind, a cached bind; the compile floor, and
+# the physics made from the model
+LABELS = ("mj_name2id + data.qpos[jnt_qposadr[ids]] (floor)",
+          "typed-mjcf physics.bind(joints).qpos, first bind",
+          "typed-mjcf physics.bind(joints).qpos, cached binding",
+          "mujoco.MjModel.from_xml_string(the model's text) (floor)",
+          "typed-mjcf Physics.from_mjcf_model(model)")
+
+
+def bind_cases(n: int = JOINTS) -> list[Callable[[], object]]:
+    """The cases of :data:`LABELS` on a model of ``n`` joints (also counted by
+    ``python -m tests.bench.instructions --bind``)."""
     import mujoco
     import numpy as np
 
@@ -64,19 +78,20 @@ def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
 
     np.testing.assert_array_equal(np.asarray(first_bind()), np.asarray(by_hand()))
     text = model.to_xml_string()
-    compiles = max(3, repeats // 4)  # a compile of the model takes tens of ms
-    floor = _median(by_hand, repeats)
-    compiled = _median(lambda: mujoco.MjModel.from_xml_string(text), compiles)
-    rows = [("mj_name2id + data.qpos[jnt_qposadr[ids]] (floor)", floor, floor),
-            ("typed-mjcf physics.bind(joints).qpos, first bind", _median(first_bind, repeats),
-             floor),
-            ("typed-mjcf physics.bind(joints).qpos, cached binding", _median(cached, repeats),
-             floor),
-            ("mujoco.MjModel.from_xml_string(the model's text) (floor)", compiled, compiled),
-            ("typed-mjcf Physics.from_mjcf_model(model)",
-             _median(lambda: mjcf.Physics.from_mjcf_model(model), compiles), compiled)]
+    return [by_hand, first_bind, cached, lambda: mujoco.MjModel.from_xml_string(text),
+            lambda: mjcf.Physics.from_mjcf_model(model)]
+
+
+def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
+    """The rows of the bind table: label, median seconds, ratio to the mj_name2id floor."""
+    by_hand, first_bind, cached, compile_text, from_model = bind_cases(n)
+    compiles = max(3, (repeats + 1) // 2)  # tens of ms each: fewer runs, as many as noise needs
+    floor, first, again = _medians([by_hand, first_bind, cached], repeats)
+    compiled, physics_made = _medians([compile_text, from_model], compiles)
+    times = [floor, first, again, compiled, physics_made]
+    bases = [floor, floor, floor, compiled, compiled]
     return [{"label": label, "median": t, "ratio": t / base, "n": n}
-            for label, t, base in rows]
+            for label, t, base in zip(LABELS, times, bases, strict=True)]
 
 
 def render_bind(rows: list[dict[str, Any]]) -> list[str]:

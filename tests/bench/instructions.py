@@ -6,6 +6,7 @@ moves the process's memory, and the median is reported with its spread.
 
     git archive 3996bec^ src generated | tar -x -C /tmp/before    # a copy to compare with
     python -m tests.bench.instructions before=/tmp/before now=.   # ratios against the first
+    python -m tests.bench.instructions --bind --pads 0 before=/tmp/before now=.  # bind cases
 
 Needs valgrind; runs from the repository root (the workloads are ``tests/bench``'s, the
 library each copy's: its ``src/`` and ``generated/`` come first on ``PYTHONPATH``). Each
@@ -62,9 +63,23 @@ def _phases() -> list[Callable[[], object]]:
             lambda: w._typed_w1_generic(N, False)]
 
 
-def drive() -> None:
+# --bind: the bind workload's cases (tests/bench/bind.py), each with the floor it is
+# compared with (an index into BIND_PHASES)
+BIND_PHASES = ("bind floor: mj_name2id + slices", "physics.bind(joints).qpos, first bind",
+               "compile floor: MjModel.from_xml_string", "Physics.from_mjcf_model(model)")
+BIND_FLOORS = (0, 0, 2, 2)
+
+
+def _bind_phases() -> list[Callable[[], object]]:
+    from tests.bench.bind import bind_cases
+
+    by_hand, first_bind, _, compile_text, from_model = bind_cases()
+    return [by_hand, first_bind, compile_text, from_model]
+
+
+def drive(bind: bool = False) -> None:
     """The workload, run under callgrind: every phase once untimed, then each counted."""
-    phases = _phases()
+    phases = _bind_phases() if bind else _phases()
     for run in phases:
         run()
     gc.collect()
@@ -75,19 +90,20 @@ def drive() -> None:
     os.getppid()
 
 
-def _count(copy: Path, pad: int, out: Path) -> list[int]:
+def _count(copy: Path, pad: int, out: Path, bind: bool = False) -> list[int]:
     """Instructions per phase of one run of ``copy``."""
     env = dict(os.environ, PYTHONPATH=f"{copy / 'src'}{os.pathsep}{copy / 'generated'}",
                PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1",
                PAD="x" * pad)
     command = ["valgrind", "--tool=callgrind", "--dump-before=os_getppid*",
                f"--callgrind-out-file={out}", sys.executable, "-m",
-               "tests.bench.instructions", "--drive"]
+               "tests.bench.instructions", "--drive", *(["--bind"] if bind else [])]
     if shutil.which("setarch"):  # no address randomisation: one layout per padding
         command = ["setarch", platform.machine(), "-R", *command]
     subprocess.run(command, env=env, cwd=ROOT, check=True, capture_output=True)
     # part 1 is the start and the untimed round, part k + 2 phase k
-    return [_summary(Path(f"{out}.{k + 2}")) for k in range(len(PHASES))]
+    return [_summary(Path(f"{out}.{k + 2}"))
+            for k in range(len(BIND_PHASES if bind else PHASES))]
 
 
 def _summary(path: Path) -> int:
@@ -104,29 +120,36 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--pads", default="0,40,80",
                         help="environment paddings, one run each (default: 0,40,80)")
     parser.add_argument("--jobs", type=int, default=1, help="runs at once (default: 1)")
+    parser.add_argument("--bind", action="store_true",
+                        help="count the bind workload (tests/bench/bind.py), each case also "
+                             "as a ratio to its floor")
     parser.add_argument("--drive", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.drive:
-        drive()
+        drive(args.bind)
         return 0
     copies = [(label, Path(folder).resolve())
               for label, folder in (item.split("=", 1) for item in args.copies)]
     pads = [int(p) for p in args.pads.split(",")]
     with tempfile.TemporaryDirectory() as tmp, ThreadPoolExecutor(args.jobs) as pool:
-        submitted = {label: [pool.submit(_count, folder, pad, Path(tmp) / f"{label}.{pad}.cg")
+        submitted = {label: [pool.submit(_count, folder, pad, Path(tmp) / f"{label}.{pad}.cg",
+                                         args.bind)
                              for pad in pads] for label, folder in copies}
         counts = {label: [run.result() for run in futures]
                   for label, futures in submitted.items()}
     base = copies[0][0]
     print(f"instructions (millions, median of {len(pads)} layouts, +-half the spread); "
           f"ratios against {base}")
-    for k, phase in enumerate(PHASES):
+    for k, phase in enumerate(BIND_PHASES if args.bind else PHASES):
         cells = []
         for label, _ in copies:
             runs = [run[k] for run in counts[label]]
             median = statistics.median(runs)
             spread = (max(runs) - min(runs)) / 2 / median * 100
             cell = f"{label} {median / 1e6:.2f} (+-{spread:.1f}%)"
+            if args.bind:  # against its floor, in the same runs
+                floor = statistics.median([run[BIND_FLOORS[k]] for run in counts[label]])
+                cell += f" {median / floor:.2f}x"
             if label != base:
                 ratio = median / statistics.median([run[k] for run in counts[base]])
                 cell += f" {100 * (ratio - 1):+.1f}%"

@@ -1308,6 +1308,8 @@ def own_scoped_names(elements: Iterable[Element]) -> list[str | None]:
     frame (asked one by one). For binding many elements at once."""
     prefixes: dict[int, str] = {}
     out: list[str | None] = []
+    last: NameScope | None = None  # the scope of the element before, and its prefix
+    prefix = ""
     for element in elements:
         attribute = element.spec.id_attribute
         name = (None if attribute is None or element._root is None
@@ -1316,9 +1318,11 @@ def own_scoped_names(elements: Iterable[Element]) -> list[str | None]:
             out.append(None)
             continue
         scope = element._scope
-        prefix = prefixes.get(id(scope))
-        if prefix is None:
-            prefix = prefixes[id(scope)] = scope.prefix()
+        if scope is not last:
+            found = prefixes.get(id(scope))
+            if found is None:
+                found = prefixes[id(scope)] = scope.prefix()
+            last, prefix = scope, found
         out.append(prefix + name)
     return out
 
@@ -1857,13 +1861,15 @@ def iter_composed(top: Element, attachments: bool) -> Iterator[Element]:
         while stack:
             element = stack.pop()
             yield element
-            inside = list(children(element))
-            attached = attached_at(element)
-            if attached is not None and attachments:
-                for section in children(attached):
-                    if section.spec.holds_bodies:
-                        inside += children(section)
-                pending.append(attached)
+            attached = element._attached if attachments else None
+            if attached is None:  # (extend reads the children at once: no copy needed)
+                stack.extend(reversed(element._children))
+                continue
+            inside = list(element._children)
+            for section in attached._children:
+                if section.spec.holds_bodies:
+                    inside += section._children
+            pending.append(attached)
             stack.extend(reversed(inside))
 
     yield from walk([top])

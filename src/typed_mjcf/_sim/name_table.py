@@ -31,16 +31,15 @@ def name_ids(model: mujoco.MjModel, size: str) -> dict[str, int] | None:
         return None
     start, last = int(addresses[0]), int(addresses[-1])
     end = text.find(b"\0", last)
-    if end < 0:
+    if not 0 <= start <= end:
+        return None
+    # each name ends where the next begins: its NUL just before the next address
+    ends = np.flatnonzero(np.frombuffer(text, np.uint8, end - start, start) == 0) + start
+    if not np.array_equal(ends, addresses[1:] - 1):
         return None
     try:
         names = text[start:end].decode("utf-8").split("\0")
     except UnicodeDecodeError:
-        return None
-    if len(names) != count:
-        return None
-    lengths = np.fromiter(map(len, text[start:end].split(b"\0")), np.int64, count)
-    if not np.array_equal(np.diff(addresses), lengths[:-1] + 1):
         return None
     table = dict(zip(reversed(names), range(count - 1, -1, -1), strict=True))
     table.pop("", None)  # unnamed objects: no name finds them

@@ -29,7 +29,7 @@ from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.access import Refused, read_file
 from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.errors import FileAccessError, InvalidValueError, MjcfError
-from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.skin import scope_bone_names
 from typed_mjcf.assets import Asset
@@ -272,13 +272,16 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
         collected.apart.update(_kept_apart(model, collected))
     folders = compiler_folders(model)
     directories: set[str] = set()
+    files_of: dict[int, tuple[AttributeSpec, ...]] = {}  # id(row) -> its file attributes
     for element in model.iter_elements():
         stored = _tree.values(element)
         if not stored:
             continue
-        for attribute in element.spec.attributes.values():
-            if attribute.kind != "file":
-                continue
+        spec = element.spec
+        files = files_of.get(id(spec))
+        if files is None:
+            files = files_of[id(spec)] = file_attributes(spec)
+        for attribute in files:
             directories.update(attribute.directory)
             value = stored.get(attribute.name)
             if value is None:
@@ -314,6 +317,12 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     return collected
 
 
+def file_attributes(spec: ElementSpec) -> tuple[AttributeSpec, ...]:
+    """The row's attributes that name files (a caller keeps them per row for one pass: a
+    release may change a row's attributes when the grammar loads)."""
+    return tuple(a for a in spec.attributes.values() if a.kind == "file")
+
+
 def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
     """A name with folders for each file whose base name a file with other contents has too
     (MuJoCo's loader from a dict finds files by base name alone, and renaming one with a
@@ -323,15 +332,23 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
     if FLAGS.hashed_file_names:
         return {}
     by_base: dict[str, dict[str, Callable[[], bytes]]] = {}
+    files_of: dict[int, tuple[AttributeSpec, ...]] = {}  # id(row) -> its file attributes
     models = [model]
     while models:
         owner = models.pop()
         models.extend(_tree.attached_models(owner))
         folders = compiler_folders(owner)
         for element in owner.iter_elements():
-            for name, value in _tree.values(element).items():
-                attribute = element.spec.by_name[name]
-                if attribute.kind != "file" or not isinstance(value, str):
+            spec = element.spec
+            files = files_of.get(id(spec))
+            if files is None:
+                files = files_of[id(spec)] = file_attributes(spec)
+            if not files:
+                continue
+            stored = _tree.values(element)
+            for attribute in files:
+                value = stored.get(attribute.name)
+                if not isinstance(value, str):
                     continue
                 path = resolve_path(owner, attribute, value, folders)
                 by_base.setdefault(os.path.basename(path).casefold(), {})[path] = (
