@@ -19,7 +19,7 @@ own files under their flat names: :func:`collect_files` takes the function that 
 from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typed_mjcf._core.grammar import AttributeSpec
+from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 
 @dataclass
@@ -124,6 +124,11 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     """A flat, unique name for every file the model (and the models attached to it) uses,
     without reading any: files are told apart by their path, in-memory ones by contents
     (and an attached model's skin files by its scope too: their bones are renamed)."""
+    ...
+
+def file_attributes(spec: ElementSpec) -> tuple[AttributeSpec, ...]:
+    """The row's attributes that name files (a caller keeps them per row for one pass: a
+    release may change a row's attributes when the grammar loads)."""
     ...
 
 def collect_files(model: ModelBase, model_file: ModelFileWriter,
