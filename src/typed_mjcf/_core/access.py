@@ -251,6 +251,15 @@ def open_regular(path: str) -> BinaryIO:
     """``path`` opened for reading if it is a regular file (``OSError`` otherwise): opening
     does not block (a FIFO), and a link put in place of its last component after ``path``
     was resolved is not followed (for files read anywhere; see :func:`open_confined`)."""
+    # Most paths end in no link: opened as given (the kernel resolves the folders as
+    # realpath would, without a stat per folder); a link at the end is resolved first.
+    try:
+        return _regular(os.open(path, _FILE_FLAGS))
+    except OSError as error:
+        if error.errno != errno.ELOOP:
+            raise
+    except ValueError:  # an embedded NUL
+        raise OSError(errno.EINVAL, "not a valid path") from None
     real = _real(path)
     if real is None:
         raise OSError(errno.EINVAL, "not a valid path")

@@ -404,7 +404,11 @@ def read_bounded(read: Callable[[int], bytes], limit: int, expected: int = 0) ->
     return b"".join(chunks)
 
 
-def _read_file(path: str, context: _Context, what: str, where: str | None,
+def _the_file() -> str:  # what a message calls the main file (see _read_file's ``what``)
+    return "the file"
+
+
+def _read_file(path: str, context: _Context, what: Callable[[], str], where: str | None,
                by: _Include | None, confinement: Confinement = ANYWHERE) -> bytes:
     """A file's bytes, refusing what ``confinement`` does not allow, what is not a regular
     file and what passes ``max_bytes``; a message names the line of the include ``by``."""
@@ -413,11 +417,11 @@ def _read_file(path: str, context: _Context, what: str, where: str | None,
         with open_confined(path, confinement) as f:
             return read_bounded(f.read, remaining, os.fstat(f.fileno()).st_size)
     except Refused as refused:
-        raise context.error(f"cannot read {what}: {refused}", where,
+        raise context.error(f"cannot read {what()}: {refused}", where,
                             None if by is None else by.line, FileAccessError) from None
     except OSError as error:
         reason = error.strerror or str(error)
-        raise context.error(f"cannot read {what}: {reason}", where,
+        raise context.error(f"cannot read {what()}: {reason}", where,
                             None if by is None else by.line, FileReadError) from None
 
 
@@ -482,7 +486,7 @@ def _confinement(access: FileAccess | Confinement, folder: str | None) -> Confin
 
 
 def _parse_path(path: str, context: _Context) -> ModelBase:
-    data = _read_file(path, context, "the file", path, None)
+    data = _read_file(path, context, _the_file, path, None)
     context.included[path] = _Include(path, None, None)
     node = _read_xml(data, path, context)
     return _build_model(node, context, path)
@@ -892,7 +896,7 @@ class _Builder:
                                 f"a file at most once per model", source, level.line)
         given = context.options.asset(file)
         data = given if given is not None else _read_file(
-            path, context, f"included file {file!r} ({context.shown(path)})", source, level,
+            path, context, lambda: f"included file {file!r} ({context.shown(path)})", source, level,
             context.confinement)
         context.included[path] = level
         self.sources.includes[path] = (source, parent)
