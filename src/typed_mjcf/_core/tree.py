@@ -1783,9 +1783,8 @@ def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool
     for the caller: each with its attribute (``None``: the row lacks it) and the refusal (a
     :class:`Rejected` or a library error), or ``None`` for one not set here (an empty text,
     a reference whose namespace another attribute names, names when not ``names``)."""
-    by_name = element.spec.by_name
+    by_name = type(element).spec.by_name
     values = element._values
-    store, store_name = _store, _store_name
     rest: list[tuple[str, AttributeSpec | None, str, Exception | None]] | None = None
     refused: Exception | None = None
     for key, text in items:
@@ -1796,10 +1795,10 @@ def assign_texts(element: Element, items: Iterable[tuple[str, str]], names: bool
                     values[attribute.name] = attribute.codec.parse(text)
                     continue
                 if names and attribute.kind == "id":
-                    store_name(element, attribute, attribute.codec.parse(text))
+                    _store_name(element, attribute, attribute.codec.parse(text))
                     continue
                 if attribute.direct:
-                    store(element, attribute, attribute.codec.parse(text), True)
+                    _store(element, attribute, attribute.codec.parse(text), True)
                     continue
                 if names and attribute.kind == "ref":
                     assign_text(element, attribute, text, link)

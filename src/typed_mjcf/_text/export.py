@@ -50,9 +50,9 @@ def is_empty_single(parent: Element, child: Element) -> bool:
 
 def written_children(element: Element) -> list[Element]:
     """The children an export writes: all but once-only sections with nothing to say."""
-    child_specs = element.spec.children
+    child_specs = type(element).spec.children
     return [child for child in _tree.children(element)
-            if _tree.values(child) or not child_specs[child.spec.tag].single
+            if _tree.values(child) or not child_specs[type(child).spec.tag].single
             or not is_empty_single(element, child)]
 
 
@@ -206,7 +206,7 @@ class Writer:
         ``Codec.write`` does for it), into the template of the element's set of attributes,
         and escaped only if the result shows something to escape (one check per element
         rather than per value)."""
-        spec = element.spec
+        spec = type(element).spec
         key = tuple(stored)
         plan = spec.plans.get(key)
         if plan is None:
@@ -413,19 +413,20 @@ class Writer:
         deepest = len(indents) - 1  # deeper levels are indented as much
         # the open elements: their children still to write, and their closing text
         stack: list[tuple[Iterator[Element], str]] = []
-        attribute_text, values, children_of = self.attribute_text, _tree.values, _tree.children
+        # (direct calls, not local aliases: compiled, an alias is a Python-level call; the
+        # spec read from the class: an element's own lookup passes its __getattr__ hook)
         given_names = self.given_names
         current, level = element, depth
         spaces = indents[min(deepest, level)]
         while True:
-            tag = current.spec.tag
-            stored = values(current)
+            tag = type(current).spec.tag
+            stored = _tree.values(current)
             # (an element without attributes may still get a name from this export)
             named = stored or (given_names and id(current) in given_names)
-            attrs = attribute_text(current, stored) if named else ""
+            attrs = self.attribute_text(current, stored) if named else ""
             if extra is not None and current is element:
                 attrs += "".join([f' {k}="{escape(v)}"' for k, v in extra.items()])
-            children = written_children(current) if children_of(current) else None
+            children = written_children(current) if _tree.children(current) else None
             if children:
                 append(f"{spaces}<{tag}{attrs}>{newline}")
                 stack.append((iter(children), f"{spaces}</{tag}>{newline}"))

@@ -702,11 +702,12 @@ class _Builder:
     def run(self, root: Element, node: XmlNode, source: str | None) -> None:
         context, stack = self.context, self.stack
         # where each element was read (SourceMap.add, inline: it is per element)
+        # (direct calls, not local aliases of functions and bound methods: compiled, an
+        # alias is a Python-level call where a direct call is a C call)
         sources = self.sources
-        read, lines = sources.order.append, sources.line_numbers.append
+        order, line_numbers = sources.order, sources.line_numbers
         files, main = sources.files, sources.main
         max_depth, max_elements = context.limits.max_depth, context.limits.max_elements
-        new_child, assign_texts, read_rest = _tree.new_child, _tree.assign_texts, _read_rest
         names = not context.options.escape_separators  # the tree claims names as read
         link = context.options.resolve_references  # (and links references)
         long_tags = context.long_tags  # (read again after an include)
@@ -715,7 +716,8 @@ class _Builder:
         stack.append((root, iter(node), source, 1, root, None))
         # the frame on top of the stack, unpacked: reloaded whenever the stack changes
         parent, nodes, source, depth, top, on_exit = stack[-1]
-        child_specs, parent_tag = parent.spec.children, parent.spec.tag
+        parent_spec = type(parent).spec
+        child_specs, parent_tag = parent_spec.children, parent_spec.tag
         while True:
             child_node = next(nodes, None)
             if child_node is None:
@@ -725,7 +727,8 @@ class _Builder:
                 if not stack:
                     return
                 parent, nodes, source, depth, top, on_exit = stack[-1]
-                child_specs, parent_tag = parent.spec.children, parent.spec.tag
+                parent_spec = type(parent).spec
+                child_specs, parent_tag = parent_spec.children, parent_spec.tag
                 continue
             tag: object = child_node.tag
             if not isinstance(tag, str):
@@ -737,7 +740,8 @@ class _Builder:
                 self.include(stack[-1], child_node)
                 long_tags = context.long_tags
                 parent, nodes, source, depth, top, on_exit = stack[-1]
-                child_specs, parent_tag = parent.spec.children, parent.spec.tag
+                parent_spec = type(parent).spec
+                child_specs, parent_tag = parent_spec.children, parent_spec.tag
                 continue
             child_spec = child_specs.get(tag)
             if child_spec is None:
@@ -762,20 +766,21 @@ class _Builder:
                     stack.append((existing, iter(child_node), source, depth + 1, existing,
                                   check))
                     parent, nodes, source, depth, top, on_exit = stack[-1]
-                    child_specs, parent_tag = parent.spec.children, parent.spec.tag
+                    parent_spec = type(parent).spec
+                    child_specs, parent_tag = parent_spec.children, parent_spec.tag
                     continue
-            child = new_child(parent, child_spec)
+            child = _tree.new_child(parent, child_spec)
             if merged and parent in merged:
                 self.read_in[child] = merged[parent]
-            read(child)
-            lines(child_node.sourceline or 0)
+            order.append(child)
+            line_numbers.append(child_node.sourceline or 0)
             if source is not main:
                 files[child] = source
             items = attributes_of(child_node) if long_tags else child_node.items()
             if items:  # values and names by the tree, the rest here
-                rest = assign_texts(child, items, names, link)
+                rest = _tree.assign_texts(child, items, names, link)
                 if rest is not None:
-                    read_rest(child, rest, child_node, source, context)
+                    _read_rest(child, rest, child_node, source, context)
             child_top = child
             if tag == parent_tag:
                 child_top = top
@@ -785,7 +790,8 @@ class _Builder:
             if len(child_node):
                 stack.append((child, iter(child_node), source, depth + 1, child_top, None))
                 parent, nodes, source, depth, top, on_exit = stack[-1]
-                child_specs, parent_tag = parent.spec.children, parent.spec.tag
+                parent_spec = type(parent).spec
+                child_specs, parent_tag = parent_spec.children, parent_spec.tag
 
     def count(self, node: XmlNode, source: str | None, elements: int = 0) -> None:
         """Count ``elements`` more (or check the count); refuse past ``max_elements``."""
