@@ -12,6 +12,12 @@ Needs valgrind; runs from the repository root (the workloads are ``tests/bench``
 library each copy's: its ``src/`` and ``generated/`` come first on ``PYTHONPATH``). Each
 phase is counted between two ``os.getppid()`` calls, after one untimed round of every
 phase (caches, checked texts, write plans), with the cyclic collector off.
+
+``--floors`` counts issue 38's workloads at their sizes, each beside raw lxml doing the same
+XML work (its ratio to that floor), and a copy given as ``LABEL=python:PATH`` is the
+typed-mjcf installed for the interpreter ``PATH`` (a compiled build), not a folder:
+
+    python -m tests.bench.instructions --floors --pads 0 pure=. compiled=python:.venv-c/bin/python
 """
 
 from __future__ import annotations
@@ -77,9 +83,39 @@ def _bind_phases() -> list[Callable[[], object]]:
     return [by_hand, first_bind, compile_text, from_model]
 
 
-def drive(bind: bool = False) -> None:
+# --floors: issue 38's workloads, each after its floor (raw lxml doing the same XML work)
+FLOOR_PHASES = ("W1 floor: lxml (N=5,000, named)", "W1 build + export (N=5,000, named)",
+                "humanoid floor: lxml", "humanoid_CMU parse + export",
+                "W1 text floor: lxml", "W2 parse + export W1's text (N=5,000)",
+                "W3 floor: lxml (K=500)", "W3 build + attach + export (K=500)")
+FLOOR_OF = (0, 0, 2, 2, 4, 4, 6, 6)
+
+
+def _floor_phases() -> list[Callable[[], object]]:
+    from tests.bench import workloads as w
+
+    w.TypedMjcf().load()
+    w.RawLxml().load()
+    mjcf: Any = w.mjcf_t
+    human = w.humanoid_path()
+    text = w._typed_export(w._typed_w1(5000, True))
+    return [lambda: w._lxml_export(w._lxml_w1(5000, True)),
+            lambda: w._typed_export(w._typed_w1(5000, True)),
+            lambda: w._lxml_export(w._lxml_parse_path(human)),
+            lambda: w._typed_export(mjcf.from_path(human)),
+            lambda: w._lxml_export(w._lxml_parse_text(text)),
+            lambda: w._typed_export(mjcf.from_xml_string(text)),
+            lambda: w._lxml_export(w._lxml_w3(500)),
+            lambda: w._typed_export(w._typed_w3(500))]
+
+
+_MODES: dict[str, tuple[tuple[str, ...], tuple[int, ...] | None]] = {
+    "": (PHASES, None), "bind": (BIND_PHASES, BIND_FLOORS), "floors": (FLOOR_PHASES, FLOOR_OF)}
+
+
+def drive(mode: str = "") -> None:
     """The workload, run under callgrind: every phase once untimed, then each counted."""
-    phases = _bind_phases() if bind else _phases()
+    phases = {"": _phases, "bind": _bind_phases, "floors": _floor_phases}[mode]()
     for run in phases:
         run()
     gc.collect()
@@ -90,20 +126,24 @@ def drive(bind: bool = False) -> None:
     os.getppid()
 
 
-def _count(copy: Path, pad: int, out: Path, bind: bool = False) -> list[int]:
-    """Instructions per phase of one run of ``copy``."""
-    env = dict(os.environ, PYTHONPATH=f"{copy / 'src'}{os.pathsep}{copy / 'generated'}",
-               PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1",
+def _count(copy: str, pad: int, out: Path, mode: str = "") -> list[int]:
+    """Instructions per phase of one run of ``copy`` (a folder, or ``python:PATH``)."""
+    env = dict(os.environ, PYTHONHASHSEED="0", OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1",
                PAD="x" * pad)
+    python = sys.executable
+    if copy.startswith("python:"):  # that interpreter's own typed-mjcf
+        python = copy.removeprefix("python:")
+    else:
+        folder = Path(copy).resolve()
+        env["PYTHONPATH"] = f"{folder / 'src'}{os.pathsep}{folder / 'generated'}"
     command = ["valgrind", "--tool=callgrind", "--dump-before=os_getppid*",
-               f"--callgrind-out-file={out}", sys.executable, "-m",
-               "tests.bench.instructions", "--drive", *(["--bind"] if bind else [])]
+               f"--callgrind-out-file={out}", python, "-m",
+               "tests.bench.instructions", "--drive", *([f"--{mode}"] if mode else [])]
     if shutil.which("setarch"):  # no address randomisation: one layout per padding
         command = ["setarch", platform.machine(), "-R", *command]
     subprocess.run(command, env=env, cwd=ROOT, check=True, capture_output=True)
     # part 1 is the start and the untimed round, part k + 2 phase k
-    return [_summary(Path(f"{out}.{k + 2}"))
-            for k in range(len(BIND_PHASES if bind else PHASES))]
+    return [_summary(Path(f"{out}.{k + 2}")) for k in range(len(_MODES[mode][0]))]
 
 
 def _summary(path: Path) -> int:
@@ -123,32 +163,35 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--bind", action="store_true",
                         help="count the bind workload (tests/bench/bind.py), each case also "
                              "as a ratio to its floor")
+    parser.add_argument("--floors", action="store_true",
+                        help="count issue 38's workloads, each also as a ratio to raw lxml")
     parser.add_argument("--drive", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
+    mode = "bind" if args.bind else "floors" if args.floors else ""
     if args.drive:
-        drive(args.bind)
+        drive(mode)
         return 0
-    copies = [(label, Path(folder).resolve())
-              for label, folder in (item.split("=", 1) for item in args.copies)]
+    copies = [(label, folder) for label, folder in (item.split("=", 1) for item in args.copies)]
     pads = [int(p) for p in args.pads.split(",")]
+    phases, floors = _MODES[mode]
     with tempfile.TemporaryDirectory() as tmp, ThreadPoolExecutor(args.jobs) as pool:
         submitted = {label: [pool.submit(_count, folder, pad, Path(tmp) / f"{label}.{pad}.cg",
-                                         args.bind)
+                                         mode)
                              for pad in pads] for label, folder in copies}
         counts = {label: [run.result() for run in futures]
                   for label, futures in submitted.items()}
     base = copies[0][0]
     print(f"instructions (millions, median of {len(pads)} layouts, +-half the spread); "
           f"ratios against {base}")
-    for k, phase in enumerate(BIND_PHASES if args.bind else PHASES):
+    for k, phase in enumerate(phases):
         cells = []
         for label, _ in copies:
             runs = [run[k] for run in counts[label]]
             median = statistics.median(runs)
             spread = (max(runs) - min(runs)) / 2 / median * 100
             cell = f"{label} {median / 1e6:.2f} (+-{spread:.1f}%)"
-            if args.bind:  # against its floor, in the same runs
-                floor = statistics.median([run[BIND_FLOORS[k]] for run in counts[label]])
+            if floors is not None:  # against its floor, in the same runs
+                floor = statistics.median([run[floors[k]] for run in counts[label]])
                 cell += f" {median / floor:.2f}x"
             if label != base:
                 ratio = median / statistics.median([run[k] for run in counts[base]])
