@@ -1073,32 +1073,33 @@ _set_attached = _slot_writer("_attached")
 def _create(cls: type[RowClass], parent: Element) -> Element:
     """A new element of ``cls`` (a generated class) under ``parent`` (not yet among its
     children), with no values."""
+    attached = parent._attached
     if NATIVE_LAYOUT:  # compiled: the fields are written directly
         element = cast(Element, cls.__new__(cls))
-        _fill(element, parent)
+        element._values = {}
+        element._children = _NO_CHILDREN
+        element._parent = parent
+        element._root = parent._root
+        element._scope = parent._scope if attached is None else attached._scope
+        element._singles = None
+        element._attached = None
     else:
         # made as a _Blank (its slots written directly, past Element.__setattr__), then given
         # its class: about three times faster than writing each slot through its descriptor
         blank = _new_blank(_Blank)
-        _fill(blank, parent)
+        blank._values = {}
+        blank._children = _NO_CHILDREN
+        blank._parent = parent
+        blank._root = parent._root
+        blank._scope = parent._scope if attached is None else attached._scope
+        blank._singles = None
+        blank._attached = None
         _write_attribute(blank, "__class__", cls)
         # an Element now (typed so only from here: compiled code checks what a name holds)
         element = cast(Element, blank)
     if _RECORDER[0] is not None:
         _RECORDER[0](element, None, True)
     return element
-
-
-def _fill(element: _Layout, parent: Element) -> None:
-    """Write a new element's fields: no values, no children yet, under ``parent``."""
-    attached = parent._attached
-    element._values = {}
-    element._children = _NO_CHILDREN
-    element._parent = parent
-    element._root = parent._root
-    element._scope = parent._scope if attached is None else attached._scope
-    element._singles = None
-    element._attached = None
 
 
 def _child_scope(parent: Element) -> NameScope:
