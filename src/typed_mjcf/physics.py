@@ -62,7 +62,7 @@ from typed_mjcf._sim.binding import (
 )
 from typed_mjcf._sim.compile import compile_from_memory
 from typed_mjcf._sim.gl import ensure_gl_backend, gl_error
-from typed_mjcf._sim.ids import compile_for_physics, ids_for_text, kind_of
+from typed_mjcf._sim.ids import bound_kind, compile_for_physics, ids_for_text, kind_of
 from typed_mjcf._sim.model_state import model_state
 from typed_mjcf._sim.name_table import name_ids
 from typed_mjcf._sim.named import make_axes, struct_indexers
@@ -696,14 +696,8 @@ class Physics(Bind):
         if kind is not None:
             return kind
         first: str | None = None
-        known: dict[int, str] = {}  # id(spec) -> kind
         for element in elements:
-            spec = element.spec if isinstance(cast(object, element), Element) else None
-            kind = None if spec is None else known.get(id(spec))
-            if kind is None:
-                kind = self._kind(element)
-                if spec is not None and spec.namespace is not None:
-                    known[id(spec)] = kind
+            kind = self._kind(element)
             if first is None:
                 first = kind
             elif kind != first:
@@ -814,8 +808,7 @@ class Physics(Bind):
 def _row_kind(cls: type) -> str | None:
     """The kind of every element of class ``cls``: its row's namespace, if MuJoCo binds it."""
     spec = getattr(cls, "spec", None) if issubclass(cls, Element) else None
-    namespace = spec.namespace if isinstance(spec, ElementSpec) else None
-    return namespace if namespace in binding_tables().kinds else None
+    return bound_kind(spec.namespace) if isinstance(spec, ElementSpec) else None
 
 
 def _scoped_name(element: Element, prefixes: dict[int, str]) -> str | None:

@@ -22,6 +22,10 @@ def kind_of(element: Element) -> str | None:
     body too), or ``None`` if it becomes none MuJoCo indexes."""
     ...
 
+def bound_kind(namespace: str | None) -> str | None:
+    """``namespace`` if its elements become objects MuJoCo indexes (a kind bind knows)."""
+    ...
+
 @dataclass(frozen=True, slots=True)
 class Compiled:
     """A compiled model, and the compiled ids of the elements bound without their own name

@@ -126,9 +126,9 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     (and an attached model's skin files by its scope too: their bones are renamed)."""
     ...
 
-def file_attributes(spec: ElementSpec) -> tuple[AttributeSpec, ...]:
-    """The row's attributes that name files (a caller keeps them per row for one pass: a
-    release may change a row's attributes when the grammar loads)."""
+def file_attributes_per_row() -> Callable[[ElementSpec], tuple[AttributeSpec, ...]]:
+    """A row's attributes that name files, found once per row for the pass that asks (not
+    kept longer: a release may change a row's attributes when the grammar loads)."""
     ...
 
 def collect_files(model: ModelBase, model_file: ModelFileWriter,

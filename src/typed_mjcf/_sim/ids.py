@@ -44,6 +44,11 @@ def kind_of(element: Element) -> str | None:
     namespace = spec.namespace
     if namespace is None and spec.holds_bodies and isinstance(element.parent, ModelBase):
         namespace = grammar_facts().body  # the world body is body 0
+    return bound_kind(namespace)
+
+
+def bound_kind(namespace: str | None) -> str | None:
+    """``namespace`` if its elements become objects MuJoCo indexes (a kind bind knows)."""
     return namespace if namespace in binding_tables().kinds else None
 
 

@@ -272,16 +272,12 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
         collected.apart.update(_kept_apart(model, collected))
     folders = compiler_folders(model)
     directories: set[str] = set()
-    files_of: dict[int, tuple[AttributeSpec, ...]] = {}  # id(row) -> its file attributes
+    files_of = file_attributes_per_row()
     for element in model.iter_elements():
         stored = _tree.values(element)
         if not stored:
             continue
-        spec = element.spec
-        files = files_of.get(id(spec))
-        if files is None:
-            files = files_of[id(spec)] = file_attributes(spec)
-        for attribute in files:
+        for attribute in files_of(element.spec):
             directories.update(attribute.directory)
             value = stored.get(attribute.name)
             if value is None:
@@ -317,10 +313,19 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     return collected
 
 
-def file_attributes(spec: ElementSpec) -> tuple[AttributeSpec, ...]:
-    """The row's attributes that name files (a caller keeps them per row for one pass: a
-    release may change a row's attributes when the grammar loads)."""
-    return tuple(a for a in spec.attributes.values() if a.kind == "file")
+def file_attributes_per_row() -> Callable[[ElementSpec], tuple[AttributeSpec, ...]]:
+    """A row's attributes that name files, found once per row for the pass that asks (not
+    kept longer: a release may change a row's attributes when the grammar loads)."""
+    found: dict[int, tuple[AttributeSpec, ...]] = {}  # id(row) -> its file attributes
+
+    def files_of(spec: ElementSpec) -> tuple[AttributeSpec, ...]:
+        files = found.get(id(spec))
+        if files is None:
+            files = found[id(spec)] = tuple(
+                a for a in spec.attributes.values() if a.kind == "file")
+        return files
+
+    return files_of
 
 
 def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
@@ -332,17 +337,14 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
     if FLAGS.hashed_file_names:
         return {}
     by_base: dict[str, dict[str, Callable[[], bytes]]] = {}
-    files_of: dict[int, tuple[AttributeSpec, ...]] = {}  # id(row) -> its file attributes
+    files_of = file_attributes_per_row()
     models = [model]
     while models:
         owner = models.pop()
         models.extend(_tree.attached_models(owner))
         folders = compiler_folders(owner)
         for element in owner.iter_elements():
-            spec = element.spec
-            files = files_of.get(id(spec))
-            if files is None:
-                files = files_of[id(spec)] = file_attributes(spec)
+            files = files_of(element.spec)
             if not files:
                 continue
             stored = _tree.values(element)
