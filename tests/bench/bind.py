@@ -48,6 +48,7 @@ LABELS = ("mj_name2id + data.qpos[jnt_qposadr[ids]] (floor)",
           "typed-mjcf physics.bind(joints).qpos, cached binding",
           "mujoco.MjModel.from_xml_string(the model's text) (floor)",
           "typed-mjcf Physics.from_mjcf_model(model)")
+CASES = ("floor", "first_bind", "cached", "compile_floor", "from_mjcf_model")  # (for targets)
 
 
 def bind_cases(n: int = JOINTS) -> list[Callable[[], object]]:
@@ -90,8 +91,8 @@ def bench_bind(n: int = JOINTS, repeats: int = 21) -> list[dict[str, Any]]:
     compiled, physics_made = _medians([compile_text, from_model], compiles)
     times = [floor, first, again, compiled, physics_made]
     bases = [floor, floor, floor, compiled, compiled]
-    return [{"label": label, "median": t, "ratio": t / base, "n": n}
-            for label, t, base in zip(LABELS, times, bases, strict=True)]
+    return [{"label": label, "case": case, "median": t, "ratio": t / base, "n": n}
+            for label, case, t, base in zip(LABELS, CASES, times, bases, strict=True)]
 
 
 def render_bind(rows: list[dict[str, Any]]) -> list[str]:

@@ -18,6 +18,9 @@ XML work (its ratio to that floor), and a copy given as ``LABEL=python:PATH`` is
 typed-mjcf installed for the interpreter ``PATH`` (a compiled build), not a folder:
 
     python -m tests.bench.instructions --floors --pads 0 pure=. compiled=python:.venv-c/bin/python
+
+``--steps`` counts ``Physics.from_mjcf_model`` on the bind workload's model step by step,
+each against MuJoCo compiling the same text (``docs/benchmarks.md`` has the table).
 """
 
 from __future__ import annotations
@@ -109,13 +112,56 @@ def _floor_phases() -> list[Callable[[], object]]:
             lambda: w._typed_export(w._typed_w3(500))]
 
 
+# --steps: Physics.from_mjcf_model on the bind workload's model, step by step, each against
+# the compile floor (what takes it past MuJoCo's own reading and compiling of the text)
+STEP_PHASES = ("compile floor: MjModel.from_xml_string", "validation (ensure_valid)",
+               "resource checks (check_compile)", "export with marker names",
+               "MjSpec read + markers cleared + compile", "ids of the unnamed elements",
+               "copy into physics.model's class", "Physics.from_mjcf_model(model), all")
+STEP_FLOORS = (0,) * len(STEP_PHASES)
+
+
+def _step_phases() -> list[Callable[[], object]]:
+    import mujoco
+
+    import typed_mjcf as mjcf
+    from tests.bench.bind import _model
+    from typed_mjcf import physics
+    from typed_mjcf._core.tree import Element
+    from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, check_compile
+    from typed_mjcf._model.validate import ensure_valid
+    from typed_mjcf._sim import ids
+    from typed_mjcf._sim.text import vfs_text
+
+    model = _model(1000)
+    text = model.to_xml_string()
+    mjcf.Physics.from_mjcf_model(model)  # (the binding tables loaded)
+
+    def export() -> tuple[str, dict[str, bytes], list[Element], dict[int, tuple[Element, str]]]:
+        marks: list[Element] = []
+        written: dict[int, tuple[Element, str]] = {}
+        marked, collected = vfs_text(model, namer=ids._namer(model, marks, written),
+                                     limits=DEFAULT_COMPILE_LIMITS)
+        return marked, collected.files, marks, written
+
+    marked, files, marks, written = export()
+    compiled, found = ids._compile_marked(marked, files, marks)
+    return [lambda: mujoco.MjModel.from_xml_string(text), lambda: ensure_valid(model),
+            lambda: check_compile(model, DEFAULT_COMPILE_LIMITS), export,
+            lambda: ids._compile_marked(marked, files, marks),
+            lambda: ids._ids(compiled, found, written), lambda: physics._as_model(compiled),
+            lambda: mjcf.Physics.from_mjcf_model(model)]
+
+
 _MODES: dict[str, tuple[tuple[str, ...], tuple[int, ...] | None]] = {
-    "": (PHASES, None), "bind": (BIND_PHASES, BIND_FLOORS), "floors": (FLOOR_PHASES, FLOOR_OF)}
+    "": (PHASES, None), "bind": (BIND_PHASES, BIND_FLOORS), "floors": (FLOOR_PHASES, FLOOR_OF),
+    "steps": (STEP_PHASES, STEP_FLOORS)}
 
 
 def drive(mode: str = "") -> None:
     """The workload, run under callgrind: every phase once untimed, then each counted."""
-    phases = {"": _phases, "bind": _bind_phases, "floors": _floor_phases}[mode]()
+    phases = {"": _phases, "bind": _bind_phases, "floors": _floor_phases,
+              "steps": _step_phases}[mode]()
     for run in phases:
         run()
     gc.collect()
@@ -165,9 +211,13 @@ def main(argv: Sequence[str] | None = None) -> int:
                              "as a ratio to its floor")
     parser.add_argument("--floors", action="store_true",
                         help="count issue 38's workloads, each also as a ratio to raw lxml")
+    parser.add_argument("--steps", action="store_true",
+                        help="count Physics.from_mjcf_model step by step, each against the "
+                             "compile floor")
     parser.add_argument("--drive", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
-    mode = "bind" if args.bind else "floors" if args.floors else ""
+    mode = ("bind" if args.bind else "floors" if args.floors else "steps" if args.steps
+            else "")
     if args.drive:
         drive(mode)
         return 0

@@ -19,8 +19,9 @@ own files under their flat names: :func:`collect_files` takes the function that 
 from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core.grammar import AttributeSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
+FileElements = list[tuple[Element, tuple[AttributeSpec, ...]]]
 
 @dataclass
 class CollectedFiles:
@@ -36,6 +37,7 @@ class CollectedFiles:
     digests: dict[object, str | None] = field(default_factory=lambda: {})
     apart: dict[str, str] = field(default_factory=lambda: {})
     apart_found: bool = False
+    file_elements: dict[int, FileElements] = field(default_factory=lambda: {})
     def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
         """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
         ...
@@ -124,11 +126,6 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     """A flat, unique name for every file the model (and the models attached to it) uses,
     without reading any: files are told apart by their path, in-memory ones by contents
     (and an attached model's skin files by its scope too: their bones are renamed)."""
-    ...
-
-def file_attributes_per_row() -> Callable[[ElementSpec], tuple[AttributeSpec, ...]]:
-    """A row's attributes that name files, found once per row for the pass that asks (not
-    kept longer: a release may change a row's attributes when the grammar loads)."""
     ...
 
 def collect_files(model: ModelBase, model_file: ModelFileWriter,

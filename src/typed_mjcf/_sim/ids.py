@@ -103,9 +103,16 @@ def _namer(model: ModelBase, marks: list[Element], written: dict[int, tuple[Elem
     name the export gives those it names itself (into ``written``)."""
 
     def namer(writer: Writer) -> None:
+        marked_class: dict[type[Element], bool] = {}  # per class: its unnamed ones are marked
         for element in _tree.iter_composed(model, True):
-            if (element.spec.id_attribute is None or _tree.element_name(element) is not None
-                    or kind_of(element) is None):
+            cls = type(element)
+            marked = marked_class.get(cls)
+            if marked is None:  # (a row without an id attribute, the world body's, has no
+                # namespace: kind_of's one case decided by the element, not its row, is left out)
+                spec = cls.spec
+                marked = marked_class[cls] = (spec.id_attribute is not None
+                                              and bound_kind(spec.namespace) is not None)
+            if not marked or _tree.element_name(element) is not None:
                 continue
             given = writer.given_names.get(id(element))
             file_attribute = grammar_facts().named_after_file.get(element.spec.namespace or "")

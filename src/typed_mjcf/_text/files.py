@@ -29,10 +29,13 @@ from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.access import Refused, read_file
 from typed_mjcf._core.behaviour import FLAGS
 from typed_mjcf._core.errors import FileAccessError, InvalidValueError, MjcfError
-from typed_mjcf._core.grammar import AttributeSpec, ElementSpec
+from typed_mjcf._core.grammar import AttributeSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._text.skin import scope_bone_names
 from typed_mjcf.assets import Asset
+
+# elements whose rows have attributes that name files, each with those attributes
+FileElements = list[tuple[Element, tuple[AttributeSpec, ...]]]
 
 
 @dataclass
@@ -55,6 +58,9 @@ class CollectedFiles:
     # path -> name, and whether the base names were looked at yet
     apart: dict[str, str] = field(default_factory=lambda: {})
     apart_found: bool = False
+    # the elements of a row with file attributes, and those attributes, by id() of the model
+    # (and of each model attached to it) they are in: found in one walk of each
+    file_elements: dict[int, FileElements] = field(default_factory=lambda: {})
 
     def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
         """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
@@ -269,15 +275,15 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     collected = CollectedFiles() if collected is None else collected
     if not collected.apart_found:
         collected.apart_found = True
+        collected.file_elements = _file_elements(model)
         collected.apart.update(_kept_apart(model, collected))
     folders = compiler_folders(model)
     directories: set[str] = set()
-    files_of = file_attributes_per_row()
-    for element in model.iter_elements():
+    for element, files in collected.file_elements.get(id(model), ()):
         stored = _tree.values(element)
         if not stored:
             continue
-        for attribute in files_of(element.spec):
+        for attribute in files:
             directories.update(attribute.directory)
             value = stored.get(attribute.name)
             if value is None:
@@ -313,19 +319,27 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     return collected
 
 
-def file_attributes_per_row() -> Callable[[ElementSpec], tuple[AttributeSpec, ...]]:
-    """A row's attributes that name files, found once per row for the pass that asks (not
-    kept longer: a release may change a row's attributes when the grammar loads)."""
-    found: dict[int, tuple[AttributeSpec, ...]] = {}  # id(row) -> its file attributes
-
-    def files_of(spec: ElementSpec) -> tuple[AttributeSpec, ...]:
-        files = found.get(id(spec))
-        if files is None:
-            files = found[id(spec)] = tuple(
-                a for a in spec.attributes.values() if a.kind == "file")
-        return files
-
-    return files_of
+def _file_elements(model: ModelBase) -> dict[int, FileElements]:
+    """The elements of ``model`` and of the models attached to it (by ``id()`` of the model
+    each is in) whose rows have attributes that name files, with those attributes."""
+    found: dict[int, FileElements] = {}
+    # a row's file attributes, found once per row for this walk (not kept longer: a release
+    # may change a row's attributes when the grammar loads)
+    rows: dict[int, tuple[AttributeSpec, ...]] = {}
+    models = [model]
+    while models:
+        owner = models.pop()
+        models.extend(_tree.attached_models(owner))
+        elements = found[id(owner)] = []
+        for element in owner.iter_elements():
+            spec = type(element).spec
+            files = rows.get(id(spec))
+            if files is None:
+                files = rows[id(spec)] = tuple(
+                    a for a in spec.attributes.values() if a.kind == "file")
+            if files:
+                elements.append((element, files))
+    return found
 
 
 def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
@@ -337,16 +351,12 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
     if FLAGS.hashed_file_names:
         return {}
     by_base: dict[str, dict[str, Callable[[], bytes]]] = {}
-    files_of = file_attributes_per_row()
     models = [model]
     while models:
         owner = models.pop()
         models.extend(_tree.attached_models(owner))
         folders = compiler_folders(owner)
-        for element in owner.iter_elements():
-            files = files_of(element.spec)
-            if not files:
-                continue
+        for element, files in collected.file_elements.get(id(owner), ()):
             stored = _tree.values(element)
             for attribute in files:
                 value = stored.get(attribute.name)
