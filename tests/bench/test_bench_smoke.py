@@ -66,3 +66,14 @@ def test_another_build_runs_in_its_own_process_beside_this_one(
                for r in data["bind"])
     assert any(t["target"].startswith("W2 typed-mjcf [pure: other] humanoid_CMU.xml")
                for t in data["targets"])
+    # issue 38's targets, for each build: the two bind ratios (met as each row's ratio says),
+    # W1's dense text at 8x and humanoid_CMU.xml at 3x
+    targets = {t["target"]: t for t in data["targets"]}
+    for title in ("typed-mjcf [pure]", "typed-mjcf [pure: other]"):
+        rows = {r["case"]: r for r in data["bind"] if r["label"].startswith(title)}
+        for case, limit in (("first_bind", 1.5), ("from_mjcf_model", 1.2)):
+            target = targets[f"bind: {rows[case]['label']}: <= {limit}x its floor"]
+            assert target["met"] == (rows[case]["ratio"] <= limit)
+        assert any(t.startswith(f"W2 {title} W1 ") and t.endswith("<= 8.0x lxml parse+serialise")
+                   for t in targets)
+        assert f"W2 {title} humanoid_CMU.xml: <= 3.0x lxml parse+serialise" in targets
