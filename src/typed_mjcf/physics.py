@@ -41,7 +41,6 @@ from typed_mjcf._core.errors import (
     PhysicsError,
     RenderError,
 )
-from typed_mjcf._core.grammar import ElementSpec
 from typed_mjcf._core.tree import Element, ModelBase
 from typed_mjcf._generated import bindings as _bindings
 from typed_mjcf._generated.bindings import *  # the binding classes, one per kind
@@ -62,7 +61,7 @@ from typed_mjcf._sim.binding import (
 )
 from typed_mjcf._sim.compile import compile_from_memory
 from typed_mjcf._sim.gl import ensure_gl_backend, gl_error
-from typed_mjcf._sim.ids import bound_kind, compile_for_physics, ids_for_text, kind_of
+from typed_mjcf._sim.ids import compile_for_physics, ids_for_text, kind_of, row_kind
 from typed_mjcf._sim.model_state import model_state
 from typed_mjcf._sim.name_table import name_ids
 from typed_mjcf._sim.named import make_axes, struct_indexers
@@ -691,7 +690,7 @@ class Physics(Bind):
         row has a namespace is that namespace's)."""
         # one class per row: elements of rows with one namespace MuJoCo binds are of that
         # kind (the world body, errors and mixed kinds: element by element, below)
-        kinds = {_row_kind(cls) for cls in set(map(type, elements))}
+        kinds = {row_kind(cls) for cls in set(map(type, elements))}
         kind = kinds.pop() if len(kinds) == 1 else None
         if kind is not None:
             return kind
@@ -803,12 +802,6 @@ class Physics(Bind):
     def __del__(self) -> None:
         with contextlib.suppress(Exception):
             self._free_renderers()
-
-
-def _row_kind(cls: type) -> str | None:
-    """The kind of every element of class ``cls``: its row's namespace, if MuJoCo binds it."""
-    spec = getattr(cls, "spec", None) if issubclass(cls, Element) else None
-    return bound_kind(spec.namespace) if isinstance(spec, ElementSpec) else None
 
 
 def _scoped_name(element: Element, prefixes: dict[int, str]) -> str | None:

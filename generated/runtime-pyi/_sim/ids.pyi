@@ -26,6 +26,11 @@ def bound_kind(namespace: str | None) -> str | None:
     """``namespace`` if its elements become objects MuJoCo indexes (a kind bind knows)."""
     ...
 
+def row_kind(cls: type) -> str | None:
+    """The kind of every element of class ``cls``: its row's namespace, if MuJoCo binds it
+    (``None`` for the world body's row, which has none: :func:`kind_of` decides it)."""
+    ...
+
 @dataclass(frozen=True, slots=True)
 class Compiled:
     """A compiled model, and the compiled ids of the elements bound without their own name

@@ -37,7 +37,7 @@ class CollectedFiles:
     digests: dict[object, str | None] = field(default_factory=lambda: {})
     apart: dict[str, str] = field(default_factory=lambda: {})
     apart_found: bool = False
-    file_elements: dict[int, FileElements] = field(default_factory=lambda: {})
+    file_elements: dict[int, tuple[ModelBase, FileElements]] = field(default_factory=lambda: {})
     def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
         """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
         ...

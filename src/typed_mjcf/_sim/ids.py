@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Final, cast
 
 from typed_mjcf._core import tree as _tree
 from typed_mjcf._core.errors import CompileError
+from typed_mjcf._core.grammar import ElementSpec
 from typed_mjcf._core.tree import Element, ModelBase, grammar_facts
 from typed_mjcf._model.resource_limits import DEFAULT_COMPILE_LIMITS, CompileLimits, check_compile
 from typed_mjcf._model.validate import ensure_valid
@@ -50,6 +51,13 @@ def kind_of(element: Element) -> str | None:
 def bound_kind(namespace: str | None) -> str | None:
     """``namespace`` if its elements become objects MuJoCo indexes (a kind bind knows)."""
     return namespace if namespace in binding_tables().kinds else None
+
+
+def row_kind(cls: type) -> str | None:
+    """The kind of every element of class ``cls``: its row's namespace, if MuJoCo binds it
+    (``None`` for the world body's row, which has none: :func:`kind_of` decides it)."""
+    spec = getattr(cls, "spec", None) if issubclass(cls, Element) else None
+    return bound_kind(spec.namespace) if isinstance(spec, ElementSpec) else None
 
 
 @dataclass(frozen=True, slots=True)
@@ -107,11 +115,9 @@ def _namer(model: ModelBase, marks: list[Element], written: dict[int, tuple[Elem
         for element in _tree.iter_composed(model, True):
             cls = type(element)
             marked = marked_class.get(cls)
-            if marked is None:  # (a row without an id attribute, the world body's, has no
-                # namespace: kind_of's one case decided by the element, not its row, is left out)
-                spec = cls.spec
-                marked = marked_class[cls] = (spec.id_attribute is not None
-                                              and bound_kind(spec.namespace) is not None)
+            if marked is None:  # (the world body, kind_of's one case not decided by the row,
+                # has no name to be marked in)
+                marked = marked_class[cls] = row_kind(cls) is not None
             if not marked or _tree.element_name(element) is not None:
                 continue
             given = writer.given_names.get(id(element))

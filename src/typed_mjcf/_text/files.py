@@ -58,9 +58,9 @@ class CollectedFiles:
     # path -> name, and whether the base names were looked at yet
     apart: dict[str, str] = field(default_factory=lambda: {})
     apart_found: bool = False
-    # the elements of a row with file attributes, and those attributes, by id() of the model
-    # (and of each model attached to it) they are in: found in one walk of each
-    file_elements: dict[int, FileElements] = field(default_factory=lambda: {})
+    # the model and each model attached to it, by id(), with its elements of a row with file
+    # attributes (and those attributes): found in one walk of each
+    file_elements: dict[int, tuple[ModelBase, FileElements]] = field(default_factory=lambda: {})
 
     def digest(self, key: object, read: Callable[[], bytes]) -> str | None:
         """The SHA-256 of the file ``key`` (read once); None when it cannot be read."""
@@ -279,7 +279,7 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
         collected.apart.update(_kept_apart(model, collected))
     folders = compiler_folders(model)
     directories: set[str] = set()
-    for element, files in collected.file_elements.get(id(model), ()):
+    for element, files in collected.file_elements[id(model)][1]:
         stored = _tree.values(element)
         if not stored:
             continue
@@ -319,10 +319,10 @@ def name_files(model: ModelBase, collected: CollectedFiles | None = None,
     return collected
 
 
-def _file_elements(model: ModelBase) -> dict[int, FileElements]:
-    """The elements of ``model`` and of the models attached to it (by ``id()`` of the model
-    each is in) whose rows have attributes that name files, with those attributes."""
-    found: dict[int, FileElements] = {}
+def _file_elements(model: ModelBase) -> dict[int, tuple[ModelBase, FileElements]]:
+    """``model`` and the models attached to it (by ``id()``), each with its elements whose
+    rows have attributes that name files, and those attributes."""
+    found: dict[int, tuple[ModelBase, FileElements]] = {}
     # a row's file attributes, found once per row for this walk (not kept longer: a release
     # may change a row's attributes when the grammar loads)
     rows: dict[int, tuple[AttributeSpec, ...]] = {}
@@ -330,7 +330,8 @@ def _file_elements(model: ModelBase) -> dict[int, FileElements]:
     while models:
         owner = models.pop()
         models.extend(_tree.attached_models(owner))
-        elements = found[id(owner)] = []
+        elements: FileElements = []
+        found[id(owner)] = (owner, elements)
         for element in owner.iter_elements():
             spec = type(element).spec
             files = rows.get(id(spec))
@@ -351,12 +352,9 @@ def _kept_apart(model: ModelBase, collected: CollectedFiles) -> dict[str, str]:
     if FLAGS.hashed_file_names:
         return {}
     by_base: dict[str, dict[str, Callable[[], bytes]]] = {}
-    models = [model]
-    while models:
-        owner = models.pop()
-        models.extend(_tree.attached_models(owner))
+    for owner, elements in collected.file_elements.values():
         folders = compiler_folders(owner)
-        for element, files in collected.file_elements.get(id(owner), ()):
+        for element, files in elements:
             stored = _tree.values(element)
             for attribute in files:
                 value = stored.get(attribute.name)
